@@ -1,0 +1,74 @@
+// The local element kernel contract: state in, internal force and tangent out.
+// A kernel knows nothing about MPI or PETSc; the assembler maps it into the global system.
+#pragma once
+#include <span>
+#include <string>
+#include <vector>
+
+#include "sinew/linalg3.hpp"
+
+namespace sinew {
+
+/// What a node carries. State layout / DOF layout per node:
+///   Point3 : state x y z                       | dofs: 3 translations
+///   Frame6 : state x y z, R (3x3 row-major)    | dofs: 3 translations, 3 spatial spins (dR = skew(dw) R)
+///   Ancf2D : state x y slope_x slope_y         | dofs: the 4 coordinates
+/// A Point3 kernel node may sit on a Frame6 node: it sees the position prefix of the state and dofs.
+enum class NodeKind : int { Point3 = 0, Frame6 = 1, Ancf2D = 2 };
+constexpr int stateSize(NodeKind k) { return k == NodeKind::Point3 ? 3 : (k == NodeKind::Frame6 ? 12 : 4); }
+constexpr int dofSize(NodeKind k) { return k == NodeKind::Point3 ? 3 : (k == NodeKind::Frame6 ? 6 : 4); }
+
+struct KernelInput {
+  const double* q = nullptr;       ///< node states, concatenated in kernel node order (state layout)
+  const double* qdot = nullptr;    ///< time derivatives in DOF layout (spins for Frame6); nullptr in statics
+  const double* lambda = nullptr;  ///< multipliers of the kernel's constraints; nullptr when it has none
+  double t = 0.0;                  ///< time (dynamics) or load factor (statics)
+};
+
+struct KernelNeeds {
+  bool tangent = false;         ///< fill K (d f / d(dofs, lambda))
+  bool damping = false;         ///< fill D (d f / d qdot)
+  bool splitGeometric = false;  ///< with tangent: K = material part only, Kg = stress-dependent part
+};
+
+/// n = numDofs() + numConstraints(). Dense row-major blocks.
+struct KernelOutput {
+  std::vector<double> f;   ///< [n]: internal force incl. G^T lambda (first numDofs), constraint values (rest)
+  std::vector<double> K;   ///< [n*n]: tangent (material part only when splitGeometric)
+  std::vector<double> Kg;  ///< [n*n]: geometric (stress-dependent) part, only when splitGeometric
+  std::vector<double> D;   ///< [numDofs^2]: damping, only when damping requested and hasDamping()
+};
+
+class ElementKernel {
+ public:
+  virtual ~ElementKernel() = default;
+  virtual const char* name() const = 0;
+  virtual std::span<const NodeKind> nodeKinds() const = 0;
+  virtual int numConstraints() const { return 0; }
+  virtual bool hasInertia() const { return false; }
+  virtual bool hasDamping() const { return false; }
+
+  /// Internal force (and tangents as requested) at the state in `in`. Output vectors are resized here.
+  virtual void evaluate(const KernelInput& in, const KernelNeeds& needs, KernelOutput& out) const = 0;
+  /// Consistent mass matrix [numDofs^2] at state q (row-major). Only called when hasInertia().
+  virtual void mass(const double* q, std::vector<double>& M) const;
+  /// Equivalent nodal load [numDofs] of the body force density rho * a (gravity). Only when hasInertia().
+  virtual void bodyForce(const double* q, const Vec3& a, std::vector<double>& f) const;
+  /// Largest Von Mises stress in the element at state q (0 when the element has no stress measure).
+  virtual double vonMisesMax(const double* /*q*/, const double* /*lambda*/) const { return 0.0; }
+  /// Element force output (cable axial force, membrane resultants n11 n22 n12); empty when none.
+  virtual void elementForce(const double* /*q*/, std::vector<double>& out) const { out.clear(); }
+
+  int numDofs() const {
+    int n = 0;
+    for (NodeKind k : nodeKinds()) n += dofSize(k);
+    return n;
+  }
+  int numStates() const {
+    int n = 0;
+    for (NodeKind k : nodeKinds()) n += stateSize(k);
+    return n;
+  }
+};
+
+}  // namespace sinew

@@ -1,0 +1,129 @@
+// The scene as plain, validated data (design.md section 2). Node and element numbers are
+// stored 0-based here; the scene file and every message use SPACAR Light's 1-based numbers.
+#pragma once
+#include <array>
+#include <map>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "sinew/linalg3.hpp"
+
+namespace sinew {
+
+/// A scene error: `path` is the field path (e.g. "eprops[2].dim"), `what()` the full message.
+class SceneError : public std::runtime_error {
+ public:
+  SceneError(const std::string& path, const std::string& message)
+      : std::runtime_error(path.empty() ? message : path + ": " + message), path_(path) {}
+  const std::string& path() const { return path_; }
+
+ private:
+  std::string path_;
+};
+
+struct NodeProps {
+  bool fix = false, fix_pos = false, fix_orien = false, fix_x = false, fix_y = false, fix_z = false;
+  std::optional<std::array<int, 4>> fix_coords;  ///< ANCF: x, y, slope_x, slope_y (1 = fixed)
+  double mass = 0.0;
+  std::array<double, 6> mominertia{};  ///< Ixx Ixy Ixz Iyy Iyz Izz (global frame, at the node)
+  Vec3 force{}, force_initial{}, moment{}, moment_initial{};
+  std::array<std::optional<double>, 3> displ{}, displ_initial{};  ///< prescribed x/y/z displacement
+  std::optional<Vec3> rot, rot_initial;                          ///< prescribed rotation (axis * angle)
+  std::vector<std::string> transfer_in;   ///< force_x force_y force_z (moment_x ...)
+  std::vector<std::string> transfer_out;  ///< displ_x ... veloc_x ...
+};
+
+enum class ElementType { Beam, Cable, Membrane, AncfCable2D };
+enum class CrossSection { None, Rect, Circ };
+
+struct ElementSet {
+  std::vector<int> elems;  ///< 0-based scene element numbers
+  ElementType type = ElementType::Beam;
+  int nbeams = 1;
+  // beam (SPACAR Light)
+  std::array<bool, 6> flex{};  ///< flexible deformation modes 1..6
+  bool cw = false;
+  double emod = 0, smod = 0, dens = 0;
+  CrossSection cshape = CrossSection::None;
+  std::vector<double> dim;      ///< rect: [width, height]; circ: [diameter]
+  std::optional<Vec3> orien;    ///< local y axis of the section (rect: width direction)
+  std::optional<std::array<double, 3>> color;
+  double opacity = 1.0;
+  bool hide = false;
+  // cable (3D, tension only)
+  double area = 0;
+  std::optional<double> prestress;         ///< force
+  std::optional<double> prestress_stress;  ///< stress
+  // membrane
+  double thickness = 0, nu = 0;
+  std::array<double, 3> membrane_prestress{};  ///< s11 s22 s12
+  std::optional<Vec3> prestress_dir, prestress_radial_axis;
+  // ANCF cable 2D (Exudyn names)
+  double physicsMassPerLength = 0, physicsBendingStiffness = 0, physicsAxialStiffness = 0;
+  double physicsBendingDamping = 0, physicsAxialDamping = 0;
+  double physicsReferenceAxialStrain = 0, physicsReferenceCurvature = 0;
+  double strainIsRelativeToReference = 0;
+  int useReducedOrderIntegration = 0;
+  std::string axialForceUserFunction, bendingMomentUserFunction;
+  std::optional<Vec3> massProportionalLoad;
+};
+
+struct DynamicsOptions {
+  double tend = 0, dt = 0, spectral_radius = 0.9;
+};
+
+struct Options {
+  int loadsteps = 10;
+  bool calcbuck = false;
+  bool calccompl = true;
+  std::optional<bool> calcfreq;       ///< Sinew: default = scene has inertia
+  std::optional<Vec3> gravity;
+  std::map<int, std::vector<int>> rls;  ///< 0-based element -> released modes 1..6
+  bool transfer = false;
+  double transfer_zeta = 0.0;
+  std::string filename;
+  bool stressperelement = false, rigidstress = false;
+  bool showinputonly = false, silent = false;
+  std::vector<int> compliance_nodes;  ///< 0-based; empty = all nodes
+  std::optional<DynamicsOptions> dynamics;
+  int nfreq = 6;   ///< Sinew: number of frequencies (also -eps_nev)
+  int nbuck = 3;   ///< Sinew: number of buckling multipliers
+};
+
+struct FormFinding {
+  int formfinding_step = 10;
+  int max_iter_equilibrium = 100;
+  double equilibrium_accuracy = 1e-6;
+  std::vector<int> formfinding_elements;  ///< 0-based eprops set indices
+  std::vector<double> homotopy_curve;     ///< lambda per step
+  std::vector<int> stress_adaption;       ///< 0-based eprops set indices
+  double lambda_max = 1.1;
+  double mue_relax = 0.0;
+  bool x_urs = false;
+  int x_urs_step = 3;
+  std::string elastic_restart_method = "FORCE";
+};
+
+struct Sensor {
+  int element = 0;  ///< 0-based scene element
+  double x = 0;     ///< axial position along the scene element (length units, 0..L)
+  std::string variable, name;
+};
+
+struct Model {
+  std::string title;
+  std::string sceneText;               ///< the scene as read, stored in the result file
+  int dimension = 3;                   ///< 2 when every node has two coordinates
+  std::vector<Vec3> nodes;             ///< z = 0 for 2D nodes
+  std::vector<std::vector<int>> elements;  ///< 0-based node numbers
+  std::map<int, NodeProps> nprops;     ///< 0-based node -> properties
+  std::vector<ElementSet> eprops;
+  std::vector<int> elementSet;         ///< per element: eprops index, -1 = rigid (no set)
+  Options opt;
+  std::optional<FormFinding> formfinding;
+  std::vector<Sensor> sensors;
+};
+
+}  // namespace sinew

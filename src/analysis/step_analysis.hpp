@@ -1,0 +1,24 @@
+// An analysis evaluated at every converged load step (frequencies, buckling, compliance...).
+#pragma once
+#include <petscvec.h>
+
+#include <string>
+
+#include "assembly/assembler.hpp"
+#include "sinew/result_file.hpp"
+
+namespace sinew {
+
+class StepAnalysis {
+ public:
+  virtual ~StepAnalysis() = default;
+  virtual const char* name() const = 0;
+  /// Runs at the converged state U of the current step (file.beginStep done). Sets ok = false
+  /// with a message in failure() when it cannot produce its result.
+  virtual PetscErrorCode atStep(Vec U, const LoadState& ls, ResultFile& file, bool* ok) = 0;
+  /// Lines for the stdout summary (rank 0 prints them).
+  virtual std::string summary() const { return {}; }
+  virtual std::string failure() const { return {}; }
+};
+
+}  // namespace sinew

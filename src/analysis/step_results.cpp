@@ -1,0 +1,163 @@
+#include "analysis/step_results.hpp"
+
+#include <algorithm>
+
+#include "sinew/rotation.hpp"
+
+namespace sinew {
+
+StepResults::StepResults(Assembler& assembler, const StepResultOptions& opts) : asm_(assembler), opts_(opts) {
+  DistributedMesh& m = asm_.mesh();
+  PetscCallAbort(m.comm, asm_.createFullVector(&full_));
+  // scene element rows: contiguous ranges
+  PetscLayout layout;
+  PetscCallAbort(m.comm, PetscLayoutCreate(m.comm, &layout));
+  PetscCallAbort(m.comm, PetscLayoutSetSize(layout, static_cast<PetscInt>(m.numSceneElements)));
+  PetscCallAbort(m.comm, PetscLayoutSetUp(layout));
+  PetscCallAbort(m.comm, PetscLayoutGetRange(layout, &elemLo_, &elemHi_));
+  if (opts_.stress) {
+    std::vector<PetscInt> remote(m.elements.size());
+    for (size_t e = 0; e < m.elements.size(); ++e) remote[e] = m.elements[e].sceneElement;
+    PetscCallAbort(m.comm, PetscSFCreate(m.comm, &stressSF_));
+    PetscCallAbort(m.comm, PetscSFSetGraphLayout(stressSF_, layout, static_cast<PetscInt>(remote.size()), nullptr,
+                                                 PETSC_COPY_VALUES, remote.data()));
+    PetscCallAbort(m.comm, PetscSFSetUp(stressSF_));
+  }
+  PetscCallAbort(m.comm, PetscLayoutDestroy(&layout));
+}
+
+StepResults::~StepResults() {
+  VecDestroy(&full_);
+  PetscSFDestroy(&stressSF_);
+}
+
+void StepResults::fillLayout(ResultLayout& layout) const {
+  const DistributedMesh& m = asm_.mesh();
+  layout.numNodes = m.numSceneNodes;
+  layout.numElements = m.numSceneElements;
+  layout.numMeshNodes = m.numFeNodes;
+  layout.dimension = m.dimension;
+  for (int i = 0; i < m.numOwnedNodes; ++i) {
+    const LocalNode& n = m.nodes[i];
+    if (n.sceneNode >= 0) layout.ownedNodes.push_back(n.sceneNode);
+    layout.ownedMeshNodes.push_back(n.gid);
+  }
+  for (PetscInt e = elemLo_; e < elemHi_; ++e) layout.ownedElements.push_back(e);
+  for (const LocalElement& el : m.elements) {
+    auto& cells = el.numNodes == 2 ? layout.lines : (el.numNodes == 3 ? layout.triangles : layout.quads);
+    auto& owner = el.numNodes == 2 ? layout.lineElement : (el.numNodes == 3 ? layout.triangleElement : layout.quadElement);
+    for (int i = 0; i < el.numNodes; ++i) cells.push_back(m.nodes[el.node[i]].gid);
+    owner.push_back(el.sceneElement + 1);
+  }
+}
+
+PetscErrorCode StepResults::write(ResultFile& file, Vec U, const LoadState& ls) {
+  PetscFunctionBeginUser;
+  DistributedMesh& m = asm_.mesh();
+  PetscCall(PetscLogEventBegin(SinewEvents::get().output, 0, 0, 0, 0));
+  PetscCall(asm_.fullResidual(U, ls, full_));  // also evaluates the node states
+  Vec fl;
+  const PetscScalar* fr;
+  PetscCall(VecGhostGetLocalForm(full_, &fl));
+  PetscCall(VecGetArrayRead(fl, &fr));
+  std::vector<double> p, quat, axang, eul, slope, Freac, Mreac, meshP, meshU;
+  rows_.clear();
+  for (int i = 0; i < m.numOwnedNodes; ++i) {
+    const LocalNode& n = m.nodes[i];
+    const double* s = asm_.nodeState(i);
+    Vec3 x{s[0], s[1], n.kind == NodeKind::Ancf2D ? 0.0 : s[2]};
+    meshP.insert(meshP.end(), x.begin(), x.end());
+    for (int k = 0; k < 3; ++k) meshU.push_back(x[k] - n.X0[k]);
+    if (n.sceneNode < 0) continue;
+    Mat3 R = identity3();
+    if (n.kind == NodeKind::Frame6) std::copy(s + 3, s + 12, R.begin());
+    const auto q = quaternionOf(R);
+    const auto aa = axisAngleOf(R);
+    const Vec3 e = eulerZYXOf(R);
+    Vec3 F{}, M{};
+    const int nt = n.kind == NodeKind::Ancf2D ? 2 : 3;
+    for (int k = 0; k < nt; ++k)
+      if (n.status[k] != DofStatus::Free) F[k] = fr[n.fullDof[k]];
+    if (n.kind == NodeKind::Frame6)
+      for (int k = 0; k < 3; ++k)
+        if (n.status[3 + k] != DofStatus::Free) M[k] = fr[n.fullDof[3 + k]];
+    p.insert(p.end(), x.begin(), x.end());
+    quat.insert(quat.end(), q.begin(), q.end());
+    axang.insert(axang.end(), aa.begin(), aa.end());
+    eul.insert(eul.end(), e.begin(), e.end());
+    Freac.insert(Freac.end(), F.begin(), F.end());
+    Mreac.insert(Mreac.end(), M.begin(), M.end());
+    if (m.anyAncf) {
+      slope.push_back(n.kind == NodeKind::Ancf2D ? s[2] : 0.0);
+      slope.push_back(n.kind == NodeKind::Ancf2D ? s[3] : 0.0);
+    }
+    bool report = false;
+    for (int k = 0; k < 6; ++k) report |= n.load[k] != 0.0 || n.loadInitial[k] != 0.0 || n.status[k] != DofStatus::Free;
+    if (report) {
+      NodeSummaryRow row;
+      row.node = n.sceneNode + 1;
+      const Vec3 rv = logSO3(R);
+      for (int k = 0; k < 3; ++k) {
+        row.v[k] = x[k] - n.X0[k];
+        row.v[3 + k] = rv[k];
+        row.v[6 + k] = F[k];
+        row.v[9 + k] = M[k];
+      }
+      rows_.push_back(row);
+    }
+  }
+  PetscCall(VecRestoreArrayRead(fl, &fr));
+  PetscCall(VecGhostRestoreLocalForm(full_, &fl));
+  file.writeNodeField("node/p", p, {3});
+  file.writeNodeField("node/r_quat", quat, {4});
+  file.writeNodeField("node/r_axang", axang, {4});
+  file.writeNodeField("node/r_eulzyx", eul, {3});
+  file.writeNodeField("node/Freac", Freac, {3});
+  file.writeNodeField("node/Mreac", Mreac, {3});
+  if (m.anyAncf) file.writeNodeField("node/slope", slope, {2});
+  file.writeMeshField("mesh/p", meshP, {3});
+  file.writeMeshField("mesh/u", meshU, {3});
+
+  if (opts_.stress) {
+    std::vector<double> local;
+    PetscCall(asm_.elementStress(U, ls, local));
+    std::vector<double> rows(static_cast<size_t>(elemHi_ - elemLo_), 0.0);
+    PetscCall(PetscSFReduceBegin(stressSF_, MPIU_REAL, local.data(), rows.data(), MPI_MAX));
+    PetscCall(PetscSFReduceEnd(stressSF_, MPIU_REAL, local.data(), rows.data(), MPI_MAX));
+    struct {
+      double v;
+      int e;
+    } best{0.0, -1}, global{};
+    for (size_t i = 0; i < rows.size(); ++i)
+      if (rows[i] > best.v || best.e < 0) best = {rows[i], static_cast<int>(elemLo_ + i)};
+    if (best.e < 0) best.v = -1.0;
+    MPI_Allreduce(&best, &global, 1, MPI_DOUBLE_INT, MPI_MAXLOC, m.comm);
+    stressMax_ = std::max(global.v, 0.0);
+    stressElement_ = global.e;
+    file.writeStepRow("stressmax", std::span<const double>(&stressMax_, 1));
+    if (opts_.stressPerElement) file.writeElementField("element/stressmax", rows, {});
+  }
+  PetscCall(PetscLogEventEnd(SinewEvents::get().output, 0, 0, 0, 0));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+std::vector<NodeSummaryRow> StepResults::summaryRows() const {
+  const DistributedMesh& m = asm_.mesh();
+  const int n = static_cast<int>(rows_.size());
+  std::vector<int> counts(m.size), displs(m.size, 0);
+  MPI_Gather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, m.comm);
+  std::vector<int> bytes(m.size);
+  int total = 0;
+  for (int r = 0; r < m.size; ++r) {
+    bytes[r] = counts[r] * static_cast<int>(sizeof(NodeSummaryRow));
+    displs[r] = total;
+    total += bytes[r];
+  }
+  std::vector<NodeSummaryRow> all(m.rank == 0 ? total / sizeof(NodeSummaryRow) : 0);
+  MPI_Gatherv(rows_.data(), n * static_cast<int>(sizeof(NodeSummaryRow)), MPI_BYTE, all.data(), bytes.data(),
+              displs.data(), MPI_BYTE, 0, m.comm);
+  std::sort(all.begin(), all.end(), [](const auto& a, const auto& b) { return a.node < b.node; });
+  return all;
+}
+
+}  // namespace sinew

@@ -1,0 +1,54 @@
+// Per-step results of the node and element state: positions, rotations (quaternion, axis-angle,
+// Euler ZYX), ANCF slopes, reactions, Von Mises stress; written to the result file and kept for
+// the stdout summary.
+#pragma once
+#include <petscsf.h>
+#include <petscvec.h>
+
+#include <array>
+#include <vector>
+
+#include "assembly/assembler.hpp"
+#include "sinew/result_file.hpp"
+
+namespace sinew {
+
+struct StepResultOptions {
+  bool stress = false;            ///< recover Von Mises stress (/stressmax)
+  bool stressPerElement = false;  ///< also /element/stressmax
+};
+
+/// A node row for the summary: 1-based scene node and 12 values (u xyz, rotation vector xyz, F xyz, M xyz).
+struct NodeSummaryRow {
+  int node = 0;
+  std::array<double, 12> v{};
+};
+
+class StepResults {
+ public:
+  StepResults(Assembler& assembler, const StepResultOptions& opts);
+  ~StepResults();
+  StepResults(const StepResults&) = delete;
+  StepResults& operator=(const StepResults&) = delete;
+
+  /// Adds this rank's rows and cells to the result layout (call before creating the ResultFile).
+  void fillLayout(ResultLayout& layout) const;
+  /// Writes node/element/mesh fields of the state U for the current step (beginStep done). Collective.
+  PetscErrorCode write(ResultFile& file, Vec U, const LoadState& ls);
+  /// Rows of the loaded or supported scene nodes at the last written step, gathered on rank 0.
+  std::vector<NodeSummaryRow> summaryRows() const;
+  double lastStressMax() const { return stressMax_; }
+  int lastStressElement() const { return stressElement_; }
+
+ private:
+  Assembler& asm_;
+  StepResultOptions opts_;
+  Vec full_ = nullptr;
+  PetscSF stressSF_ = nullptr;  // FE element leaves -> scene element roots, MPI_MAX
+  PetscInt elemLo_ = 0, elemHi_ = 0;
+  std::vector<NodeSummaryRow> rows_;
+  double stressMax_ = 0;
+  int stressElement_ = -1;
+};
+
+}  // namespace sinew

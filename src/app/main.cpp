@@ -1,0 +1,32 @@
+// sinew: mpirun -n N sinew scene.yaml [-o result.h5] [opt flags] [PETSc flags]
+#include <slepcsys.h>
+
+#include <string>
+
+#include "app/runner.hpp"
+#include "scene/scene_reader.hpp"
+
+namespace {
+
+std::string helpText() {
+  std::string h =
+      "Sinew: parallel finite elements for flexures, cables and membranes.\n"
+      "Usage: mpirun -n N sinew scene.yaml [-o result.h5] [-<opt field> value ...] [PETSc options]\n"
+      "Scene opt fields (each can be given as a flag of the same name):\n";
+  for (const auto& d : sinew::sceneOptionDocs())
+    h += "  -" + d.name + " <" + d.type + "> (default " + d.defaultValue + "): " + d.help + "\n";
+  h += "Sinew flags: -o <file.h5> result file; -force_rtol <1e-11> equilibrium tolerance relative to the\n"
+       "  element forces; -max_cuts <10> halvings of a failing load increment.\n";
+  return h;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  static const std::string help = helpText();
+  PetscCall(SlepcInitialize(&argc, &argv, nullptr, help.c_str()));
+  int code = 0;
+  PetscCall(sinew::runFromCommandLine(argc, argv, &code));
+  PetscCall(SlepcFinalize());
+  return code;
+}

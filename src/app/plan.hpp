@@ -1,0 +1,25 @@
+// What a scene asks for: the analyses, fields and matrices to create (and nothing else).
+#pragma once
+#include <string>
+
+#include "sinew/model.hpp"
+
+namespace sinew {
+
+struct Plan {
+  bool statics = true;        ///< load-stepped statics (loadsteps)
+  bool dynamics = false;      ///< opt.dynamics
+  bool formfinding = false;   ///< formfinding block
+  bool inertia = false;       ///< some element density or nodal mass
+  bool frequencies = false;   ///< inertia and calcfreq != false
+  bool buckling = false;      ///< calcbuck
+  bool compliance = false;    ///< calccompl and the model has beams
+  bool transfer = false;      ///< state-space
+  bool stress = false;        ///< some element has a stress measure
+  bool stressPerElement = false;
+  std::string describe(const Model& model) const;
+};
+
+Plan makePlan(const Model& model);
+
+}  // namespace sinew

@@ -1,0 +1,218 @@
+#include "app/runner.hpp"
+
+#include <petscsnes.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <sstream>
+
+#include "analysis/static_analysis.hpp"
+#include "analysis/step_analysis.hpp"
+#include "analysis/step_results.hpp"
+#include "app/plan.hpp"
+#include "app/summary.hpp"
+#include "assembly/assembler.hpp"
+#include "assembly/kernel_factory.hpp"
+#include "elements/beam_section.hpp"
+#include "mesh/distributed_mesh.hpp"
+#include "mesh/fe_mesh.hpp"
+#include "scene/scene_reader.hpp"
+#include "sinew/result_file.hpp"
+
+namespace sinew {
+namespace {
+
+constexpr const char* kVersion = "0.1.0";
+
+/// opt fields given as flags (-loadsteps 40) override the scene.
+OptionOverride petscOverrides() {
+  return [](const std::string& name) -> std::optional<std::string> {
+    char buf[4096] = "";
+    PetscBool set = PETSC_FALSE;
+    PetscOptionsGetString(nullptr, nullptr, ("-" + name).c_str(), buf, sizeof(buf), &set);
+    if (!set) return std::nullopt;
+    return std::string(buf);
+  };
+}
+
+std::string outputPath(const Model& model, const std::string& scenePath) {
+  char buf[PETSC_MAX_PATH_LEN] = "";
+  PetscBool set = PETSC_FALSE;
+  PetscOptionsGetString(nullptr, nullptr, "-o", buf, sizeof(buf), &set);
+  if (set) return buf;
+  const std::string stem = model.opt.filename.empty() ? std::filesystem::path(scenePath).stem().string() : model.opt.filename;
+  return stem + ".h5";
+}
+
+void warnings(MPI_Comm comm, const Model& model) {
+  for (size_t set = 0; set < model.eprops.size(); ++set) {
+    const ElementSet& s = model.eprops[set];
+    if (s.type != ElementType::Beam) continue;
+    for (int e : s.elems) {
+      const auto& en = model.elements[e];
+      const double L = norm(model.nodes[en[1]] - model.nodes[en[0]]);
+      if (beamNeedsWarpingWarning(s, L)) {
+        PetscPrintf(comm,
+                    "warning: eprops[%zu] element %d: L/w = %.3g < 3 without cw; constrained warping stiffens "
+                    "torsion (set cw: true)\n",
+                    set, e + 1, L / s.dim[0]);
+        break;
+      }
+    }
+  }
+}
+
+}  // namespace
+
+PetscErrorCode runFromCommandLine(int argc, char** argv, int* exitCode) {
+  PetscFunctionBeginUser;
+  MPI_Comm comm = PETSC_COMM_WORLD;
+  *exitCode = 0;
+  PetscBool help = PETSC_FALSE;
+  PetscCall(PetscOptionsHasName(nullptr, nullptr, "-help", &help));
+  if (argc < 2 || argv[1][0] == '-') {
+    if (!help) {
+      PetscCall(PetscPrintf(comm, "usage: sinew scene.yaml [-o result.h5] [options]; sinew -help lists the options\n"));
+      *exitCode = 2;
+    }
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  const std::string scenePath = argv[1];
+  Timings times;
+  double t0 = MPI_Wtime();
+
+  // ---- scene -> model -> distributed mesh (scene errors: rank 0 prints, everyone exits 2)
+  Model model;
+  std::unique_ptr<DistributedMesh> dmesh;
+  Plan plan;
+  std::string setupError;
+  PetscCall(PetscLogEventBegin(SinewEvents::get().setup, 0, 0, 0, 0));
+  try {
+    model = readScene(scenePath, petscOverrides());
+    plan = makePlan(model);
+    const FeMesh fe = discretize(model);
+    dmesh = std::make_unique<DistributedMesh>(distributeMesh(comm, model, fe, makeKernelFactory(model)));
+  } catch (const SceneError& ex) {
+    setupError = std::string("error: ") + ex.what();
+    *exitCode = 2;
+  } catch (const std::exception& ex) {
+    setupError = std::string("error: ") + ex.what();
+    *exitCode = 1;
+  }
+  int bad = *exitCode;
+  MPI_Allreduce(MPI_IN_PLACE, &bad, 1, MPI_INT, MPI_MAX, comm);
+  if (bad) {
+    PetscCall(PetscPrintf(comm, "%s\n", setupError.empty() ? "error: scene set-up failed on another rank" : setupError.c_str()));
+    *exitCode = bad;
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  PetscCall(PetscLogEventEnd(SinewEvents::get().setup, 0, 0, 0, 0));
+  if (!model.opt.silent) warnings(comm, model);
+
+  const std::string h5 = outputPath(model, scenePath);
+  Assembler assembler(*dmesh, model.opt.gravity);
+  StepResults results(assembler, {plan.stress, plan.stressPerElement});
+  ResultLayout layout;
+  results.fillLayout(layout);
+  layout.version = kVersion;
+  layout.scene = model.sceneText;
+  layout.ndof = dmesh->numGlobalUnknowns;
+  layout.nranks = dmesh->size;
+  int nranks = dmesh->size;
+  // the global model arrays are not needed past set-up
+  std::vector<Vec3> initialPositions;
+  if (dmesh->rank == 0) initialPositions = model.nodes;
+  model.nodes.clear();
+  model.nodes.shrink_to_fit();
+  model.elements.clear();
+  model.elements.shrink_to_fit();
+  model.elementSet.clear();
+  model.elementSet.shrink_to_fit();
+  times.setup = MPI_Wtime() - t0;
+
+  SummaryHeader header{model.title, scenePath, nranks, dmesh->numGlobalUnknowns, plan.describe(model)};
+  PetscCall(printHeader(comm, header));
+
+  std::unique_ptr<ResultFile> file;
+  try {
+    file = std::make_unique<ResultFile>(comm, h5, layout);
+  } catch (const std::exception& ex) {
+    PetscCall(PetscPrintf(comm, "error: cannot create %s: %s\n", h5.c_str(), ex.what()));
+    *exitCode = 1;
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  std::vector<double> p0;
+  for (const Vec3& x : initialPositions) p0.insert(p0.end(), x.begin(), x.end());
+  file->writeArray("node/p0", p0, {static_cast<long>(initialPositions.size()), 3});
+
+  std::vector<std::unique_ptr<StepAnalysis>> stepAnalyses;
+  Vec U;
+  PetscCall(assembler.createVector(&U));
+  PetscCall(VecSet(U, 0.0));
+  bool converged = true;
+  std::string failure;
+  std::vector<StepReport> reports;
+  double tStatics = MPI_Wtime();
+  if (model.opt.showinputonly) {
+    LoadState ls;
+    file->beginStep(0, 0.0);
+    PetscCall(results.write(*file, U, ls));
+  } else if (plan.statics) {
+    StaticAnalysis statics(assembler, model.opt.loadsteps);
+    int stepIndex = 0;
+    auto onStep = [&](const StepReport& rep, Vec Ustep) -> PetscErrorCode {
+      PetscFunctionBeginUser;
+      const double tOut = MPI_Wtime();
+      LoadState ls;
+      ls.loadFactor = rep.loadFactor;
+      ls.time = rep.loadFactor;
+      file->beginStep(stepIndex++, rep.loadFactor);
+      PetscCall(results.write(*file, Ustep, ls));
+      times.output += MPI_Wtime() - tOut;
+      for (auto& a : stepAnalyses) {
+        const double ta = MPI_Wtime();
+        bool ok = true;
+        PetscCall(a->atStep(Ustep, ls, *file, &ok));
+        times.analyses += MPI_Wtime() - ta;
+        if (!ok) {
+          converged = false;
+          failure = a->failure();
+        }
+      }
+      PetscFunctionReturn(PETSC_SUCCESS);
+    };
+    bool ok = false;
+    PetscCall(statics.run(U, onStep, &ok));
+    reports = statics.reports();
+    if (!ok) {
+      converged = false;
+      failure = statics.failureMessage();
+    }
+  }
+  times.statics = MPI_Wtime() - tStatics - times.output - times.analyses;
+
+  const double tClose = MPI_Wtime();
+  file->close(converged);
+  times.output += MPI_Wtime() - tClose;
+  SummaryBody body;
+  body.reports = reports;
+  body.nodes = results.summaryRows();
+  body.stress = plan.stress;
+  body.stressMax = results.lastStressMax();
+  body.stressElement = results.lastStressElement();
+  for (auto& a : stepAnalyses) body.analysisLines += a->summary();
+  body.counters = assembler.counters();
+  body.times = times;
+  body.h5 = file->path();
+  body.xdmf = file->xdmfPath();
+  body.converged = converged;
+  body.failure = failure;
+  PetscCall(printSummary(comm, body));
+  PetscCall(VecDestroy(&U));
+  *exitCode = converged ? 0 : 3;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+}  // namespace sinew

@@ -1,0 +1,65 @@
+#include "app/summary.hpp"
+
+#include <cstdio>
+#include <sstream>
+
+namespace sinew {
+
+PetscErrorCode printHeader(MPI_Comm comm, const SummaryHeader& h) {
+  PetscFunctionBeginUser;
+  PetscCall(PetscPrintf(comm, "Sinew %s\n", h.title.empty() ? "" : ("- " + h.title).c_str()));
+  PetscCall(PetscPrintf(comm, "  scene %s, %d rank%s, %ld unknowns\n", h.scene.c_str(), h.nranks, h.nranks > 1 ? "s" : "",
+                        h.unknowns));
+  PetscCall(PetscPrintf(comm, "  analyses: %s\n", h.plan.c_str()));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode printSummary(MPI_Comm comm, const SummaryBody& b) {
+  PetscFunctionBeginUser;
+  std::ostringstream s;
+  char line[256];
+  if (!b.reports.empty()) {
+    s << "\n step  load factor  Newton its  increments  residual\n";
+    for (const auto& r : b.reports) {
+      std::snprintf(line, sizeof line, " %4d  %11.4g  %10d  %10d  %.3e\n", r.step, r.loadFactor, r.newtonIterations,
+                    r.increments, r.residualNorm);
+      s << line;
+    }
+  }
+  if (!b.nodes.empty()) {
+    s << "\n loaded and supported nodes (last step)\n"
+         " node          ux          uy          uz      rot_x      rot_y      rot_z\n";
+    for (const auto& n : b.nodes) {
+      std::snprintf(line, sizeof line, " %4d %11.4e %11.4e %11.4e %10.4g %10.4g %10.4g\n", n.node, n.v[0], n.v[1], n.v[2],
+                    n.v[3], n.v[4], n.v[5]);
+      s << line;
+    }
+    s << "\n reactions (last step)\n"
+         " node          Fx          Fy          Fz          Mx          My          Mz\n";
+    for (const auto& n : b.nodes) {
+      bool any = false;
+      for (int k = 6; k < 12; ++k) any |= n.v[k] != 0.0;
+      if (!any) continue;
+      std::snprintf(line, sizeof line, " %4d %11.4e %11.4e %11.4e %11.4e %11.4e %11.4e\n", n.node, n.v[6], n.v[7], n.v[8],
+                    n.v[9], n.v[10], n.v[11]);
+      s << line;
+    }
+  }
+  if (b.stress) {
+    std::snprintf(line, sizeof line, "\n max Von Mises stress %.4e Pa (element %d)\n", b.stressMax, b.stressElement + 1);
+    s << line;
+  }
+  s << b.analysisLines;
+  std::snprintf(line, sizeof line,
+                "\n wall time: setup %.3f s, statics %.3f s, step analyses %.3f s, output %.3f s\n"
+                " assemblies: %ld residuals, %ld tangents, %ld mass, %ld split tangents, %ld stress\n",
+                b.times.setup, b.times.statics, b.times.analyses, b.times.output, b.counters.residuals,
+                b.counters.jacobians, b.counters.masses, b.counters.splitTangents, b.counters.stressRecoveries);
+  s << line;
+  s << " results: " << b.h5 << " (ParaView: " << b.xdmf << ")\n";
+  if (!b.converged) s << "\nerror: " << b.failure << "\n";
+  PetscCall(PetscPrintf(comm, "%s", s.str().c_str()));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+}  // namespace sinew

@@ -1,0 +1,40 @@
+// The human summary on stdout (rank 0).
+#pragma once
+#include <petscsys.h>
+
+#include <string>
+#include <vector>
+
+#include "analysis/static_analysis.hpp"
+#include "analysis/step_results.hpp"
+
+namespace sinew {
+
+struct Timings {
+  double setup = 0, statics = 0, analyses = 0, output = 0;
+};
+
+struct SummaryHeader {
+  std::string title, scene;
+  int nranks = 1;
+  long unknowns = 0;
+  std::string plan;
+};
+
+struct SummaryBody {
+  std::vector<StepReport> reports;
+  std::vector<NodeSummaryRow> nodes;
+  bool stress = false;
+  double stressMax = 0;
+  int stressElement = -1;
+  std::string analysisLines;
+  AssemblyCounters counters;
+  Timings times;
+  std::string h5, xdmf, failure;
+  bool converged = true;
+};
+
+PetscErrorCode printHeader(MPI_Comm comm, const SummaryHeader& h);
+PetscErrorCode printSummary(MPI_Comm comm, const SummaryBody& b);
+
+}  // namespace sinew

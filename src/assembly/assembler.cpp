@@ -1,0 +1,486 @@
+#include "assembly/assembler.hpp"
+
+#include <array>
+#include <cmath>
+
+#include "sinew/rotation.hpp"
+
+namespace sinew {
+
+const SinewEvents& SinewEvents::get() {
+  static SinewEvents ev = [] {
+    SinewEvents e{};
+    PetscClassId cls;
+    PetscClassIdRegister("Sinew", &cls);
+    PetscLogEventRegister("SinewSetup", cls, &e.setup);
+    PetscLogEventRegister("SinewResidual", cls, &e.residual);
+    PetscLogEventRegister("SinewJacobian", cls, &e.jacobian);
+    PetscLogEventRegister("SinewMassAsm", cls, &e.mass);
+    PetscLogEventRegister("SinewSplitTan", cls, &e.splitTangent);
+    PetscLogEventRegister("SinewStress", cls, &e.stress);
+    PetscLogEventRegister("SinewEigen", cls, &e.eigen);
+    PetscLogEventRegister("SinewCompliance", cls, &e.compliance);
+    PetscLogEventRegister("SinewOutput", cls, &e.output);
+    PetscLogEventRegister("SinewDynamics", cls, &e.dynamics);
+    PetscLogEventRegister("SinewFormFind", cls, &e.formfinding);
+    return e;
+  }();
+  return ev;
+}
+
+namespace {
+constexpr int kMaxElementRows = 4 * 6 + 6;
+}
+
+Assembler::Assembler(DistributedMesh& mesh, const std::optional<Vec3>& gravity) : mesh_(mesh), gravity_(gravity) {
+  const int nl = static_cast<int>(mesh_.nodes.size());
+  state_.assign(12 * static_cast<size_t>(nl), 0.0);
+  Rref_.assign(nl, identity3());
+  T_.assign(nl, identity3());
+  hasTheta_.assign(nl, 0);
+  int inertia = 0;
+  for (const LocalElement& e : mesh_.elements) inertia |= e.kernel->hasInertia();
+  for (int i = 0; i < mesh_.numOwnedNodes; ++i) {
+    const LocalNode& n = mesh_.nodes[i];
+    inertia |= n.mass > 0;
+    for (double v : n.mominertia) inertia |= v != 0.0;
+  }
+  MPI_Allreduce(MPI_IN_PLACE, &inertia, 1, MPI_INT, MPI_LOR, mesh_.comm);
+  hasInertia_ = inertia != 0;
+  PetscCallAbort(mesh_.comm, createVector(&uWork_));
+  PetscCallAbort(mesh_.comm, VecDuplicate(uWork_, &fWork_));
+  PetscCallAbort(mesh_.comm, createFullVector(&fullWork_));
+  std::vector<PetscInt> l2g(mesh_.numLocalUnknowns());
+  for (int i = 0; i < mesh_.numLocalUnknowns(); ++i) l2g[i] = static_cast<PetscInt>(mesh_.localToGlobalUnknown(i));
+  PetscCallAbort(mesh_.comm, ISLocalToGlobalMappingCreate(mesh_.comm, 1, static_cast<PetscInt>(l2g.size()), l2g.data(),
+                                                          PETSC_COPY_VALUES, &l2g_));
+}
+
+Assembler::~Assembler() {
+  VecDestroy(&uWork_);
+  VecDestroy(&fWork_);
+  VecDestroy(&fullWork_);
+  ISLocalToGlobalMappingDestroy(&l2g_);
+}
+
+PetscErrorCode Assembler::createVector(Vec* v) const {
+  PetscFunctionBeginUser;
+  std::vector<PetscInt> ghosts(mesh_.ghostUnknowns.begin(), mesh_.ghostUnknowns.end());
+  PetscCall(VecCreateGhost(mesh_.comm, mesh_.numOwnedUnknowns, static_cast<PetscInt>(mesh_.numGlobalUnknowns),
+                           static_cast<PetscInt>(ghosts.size()), ghosts.data(), v));
+  PetscCall(VecSetFromOptions(*v));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode Assembler::createFullVector(Vec* v) const {
+  PetscFunctionBeginUser;
+  std::vector<PetscInt> ghosts(mesh_.ghostFull.begin(), mesh_.ghostFull.end());
+  PetscCall(VecCreateGhost(mesh_.comm, mesh_.numOwnedFull, static_cast<PetscInt>(mesh_.numGlobalFull),
+                           static_cast<PetscInt>(ghosts.size()), ghosts.data(), v));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode Assembler::createMatrix(Mat* A) const {
+  PetscFunctionBeginUser;
+  const PetscInt nloc = mesh_.numOwnedUnknowns, N = static_cast<PetscInt>(mesh_.numGlobalUnknowns);
+  Mat P;
+  PetscCall(MatCreate(mesh_.comm, &P));
+  PetscCall(MatSetType(P, MATPREALLOCATOR));
+  PetscCall(MatSetSizes(P, nloc, nloc, N, N));
+  PetscCall(MatSetUp(P));
+  PetscCall(MatSetLocalToGlobalMapping(P, l2g_, l2g_));
+  std::array<PetscInt, kMaxElementRows> idx;
+  std::array<PetscScalar, kMaxElementRows * kMaxElementRows> zeros{};
+  for (const LocalElement& el : mesh_.elements) {
+    int n = 0;
+    const auto kinds = el.kernel->nodeKinds();
+    for (size_t i = 0; i < kinds.size(); ++i)
+      for (int k = 0; k < dofSize(kinds[i]); ++k) idx[n++] = mesh_.nodes[el.node[i]].dof[k];
+    for (int j = 0; j < el.kernel->numConstraints(); ++j) idx[n++] = el.firstMultiplier + j;
+    PetscCall(MatSetValuesLocal(P, n, idx.data(), n, idx.data(), zeros.data(), INSERT_VALUES));
+  }
+  // node-level blocks (nodal inertia) lie inside element blocks; the diagonal of every unknown too
+  for (PetscInt i = 0; i < nloc; ++i) {
+    const PetscInt row = i;
+    PetscCall(MatSetValuesLocal(P, 1, &row, 1, &row, zeros.data(), INSERT_VALUES));
+  }
+  PetscCall(MatAssemblyBegin(P, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatAssemblyEnd(P, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatCreate(mesh_.comm, A));
+  PetscCall(MatSetSizes(*A, nloc, nloc, N, N));
+  PetscCall(MatSetType(*A, MATAIJ));
+  PetscCall(MatPreallocatorPreallocate(P, PETSC_TRUE, *A));
+  PetscCall(MatDestroy(&P));
+  PetscCall(MatSetLocalToGlobalMapping(*A, l2g_, l2g_));
+  PetscCall(MatSetOption(*A, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_TRUE));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode Assembler::loadLocal(Vec U, Vec local) {
+  PetscFunctionBeginUser;
+  PetscCall(VecCopy(U, local));
+  PetscCall(VecGhostUpdateBegin(local, INSERT_VALUES, SCATTER_FORWARD));
+  PetscCall(VecGhostUpdateEnd(local, INSERT_VALUES, SCATTER_FORWARD));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+void Assembler::computeStates(const double* u, const LoadState& ls) {
+  const double lam = ls.loadFactor;
+  for (size_t i = 0; i < mesh_.nodes.size(); ++i) {
+    const LocalNode& n = mesh_.nodes[i];
+    double* s = &state_[12 * i];
+    auto value = [&](int k) {
+      switch (n.status[k]) {
+        case DofStatus::Free: return u[n.dof[k]];
+        case DofStatus::Prescribed: return lam * n.prescribed[k] + n.prescribedInitial[k];
+        default: return 0.0;
+      }
+    };
+    hasTheta_[i] = 0;
+    if (n.kind == NodeKind::Ancf2D) {
+      s[0] = n.X0[0] + value(0);
+      s[1] = n.X0[1] + value(1);
+      s[2] = n.slope0[0] + value(2);
+      s[3] = n.slope0[1] + value(3);
+      continue;
+    }
+    for (int k = 0; k < 3; ++k) s[k] = n.X0[k] + value(k);
+    if (n.kind != NodeKind::Frame6) continue;
+    Mat3 R;
+    if (n.rotationPrescribed) {
+      R = expSO3(lam * n.rot) * expSO3(n.rotInitial);  // rot_initial first, then the ramped rot
+    } else {
+      const Vec3 theta{u[n.dof[3]], u[n.dof[4]], u[n.dof[5]]};
+      if (theta[0] != 0.0 || theta[1] != 0.0 || theta[2] != 0.0) {
+        R = expSO3(theta) * Rref_[i];
+        T_[i] = dexpSO3(theta);
+        hasTheta_[i] = 1;
+      } else {
+        R = Rref_[i];
+      }
+    }
+    for (int k = 0; k < 9; ++k) s[3 + k] = R[k];
+  }
+}
+
+void Assembler::gatherElement(const LocalElement& el, double* q, const double* /*u*/, int* idx, int* fullIdx) const {
+  const auto kinds = el.kernel->nodeKinds();
+  int qs = 0, d = 0;
+  for (size_t i = 0; i < kinds.size(); ++i) {
+    const LocalNode& n = mesh_.nodes[el.node[i]];
+    const double* s = &state_[12 * static_cast<size_t>(el.node[i])];
+    for (int k = 0; k < stateSize(kinds[i]); ++k) q[qs++] = s[k];
+    for (int k = 0; k < dofSize(kinds[i]); ++k, ++d) {
+      idx[d] = n.dof[k];
+      if (fullIdx) fullIdx[d] = n.fullDof[k];
+    }
+  }
+  for (int j = 0; j < el.kernel->numConstraints(); ++j) idx[d + j] = el.firstMultiplier + j;
+}
+
+void Assembler::rotationColumns(const LocalElement& el, int n, double* K) const {
+  const auto kinds = el.kernel->nodeKinds();
+  int c0 = 0;
+  for (size_t i = 0; i < kinds.size(); ++i) {
+    if (kinds[i] == NodeKind::Frame6 && hasTheta_[el.node[i]]) {
+      const Mat3& T = T_[el.node[i]];
+      for (int r = 0; r < n; ++r) {
+        double* row = K + static_cast<size_t>(r) * n + c0 + 3;
+        const double a = row[0], b = row[1], c = row[2];
+        for (int j = 0; j < 3; ++j) row[j] = a * T[j] + b * T[3 + j] + c * T[6 + j];
+      }
+    }
+    c0 += dofSize(kinds[i]);
+  }
+}
+
+PetscErrorCode Assembler::assembleForces(const double* u, const LoadState& ls, Target target, double* out) {
+  PetscFunctionBeginUser;
+  std::array<double, 48> q;
+  std::array<int, kMaxElementRows> idx, fidx;
+  std::vector<double> fb;
+  const double gscale = ls.gravityRamped ? ls.loadFactor : 1.0;
+  const Vec3 g = gravity_ ? gscale * *gravity_ : Vec3{};
+  double fint2 = 0, fext2 = 0;
+  KernelNeeds needs;
+  for (const LocalElement& el : mesh_.elements) {
+    gatherElement(el, q.data(), u, idx.data(), fidx.data());
+    KernelInput in{q.data(), nullptr, el.firstMultiplier >= 0 ? u + el.firstMultiplier : nullptr, ls.time};
+    el.kernel->evaluate(in, needs, out_);
+    const int nd = el.kernel->numDofs(), nc = el.kernel->numConstraints();
+    const int* map = target == Target::Residual ? idx.data() : fidx.data();
+    for (int k = 0; k < nd; ++k) {
+      fint2 += out_.f[k] * out_.f[k];  // element force scale: the round-off floor of the balance
+      if (map[k] >= 0) out[map[k]] += out_.f[k];
+    }
+    if (target == Target::Residual)
+      for (int j = 0; j < nc; ++j) out[idx[nd + j]] += out_.f[nd + j];
+    if (gravity_ && el.kernel->hasInertia()) {
+      el.kernel->bodyForce(q.data(), g, fb);
+      for (int k = 0; k < nd; ++k)
+        if (map[k] >= 0) out[map[k]] -= fb[k];
+    }
+  }
+  for (int i = 0; i < mesh_.numOwnedNodes; ++i) {
+    const LocalNode& n = mesh_.nodes[i];
+    std::array<double, 6> fe{};
+    for (int k = 0; k < 6; ++k) fe[k] = n.loadInitial[k] + ls.loadFactor * n.load[k];
+    if (n.kind == NodeKind::Ancf2D) {
+      // a torque acts on the slope: generalized force tau (-s_y, s_x) / |s|^2
+      const double* s = &state_[12 * static_cast<size_t>(i)];
+      const double tau = fe[4], s2 = s[2] * s[2] + s[3] * s[3];
+      fe = {fe[0] + n.mass * g[0], fe[1] + n.mass * g[1], -tau * s[3] / s2, tau * s[2] / s2, 0, 0};
+    } else {
+      for (int k = 0; k < 3; ++k) fe[k] += n.mass * g[k];
+    }
+    const int* map = target == Target::Residual ? n.dof.data() : n.fullDof.data();
+    for (int k = 0; k < n.ndof; ++k) {
+      fext2 += fe[k] * fe[k];
+      if (map[k] >= 0) out[map[k]] -= fe[k];
+    }
+  }
+  double norms[2] = {fint2, fext2};
+  MPI_Allreduce(MPI_IN_PLACE, norms, 2, MPI_DOUBLE, MPI_SUM, mesh_.comm);
+  fextNorm_ = std::sqrt(norms[1]);
+  fintNorm_ = std::sqrt(norms[0]);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode Assembler::updateStates(Vec U, const LoadState& ls) {
+  PetscFunctionBeginUser;
+  PetscCall(loadLocal(U, uWork_));
+  Vec ul;
+  const PetscScalar* u;
+  PetscCall(VecGhostGetLocalForm(uWork_, &ul));
+  PetscCall(VecGetArrayRead(ul, &u));
+  computeStates(u, ls);
+  PetscCall(VecRestoreArrayRead(ul, &u));
+  PetscCall(VecGhostRestoreLocalForm(uWork_, &ul));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode Assembler::residual(Vec U, const LoadState& ls, Vec F) {
+  PetscFunctionBeginUser;
+  PetscCall(PetscLogEventBegin(SinewEvents::get().residual, 0, 0, 0, 0));
+  ++counters_.residuals;
+  PetscCall(loadLocal(U, uWork_));
+  Vec ul, fl;
+  const PetscScalar* u;
+  PetscScalar* f;
+  PetscCall(VecGhostGetLocalForm(uWork_, &ul));
+  PetscCall(VecGhostGetLocalForm(fWork_, &fl));
+  PetscCall(VecGetArrayRead(ul, &u));
+  PetscCall(VecSet(fl, 0.0));
+  PetscCall(VecGetArray(fl, &f));
+  computeStates(u, ls);
+  PetscCall(assembleForces(u, ls, Target::Residual, f));
+  PetscCall(VecRestoreArray(fl, &f));
+  PetscCall(VecRestoreArrayRead(ul, &u));
+  PetscCall(VecGhostRestoreLocalForm(fWork_, &fl));
+  PetscCall(VecGhostRestoreLocalForm(uWork_, &ul));
+  PetscCall(VecGhostUpdateBegin(fWork_, ADD_VALUES, SCATTER_REVERSE));
+  PetscCall(VecGhostUpdateEnd(fWork_, ADD_VALUES, SCATTER_REVERSE));
+  PetscCall(VecCopy(fWork_, F));
+  PetscCall(PetscLogEventEnd(SinewEvents::get().residual, 0, 0, 0, 0));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode Assembler::fullResidual(Vec U, const LoadState& ls, Vec Ffull) {
+  PetscFunctionBeginUser;
+  PetscCall(loadLocal(U, uWork_));
+  Vec ul, fl;
+  const PetscScalar* u;
+  PetscScalar* f;
+  PetscCall(VecGhostGetLocalForm(uWork_, &ul));
+  PetscCall(VecGhostGetLocalForm(fullWork_, &fl));
+  PetscCall(VecGetArrayRead(ul, &u));
+  PetscCall(VecSet(fl, 0.0));
+  PetscCall(VecGetArray(fl, &f));
+  computeStates(u, ls);
+  PetscCall(assembleForces(u, ls, Target::Full, f));
+  PetscCall(VecRestoreArray(fl, &f));
+  PetscCall(VecRestoreArrayRead(ul, &u));
+  PetscCall(VecGhostRestoreLocalForm(fullWork_, &fl));
+  PetscCall(VecGhostRestoreLocalForm(uWork_, &ul));
+  PetscCall(VecGhostUpdateBegin(fullWork_, ADD_VALUES, SCATTER_REVERSE));
+  PetscCall(VecGhostUpdateEnd(fullWork_, ADD_VALUES, SCATTER_REVERSE));
+  PetscCall(VecCopy(fullWork_, Ffull));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode Assembler::jacobian(Vec U, const LoadState& ls, Mat J) {
+  PetscFunctionBeginUser;
+  PetscCall(PetscLogEventBegin(SinewEvents::get().jacobian, 0, 0, 0, 0));
+  ++counters_.jacobians;
+  PetscCall(loadLocal(U, uWork_));
+  Vec ul;
+  const PetscScalar* u;
+  PetscCall(VecGhostGetLocalForm(uWork_, &ul));
+  PetscCall(VecGetArrayRead(ul, &u));
+  computeStates(u, ls);
+  PetscCall(MatZeroEntries(J));
+  std::array<double, 48> q;
+  std::array<int, kMaxElementRows> idx;
+  KernelNeeds needs;
+  needs.tangent = true;
+  for (const LocalElement& el : mesh_.elements) {
+    gatherElement(el, q.data(), u, idx.data(), nullptr);
+    KernelInput in{q.data(), nullptr, el.firstMultiplier >= 0 ? u + el.firstMultiplier : nullptr, ls.time};
+    el.kernel->evaluate(in, needs, out_);
+    const int n = el.kernel->numDofs() + el.kernel->numConstraints();
+    rotationColumns(el, n, out_.K.data());
+    PetscCall(MatSetValuesLocal(J, n, idx.data(), n, idx.data(), out_.K.data(), ADD_VALUES));
+  }
+  // tangent of slope torques on ANCF nodes: d/ds of -tau (-s_y, s_x)/|s|^2
+  const double lam = ls.loadFactor;
+  for (int i = 0; i < mesh_.numOwnedNodes; ++i) {
+    const LocalNode& n = mesh_.nodes[i];
+    if (n.kind != NodeKind::Ancf2D) continue;
+    const double tau = n.loadInitial[4] + lam * n.load[4];
+    if (tau == 0.0) continue;
+    const double* s = &state_[12 * static_cast<size_t>(i)];
+    const double sx = s[2], sy = s[3], s2 = sx * sx + sy * sy, s4 = s2 * s2;
+    // r = -tau * (-sy, sx) / s2
+    const double K[4] = {-tau * (2 * sx * sy / s4), -tau * (-1 / s2 + 2 * sy * sy / s4),
+                         -tau * (1 / s2 - 2 * sx * sx / s4), -tau * (-2 * sx * sy / s4)};
+    const PetscInt rows[2] = {n.dof[2], n.dof[3]};
+    PetscCall(MatSetValuesLocal(J, 2, rows, 2, rows, K, ADD_VALUES));
+  }
+  PetscCall(VecRestoreArrayRead(ul, &u));
+  PetscCall(VecGhostRestoreLocalForm(uWork_, &ul));
+  PetscCall(MatAssemblyBegin(J, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatAssemblyEnd(J, MAT_FINAL_ASSEMBLY));
+  PetscCall(PetscLogEventEnd(SinewEvents::get().jacobian, 0, 0, 0, 0));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode Assembler::splitTangent(Vec U, const LoadState& ls, Mat Km, Mat Kg) {
+  PetscFunctionBeginUser;
+  PetscCall(PetscLogEventBegin(SinewEvents::get().splitTangent, 0, 0, 0, 0));
+  ++counters_.splitTangents;
+  PetscCall(loadLocal(U, uWork_));
+  Vec ul;
+  const PetscScalar* u;
+  PetscCall(VecGhostGetLocalForm(uWork_, &ul));
+  PetscCall(VecGetArrayRead(ul, &u));
+  computeStates(u, ls);
+  PetscCall(MatZeroEntries(Km));
+  PetscCall(MatZeroEntries(Kg));
+  std::array<double, 48> q;
+  std::array<int, kMaxElementRows> idx;
+  KernelNeeds needs;
+  needs.tangent = true;
+  needs.splitGeometric = true;
+  for (const LocalElement& el : mesh_.elements) {
+    gatherElement(el, q.data(), u, idx.data(), nullptr);
+    KernelInput in{q.data(), nullptr, el.firstMultiplier >= 0 ? u + el.firstMultiplier : nullptr, ls.time};
+    el.kernel->evaluate(in, needs, out_);
+    const int n = el.kernel->numDofs() + el.kernel->numConstraints();
+    rotationColumns(el, n, out_.K.data());
+    rotationColumns(el, n, out_.Kg.data());
+    PetscCall(MatSetValuesLocal(Km, n, idx.data(), n, idx.data(), out_.K.data(), ADD_VALUES));
+    PetscCall(MatSetValuesLocal(Kg, n, idx.data(), n, idx.data(), out_.Kg.data(), ADD_VALUES));
+  }
+  PetscCall(VecRestoreArrayRead(ul, &u));
+  PetscCall(VecGhostRestoreLocalForm(uWork_, &ul));
+  for (Mat A : {Km, Kg}) {
+    PetscCall(MatAssemblyBegin(A, MAT_FINAL_ASSEMBLY));
+    PetscCall(MatAssemblyEnd(A, MAT_FINAL_ASSEMBLY));
+  }
+  PetscCall(PetscLogEventEnd(SinewEvents::get().splitTangent, 0, 0, 0, 0));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode Assembler::mass(Vec U, const LoadState& ls, Mat M) {
+  PetscFunctionBeginUser;
+  PetscCall(PetscLogEventBegin(SinewEvents::get().mass, 0, 0, 0, 0));
+  ++counters_.masses;
+  PetscCall(updateStates(U, ls));
+  PetscCall(MatZeroEntries(M));
+  std::array<double, 48> q;
+  std::array<int, kMaxElementRows> idx;
+  std::vector<double> Me;
+  for (const LocalElement& el : mesh_.elements) {
+    if (!el.kernel->hasInertia()) continue;
+    gatherElement(el, q.data(), nullptr, idx.data(), nullptr);
+    el.kernel->mass(q.data(), Me);
+    const int n = el.kernel->numDofs();
+    PetscCall(MatSetValuesLocal(M, n, idx.data(), n, idx.data(), Me.data(), ADD_VALUES));
+  }
+  for (int i = 0; i < mesh_.numOwnedNodes; ++i) {
+    const LocalNode& n = mesh_.nodes[i];
+    if (n.mass > 0) {
+      const int nt = n.kind == NodeKind::Ancf2D ? 2 : 3;
+      for (int k = 0; k < nt; ++k) {
+        const PetscInt r = n.dof[k];
+        PetscCall(MatSetValuesLocal(M, 1, &r, 1, &r, &n.mass, ADD_VALUES));
+      }
+    }
+    if (n.kind == NodeKind::Frame6) {
+      const auto& I = n.mominertia;
+      const Mat3 J0{I[0], I[1], I[2], I[1], I[3], I[4], I[2], I[4], I[5]};
+      const double* s = &state_[12 * static_cast<size_t>(i)];
+      const Mat3 R{s[3], s[4], s[5], s[6], s[7], s[8], s[9], s[10], s[11]};
+      const Mat3 J = R * J0 * transpose(R);
+      const PetscInt rows[3] = {n.dof[3], n.dof[4], n.dof[5]};
+      PetscCall(MatSetValuesLocal(M, 3, rows, 3, rows, J.data(), ADD_VALUES));
+    }
+  }
+  PetscCall(MatAssemblyBegin(M, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatAssemblyEnd(M, MAT_FINAL_ASSEMBLY));
+  PetscCall(PetscLogEventEnd(SinewEvents::get().mass, 0, 0, 0, 0));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode Assembler::elementStress(Vec U, const LoadState& ls, std::vector<double>& stress) {
+  PetscFunctionBeginUser;
+  PetscCall(PetscLogEventBegin(SinewEvents::get().stress, 0, 0, 0, 0));
+  ++counters_.stressRecoveries;
+  PetscCall(loadLocal(U, uWork_));
+  Vec ul;
+  const PetscScalar* u;
+  PetscCall(VecGhostGetLocalForm(uWork_, &ul));
+  PetscCall(VecGetArrayRead(ul, &u));
+  computeStates(u, ls);
+  std::array<double, 48> q;
+  std::array<int, kMaxElementRows> idx;
+  stress.resize(mesh_.elements.size());
+  for (size_t e = 0; e < mesh_.elements.size(); ++e) {
+    const LocalElement& el = mesh_.elements[e];
+    gatherElement(el, q.data(), u, idx.data(), nullptr);
+    stress[e] = el.kernel->vonMisesMax(q.data(), el.firstMultiplier >= 0 ? u + el.firstMultiplier : nullptr);
+  }
+  PetscCall(VecRestoreArrayRead(ul, &u));
+  PetscCall(VecGhostRestoreLocalForm(uWork_, &ul));
+  PetscCall(PetscLogEventEnd(SinewEvents::get().stress, 0, 0, 0, 0));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode Assembler::absorbRotations(Vec U) {
+  PetscFunctionBeginUser;
+  if (!mesh_.anyRotations) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(loadLocal(U, uWork_));
+  Vec ul;
+  const PetscScalar* u;
+  PetscCall(VecGhostGetLocalForm(uWork_, &ul));
+  PetscCall(VecGetArrayRead(ul, &u));
+  for (size_t i = 0; i < mesh_.nodes.size(); ++i) {
+    const LocalNode& n = mesh_.nodes[i];
+    if (n.kind != NodeKind::Frame6 || n.rotationPrescribed) continue;
+    const Vec3 theta{u[n.dof[3]], u[n.dof[4]], u[n.dof[5]]};
+    Rref_[i] = expSO3(theta) * Rref_[i];
+  }
+  PetscCall(VecRestoreArrayRead(ul, &u));
+  PetscCall(VecGhostRestoreLocalForm(uWork_, &ul));
+  PetscScalar* uo;
+  PetscCall(VecGetArray(U, &uo));
+  for (int i = 0; i < mesh_.numOwnedNodes; ++i) {
+    const LocalNode& n = mesh_.nodes[i];
+    if (n.kind != NodeKind::Frame6 || n.rotationPrescribed) continue;
+    for (int k = 3; k < 6; ++k) uo[n.dof[k]] = 0.0;
+  }
+  PetscCall(VecRestoreArray(U, &uo));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+}  // namespace sinew

@@ -1,0 +1,97 @@
+#include "assembly/kernel_factory.hpp"
+
+#include <algorithm>
+#include <map>
+#include <memory>
+
+#include "elements/ancf_cable2d.hpp"
+#include "elements/beam_corotational.hpp"
+#include "elements/cable3d.hpp"
+#include "elements/membrane.hpp"
+
+namespace sinew {
+
+namespace {
+double sceneElementLength(const Model& model, int e) {
+  const auto& en = model.elements[e];
+  return norm(model.nodes[en[1]] - model.nodes[en[0]]);
+}
+}  // namespace
+
+double constraintScaleOf(const Model& model) {
+  double scale = 0.0;
+  for (size_t e = 0; e < model.elements.size(); ++e) {
+    const int set = model.elementSet[e];
+    if (set < 0 || model.eprops[set].type != ElementType::Beam) continue;
+    const ElementSet& s = model.eprops[set];
+    if (s.emod <= 0 || s.dim.empty()) continue;
+    const BeamSection sec = beamSection(s, sceneElementLength(model, static_cast<int>(e)));
+    scale = std::max(scale, sec.EA * s.nbeams / sceneElementLength(model, static_cast<int>(e)));
+  }
+  return scale > 0 ? scale : 1.0;
+}
+
+KernelFactory makeKernelFactory(const Model& model) {
+  const double scale = constraintScaleOf(model);
+  // ANCF parameters (and their compiled user functions) once per property set
+  auto ancf = std::make_shared<std::map<int, AncfCable2DParameters>>();
+  for (size_t set = 0; set < model.eprops.size(); ++set) {
+    if (model.eprops[set].type != ElementType::AncfCable2D) continue;
+    try {
+      (*ancf)[static_cast<int>(set)] = ancfCable2DParameters(model.eprops[set]);
+    } catch (const std::invalid_argument& ex) {
+      throw SceneError("eprops[" + std::to_string(set) + "]", ex.what());
+    }
+  }
+  return [scale, ancf](const Model& m, const FeMesh& fe, int e) -> std::unique_ptr<ElementKernel> {
+    const FeElement& el = fe.elements[e];
+    const int set = el.set;
+    const Vec3& Xp = fe.X[el.nodes[0]];
+    const Vec3& Xq = fe.X[el.nodes[1]];
+    const ElementType type = set < 0 ? ElementType::Beam : m.eprops[set].type;
+    switch (type) {
+      case ElementType::Beam: {
+        std::array<BeamMode, 6> modes;
+        modes.fill(BeamMode::Rigid);
+        BeamSection sec;
+        std::optional<Vec3> orien;
+        if (set >= 0) {
+          const ElementSet& s = m.eprops[set];
+          for (int i = 0; i < 6; ++i)
+            if (s.flex[i]) modes[i] = BeamMode::Flexible;
+          const bool needsSection = s.dens > 0 || std::any_of(s.flex.begin(), s.flex.end(), [](bool b) { return b; });
+          if (needsSection) sec = beamSection(s, sceneElementLength(m, el.sceneElement));
+          orien = s.orien;
+        }
+        if (auto it = m.opt.rls.find(el.sceneElement); it != m.opt.rls.end())
+          for (int mode : it->second) modes[mode - 1] = BeamMode::Released;
+        const bool inertia = set >= 0 && m.eprops[set].dens > 0;
+        return std::make_unique<BeamCorotational>(Xp, Xq, orien, sec, modes, inertia, scale);
+      }
+      case ElementType::Cable: {
+        const ElementSet& s = m.eprops[set];
+        const double N0 = s.prestress ? *s.prestress : (s.prestress_stress ? *s.prestress_stress * s.area : 0.0);
+        return std::make_unique<Cable3D>(Xp, Xq, s.area, s.emod, s.dens, N0);
+      }
+      case ElementType::AncfCable2D: {
+        const auto& sp = fe.slope[el.nodes[0]];
+        const auto& sq = fe.slope[el.nodes[1]];
+        const std::array<double, 8> qRef{Xp[0], Xp[1], sp[0], sp[1], Xq[0], Xq[1], sq[0], sq[1]};
+        return std::make_unique<AncfCable2D>(qRef, norm(Xq - Xp), ancf->at(set));
+      }
+      case ElementType::Membrane: {
+        const ElementSet& s = m.eprops[set];
+        std::array<Vec3, 4> X;
+        for (int i = 0; i < el.numNodes; ++i) X[i] = fe.X[el.nodes[i]];
+        MembraneProps props{s.thickness, s.emod, s.nu, s.dens, s.membrane_prestress};
+        PrestressFrame frame;
+        if (s.prestress_radial_axis) frame = PrestressFrame::radial(*s.prestress_radial_axis);
+        else if (s.prestress_dir) frame = PrestressFrame::direction(*s.prestress_dir);
+        return std::make_unique<Membrane>(std::span<const Vec3>(X.data(), el.numNodes), props, frame);
+      }
+    }
+    throw std::logic_error("unknown element type");
+  };
+}
+
+}  // namespace sinew

@@ -1,0 +1,114 @@
+// Exudyn's ObjectANCFCable2D as a pure local kernel: a planar Bernoulli-Euler cable with cubic
+// Hermite (ANCF) interpolation, axial strain eps = |r'| - 1 and the material measure of curvature
+// K = (r' x r'')_z / |r'|^2 (Gerstmayr & Irschik 2008; Exudyn theDoc, ObjectANCFCable2D).
+//
+// Coordinates per node: x, y, slope_x, slope_y (absolute, reference + displacement).
+// Element vector q = [r0, r0', r1, r1'] (8), r(x) = S(x) q with
+//   S1 = 1 - 3 xi^2 + 2 xi^3, S2 = x - 2 x^2/L + x^3/L^2, S3 = 3 xi^2 - 2 xi^3, S4 = -x^2/L + x^3/L^2.
+// Virtual work: dW = int_0^L (N d eps + M d K) dx with
+//   N = EA (eps - eps_ref) + d_eps eps_t,   M = EI (K - K_ref) + d_K K_t,
+//   eps_ref = physicsReferenceAxialStrain + f_ref (|r'_ref| - 1),
+//   K_ref   = physicsReferenceCurvature   + f_ref K(reference configuration),
+// f_ref = strainIsRelativeToReference; user functions replace N and M and receive Exudyn's arguments.
+// Integration (useReducedOrderIntegration): 0 -> axial Gauss 5 points, bending Gauss 3 points;
+// 1 -> Gauss 4 / Gauss 2; 2 -> Lobatto 3 (0, L/2, L) / Gauss 2.
+#pragma once
+#include <array>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "elements/expression.hpp"
+#include "sinew/element_kernel.hpp"
+#include "sinew/model.hpp"
+
+namespace sinew {
+
+struct AncfCable2DParameters {
+  double physicsMassPerLength = 0.0;         ///< rhoA [kg/m]
+  double physicsBendingStiffness = 0.0;      ///< EI [N m^2]
+  double physicsAxialStiffness = 0.0;        ///< EA [N]
+  double physicsBendingDamping = 0.0;        ///< d_K [N m^2 s]
+  double physicsAxialDamping = 0.0;          ///< d_eps [N s]
+  double physicsReferenceAxialStrain = 0.0;  ///< eps_0
+  double physicsReferenceCurvature = 0.0;    ///< K_0 [1/m]
+  double strainIsRelativeToReference = 0.0;  ///< f_ref in [0, 1]
+  int useReducedOrderIntegration = 0;        ///< 0, 1 or 2
+  /// Optional compiled force laws; when set they replace N (resp. M), damping included.
+  std::shared_ptr<const Expression> axialForceUserFunction;
+  std::shared_ptr<const Expression> bendingMomentUserFunction;
+};
+
+/// Parameters of a scene property set (compiles its user-function expressions; throws
+/// std::invalid_argument with the expression, column and caret on a syntax error).
+AncfCable2DParameters ancfCable2DParameters(const ElementSet& set);
+
+class AncfCable2D : public ElementKernel {
+ public:
+  /// qRef: both nodes' reference coordinates [x0, y0, sx0, sy0, x1, y1, sx1, sy1]; L: reference length.
+  AncfCable2D(const std::array<double, 8>& qRef, double L, const AncfCable2DParameters& p);
+
+  const char* name() const override { return "ancf_cable2d"; }
+  std::span<const NodeKind> nodeKinds() const override;
+  bool hasInertia() const override { return p_.physicsMassPerLength > 0.0; }
+  bool hasDamping() const override { return hasDamping_; }
+
+  /// f = Q_e(q, qdot, t) (elastic + viscous generalized forces, Exudyn's ODE2 LHS);
+  /// K = df/dq; D = df/dqdot. With splitGeometric, K holds the terms with derivatives of the
+  /// force laws (N_eps deps x deps + ...) and Kg the stress terms N d2eps/dq2 + M d2K/dq2.
+  void evaluate(const KernelInput& in, const KernelNeeds& needs, KernelOutput& out) const override;
+  /// Constant consistent mass rhoA int S^T S dx (8x8).
+  void mass(const double* q, std::vector<double>& M) const override;
+  /// Consistent load of a mass-proportional body force: rhoA int S^T a dx (Exudyn LoadMassProportional).
+  void bodyForce(const double* q, const Vec3& a, std::vector<double>& f) const override;
+  /// Axial force N (static part, no damping, user function at t = 0) at x = 0, L/2, L.
+  void elementForce(const double* q, std::vector<double>& out) const override;
+
+  /// Exudyn output variable at axial position x in [0, L] on the axis (local y = 0):
+  ///   Position, Displacement, Velocity, VelocityLocal, Acceleration, Director1 -> 3 values (z = 0);
+  ///   AngularVelocity, AngularAcceleration -> 3 values [0, 0, w];
+  ///   Rotation, StrainLocal, CurvatureLocal, ForceLocal, TorqueLocal -> 1 value.
+  /// qdot / qddot may be nullptr (zero). ForceLocal / TorqueLocal include damping and user functions.
+  /// Throws std::invalid_argument for an unknown name (message lists the valid ones).
+  std::vector<double> output(const std::string& variable, double x, const double* q, const double* qdot,
+                             const double* qddot, double t) const;
+  static const std::vector<std::string>& outputVariables();
+
+  // Strain measures at x, exposed for tests and sensors.
+  double axialStrain(const double* q, double x) const;
+  double curvature(const double* q, double x) const;
+  /// eps_ref(x) and K_ref(x) as used by the force laws (reference values blended by f_ref).
+  double axialStrainRef(double x) const;
+  double curvatureRef(double x) const;
+
+  double length() const { return L_; }
+  const AncfCable2DParameters& parameters() const { return p_; }
+  const std::array<double, 8>& referenceCoordinates() const { return qRef_; }
+
+  static std::array<double, 4> shape(double x, double L);
+  static std::array<double, 4> shape_x(double x, double L);
+  static std::array<double, 4> shape_xx(double x, double L);
+
+ private:
+  static constexpr int kMaxIp = 5;
+  struct IntegrationPoint {
+    double x = 0, w = 0;              ///< axial position and weight (includes L/2)
+    std::array<double, 4> Sx{}, Sxx{};
+    double strainRef = 0, curvatureRef = 0;  ///< eps_ref, K_ref at this point
+  };
+  struct Law;  // force law evaluation helper
+
+  double axialForceAt(const double* q, const double* qdot, double x, double t) const;
+  double bendingMomentAt(const double* q, const double* qdot, double x, double t) const;
+
+  std::array<double, 8> qRef_;
+  double L_;
+  AncfCable2DParameters p_;
+  bool hasDamping_ = false;
+  bool axialNeedsCurvature_ = false, bendingNeedsStrain_ = false;
+  int nAxial_ = 0, nBending_ = 0;
+  std::array<IntegrationPoint, kMaxIp> axialIp_{}, bendingIp_{};
+  std::array<double, 64> M_{};
+};
+
+}  // namespace sinew

@@ -1,0 +1,396 @@
+// Corotational SPACAR beam kernel; see beam_corotational.hpp for the deformation modes.
+// Tangent: exact derivative of f along translations and spatial spins R -> exp(skew(dw)) R
+// (not symmetric away from equilibrium). Each e_i is c * (a . b) with a, b in
+// {lhat, ny^p, nz^p, ny^q, nz^q}; for n = R n0: J_n = -skew(n) (spin columns), H_n[c] = skew(c) skew(n);
+// for lhat: J = +-P/L (P = I - lhat lhat^T), H[c] = -(1/L^2)((lhat.c) P + lhat (Pc)^T + (Pc) lhat^T).
+// d(a.b) = J_a^T b + J_b^T a;  Hess(a.b) = J_a^T J_b + J_b^T J_a + H_a[b] + H_b[a].
+#include "elements/beam_corotational.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace sinew {
+namespace {
+
+constexpr NodeKind kNodeKinds[2] = {NodeKind::Frame6, NodeKind::Frame6};
+constexpr int kDofs = 12;
+// Block indices (3 dofs each) in [x_p, w_p, x_q, w_q].
+constexpr int XP = 0, WP = 1, XQ = 2, WQ = 3;
+
+inline Vec3 load3(const double* p) { return {p[0], p[1], p[2]}; }
+inline Mat3 load9(const double* p) { return {p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8]}; }
+// skew(a) skew(b) = b a^T - (a.b) I
+inline Mat3 skewskew(const Vec3& a, const Vec3& b) {
+  Mat3 m = outer(b, a);
+  const double ab = dot(a, b);
+  m[0] -= ab; m[4] -= ab; m[8] -= ab;
+  return m;
+}
+inline void addBlock(double* K, int ld, int bi, int bj, const Mat3& M, double s) {
+  for (int i = 0; i < 3; ++i) {
+    double* row = K + (3 * bi + i) * ld + 3 * bj;
+    for (int j = 0; j < 3; ++j) row[j] += s * M[3 * i + j];
+  }
+}
+inline void setVec(double* g, int b, const Vec3& v) { g[3 * b] = v[0]; g[3 * b + 1] = v[1]; g[3 * b + 2] = v[2]; }
+// K(0:12, 0:12) += s * a b^T
+inline void addOuter(double* K, int ld, const double* a, const double* b, double s) {
+  for (int i = 0; i < kDofs; ++i) {
+    const double ai = s * a[i];
+    if (ai == 0.0) continue;
+    double* row = K + i * ld;
+    for (int j = 0; j < kDofs; ++j) row[j] += ai * b[j];
+  }
+}
+
+}  // namespace
+
+struct BeamCorotational::Kinematics {
+  Vec3 lhat{};
+  double L = 0;
+  Mat3 P{};
+  Vec3 nyp{}, nzp{}, nyq{}, nzq{};
+  double e[6]{};
+  double g[6][kDofs]{};   // grad e_i
+  double Qe[6]{};         // d(arc - chord quadratic)/d e_i (i = 2..5)
+  double eps[6]{};
+  double ge[6][kDofs]{};  // grad eps_i
+};
+
+std::span<const NodeKind> BeamCorotational::nodeKinds() const { return {kNodeKinds, 2}; }
+
+BeamCorotational::BeamCorotational(const Vec3& Xp, const Vec3& Xq, const std::optional<Vec3>& orien,
+                                   const BeamSection& s, std::array<BeamMode, 6> modes, bool hasInertia,
+                                   double constraintScale)
+    : sec_(s), modes_(modes), hasInertia_(hasInertia), scale_(constraintScale) {
+  const Vec3 d = Xq - Xp;
+  l0_ = norm(d);
+  if (!(l0_ > 0.0)) throw SceneError("elements", "beam element with coincident nodes (zero length)");
+  ex0_ = (1.0 / l0_) * d;
+  Vec3 o;
+  if (orien) {
+    o = *orien;
+    const double on = norm(o);
+    if (!(on > 0.0)) throw SceneError("eprops.orien", "orien must be a nonzero vector");
+    o = (1.0 / on) * o;
+    if (norm(cross(o, ex0_)) < 1e-6)
+      throw SceneError("eprops.orien", "orien is parallel to the beam axis; choose a direction across the beam");
+  } else {
+    o = std::abs(ex0_[2]) > 1.0 - 1e-6 ? Vec3{0, 1, 0} : Vec3{0, 0, 1};
+  }
+  const Vec3 yp = o - dot(o, ex0_) * ex0_;  // orien projected perpendicular to the chord
+  ey0_ = (1.0 / norm(yp)) * yp;
+  ez0_ = cross(ex0_, ey0_);
+
+  // Flexible-mode stiffness (energy U = 1/2 eps^T S eps, eps_i of length dimension).
+  const double l = l0_, l3 = l * l * l;
+  std::array<double, 36> Sf{};
+  Sf[0] = s.EA / l;       // axial
+  Sf[7] = s.GIt / l3;     // torsion: U = 1/2 GIt/l (e2/l)^2
+  // Timoshenko pair in end slopes s_a, s_b: EI/(l(1+Phi)) [[4+Phi, 2-Phi],[2-Phi, 4+Phi]];
+  // with s_a = e3/l, s_b = -e4/l (resp. s_a = -e5/l, s_b = e6/l) the off-diagonal changes sign.
+  auto pair = [&](int i, double EI, double kGA) {
+    const double Phi = kGA > 0.0 ? 12.0 * EI / (kGA * l * l) : 0.0;
+    const double k = EI / (l3 * (1.0 + Phi));
+    Sf[6 * i + i] = Sf[6 * (i + 1) + i + 1] = k * (4.0 + Phi);
+    Sf[6 * i + i + 1] = Sf[6 * (i + 1) + i] = -k * (2.0 - Phi);
+  };
+  pair(2, s.EIy, s.kGAz);  // bending about y, shear along z
+  pair(4, s.EIz, s.kGAy);  // bending about z, shear along y
+  // Released modes: condense out of their pair (sigma_r = 0); rigid and released rows/columns vanish.
+  S_ = Sf;
+  const double Qm[4] = {4.0, 1.0, 1.0, 4.0};  // Hessian of 2 a^2 + a b + 2 b^2
+  for (int pr = 0; pr < 2; ++pr) {
+    const int i = 2 + 2 * pr, j = i + 1;
+    double C[4] = {1, 0, 0, 1};  // effective slope map e_hat = C e used in the arc-minus-chord term
+    for (int side = 0; side < 2; ++side) {
+      const int r = side == 0 ? i : j, f = side == 0 ? j : i;
+      if (modes[r] != BeamMode::Released) continue;
+      const int ri = r - i, fi = f - i;
+      C[2 * ri + ri] = 0.0;
+      if (modes[f] == BeamMode::Flexible && Sf[6 * r + r] > 0.0) {
+        S_[6 * f + f] = Sf[6 * f + f] - Sf[6 * f + r] * Sf[6 * r + f] / Sf[6 * r + r];
+        C[2 * ri + fi] = -Sf[6 * r + f] / Sf[6 * r + r];  // elastic value of the released end slope
+      }
+    }
+    // Qh = C^T Qm C
+    for (int a = 0; a < 2; ++a)
+      for (int b = 0; b < 2; ++b) {
+        double v = 0.0;
+        for (int c = 0; c < 2; ++c)
+          for (int e = 0; e < 2; ++e) v += C[2 * c + a] * Qm[2 * c + e] * C[2 * e + b];
+        Qh_[4 * pr + 2 * a + b] = v;
+      }
+  }
+  for (int i = 0; i < 6; ++i)
+    if (modes[i] != BeamMode::Flexible)
+      for (int j = 0; j < 6; ++j) S_[6 * i + j] = S_[6 * j + i] = 0.0;
+  for (int i = 0; i < 6; ++i)
+    if (modes[i] == BeamMode::Rigid) rigidIndex_[nRigid_++] = i;
+  if (hasInertia_ && !(sec_.rhoA > 0.0)) hasInertia_ = false;
+}
+
+void BeamCorotational::kinematics(const double* q, Kinematics& k) const {
+  const Vec3 xp = load3(q), xq = load3(q + 12);
+  const Mat3 Rp = load9(q + 3), Rq = load9(q + 15);
+  const Vec3 l = xq - xp;
+  k.L = norm(l);
+  k.lhat = (1.0 / k.L) * l;
+  k.P = identity3() - outer(k.lhat, k.lhat);
+  k.nyp = Rp * ey0_; k.nzp = Rp * ez0_;
+  k.nyq = Rq * ey0_; k.nzq = Rq * ez0_;
+  const double l0 = l0_;
+  for (auto& row : k.g) std::fill(row, row + kDofs, 0.0);
+  // e1 = |l| - l0
+  k.e[0] = k.L - l0;
+  setVec(k.g[0], XP, -k.lhat);
+  setVec(k.g[0], XQ, k.lhat);
+  // e2 = l0 (nz^p . ny^q - ny^p . nz^q) / 2; d(a.b)/dw_a = a x b
+  k.e[1] = 0.5 * l0 * (dot(k.nzp, k.nyq) - dot(k.nyp, k.nzq));
+  setVec(k.g[1], WP, 0.5 * l0 * (cross(k.nzp, k.nyq) - cross(k.nyp, k.nzq)));
+  setVec(k.g[1], WQ, 0.5 * l0 * (cross(k.nyq, k.nzp) - cross(k.nzq, k.nyp)));
+  // e3..e6 = c n . lhat: grad_w = c n x lhat, grad_xq = c P n / L = -grad_xp
+  const double c[4] = {-l0, l0, l0, -l0};
+  const Vec3* n[4] = {&k.nzp, &k.nzq, &k.nyp, &k.nyq};
+  const int wb[4] = {WP, WQ, WP, WQ};
+  for (int m = 0; m < 4; ++m) {
+    const int i = 2 + m;
+    k.e[i] = c[m] * dot(*n[m], k.lhat);
+    setVec(k.g[i], wb[m], c[m] * cross(*n[m], k.lhat));
+    const Vec3 Pn = (c[m] / k.L) * (k.P * *n[m]);
+    setVec(k.g[i], XQ, Pn);
+    setVec(k.g[i], XP, -Pn);
+  }
+  // eps1 = e1 + (arc - chord), arc - chord = 1/2 e^T Qh e / (30 l0)  [2 e3^2 + e3 e4 + 2 e4^2 + ...]
+  const double inv30 = 1.0 / (30.0 * l0);
+  double quad = 0.0;
+  for (int pr = 0; pr < 2; ++pr) {
+    const int i = 2 + 2 * pr;
+    const double* Q = &Qh_[4 * pr];
+    k.Qe[i] = Q[0] * k.e[i] + Q[1] * k.e[i + 1];
+    k.Qe[i + 1] = Q[2] * k.e[i] + Q[3] * k.e[i + 1];
+    quad += 0.5 * (k.e[i] * k.Qe[i] + k.e[i + 1] * k.Qe[i + 1]);
+  }
+  for (int i = 0; i < 6; ++i) {
+    k.eps[i] = k.e[i];
+    std::copy(k.g[i], k.g[i] + kDofs, k.ge[i]);
+  }
+  k.eps[0] += quad * inv30;
+  for (int i = 2; i < 6; ++i) {
+    const double s = k.Qe[i] * inv30;
+    for (int a = 0; a < kDofs; ++a) k.ge[0][a] += s * k.g[i][a];
+  }
+}
+
+void BeamCorotational::stresses(const Kinematics& k, const double* lambda, double* sig) const {
+  for (int i = 0; i < 6; ++i) {
+    double s = 0.0;
+    for (int j = 0; j < 6; ++j) s += S_[6 * i + j] * k.eps[j];
+    sig[i] = s;  // sigma = S eps (flexible)
+  }
+  for (int r = 0; r < nRigid_; ++r) sig[rigidIndex_[r]] = lambda ? scale_ * lambda[r] : 0.0;
+}
+
+void BeamCorotational::evaluate(const KernelInput& in, const KernelNeeds& needs, KernelOutput& out) const {
+  Kinematics k;
+  kinematics(in.q, k);
+  double sig[6];  // total generalized stresses (flexible S eps, rigid scale * lambda)
+  stresses(k, in.lambda, sig);
+  const int n = kDofs + nRigid_;
+  out.f.assign(n, 0.0);
+  double* f = out.f.data();
+  for (int i = 0; i < 6; ++i)  // f = sum sigma_i grad eps_i
+    if (sig[i] != 0.0)
+      for (int a = 0; a < kDofs; ++a) f[a] += sig[i] * k.ge[i][a];
+  for (int r = 0; r < nRigid_; ++r) f[kDofs + r] = scale_ * k.eps[rigidIndex_[r]];
+  if (!needs.tangent) return;
+
+  out.K.assign(static_cast<size_t>(n) * n, 0.0);
+  double* K = out.K.data();
+  double* G = K;
+  if (needs.splitGeometric) {
+    out.Kg.assign(static_cast<size_t>(n) * n, 0.0);
+    G = out.Kg.data();
+  }
+  // Material part: sum_ij S_ij grad eps_i grad eps_j^T
+  for (int i = 0; i < 6; ++i) {
+    if (modes_[i] != BeamMode::Flexible) continue;
+    double SG[kDofs] = {};
+    bool any = false;
+    for (int j = 0; j < 6; ++j) {
+      const double s = S_[6 * i + j];
+      if (s == 0.0) continue;
+      any = true;
+      for (int a = 0; a < kDofs; ++a) SG[a] += s * k.ge[j][a];
+    }
+    if (any) addOuter(K, n, k.ge[i], SG, 1.0);
+  }
+  // Constraint gradient blocks: rows/columns scale * grad eps_i
+  for (int r = 0; r < nRigid_; ++r) {
+    const double* gi = k.ge[rigidIndex_[r]];
+    for (int a = 0; a < kDofs; ++a) {
+      K[a * n + kDofs + r] = scale_ * gi[a];
+      K[(kDofs + r) * n + a] = scale_ * gi[a];
+    }
+  }
+  // Stress part: sum_i we_i Hess e_i + sigma_1/(30 l0) sum Qh_ij grad e_i grad e_j^T,
+  // we_1 = sigma_1, we_2 = sigma_2, we_i = sigma_i + sigma_1 Qe_i / (30 l0) (chain rule through eps1).
+  const double l0 = l0_, inv30 = 1.0 / (30.0 * l0);
+  double we[6];
+  we[0] = sig[0];
+  we[1] = sig[1];
+  for (int i = 2; i < 6; ++i) we[i] = sig[i] + sig[0] * k.Qe[i] * inv30;
+  if (sig[0] != 0.0) {
+    for (int pr = 0; pr < 2; ++pr) {
+      const int i = 2 + 2 * pr;
+      const double* Q = &Qh_[4 * pr];
+      double a[kDofs], b[kDofs];
+      for (int t = 0; t < kDofs; ++t) {
+        a[t] = Q[0] * k.g[i][t] + Q[1] * k.g[i + 1][t];
+        b[t] = Q[2] * k.g[i][t] + Q[3] * k.g[i + 1][t];
+      }
+      addOuter(G, n, k.g[i], a, sig[0] * inv30);
+      addOuter(G, n, k.g[i + 1], b, sig[0] * inv30);
+    }
+  }
+  // e3..e6 combined: sum = m_p . lhat + m_q . lhat with m_p = l0 (-we3 nz^p + we5 ny^p), m_q = l0 (we4 nz^q - we6 ny^q)
+  const Vec3 mp = l0 * (we[4] * k.nyp - we[2] * k.nzp);
+  const Vec3 mq = l0 * (we[3] * k.nzq - we[5] * k.nyq);
+  const double iL = 1.0 / k.L;
+  {
+    const Vec3 mm = mp + mq;
+    const Vec3 Pc = k.P * mm;
+    // H_lhat[mm] + we1 P / L (e1 = |l| - l0)
+    Mat3 Hxx = (-iL * iL) * (dot(k.lhat, mm) * k.P + outer(k.lhat, Pc) + outer(Pc, k.lhat)) + (we[0] * iL) * k.P;
+    addBlock(G, n, XP, XP, Hxx, 1.0);
+    addBlock(G, n, XQ, XQ, Hxx, 1.0);
+    addBlock(G, n, XP, XQ, Hxx, -1.0);
+    addBlock(G, n, XQ, XP, Hxx, -1.0);
+  }
+  auto frameLhat = [&](const Vec3& m, int w) {
+    const Mat3 A = iL * (skew(m) * k.P);  // J_m^T J_lhat (x_q columns)
+    const Mat3 At = transpose(A);
+    addBlock(G, n, w, XQ, A, 1.0);
+    addBlock(G, n, w, XP, A, -1.0);
+    addBlock(G, n, XQ, w, At, 1.0);
+    addBlock(G, n, XP, w, At, -1.0);
+    addBlock(G, n, w, w, skewskew(k.lhat, m), 1.0);  // H_m[lhat] = skew(lhat) skew(m)
+  };
+  frameLhat(mp, WP);
+  frameLhat(mq, WQ);
+  // e2 = c2 (nz^p . ny^q - ny^p . nz^q)
+  if (we[1] != 0.0) {
+    const double c2 = 0.5 * l0 * we[1];
+    const Mat3 Bpq = skewskew(k.nzp, k.nyq) - skewskew(k.nyp, k.nzq);
+    addBlock(G, n, WP, WQ, Bpq, -c2);             // J_a^T J_b = -skew(a) skew(b)
+    addBlock(G, n, WQ, WP, transpose(Bpq), -c2);
+    addBlock(G, n, WP, WP, transpose(Bpq), c2);   // H_a[b] = skew(b) skew(a)
+    addBlock(G, n, WQ, WQ, Bpq, c2);
+  }
+}
+
+void BeamCorotational::mass(const double* q, std::vector<double>& M) const {
+  M.assign(kDofs * kDofs, 0.0);
+  const Vec3 xp = load3(q), xq = load3(q + 12);
+  const Mat3 Rp = load9(q + 3), Rq = load9(q + 15);
+  // Current element frame: chord, averaged rotated y axis projected perpendicular to it.
+  Vec3 ex = xq - xp;
+  ex = (1.0 / norm(ex)) * ex;
+  Vec3 ey = Rp * ey0_ + Rq * ey0_;
+  ey = ey - dot(ey, ex) * ex;
+  if (norm(ey) < 1e-8) {  // ends twisted by ~pi relative to each other: use node p's axis
+    ey = Rp * ez0_;
+    ey = ey - dot(ey, ex) * ex;
+  }
+  ey = (1.0 / norm(ey)) * ey;
+  const Mat3 Lam = fromColumns(ex, ey, cross(ex, ey));
+  const double l = l0_, m = sec_.rhoA * l;
+  double Ml[kDofs * kDofs] = {};
+  auto set = [&](int i, int j, double v) { Ml[i * kDofs + j] = v; Ml[j * kDofs + i] = v; };
+  // axial, linear shape functions: rhoA l [2 1; 1 2] / 6
+  set(0, 0, m / 3); set(6, 6, m / 3); set(0, 6, m / 6);
+  // torsion: rho Ip l [2 1; 1 2] / 6
+  const double mt = sec_.rhoIp * l;
+  set(3, 3, mt / 3); set(9, 9, mt / 3); set(3, 9, mt / 6);
+  // cubic Hermite (Euler-Bernoulli consistent mass) rhoA l / 420 [156 22l 54 -13l; ...]
+  const double h = m / 420.0;
+  auto plane = [&](int v1, int t1, int v2, int t2, double sg) {  // sg = -1 when theta = -w'
+    set(v1, v1, 156 * h); set(v2, v2, 156 * h); set(v1, v2, 54 * h);
+    set(t1, t1, 4 * l * l * h); set(t2, t2, 4 * l * l * h); set(t1, t2, -3 * l * l * h);
+    set(v1, t1, sg * 22 * l * h); set(v1, t2, -sg * 13 * l * h);
+    set(v2, t1, sg * 13 * l * h); set(v2, t2, -sg * 22 * l * h);
+  };
+  plane(1, 5, 7, 11, 1.0);   // v, theta_z = v'
+  plane(2, 4, 8, 10, -1.0);  // w, theta_y = -w'
+  // M = T Ml T^T, T = blockdiag(Lam)
+  for (int bi = 0; bi < 4; ++bi)
+    for (int bj = 0; bj < 4; ++bj) {
+      Mat3 B;
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) B[3 * i + j] = Ml[(3 * bi + i) * kDofs + 3 * bj + j];
+      const Mat3 Bg = Lam * B * transpose(Lam);
+      addBlock(M.data(), kDofs, bi, bj, Bg, 1.0);
+    }
+}
+
+void BeamCorotational::bodyForce(const double* /*q*/, const Vec3& a, std::vector<double>& f) const {
+  f.assign(kDofs, 0.0);
+  const double h = 0.5 * sec_.rhoA * l0_;
+  for (int i = 0; i < 3; ++i) {
+    f[i] = h * a[i];
+    f[6 + i] = h * a[i];
+  }
+}
+
+std::array<double, 6> BeamCorotational::generalizedStrains(const double* q) const {
+  Kinematics k;
+  kinematics(q, k);
+  std::array<double, 6> e;
+  std::copy(k.eps, k.eps + 6, e.begin());
+  return e;
+}
+
+std::array<double, 6> BeamCorotational::generalizedStresses(const double* q, const double* lambda) const {
+  Kinematics k;
+  kinematics(q, k);
+  std::array<double, 6> s;
+  stresses(k, lambda, s.data());
+  return s;
+}
+
+double BeamCorotational::vonMisesMax(const double* q, const double* lambda) const {
+  if (!(sec_.A > 0.0)) return 0.0;
+  Kinematics k;
+  kinematics(q, k);
+  double sig[6];
+  stresses(k, lambda, sig);
+  const double l = l0_, inv30 = 1.0 / (30.0 * l);
+  // Section forces from the energy: N = dU/de1, T = dU/dphi = l0 sigma_2,
+  // end moments |M| = l0 |dU/de_i| with dU/de_i = sigma_i + sigma_1 Qe_i / (30 l0).
+  const double N = sig[0];
+  const double T = l * sig[1];
+  double M[6];
+  for (int i = 2; i < 6; ++i) M[i] = l * std::abs(sig[i] + sig[0] * k.Qe[i] * inv30);
+  const double tau = std::abs(T) * sec_.torsionStressFactor;
+  const double nA = std::abs(N) / sec_.A;
+  double vm = 0.0;
+  for (int end = 0; end < 2; ++end) {
+    const double My = M[2 + end], Mz = M[4 + end];
+    if (sec_.shape == CrossSection::Circ) {
+      // worst point on the perimeter; torsion shear is uniform along it
+      const double s = nA + std::hypot(My, Mz) * sec_.zmax / sec_.Iy;
+      vm = std::max(vm, std::sqrt(s * s + 3.0 * tau * tau));
+    } else {
+      const double sy = My * sec_.zmax / sec_.Iy, sz = Mz * sec_.ymax / sec_.Iz;
+      const double corner = nA + sy + sz;  // corners: no torsion shear
+      vm = std::max(vm, corner);
+      // mid-sides: tau_max used on all four (exact on the long sides, an upper bound on the short ones)
+      const double s1 = nA + sy, s2 = nA + sz;
+      vm = std::max(vm, std::sqrt(s1 * s1 + 3.0 * tau * tau));
+      vm = std::max(vm, std::sqrt(s2 * s2 + 3.0 * tau * tau));
+    }
+  }
+  return vm;
+}
+
+}  // namespace sinew

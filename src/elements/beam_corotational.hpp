@@ -1,0 +1,75 @@
+// Geometrically nonlinear 3D beam (SPACAR Light style; Jonker 1989): six deformation modes of a
+// two-node Frame6 element, Timoshenko stiffness on the flexible ones, exact constraints on the
+// rigid ones (one Lagrange multiplier each), released ones free.
+//
+// Sign conventions (local axes ex0 = chord, ey0 = orien, ez0 = ex0 x ey0; theta_y, theta_z are
+// rotations about the local y / z axes, slopes w' = -theta_y and v' = theta_z):
+//   e1 = |l| - l0                                   elongation
+//   e2 = l0 (nz^p . ny^q - ny^p . nz^q) / 2         torsion, = l0 (phi_q - phi_p) for small angles
+//   e3 = -l0 nz^p . lhat ~ -l0 theta_y^p,  e4 = l0 nz^q . lhat ~ l0 theta_y^q
+//   e5 =  l0 ny^p . lhat ~ -l0 theta_z^p,  e6 = -l0 ny^q . lhat ~ l0 theta_z^q
+// so pure bending (end rotations -+theta/2) gives e3 = e4 (resp. e5 = e6) = l0 sin(theta/2).
+// eps1 = e1 + (2 e3^2 + e3 e4 + 2 e4^2 + 2 e5^2 + e5 e6 + 2 e6^2) / (30 l0), eps_i = e_i otherwise.
+#pragma once
+#include <array>
+#include <optional>
+#include <span>
+#include <vector>
+
+#include "elements/beam_section.hpp"
+#include "sinew/element_kernel.hpp"
+
+namespace sinew {
+
+enum class BeamMode { Flexible, Rigid, Released };
+
+class BeamCorotational : public ElementKernel {
+ public:
+  /// Xp, Xq: initial node positions; orien: local y direction (default global z, or global y when the
+  /// chord is parallel to z); modes: per deformation mode 1..6; constraintScale multiplies every
+  /// constraint row/column (rows are constraintScale * eps_i of the rigid modes).
+  BeamCorotational(const Vec3& Xp, const Vec3& Xq, const std::optional<Vec3>& orien, const BeamSection& s,
+                   std::array<BeamMode, 6> modes, bool hasInertia, double constraintScale);
+
+  const char* name() const override { return "beam_corotational"; }
+  std::span<const NodeKind> nodeKinds() const override;
+  int numConstraints() const override { return nRigid_; }
+  bool hasInertia() const override { return hasInertia_; }
+
+  void evaluate(const KernelInput& in, const KernelNeeds& needs, KernelOutput& out) const override;
+  /// Consistent mass at the current configuration in the current element frame (chord, averaged triad).
+  void mass(const double* q, std::vector<double>& M) const override;
+  /// Lumped: rhoA l0 a / 2 on each node's translations, zero moments.
+  void bodyForce(const double* q, const Vec3& a, std::vector<double>& f) const override;
+  /// Max Von Mises stress over both end sections (normal stress from N, My, Mz; shear from torsion).
+  double vonMisesMax(const double* q, const double* lambda) const override;
+
+  /// eps_1..eps_6 at state q.
+  std::array<double, 6> generalizedStrains(const double* q) const;
+  /// sigma_i = dU/d eps_i for flexible modes, constraintScale * lambda_k for rigid ones, 0 for released.
+  std::array<double, 6> generalizedStresses(const double* q, const double* lambda) const;
+
+  double l0() const { return l0_; }
+  const Vec3& ey0() const { return ey0_; }
+  const Vec3& ez0() const { return ez0_; }
+  /// Effective 6x6 stiffness of the generalized strains (released modes condensed out, rigid ones zero).
+  const std::array<double, 36>& stiffness() const { return S_; }
+
+ private:
+  struct Kinematics;
+  void kinematics(const double* q, Kinematics& k) const;
+  void stresses(const Kinematics& k, const double* lambda, double* sig) const;
+
+  double l0_ = 0;
+  Vec3 ex0_{}, ey0_{}, ez0_{};
+  BeamSection sec_;
+  std::array<BeamMode, 6> modes_{};
+  bool hasInertia_ = false;
+  double scale_ = 1.0;
+  int nRigid_ = 0;
+  std::array<int, 6> rigidIndex_{};  ///< mode index of constraint k
+  std::array<double, 36> S_{};       ///< sigma = S eps on flexible modes
+  std::array<double, 8> Qh_{};       ///< Hessians of the arc-minus-chord quadratic, pairs (e3,e4), (e5,e6)
+};
+
+}  // namespace sinew

@@ -1,0 +1,74 @@
+// 3D two-node cable (tension only) with Updated Reference Strategy form finding.
+//
+// Elastic mode (engineering strain, reference length L):
+//   N = max(N0 + EA (l/L - 1), 0),   f = N [-e; e],   e = (x_q - x_p)/l
+//   K_mat = EA/L [e e^T] (+/- blocks),  K_geo = N/l [I - e e^T] (+/- blocks).
+// A slack cable (N0 + EA (l/L - 1) <= 0) returns f = 0, K = 0; isSlack() reports it and the
+// assembler deals with the global singularity.
+// Form-finding mode (URS, Bletzinger & Ramm), prescribed force N = N0 (Cauchy, current config):
+//   delta W = lambda N delta l + (1 - lambda) A int_L S delta E dL,  S = N/A,  E = (l^2 - L^2)/(2 L^2)
+//   => f = [lambda N/l + (1 - lambda) N/L] (x_q - x_p) [-1; 1]        (force density at lambda = 0)
+//   K = lambda N/l [I - e e^T] + (1 - lambda) N/L I   (all stress-dependent: material part zero).
+// Stress adaption (lagged, at updateReference): s = stretch/clamp(stretch, 1/lambdaMax, lambdaMax),
+// stretch = l_new / L_old; N0 <- (1 - mueRelax) s N0 + mueRelax N0.
+#pragma once
+#include <array>
+
+#include "sinew/element_kernel.hpp"
+
+namespace sinew {
+
+class Cable3D final : public ElementKernel {
+ public:
+  /// Reference positions of the two nodes, cross-section area, Young's modulus, density and
+  /// prestress force N0. The reference length is |Xq - Xp| until setReferenceLength().
+  Cable3D(const Vec3& Xp, const Vec3& Xq, double area, double emod, double dens, double prestressForce = 0.0);
+
+  const char* name() const override { return "cable3d"; }
+  std::span<const NodeKind> nodeKinds() const override;
+  bool hasInertia() const override { return dens_ > 0.0; }
+
+  void evaluate(const KernelInput& in, const KernelNeeds& needs, KernelOutput& out) const override;
+  /// rho A L/6 [2 1; 1 2] per direction, L = reference length.
+  void mass(const double* q, std::vector<double>& M) const override;
+  /// rho A L/2 a at each node.
+  void bodyForce(const double* q, const Vec3& a, std::vector<double>& f) const override;
+  double vonMisesMax(const double* q, const double* lambda) const override;
+  /// {N}: elastic axial force, or the URS force lambda N0 + (1 - lambda) N0 l/L in form finding.
+  void elementForce(const double* q, std::vector<double>& out) const override;
+
+  // --- properties
+  void setReferenceLength(double L0) { L_ = L0; }
+  double referenceLength() const { return L_; }
+  void setEmod(double emod) { E_ = emod; }
+  void setPrestressForce(double N0) { N0_ = N0; }
+  void setPrestressStress(double s0) { N0_ = s0 * A_; }
+  double prestressForce() const { return N0_; }  ///< active prestress (after stress adaption)
+  double area() const { return A_; }
+  double emod() const { return E_; }
+  double dens() const { return dens_; }
+
+  // --- form finding (URS)
+  void setFormFinding(bool on, double lambda);
+  bool formFinding() const { return ff_; }
+  double homotopy() const { return lambda_; }
+  /// True in form finding: the tangent is purely geometric (material part zero when split).
+  bool formFindingGeometricOnly() const { return ff_; }
+  /// URS step: reference length := current length (stress adaption applied first when active).
+  void updateReference(const double* q);
+  /// lambdaMax > 1 switches stress adaption on, <= 1 off.
+  void setStressAdaption(double lambdaMax, double mueRelax);
+
+  // --- state queries
+  double length(const double* q) const;
+  double axialForce(const double* q) const;
+  bool isSlack(const double* q) const { return axialForce(q) <= 0.0; }
+
+ private:
+  double A_, E_, dens_, N0_, L_;
+  bool ff_ = false;
+  double lambda_ = 0.0;
+  double lambdaMax_ = 0.0, mueRelax_ = 0.0;
+};
+
+}  // namespace sinew

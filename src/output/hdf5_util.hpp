@@ -1,0 +1,60 @@
+// Small RAII and error-checking helpers around the HDF5 C API, used by the result file.
+#pragma once
+#include <hdf5.h>
+
+#include <string>
+#include <vector>
+
+namespace sinew::h5 {
+
+/// Throws std::runtime_error naming `what` and the innermost HDF5 error description.
+[[noreturn]] void fail(const std::string& what);
+
+/// Returns `r` when the HDF5 call succeeded (r >= 0), otherwise throws via fail(what).
+template <class T>
+T check(T r, const std::string& what) {
+  if (r < 0) fail(what);
+  return r;
+}
+
+/// Owns one HDF5 identifier and closes it with the matching H5?close.
+class Handle {
+ public:
+  using Closer = herr_t (*)(hid_t);
+  Handle() = default;
+  Handle(hid_t id, Closer closer, const std::string& what) : id_(check(id, what)), closer_(closer) {}
+  Handle(Handle&& o) noexcept : id_(o.id_), closer_(o.closer_) { o.id_ = H5I_INVALID_HID; }
+  Handle& operator=(Handle&& o) noexcept;
+  Handle(const Handle&) = delete;
+  Handle& operator=(const Handle&) = delete;
+  ~Handle() { reset(); }
+  hid_t get() const { return id_; }
+  operator hid_t() const { return id_; }
+  bool valid() const { return id_ >= 0; }
+  /// Closes now; returns the close status (>= 0 on success, or when nothing was open).
+  herr_t reset() noexcept;
+
+ private:
+  hid_t id_ = H5I_INVALID_HID;
+  Closer closer_ = nullptr;
+};
+
+Handle dataspace(const std::vector<hsize_t>& dims, const std::vector<hsize_t>& maxdims, const std::string& what);
+Handle dataspace(const std::vector<hsize_t>& dims, const std::string& what);
+/// Link-creation property list that creates missing parent groups ("node/p" creates /node).
+Handle intermediateGroupLcpl(const std::string& what);
+/// Transfer property list for collective MPI-IO.
+Handle collectiveDxpl();
+
+/// Collective write of the box [start, start + count) of `dset` from the dense buffer `data`. A rank
+/// with nothing to write passes data == nullptr or a count containing 0 and still takes part
+/// (H5Sselect_none). Empty start and count address a scalar dataset.
+void writeBox(hid_t dset, hid_t memType, const std::vector<hsize_t>& start, const std::vector<hsize_t>& count,
+              const void* data, hid_t dxpl, const std::string& what);
+
+// Root/object attributes. In parallel HDF5 these are collective: every rank passes equal values.
+void writeAttribute(hid_t obj, const std::string& name, const std::string& value);
+void writeAttribute(hid_t obj, const std::string& name, long value);
+void writeAttribute(hid_t obj, const std::string& name, int value);
+
+}  // namespace sinew::h5

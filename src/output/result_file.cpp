@@ -1,0 +1,603 @@
+// Parallel HDF5 result file (design.md section 3).
+//
+// Layout decisions that readers may rely on:
+// - The file is written as `path.part` and renamed to `path` by rank 0 after H5Fclose, so an
+//   interrupted run never leaves a file under the final name; a stale `path.part` is truncated.
+// - Step-indexed datasets are chunked, unlimited along the step axis, created at their first write
+//   and extended at every beginStep, so each has exactly stepsWritten() rows. A row that was never
+//   written (the field was created later, or skipped at a step) holds NaN, also the fill value.
+// - writeStepRow: one value at the first write makes a [ns] dataset, several a [ns, k] one. k is
+//   fixed at the first write; a later row with fewer values is padded with 0, one with more values
+//   is an error.
+// - Distributed rows (node, element, mesh fields) are written in two phases: an all-to-all moves
+//   every owned row to the rank holding the contiguous block [n r / P, n (r + 1) / P) of that
+//   table, which then writes one hyperslab. The exchange plan is built once per table.
+// - Errors in arguments are detected on all ranks together (one allreduce per call) so that every
+//   rank throws and none is left waiting in a collective HDF5 call.
+// Open MPI's deprecated C++ bindings warn under -Wcast-function-type when mpi.h is not a system
+// header (plain -I from pkg-config); Sinew uses the C API only.
+#ifndef OMPI_SKIP_MPICXX
+#define OMPI_SKIP_MPICXX 1
+#endif
+#include "sinew/result_file.hpp"
+
+#include <algorithm>
+#include <array>
+#include <climits>
+#include <filesystem>
+#include <functional>
+#include <iostream>
+#include <limits>
+#include <map>
+#include <stdexcept>
+
+#include "output/hdf5_util.hpp"
+#include "output/xdmf_writer.hpp"
+
+namespace sinew {
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr std::size_t kChunkBytes = std::size_t(1) << 20;  // target chunk size
+
+long product(const std::vector<long>& v) {
+  long p = 1;
+  for (long x : v) p *= x;
+  return p;
+}
+
+std::string normalized(const std::string& name) {
+  std::string n = name;
+  while (!n.empty() && n.front() == '/') n.erase(n.begin());
+  return n;
+}
+
+std::string broadcastString(MPI_Comm comm, const std::string& s) {
+  long n = static_cast<long>(s.size());
+  MPI_Bcast(&n, 1, MPI_LONG, 0, comm);
+  std::string out = s;
+  out.resize(static_cast<std::size_t>(n));
+  MPI_Bcast(out.data(), static_cast<int>(n), MPI_CHAR, 0, comm);
+  return out;
+}
+
+// Every rank learns whether any rank failed a check, so all of them throw together. `signature`
+// must be equal on all ranks (name and shape of a collective call); a mismatch is an error too.
+void agree(MPI_Comm comm, const std::string& localError, std::size_t signature, const std::string& what) {
+  int rank = 0;
+  MPI_Comm_rank(comm, &rank);
+  const long sig = static_cast<long>(signature & 0x3fffffffffffffffULL);
+  long buf[3] = {localError.empty() ? LONG_MIN : -static_cast<long>(rank), sig, -sig};
+  MPI_Allreduce(MPI_IN_PLACE, buf, 3, MPI_LONG, MPI_MAX, comm);
+  if (!localError.empty()) throw std::runtime_error(what + ": " + localError);
+  if (buf[0] != LONG_MIN) throw std::runtime_error(what + ": invalid arguments on rank " + std::to_string(-buf[0]));
+  if (buf[1] != -buf[2]) throw std::runtime_error(what + ": ranks disagree on the name or shape of a collective write");
+}
+
+std::size_t signatureOf(const std::string& name, const std::vector<long>& dims, int kind) {
+  std::size_t h = std::hash<std::string>{}(name) ^ (std::size_t(kind) * 0x9e3779b97f4a7c15ULL);
+  for (long d : dims) h = h * 1000003ULL ^ std::hash<long>{}(d);
+  return h;
+}
+
+// Moves rows owned in arbitrary order to contiguous blocks, one block per rank.
+struct RowPlan {
+  long begin = 0, count = 0;          // this rank's block of the table
+  std::vector<int> sendCounts, sendDispls, recvCounts, recvDispls;  // in rows
+  std::vector<long> sendOrder;        // positions in the owned list, grouped by destination
+  std::vector<long> recvSlot;         // block-local row of each received row
+  bool complete = true;               // every row of every block is owned by some rank
+
+  static RowPlan build(MPI_Comm comm, long n, const std::vector<long>& owned, const std::string& what) {
+    int rank = 0, size = 1;
+    MPI_Comm_rank(comm, &rank);
+    MPI_Comm_size(comm, &size);
+    RowPlan p;
+    std::string error;
+    for (long g : owned)
+      if (g < 0 || g >= n) {
+        error = "row " + std::to_string(g) + " outside [0, " + std::to_string(n) + ")";
+        break;
+      }
+    agree(comm, error, signatureOf(what, {n}, 0), what);
+
+    std::vector<long> begins(size + 1);
+    for (int r = 0; r <= size; ++r) begins[r] = n * r / size;
+    p.begin = begins[rank];
+    p.count = begins[rank + 1] - begins[rank];
+    std::vector<int> dest(owned.size());
+    p.sendCounts.assign(size, 0);
+    for (std::size_t i = 0; i < owned.size(); ++i) {
+      dest[i] = static_cast<int>(std::upper_bound(begins.begin(), begins.end(), owned[i]) - begins.begin()) - 1;
+      ++p.sendCounts[dest[i]];
+    }
+    p.recvCounts.assign(size, 0);
+    MPI_Alltoall(p.sendCounts.data(), 1, MPI_INT, p.recvCounts.data(), 1, MPI_INT, comm);
+    p.sendDispls.assign(size, 0);
+    p.recvDispls.assign(size, 0);
+    for (int r = 1; r < size; ++r) {
+      p.sendDispls[r] = p.sendDispls[r - 1] + p.sendCounts[r - 1];
+      p.recvDispls[r] = p.recvDispls[r - 1] + p.recvCounts[r - 1];
+    }
+    const long received = size ? p.recvDispls[size - 1] + p.recvCounts[size - 1] : 0;
+    p.sendOrder.resize(owned.size());
+    std::vector<long> sendRows(owned.size());
+    std::vector<int> fill = p.sendDispls;
+    for (std::size_t i = 0; i < owned.size(); ++i) {
+      const int slot = fill[dest[i]]++;
+      p.sendOrder[slot] = static_cast<long>(i);
+      sendRows[slot] = owned[i];
+    }
+    p.recvSlot.resize(received);
+    MPI_Alltoallv(sendRows.data(), p.sendCounts.data(), p.sendDispls.data(), MPI_LONG, p.recvSlot.data(),
+                  p.recvCounts.data(), p.recvDispls.data(), MPI_LONG, comm);
+    std::vector<char> seen(p.count, 0);
+    for (long& r : p.recvSlot) {
+      r -= p.begin;
+      if (seen[r]++ && error.empty()) error = "row " + std::to_string(r + p.begin) + " is owned by two ranks";
+    }
+    int complete = std::all_of(seen.begin(), seen.end(), [](char c) { return c != 0; });
+    MPI_Allreduce(MPI_IN_PLACE, &complete, 1, MPI_INT, MPI_LAND, comm);
+    p.complete = complete != 0;
+    agree(comm, error, signatureOf(what, {n}, 1), what);
+    return p;
+  }
+
+  // This rank's block, `m` values per row, from its owned rows (in owned order). Rows that no rank
+  // owns are NaN.
+  std::vector<double> exchange(MPI_Comm comm, std::span<const double> values, long m) const {
+    std::vector<double> send(values.size()), recv(recvSlot.size() * m), block(count * m, kNaN);
+    for (std::size_t i = 0; i < sendOrder.size(); ++i)
+      std::copy_n(values.begin() + sendOrder[i] * m, m, send.begin() + static_cast<long>(i) * m);
+    MPI_Datatype row;
+    MPI_Type_contiguous(static_cast<int>(m), MPI_DOUBLE, &row);
+    MPI_Type_commit(&row);
+    MPI_Alltoallv(send.data(), sendCounts.data(), sendDispls.data(), row, recv.data(), recvCounts.data(),
+                  recvDispls.data(), row, comm);
+    MPI_Type_free(&row);
+    for (std::size_t i = 0; i < recvSlot.size(); ++i)
+      std::copy_n(recv.begin() + static_cast<long>(i) * m, m, block.begin() + recvSlot[i] * m);
+    return block;
+  }
+};
+
+enum class Kind { Node = 0, Element = 1, Mesh = 2, Row = 3 };
+
+const char* kindName(Kind k) {
+  switch (k) {
+    case Kind::Node: return "node field";
+    case Kind::Element: return "element field";
+    case Kind::Mesh: return "mesh field";
+    default: return "step row";
+  }
+}
+
+struct StepDataset {
+  Kind kind = Kind::Row;
+  h5::Handle dset;
+  std::vector<long> inner;    // dims after the step axis (rows of a table, then field shape)
+  std::vector<char> written;  // per step
+  long rowLength = 1;         // Kind::Row: k
+};
+
+struct CellKind {
+  const char* name;        // dataset name under /mesh
+  const char* topology;    // XDMF TopologyType
+  int nodes;
+  const std::vector<long>* conn;     // global FE node ids, `nodes` per cell
+  const std::vector<long>* element;  // 1-based scene element per cell
+};
+
+}  // namespace
+
+struct ResultFile::Impl {
+  MPI_Comm comm = MPI_COMM_NULL;
+  int rank = 0, size = 1;
+  std::string path, partPath;
+  ResultLayout layout;
+  RowPlan nodePlan, elementPlan, meshPlan;
+  h5::Handle file;
+  h5::Handle dxpl;
+  std::map<std::string, StepDataset> steps;  // std::map: every rank iterates in the same order
+  std::vector<double> stepValues;
+  long cellTotals[3] = {0, 0, 0};
+  bool closed = false;
+
+  ~Impl() {
+    steps.clear();
+    dxpl.reset();
+    file.reset();
+    if (comm != MPI_COMM_NULL) MPI_Comm_free(&comm);
+  }
+
+  int numSteps() const { return static_cast<int>(stepValues.size()); }
+
+  std::array<CellKind, 3> cellKinds() const {
+    return {{{"lines", "Polyline", 2, &layout.lines, &layout.lineElement},
+             {"triangles", "Triangle", 3, &layout.triangles, &layout.triangleElement},
+             {"quads", "Quadrilateral", 4, &layout.quads, &layout.quadElement}}};
+  }
+
+  const RowPlan& plan(Kind k) const {
+    return k == Kind::Node ? nodePlan : k == Kind::Element ? elementPlan : meshPlan;
+  }
+  long tableRows(Kind k) const {
+    return k == Kind::Node ? layout.numNodes : k == Kind::Element ? layout.numElements : layout.numMeshNodes;
+  }
+  const std::vector<long>& owned(Kind k) const {
+    return k == Kind::Node ? layout.ownedNodes : k == Kind::Element ? layout.ownedElements : layout.ownedMeshNodes;
+  }
+
+  // [steps, inner...] dataset, chunked and unlimited along the step axis.
+  StepDataset& createStepDataset(const std::string& name, Kind kind, std::vector<long> inner, long rowLength) {
+    const std::string what = "dataset /" + name;
+    std::vector<hsize_t> dims{hsize_t(numSteps())}, maxdims{H5S_UNLIMITED}, chunk;
+    for (long d : inner) {
+      dims.push_back(hsize_t(d));
+      maxdims.push_back(d > 0 ? hsize_t(d) : H5S_UNLIMITED);
+    }
+    // Table datasets: one step per chunk, rows split to about kChunkBytes. Step rows: many steps
+    // per chunk, since each row is small.
+    std::size_t rowBytes = sizeof(double);
+    for (std::size_t i = (kind == Kind::Row ? 0 : 1); i < inner.size(); ++i) rowBytes *= std::max(inner[i], 1L);
+    if (kind == Kind::Row) {
+      chunk.push_back(std::clamp<hsize_t>(kChunkBytes / rowBytes, 1, 256));
+      for (long d : inner) chunk.push_back(hsize_t(std::max(d, 1L)));
+    } else {
+      chunk.push_back(1);
+      chunk.push_back(std::clamp<hsize_t>(kChunkBytes / rowBytes, 1, hsize_t(std::max(inner[0], 1L))));
+      for (std::size_t i = 1; i < inner.size(); ++i) chunk.push_back(hsize_t(inner[i]));
+    }
+    h5::Handle space = h5::dataspace(dims, maxdims, what);
+    h5::Handle dcpl(H5Pcreate(H5P_DATASET_CREATE), H5Pclose, what + ": creation list");
+    h5::check(H5Pset_chunk(dcpl, static_cast<int>(chunk.size()), chunk.data()), what + ": chunk");
+    h5::check(H5Pset_fill_value(dcpl, H5T_NATIVE_DOUBLE, &kNaN), what + ": fill value");
+    // Rows never written are set to NaN explicitly at close; skip filling every new chunk first.
+    h5::check(H5Pset_fill_time(dcpl, H5D_FILL_TIME_NEVER), what + ": fill time");
+    h5::Handle lcpl = h5::intermediateGroupLcpl(what);
+    StepDataset sd;
+    sd.kind = kind;
+    sd.dset = h5::Handle(H5Dcreate2(file, name.c_str(), H5T_IEEE_F64LE, space, lcpl, dcpl, H5P_DEFAULT), H5Dclose,
+                         what + ": create");
+    sd.inner = std::move(inner);
+    sd.written.assign(numSteps(), 0);
+    sd.rowLength = rowLength;
+    return steps.emplace(name, std::move(sd)).first->second;
+  }
+
+  // Why a write cannot go ahead now, or "".
+  std::string stateError(bool needsStep) const {
+    if (closed) return "file already closed";
+    if (needsStep && numSteps() == 0) return "written before the first beginStep";
+    return "";
+  }
+
+  // Why `name` cannot be a new dataset, or "": it must be neither a dataset of this file nor the
+  // step dataset. With collective metadata reads the H5Lexists calls are collective, so every rank
+  // calls this whenever the name is missing from `steps` (which is the same on all ranks). The
+  // walk goes one path component at a time, since H5Lexists fails when a parent group is missing.
+  std::string nameError(const std::string& name) const {
+    if (name.empty()) return "empty dataset name";
+    if (name == layout.stepName) return "name reserved for the step values";
+    for (std::size_t pos = 0;;) {
+      pos = name.find('/', pos + 1);
+      const std::string prefix = name.substr(0, pos);
+      if (h5::check(H5Lexists(file, prefix.c_str(), H5P_DEFAULT), "dataset /" + name + ": lookup") <= 0) return "";
+      if (pos == std::string::npos) return "dataset /" + name + " already exists";
+    }
+  }
+
+  void writeTable(Kind kind, const std::string& rawName, std::span<const double> values, std::vector<long> inner) {
+    const std::string name = normalized(rawName);
+    const std::string what = "dataset /" + name;
+    std::string error = stateError(true);
+    for (long d : inner)
+      if (d < 1 && error.empty()) error = "inner dimension " + std::to_string(d) + " < 1";
+    const long m = product(inner);
+    if (error.empty() && values.size() != owned(kind).size() * std::size_t(m))
+      error = std::to_string(values.size()) + " values for " + std::to_string(owned(kind).size()) + " rows of " +
+              std::to_string(m);
+    if (error.empty() && kind == Kind::Mesh && name == "mesh/p" && inner != std::vector<long>{3})
+      error = "mesh/p must have inner shape {3}";
+    std::vector<long> dims{tableRows(kind)};
+    dims.insert(dims.end(), inner.begin(), inner.end());
+    auto it = steps.find(name);
+    if (it == steps.end() && !closed) {
+      const std::string e = nameError(name);  // on every rank: collective lookup
+      if (error.empty()) error = e;
+    } else if (error.empty() && it != steps.end() && (it->second.kind != kind || it->second.inner != dims)) {
+      error = std::string("exists as a ") + kindName(it->second.kind) + " of another shape";
+    }
+    agree(comm, error, signatureOf(name, dims, static_cast<int>(kind)), what);
+
+    StepDataset& sd = it != steps.end() ? it->second : createStepDataset(name, kind, dims, 1);
+    const RowPlan& p = plan(kind);
+    const std::vector<double> block = p.exchange(comm, values, m);
+    const int step = numSteps() - 1;
+    std::vector<hsize_t> start{hsize_t(step), hsize_t(p.begin)}, count{1, hsize_t(p.count)};
+    for (long d : inner) {
+      start.push_back(0);
+      count.push_back(hsize_t(d));
+    }
+    h5::writeBox(sd.dset, H5T_NATIVE_DOUBLE, start, count, block.data(), dxpl, what);
+    sd.written[step] = 1;
+  }
+
+  // Sets every row never written to NaN, one hyperslab per run of consecutive such steps.
+  void fillUnwritten(const std::string& name, StepDataset& sd) {
+    const std::string what = "dataset /" + name + ": NaN rows";
+    for (int s = 0; s < numSteps();) {
+      if (sd.written[s]) {
+        ++s;
+        continue;
+      }
+      int e = s;
+      while (e < numSteps() && !sd.written[e]) ++e;
+      std::vector<hsize_t> start{hsize_t(s)}, count{hsize_t(e - s)};
+      bool mine = rank == 0;
+      if (sd.kind != Kind::Row) {
+        const RowPlan& p = plan(sd.kind);
+        start.push_back(hsize_t(p.begin));
+        count.push_back(hsize_t(p.count));
+        mine = true;
+      }
+      for (std::size_t i = (sd.kind == Kind::Row ? 0 : 1); i < sd.inner.size(); ++i) {
+        start.push_back(0);
+        count.push_back(hsize_t(sd.inner[i]));
+      }
+      hsize_t n = 1;
+      for (hsize_t c : count) n *= c;
+      const std::vector<double> nan(mine ? n : 0, kNaN);
+      h5::writeBox(sd.dset, H5T_NATIVE_DOUBLE, start, count, mine ? nan.data() : nullptr, dxpl, what);
+      s = e;
+    }
+  }
+
+  void writeCells() {
+    const std::array<CellKind, 3> kinds = cellKinds();
+    long local[3], offset[3] = {0, 0, 0};
+    for (int k = 0; k < 3; ++k) local[k] = static_cast<long>(kinds[k].conn->size()) / kinds[k].nodes;
+    MPI_Allreduce(local, cellTotals, 3, MPI_LONG, MPI_SUM, comm);
+    MPI_Exscan(local, offset, 3, MPI_LONG, MPI_SUM, comm);
+    if (rank == 0) std::fill(offset, offset + 3, 0L);
+    h5::Handle lcpl = h5::intermediateGroupLcpl("/mesh");
+    for (int k = 0; k < 3; ++k) {
+      if (cellTotals[k] == 0) continue;
+      for (int part = 0; part < 2; ++part) {
+        const std::string name = std::string("mesh/") + kinds[k].name + (part ? "_element" : "");
+        const std::string what = "dataset /" + name;
+        std::vector<hsize_t> dims{hsize_t(cellTotals[k])}, start{hsize_t(offset[k])}, count{hsize_t(local[k])};
+        if (!part) {
+          dims.push_back(hsize_t(kinds[k].nodes));
+          start.push_back(0);
+          count.push_back(hsize_t(kinds[k].nodes));
+        }
+        h5::Handle space = h5::dataspace(dims, what);
+        h5::Handle dset(H5Dcreate2(file, name.c_str(), H5T_STD_I64LE, space, lcpl, H5P_DEFAULT, H5P_DEFAULT),
+                        H5Dclose, what + ": create");
+        const std::vector<long>& data = part ? *kinds[k].element : *kinds[k].conn;
+        h5::writeBox(dset, H5T_NATIVE_LONG, start, count, data.data(), dxpl, what);
+        h5::check(dset.reset(), what + ": close");
+      }
+    }
+  }
+
+  void validateLayout() const {
+    std::string error;
+    auto fail = [&](const std::string& e) {
+      if (error.empty()) error = e;
+    };
+    if (layout.stepName != "load_factor" && layout.stepName != "time")
+      fail("stepName must be load_factor or time, not " + layout.stepName);
+    if (layout.numNodes < 0 || layout.numElements < 0 || layout.numMeshNodes < 0) fail("negative table size");
+    for (const CellKind& c : cellKinds()) {
+      const std::size_t npe = std::size_t(c.nodes);
+      if (c.conn->size() % npe || c.element->size() != c.conn->size() / npe)
+        fail(std::string(c.name) + ": connectivity and element lists do not match");
+      for (long id : *c.conn)
+        if (id < 0 || id >= layout.numMeshNodes) fail(std::string(c.name) + ": node " + std::to_string(id) + " outside the mesh");
+    }
+    agree(comm, error, signatureOf(layout.stepName, {layout.numNodes, layout.numElements, layout.numMeshNodes}, 9),
+          "result file " + path + ": layout");
+  }
+
+  XdmfDescription xdmfDescription() const {
+    XdmfDescription d;
+    d.h5Name = std::filesystem::path(path).filename().string();
+    d.numMeshNodes = layout.numMeshNodes;
+    d.stepValues = stepValues;
+    d.geometryDataset = "/mesh/p";
+    if (auto it = steps.find("mesh/p"); it != steps.end()) d.geometryWritten = it->second.written;
+    const std::array<CellKind, 3> kinds = cellKinds();
+    for (int k = 0; k < 3; ++k)
+      if (cellTotals[k] > 0)
+        d.cells.push_back({kinds[k].name, kinds[k].topology, kinds[k].nodes, cellTotals[k],
+                           std::string("/mesh/") + kinds[k].name});
+    for (const auto& [name, sd] : steps) {
+      if (sd.kind != Kind::Mesh || name == "mesh/p") continue;
+      XdmfPointField f;
+      f.name = name.substr(5);
+      f.dataset = "/" + name;
+      f.inner.assign(sd.inner.begin() + 1, sd.inner.end());
+      f.written = sd.written;
+      d.pointFields.push_back(std::move(f));
+    }
+    return d;
+  }
+};
+
+ResultFile::ResultFile(MPI_Comm comm, const std::string& path, const ResultLayout& layout)
+    : impl_(std::make_unique<Impl>()) {
+  Impl& m = *impl_;
+  MPI_Comm_dup(comm, &m.comm);
+  MPI_Comm_rank(m.comm, &m.rank);
+  MPI_Comm_size(m.comm, &m.size);
+  m.path = path;
+  m.partPath = path + ".part";
+  m.layout = layout;
+  m.validateLayout();
+  m.nodePlan = RowPlan::build(m.comm, layout.numNodes, layout.ownedNodes, "result file: owned nodes");
+  m.elementPlan = RowPlan::build(m.comm, layout.numElements, layout.ownedElements, "result file: owned elements");
+  m.meshPlan = RowPlan::build(m.comm, layout.numMeshNodes, layout.ownedMeshNodes, "result file: owned mesh nodes");
+
+  const std::string what = "file " + m.partPath;
+  h5::Handle fapl(H5Pcreate(H5P_FILE_ACCESS), H5Pclose, what + ": access list");
+  h5::check(H5Pset_fapl_mpio(fapl, m.comm, MPI_INFO_NULL), what + ": MPI-IO driver");
+  h5::check(H5Pset_all_coll_metadata_ops(fapl, 1), what + ": collective metadata reads");
+  h5::check(H5Pset_coll_metadata_write(fapl, 1), what + ": collective metadata writes");
+  m.file = h5::Handle(H5Fcreate(m.partPath.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, fapl), H5Fclose, what + ": create");
+  m.dxpl = h5::collectiveDxpl();
+
+  // Attributes are collective: every rank writes rank 0's values.
+  long numbers[2] = {layout.ndof, layout.nranks};
+  MPI_Bcast(numbers, 2, MPI_LONG, 0, m.comm);
+  h5::writeAttribute(m.file, "version", broadcastString(m.comm, layout.version));
+  h5::writeAttribute(m.file, "ndof", numbers[0]);
+  h5::writeAttribute(m.file, "nranks", static_cast<int>(numbers[1]));
+  h5::writeAttribute(m.file, "scene", broadcastString(m.comm, layout.scene));
+  h5::writeAttribute(m.file, "converged", 0);
+  m.writeCells();
+}
+
+ResultFile::~ResultFile() {
+  if (!impl_ || impl_->closed) return;
+  try {
+    close(false);
+  } catch (const std::exception& e) {
+    std::cerr << "sinew: closing result file " << impl_->path << " failed: " << e.what() << "\n";
+  }
+}
+
+void ResultFile::beginStep(int step, double stepValue) {
+  Impl& m = *impl_;
+  const std::string what = "dataset /" + m.layout.stepName;
+  std::string error = m.stateError(false);
+  if (error.empty() && step != m.numSteps())
+    error = "step " + std::to_string(step) + " does not follow step " + std::to_string(m.numSteps() - 1);
+  agree(m.comm, error, signatureOf(m.layout.stepName, {step}, 10), what);
+
+  if (step == 0) m.createStepDataset(m.layout.stepName, Kind::Row, {}, 1);
+  m.stepValues.push_back(stepValue);
+  for (auto& [name, sd] : m.steps) {
+    std::vector<hsize_t> dims{hsize_t(m.numSteps())};
+    for (long d : sd.inner) dims.push_back(hsize_t(d));
+    h5::check(H5Dset_extent(sd.dset, dims.data()), "dataset /" + name + ": extend to step " + std::to_string(step));
+    sd.written.push_back(0);
+  }
+  StepDataset& sv = m.steps.at(m.layout.stepName);
+  h5::writeBox(sv.dset, H5T_NATIVE_DOUBLE, {hsize_t(step)}, {1}, m.rank == 0 ? &stepValue : nullptr, m.dxpl, what);
+  sv.written[step] = 1;
+}
+
+void ResultFile::writeNodeField(const std::string& name, std::span<const double> values, std::vector<long> inner) {
+  impl_->writeTable(Kind::Node, name, values, std::move(inner));
+}
+
+void ResultFile::writeElementField(const std::string& name, std::span<const double> values, std::vector<long> inner) {
+  impl_->writeTable(Kind::Element, name, values, std::move(inner));
+}
+
+void ResultFile::writeMeshField(const std::string& name, std::span<const double> values, std::vector<long> inner) {
+  impl_->writeTable(Kind::Mesh, name, values, std::move(inner));
+}
+
+void ResultFile::writeStepRow(const std::string& rawName, std::span<const double> values) {
+  Impl& m = *impl_;
+  const std::string name = normalized(rawName);
+  const std::string what = "dataset /" + name;
+  long k = static_cast<long>(values.size());
+  MPI_Bcast(&k, 1, MPI_LONG, 0, m.comm);
+  std::string error = m.stateError(true);
+  auto it = m.steps.find(name);
+  if (error.empty()) {
+    if (it != m.steps.end()) {
+      if (it->second.kind != Kind::Row || name == m.layout.stepName)
+        error = std::string("exists as a ") + kindName(it->second.kind);
+      else if (k > it->second.rowLength)
+        error = std::to_string(k) + " values, more than the " + std::to_string(it->second.rowLength) +
+                " of its first row";
+    } else {
+      error = m.nameError(name);
+    }
+  }
+  agree(m.comm, error, signatureOf(name, {}, 3), what);
+  if (it == m.steps.end() && k == 0) return;  // nothing fixes the row length yet; rows stay NaN
+
+  StepDataset& sd = it != m.steps.end()
+                        ? it->second
+                        : m.createStepDataset(name, Kind::Row, k == 1 ? std::vector<long>{} : std::vector<long>{k}, k);
+  const int step = m.numSteps() - 1;
+  std::vector<double> row(sd.rowLength, 0.0);  // shorter rows are padded with 0
+  if (m.rank == 0) std::copy(values.begin(), values.end(), row.begin());
+  std::vector<hsize_t> start{hsize_t(step)}, count{1};
+  if (!sd.inner.empty()) {
+    start.push_back(0);
+    count.push_back(hsize_t(sd.rowLength));
+  }
+  h5::writeBox(sd.dset, H5T_NATIVE_DOUBLE, start, count, m.rank == 0 ? row.data() : nullptr, m.dxpl, what);
+  sd.written[step] = 1;
+}
+
+void ResultFile::writeArray(const std::string& rawName, std::span<const double> values, std::vector<long> shape) {
+  Impl& m = *impl_;
+  const std::string name = normalized(rawName);
+  const std::string what = "dataset /" + name;
+  long header[2] = {static_cast<long>(shape.size()), static_cast<long>(values.size())};
+  MPI_Bcast(header, 2, MPI_LONG, 0, m.comm);
+  shape.resize(static_cast<std::size_t>(header[0]));
+  MPI_Bcast(shape.data(), static_cast<int>(shape.size()), MPI_LONG, 0, m.comm);
+  std::string error = m.stateError(false);
+  for (long d : shape)
+    if (d < 0) error = "negative dimension";
+  if (error.empty() && product(shape) != header[1])
+    error = std::to_string(header[1]) + " values on rank 0 for " + std::to_string(product(shape));
+  if (error.empty()) error = m.nameError(name);
+  agree(m.comm, error, signatureOf(name, shape, 4), what);
+
+  std::vector<hsize_t> dims(shape.begin(), shape.end()), start(dims.size(), 0);
+  h5::Handle space = h5::dataspace(dims, what);
+  h5::Handle lcpl = h5::intermediateGroupLcpl(what);
+  h5::Handle dset(H5Dcreate2(m.file, name.c_str(), H5T_IEEE_F64LE, space, lcpl, H5P_DEFAULT, H5P_DEFAULT), H5Dclose,
+                  what + ": create");
+  h5::writeBox(dset, H5T_NATIVE_DOUBLE, start, dims, m.rank == 0 ? values.data() : nullptr, m.dxpl, what);
+  h5::check(dset.reset(), what + ": close");
+}
+
+void ResultFile::close(bool converged) {
+  Impl& m = *impl_;
+  if (m.closed) return;
+  m.closed = true;
+  int ok = converged ? 1 : 0;
+  MPI_Allreduce(MPI_IN_PLACE, &ok, 1, MPI_INT, MPI_LAND, m.comm);
+  for (auto& [name, sd] : m.steps) m.fillUnwritten(name, sd);
+  h5::writeAttribute(m.file, "converged", ok);
+  for (auto& [name, sd] : m.steps) h5::check(sd.dset.reset(), "dataset /" + name + ": close");
+  h5::check(m.dxpl.reset(), "file " + m.partPath + ": transfer list");
+  h5::check(m.file.reset(), "file " + m.partPath + ": close");
+
+  // Rank 0 publishes the file under its final name, then the XDMF; every rank learns the outcome.
+  std::string error;
+  if (m.rank == 0) {
+    try {
+      std::error_code ec;
+      std::filesystem::rename(m.partPath, m.path, ec);
+      if (ec) throw std::runtime_error("cannot rename " + m.partPath + " to " + m.path + ": " + ec.message());
+      writeXdmfFile(xdmfPath(), m.xdmfDescription());
+    } catch (const std::exception& e) {
+      error = e.what();
+    }
+  }
+  error = broadcastString(m.comm, error);
+  if (!error.empty()) throw std::runtime_error("result file " + m.path + ": " + error);
+}
+
+const std::string& ResultFile::path() const { return impl_->path; }
+
+std::string ResultFile::xdmfPath() const {
+  return std::filesystem::path(impl_->path).replace_extension(".xdmf").string();
+}
+
+int ResultFile::stepsWritten() const { return impl_->numSteps(); }
+
+}  // namespace sinew

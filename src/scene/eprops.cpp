@@ -1,0 +1,355 @@
+// eprops: element property sets (beam, cable, membrane, ancf_cable2d) and the per-element
+// checks that depend on the element type.
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <set>
+
+#include "scene/nearest_name.hpp"
+#include "scene/scene_detail.hpp"
+
+namespace sinew::scene {
+namespace {
+
+const std::vector<std::string> kCommonKeys = {"elems", "type", "physical", "color", "opacity", "hide"};
+const std::vector<std::string> kBeamKeys = {"flex", "nbeams", "cw", "emod", "smod", "dens", "cshape", "dim", "orien"};
+const std::vector<std::string> kCableKeys = {"area", "emod", "dens", "prestress", "prestress_stress"};
+const std::vector<std::string> kMembraneKeys = {"thickness", "emod", "nu", "dens", "prestress", "prestress_dir",
+                                                "prestress_radial_axis"};
+const std::vector<std::string> kAncfKeys = {"physicsMassPerLength", "physicsBendingStiffness", "physicsAxialStiffness",
+                                            "physicsBendingDamping", "physicsAxialDamping", "physicsReferenceAxialStrain",
+                                            "physicsReferenceCurvature", "strainIsRelativeToReference",
+                                            "useReducedOrderIntegration", "axialForceUserFunction",
+                                            "bendingMomentUserFunction", "nbeams", "massProportionalLoad"};
+const std::vector<std::string> kTypes = {"beam", "cable", "membrane", "ancf_cable2d"};
+
+const std::vector<std::string>& typeKeys(ElementType t) {
+  switch (t) {
+    case ElementType::Cable: return kCableKeys;
+    case ElementType::Membrane: return kMembraneKeys;
+    case ElementType::AncfCable2D: return kAncfKeys;
+    case ElementType::Beam: break;
+  }
+  return kBeamKeys;
+}
+
+bool contains(const std::vector<std::string>& v, const std::string& s) { return std::find(v.begin(), v.end(), s) != v.end(); }
+
+/// Keys of a set: common keys plus those of its type; a key of another type gets a pointed message.
+void checkSetKeys(const YAML::Node& n, const std::string& path, ElementType type) {
+  std::vector<std::string> allowed = kCommonKeys;
+  const auto& own = typeKeys(type);
+  allowed.insert(allowed.end(), own.begin(), own.end());
+  for (auto it = n.begin(); it != n.end(); ++it) {
+    const std::string k = keyString(it->first, path);
+    if (contains(allowed, k)) continue;
+    for (ElementType other : {ElementType::Beam, ElementType::Cable, ElementType::Membrane, ElementType::AncfCable2D})
+      if (other != type && contains(typeKeys(other), k)) {
+        const std::string near = nearestName(k, allowed);
+        fail(childPath(path, k), "key '" + k + "' does not apply to type " + typeName(type) + " (it is a " + typeName(other) +
+                                     " field)" + (near.empty() ? "" : " (did you mean '" + near + "'?)"));
+      }
+  }
+  checkKeys(n, path, allowed);
+}
+
+/// A direction vector: 3 numbers, not all zero.
+Vec3 getDirection(const YAML::Node& n, const std::string& path, bool allow2 = false) {
+  const Vec3 v = getVec3(n, path, allow2);
+  if (norm(v) == 0) fail(path, "expected a nonzero direction, got [0, 0, 0]");
+  return v;
+}
+
+std::string modeList(const std::vector<int>& modes) {
+  std::string s;
+  for (std::size_t i = 0; i < modes.size(); ++i) s += (i == 0 ? "" : i + 1 == modes.size() ? " and " : ", ") + std::to_string(modes[i]);
+  return s;
+}
+
+void parseBeam(const YAML::Node& n, const std::string& path, ElementSet& s) {
+  std::vector<int> flexModes;
+  if (const YAML::Node f = n["flex"]; f.IsDefined()) {
+    const auto modes = getInts(f, childPath(path, "flex"), true);
+    for (std::size_t i = 0; i < modes.size(); ++i) {
+      const std::string p = f.IsSequence() ? indexPath(childPath(path, "flex"), i) : childPath(path, "flex");
+      if (modes[i] < 1 || modes[i] > 6) fail(p, "expected a deformation mode 1..6, got " + std::to_string(modes[i]));
+      if (s.flex[static_cast<std::size_t>(modes[i] - 1)]) fail(p, "mode " + std::to_string(modes[i]) + " is listed twice");
+      s.flex[static_cast<std::size_t>(modes[i] - 1)] = true;
+      flexModes.push_back(modes[i]);
+    }
+  }
+  std::sort(flexModes.begin(), flexModes.end());
+  if (const YAML::Node v = n["nbeams"]; v.IsDefined()) s.nbeams = getIntAtLeast(v, childPath(path, "nbeams"), 1);
+  if (const YAML::Node v = n["cw"]; v.IsDefined()) s.cw = getBool(v, childPath(path, "cw"));
+  const bool hasE = n["emod"].IsDefined(), hasG = n["smod"].IsDefined(), hasRho = n["dens"].IsDefined();
+  if (hasE) s.emod = getNonNegative(n["emod"], childPath(path, "emod"));
+  if (hasG) s.smod = getNonNegative(n["smod"], childPath(path, "smod"));
+  if (hasRho) s.dens = getNonNegative(n["dens"], childPath(path, "dens"));
+  if (const YAML::Node v = n["cshape"]; v.IsDefined())
+    s.cshape = getChoice(v, childPath(path, "cshape"), {"rect", "circ"}) == "rect" ? CrossSection::Rect : CrossSection::Circ;
+  if (const YAML::Node v = n["dim"]; v.IsDefined()) {
+    const std::string p = childPath(path, "dim");
+    if (s.cshape == CrossSection::None)
+      fail(childPath(path, "cshape"), "missing: dim is given, so cshape (rect or circ) is needed to read it");
+    const std::size_t want = s.cshape == CrossSection::Rect ? 2 : 1;
+    const std::string shape = s.cshape == CrossSection::Rect ? "rect" : "circ";
+    if (!v.IsSequence()) fail(p, "expected a list of " + std::to_string(want) + (want == 1 ? " number" : " numbers") +
+                                     " for cshape " + shape + ", got " + describe(v));
+    if (v.size() != want)
+      fail(p, "expected " + std::to_string(want) + (want == 1 ? " number" : " numbers") + " for cshape " + shape + " (" +
+                  (want == 2 ? "[width, height]" : "[diameter]") + "), got " + std::to_string(v.size()));
+    for (std::size_t i = 0; i < want; ++i) s.dim.push_back(getPositive(v[i], indexPath(p, i)));
+  }
+  if (const YAML::Node v = n["orien"]; v.IsDefined()) s.orien = getDirection(v, childPath(path, "orien"));
+
+  std::vector<int> needE, needG;
+  for (int m : flexModes) (m == 2 ? needG : needE).push_back(m);
+  if (!needE.empty() && (!hasE || s.emod == 0))
+    fail(childPath(path, "emod"), std::string(hasE ? "expected emod > 0" : "missing") + ": flexible mode" +
+                                      (needE.size() > 1 ? "s " : " ") + modeList(needE) + " need emod (Young's modulus)");
+  if (!needG.empty() && (!hasG || s.smod == 0))
+    fail(childPath(path, "smod"), std::string(hasG ? "expected smod > 0" : "missing") +
+                                      ": flexible mode 2 (torsion) needs smod (shear modulus)");
+  if (!flexModes.empty() || s.dens > 0) {
+    const std::string why = flexModes.empty() ? "a beam with dens > 0" : "a flexible beam";
+    if (s.cshape == CrossSection::None) fail(childPath(path, "cshape"), "missing: " + why + " needs cshape (rect or circ) and dim");
+    if (s.dim.empty())
+      fail(childPath(path, "dim"), "missing: " + why + " needs dim (" +
+                                       (s.cshape == CrossSection::Rect ? "[width, height] for cshape rect" : "[diameter] for cshape circ") + ")");
+  }
+}
+
+void parseCable(const YAML::Node& n, const std::string& path, ElementSet& s) {
+  if (!n["area"].IsDefined()) fail(childPath(path, "area"), "missing: a cable needs area (cross-section area)");
+  s.area = getPositive(n["area"], childPath(path, "area"));
+  if (!n["emod"].IsDefined()) fail(childPath(path, "emod"), "missing: a cable needs emod (Young's modulus)");
+  s.emod = getNonNegative(n["emod"], childPath(path, "emod"));
+  if (const YAML::Node v = n["dens"]; v.IsDefined()) s.dens = getNonNegative(v, childPath(path, "dens"));
+  if (const YAML::Node v = n["prestress"]; v.IsDefined()) s.prestress = getNonNegative(v, childPath(path, "prestress"));
+  if (const YAML::Node v = n["prestress_stress"]; v.IsDefined()) {
+    if (s.prestress)
+      fail(childPath(path, "prestress_stress"), "give either prestress (a force) or prestress_stress (a stress), not both");
+    s.prestress_stress = getNonNegative(v, childPath(path, "prestress_stress"));
+  }
+}
+
+void parseMembrane(const YAML::Node& n, const std::string& path, ElementSet& s) {
+  if (!n["thickness"].IsDefined()) fail(childPath(path, "thickness"), "missing: a membrane needs thickness");
+  s.thickness = getPositive(n["thickness"], childPath(path, "thickness"));
+  if (!n["emod"].IsDefined()) fail(childPath(path, "emod"), "missing: a membrane needs emod (Young's modulus)");
+  s.emod = getPositive(n["emod"], childPath(path, "emod"));
+  if (!n["nu"].IsDefined()) fail(childPath(path, "nu"), "missing: a membrane needs nu (Poisson's ratio, in [0, 0.5))");
+  s.nu = getInRange(n["nu"], childPath(path, "nu"), 0.0, 0.5, true);
+  if (const YAML::Node v = n["dens"]; v.IsDefined()) s.dens = getNonNegative(v, childPath(path, "dens"));
+  if (const YAML::Node v = n["prestress"]; v.IsDefined()) {
+    const std::string p = childPath(path, "prestress");
+    if (!v.IsSequence() || v.size() != 3)
+      fail(p, "expected 3 numbers [s11, s22, s12], got " + (v.IsSequence() ? std::to_string(v.size()) : describe(v)));
+    const auto x = getNumbers(v, p, 3);
+    s.membrane_prestress = {x[0], x[1], x[2]};
+  }
+  if (const YAML::Node v = n["prestress_dir"]; v.IsDefined()) s.prestress_dir = getDirection(v, childPath(path, "prestress_dir"));
+  if (const YAML::Node v = n["prestress_radial_axis"]; v.IsDefined()) {
+    if (s.prestress_dir)
+      fail(childPath(path, "prestress_radial_axis"), "give either prestress_dir or prestress_radial_axis, not both");
+    s.prestress_radial_axis = getDirection(v, childPath(path, "prestress_radial_axis"));
+  }
+}
+
+void parseAncf(const YAML::Node& n, const std::string& path, ElementSet& s) {
+  auto p = [&](const char* k) { return childPath(path, k); };
+  if (const YAML::Node v = n["physicsMassPerLength"]; v.IsDefined()) s.physicsMassPerLength = getNonNegative(v, p("physicsMassPerLength"));
+  if (!n["physicsBendingStiffness"].IsDefined())
+    fail(p("physicsBendingStiffness"), "missing: ancf_cable2d needs physicsBendingStiffness (EI) > 0");
+  s.physicsBendingStiffness = getPositive(n["physicsBendingStiffness"], p("physicsBendingStiffness"));
+  if (!n["physicsAxialStiffness"].IsDefined())
+    fail(p("physicsAxialStiffness"), "missing: ancf_cable2d needs physicsAxialStiffness (EA) > 0");
+  s.physicsAxialStiffness = getPositive(n["physicsAxialStiffness"], p("physicsAxialStiffness"));
+  if (const YAML::Node v = n["physicsBendingDamping"]; v.IsDefined()) s.physicsBendingDamping = getNonNegative(v, p("physicsBendingDamping"));
+  if (const YAML::Node v = n["physicsAxialDamping"]; v.IsDefined()) s.physicsAxialDamping = getNonNegative(v, p("physicsAxialDamping"));
+  if (const YAML::Node v = n["physicsReferenceAxialStrain"]; v.IsDefined())
+    s.physicsReferenceAxialStrain = getNumber(v, p("physicsReferenceAxialStrain"));
+  if (const YAML::Node v = n["physicsReferenceCurvature"]; v.IsDefined())
+    s.physicsReferenceCurvature = getNumber(v, p("physicsReferenceCurvature"));
+  if (const YAML::Node v = n["strainIsRelativeToReference"]; v.IsDefined())
+    s.strainIsRelativeToReference = getInRange(v, p("strainIsRelativeToReference"), 0.0, 1.0);
+  if (const YAML::Node v = n["useReducedOrderIntegration"]; v.IsDefined()) {
+    s.useReducedOrderIntegration = getInt(v, p("useReducedOrderIntegration"));
+    if (s.useReducedOrderIntegration < 0 || s.useReducedOrderIntegration > 2)
+      fail(p("useReducedOrderIntegration"), "expected 0, 1 or 2, got " + std::to_string(s.useReducedOrderIntegration));
+  }
+  for (const char* k : {"axialForceUserFunction", "bendingMomentUserFunction"}) {
+    const YAML::Node v = n[k];
+    if (!v.IsDefined()) continue;
+    const std::string f = getString(v, p(k));
+    if (f.find_first_not_of(" \t\n") == std::string::npos) fail(p(k), "expected an expression, got an empty string");
+    (std::string(k) == "axialForceUserFunction" ? s.axialForceUserFunction : s.bendingMomentUserFunction) = f;
+  }
+  if (const YAML::Node v = n["nbeams"]; v.IsDefined()) s.nbeams = getIntAtLeast(v, p("nbeams"), 1);
+  if (const YAML::Node v = n["massProportionalLoad"]; v.IsDefined()) s.massProportionalLoad = getVec3(v, p("massProportionalLoad"), true);
+}
+
+void parseLook(const YAML::Node& n, const std::string& path, ElementSet& s) {
+  if (const YAML::Node v = n["color"]; v.IsDefined()) {
+    const std::string p = childPath(path, "color");
+    if (!v.IsSequence() || v.size() != 3)
+      fail(p, "expected 3 numbers [r, g, b] in [0, 1], got " + (v.IsSequence() ? std::to_string(v.size()) : describe(v)));
+    std::array<double, 3> c{};
+    for (std::size_t i = 0; i < 3; ++i) c[i] = getInRange(v[i], indexPath(p, i), 0.0, 1.0);
+    s.color = c;
+  }
+  if (const YAML::Node v = n["opacity"]; v.IsDefined()) s.opacity = getInRange(v, childPath(path, "opacity"), 0.0, 1.0);
+  if (const YAML::Node v = n["hide"]; v.IsDefined()) s.hide = getBool(v, childPath(path, "hide"));
+}
+
+}  // namespace
+
+std::vector<std::vector<std::string>> scanPhysicalNames(const YAML::Node& eprops) {
+  std::vector<std::vector<std::string>> names;
+  if (!eprops.IsDefined() || !eprops.IsSequence()) return names;
+  for (std::size_t i = 0; i < eprops.size(); ++i) {
+    std::vector<std::string> set;
+    const YAML::Node item = eprops[i];
+    if (item.IsDefined() && item.IsMap()) {
+      const YAML::Node ph = item["physical"];
+      if (ph.IsDefined() && ph.IsScalar()) set.push_back(ph.Scalar());
+      if (ph.IsDefined() && ph.IsSequence())
+        for (std::size_t k = 0; k < ph.size(); ++k)
+          if (ph[k].IsScalar()) set.push_back(ph[k].Scalar());
+    }
+    names.push_back(std::move(set));
+  }
+  return names;
+}
+
+void parseEprops(const YAML::Node& eprops, SceneContext& ctx) {
+  Model& m = ctx.model;
+  m.elementSet.assign(m.elements.size(), -1);
+  if (!eprops.IsDefined() || eprops.IsNull()) return;
+  if (!eprops.IsSequence()) fail("eprops", "expected a list of property sets (- elems: [...]), got " + describe(eprops));
+  std::vector<std::string> where(m.elements.size());  // path that put each element in its set
+  for (std::size_t i = 0; i < eprops.size(); ++i) {
+    const std::string path = indexPath("eprops", i);
+    const YAML::Node n = eprops[i];
+    if (!n.IsMap()) fail(path, "expected a map of set properties (elems, type, ...), got " + describe(n));
+    ElementSet s;
+    if (const YAML::Node t = n["type"]; t.IsDefined()) {
+      const std::string type = getChoice(t, childPath(path, "type"), kTypes);
+      s.type = type == "cable" ? ElementType::Cable
+               : type == "membrane" ? ElementType::Membrane
+               : type == "ancf_cable2d" ? ElementType::AncfCable2D
+                                        : ElementType::Beam;
+    }
+    checkSetKeys(n, path, s.type);
+
+    std::vector<std::pair<int, std::string>> members;  // element, path naming it
+    const YAML::Node elems = n["elems"], physical = n["physical"];
+    if (!elems.IsDefined() && !physical.IsDefined())
+      fail(childPath(path, "elems"), "missing: the set needs elems (element numbers) or physical (Gmsh group names)");
+    std::set<int> inSet;
+    if (elems.IsDefined()) {
+      const std::string p = childPath(path, "elems");
+      if (!elems.IsSequence() && !elems.IsScalar()) fail(p, "expected a list of element numbers, got " + describe(elems));
+      for (std::size_t k = 0; k < (elems.IsSequence() ? elems.size() : 1); ++k) {
+        const std::string pk = elems.IsSequence() ? indexPath(p, k) : p;
+        const int e = checkedIndex(elems.IsSequence() ? elems[k] : elems, pk, "element", m.elements.size());
+        if (!inSet.insert(e).second) fail(pk, "element " + std::to_string(e + 1) + " is listed twice in this set");
+        members.emplace_back(e, pk);
+      }
+    }
+    std::vector<std::string> physNames;
+    if (physical.IsDefined()) {
+      const std::string p = childPath(path, "physical");
+      physNames = getStrings(physical, p);
+      if (!ctx.mesh) fail(p, "physical groups come from a Gmsh file, but the scene has no `mesh:`");
+      for (std::size_t k = 0; k < physNames.size(); ++k) {
+        const std::string pk = physical.IsSequence() ? indexPath(p, k) : p;
+        const GmshPhysicalGroup* g = ctx.mesh->findGroup(physNames[k]);
+        if (!g)
+          fail(pk, "no physical group '" + physNames[k] + "' in " + ctx.mesh->file + suggestion(physNames[k], ctx.mesh->groupNames()));
+        if (g->dim == 0) fail(pk, "physical group '" + physNames[k] + "' holds points, not elements");
+        for (int ge : g->elements) {
+          const int e = ctx.meshElementToModel[static_cast<std::size_t>(ge)];
+          if (e < 0 || !inSet.insert(e).second) continue;
+          members.emplace_back(e, pk);
+        }
+      }
+    }
+    if (members.empty()) fail(physical.IsDefined() ? childPath(path, "physical") : childPath(path, "elems"), "the set has no elements");
+    for (const auto& [e, pk] : members) {
+      const int other = m.elementSet[static_cast<std::size_t>(e)];
+      if (other >= 0)
+        fail(pk, ctx.elementLabel(e) + " is already in eprops[" + std::to_string(other) + "] (" + where[static_cast<std::size_t>(e)] +
+                     "); an element belongs to one set");
+      m.elementSet[static_cast<std::size_t>(e)] = static_cast<int>(i);
+      where[static_cast<std::size_t>(e)] = pk;
+      s.elems.push_back(e);
+    }
+
+    switch (s.type) {
+      case ElementType::Beam: parseBeam(n, path, s); break;
+      case ElementType::Cable: parseCable(n, path, s); break;
+      case ElementType::Membrane: parseMembrane(n, path, s); break;
+      case ElementType::AncfCable2D: parseAncf(n, path, s); break;
+    }
+    parseLook(n, path, s);
+    m.eprops.push_back(std::move(s));
+    ctx.setPhysical.push_back(std::move(physNames));
+  }
+}
+
+void checkElementTypes(SceneContext& ctx) {
+  Model& m = ctx.model;
+  int ancfSet = -1;
+  for (std::size_t i = 0; i < m.eprops.size(); ++i)
+    if (m.eprops[i].type == ElementType::AncfCable2D && ancfSet < 0) ancfSet = static_cast<int>(i);
+  const std::string ancfPath = "eprops[" + std::to_string(ancfSet) + "]";
+
+  for (std::size_t i = 0; i < m.eprops.size(); ++i) {
+    const ElementType t = m.eprops[i].type;
+    const std::string p = childPath(indexPath("eprops", i), "type");
+    if ((t == ElementType::Cable || t == ElementType::Membrane) && m.dimension == 2)
+      fail(p, std::string(typeName(t)) + " elements need a 3D model, but the nodes have 2 coordinates (x, y)");
+    if (ancfSet >= 0 && t != ElementType::AncfCable2D)
+      fail(p, std::string("cannot mix ") + typeName(t) + " elements with ancf_cable2d (" + ancfPath +
+                  "): an ancf_cable2d model is planar and holds only ancf_cable2d elements");
+  }
+  if (ancfSet >= 0 && m.dimension == 3)
+    for (std::size_t k = 0; k < m.nodes.size(); ++k)
+      if (m.nodes[k][2] != 0.0)
+        fail(childPath(ancfPath, "type"), "ancf_cable2d needs a 2D model (nodes with x, y only, or z = 0), but node " +
+                                              std::to_string(k + 1) + " has z = " + fmt(m.nodes[k][2]));
+
+  for (std::size_t e = 0; e < m.elements.size(); ++e) {
+    const int ei = static_cast<int>(e);
+    const int set = m.elementSet[e];
+    const std::size_t nn = m.elements[e].size();
+    if (set < 0) {
+      if (ancfSet >= 0)
+        fail(ctx.elementPath(ei), ctx.elementLabel(ei) + " is in no eprops set (a rigid beam), which cannot be mixed with ancf_cable2d (" +
+                                      ancfPath + ")");
+      if (nn != 2)
+        fail(ctx.elementPath(ei), ctx.elementLabel(ei) + " has " + std::to_string(nn) +
+                                      " nodes but is in no eprops set: an element without a set is a rigid 2-node beam; "
+                                      "3- or 4-node elements need a membrane set");
+      continue;
+    }
+    const ElementType t = m.eprops[static_cast<std::size_t>(set)].type;
+    const bool ok = t == ElementType::Membrane ? (nn == 3 || nn == 4) : nn == 2;
+    if (!ok)
+      fail(ctx.elementPath(ei), ctx.elementLabel(ei) + " has " + std::to_string(nn) + " nodes, but eprops[" + std::to_string(set) +
+                                    "] makes it a " + typeName(t) + ", which needs " +
+                                    (t == ElementType::Membrane ? "3 or 4" : "2"));
+    if (t == ElementType::Membrane) {
+      // Zero area: a triangle (or either half of a quad split along 1-3) with collinear nodes.
+      const auto& el = m.elements[e];
+      auto x = [&](std::size_t k) { return m.nodes[static_cast<std::size_t>(el[k])]; };
+      const double l = std::max(norm(x(1) - x(0)), norm(x(2) - x(0)));
+      auto area2 = [&](std::size_t a, std::size_t b, std::size_t c) { return norm(cross(x(b) - x(a), x(c) - x(a))); };
+      const bool flat = area2(0, 1, 2) <= 1e-12 * l * l || (nn == 4 && area2(0, 2, 3) <= 1e-12 * l * l);
+      if (flat) fail(ctx.elementPath(ei), ctx.elementLabel(ei) + " has zero area: its nodes are collinear");
+    }
+  }
+}
+
+}  // namespace sinew::scene

@@ -1,0 +1,223 @@
+// opt (analysis options, SPACAR Light names plus Sinew's), formfinding (CARAT++ names) and
+// sensors (Exudyn output variables), and the option table shown by -help.
+#include <algorithm>
+#include <cmath>
+#include <set>
+
+#include "scene/nearest_name.hpp"
+#include "scene/scene_detail.hpp"
+#include "scene/scene_reader.hpp"
+
+namespace sinew {
+
+const std::vector<OptionDoc>& sceneOptionDocs() {
+  static const std::vector<OptionDoc> docs = {
+      {"loadsteps", "integer >= 1", "10", "number of load steps of the static analysis"},
+      {"calcbuck", "bool", "false", "compute buckling load multipliers at every load step"},
+      {"calccompl", "bool", "true", "compute compliance matrices of the nodes"},
+      {"calcfreq", "bool", "auto (true when the scene has mass)", "compute natural frequencies"},
+      {"gravity", "[gx, gy, gz]", "none", "gravitational acceleration (m/s^2), e.g. -gravity 0,0,-9.81"},
+      {"rls", "{element: [modes]}", "none", "released deformation modes (1..6) per beam element, e.g. -rls \"{3: [2,3]}\""},
+      {"transfer", "bool or [bool, zeta]", "false", "compute the state-space model, with modal damping ratio zeta"},
+      {"filename", "string", "scene file name", "base name of the result file (<filename>.h5)"},
+      {"stressperelement", "bool", "false", "report the maximum stress per element"},
+      {"rigidstress", "bool", "false", "also report stresses in rigid deformation modes"},
+      {"showinputonly", "bool", "false", "read and check the scene, print it, and stop"},
+      {"silent", "bool", "false", "no summary on stdout"},
+      {"compliance_nodes", "[node numbers]", "all nodes", "nodes whose compliance matrices are computed"},
+      {"dynamics", "{tend, dt, spectral_radius}", "none",
+       "time integration (generalized-alpha) to tend with step dt; spectral_radius in [0,1] defaults to 0.9"},
+      {"nfreq", "integer >= 1", "6", "number of natural frequencies"},
+      {"nbuck", "integer >= 1", "3", "number of buckling load multipliers"},
+  };
+  return docs;
+}
+
+namespace scene {
+
+std::vector<std::string> optionNames() {
+  std::vector<std::string> names;
+  for (const auto& d : sceneOptionDocs()) names.push_back(d.name);
+  return names;
+}
+
+namespace {
+
+const std::vector<std::string> kFormfindingKeys = {
+    "formfinding_step", "max_iter_equilibrium", "equilibrium_accuracy", "formfinding_elements", "homotopy_curve",
+    "stress_adaption",  "lambda_max",           "mue_relax",            "x_urs",                "x_urs_step",
+    "elastic_restart_method"};
+const std::vector<std::string> kSensorKeys = {"element", "x", "variable", "name"};
+const std::vector<std::string> kSensorVariables = {
+    "Position",      "Displacement",   "Velocity",  "VelocityLocal", "Rotation",        "Director1",          "StrainLocal",
+    "CurvatureLocal", "ForceLocal",     "TorqueLocal", "AngularVelocity", "Acceleration", "AngularAcceleration"};
+
+void parseRls(const YAML::Node& v, const std::string& path, SceneContext& ctx) {
+  Model& m = ctx.model;
+  if (!v.IsMap()) fail(path, "expected a map from element numbers to released modes ({3: [2, 3]}), got " + describe(v));
+  for (auto it = v.begin(); it != v.end(); ++it) {
+    const std::string p = childPath(path, keyString(it->first, path));
+    const int e = checkedIndex(it->first, p, "element", m.elements.size());
+    if (m.opt.rls.count(e)) fail(p, "element " + std::to_string(e + 1) + " is given twice");
+    const int set = m.elementSet[static_cast<std::size_t>(e)];
+    const ElementSet* s = set >= 0 ? &m.eprops[static_cast<std::size_t>(set)] : nullptr;
+    if (s && s->type != ElementType::Beam)
+      fail(p, "element " + std::to_string(e + 1) + " is a " + typeName(s->type) +
+                  " (eprops[" + std::to_string(set) + "]); rls releases deformation modes of beam elements");
+    const auto modes = getInts(it->second, p, true);
+    std::vector<int> released;
+    for (std::size_t i = 0; i < modes.size(); ++i) {
+      const std::string pi = it->second.IsSequence() ? indexPath(p, i) : p;
+      if (modes[i] < 1 || modes[i] > 6) fail(pi, "expected a deformation mode 1..6, got " + std::to_string(modes[i]));
+      if (std::find(released.begin(), released.end(), modes[i]) != released.end())
+        fail(pi, "mode " + std::to_string(modes[i]) + " is listed twice");
+      if (s && s->flex[static_cast<std::size_t>(modes[i] - 1)])
+        fail(pi, "mode " + std::to_string(modes[i]) + " of element " + std::to_string(e + 1) + " is flexible (eprops[" +
+                     std::to_string(set) + "].flex); a mode is either flexible or released");
+      released.push_back(modes[i]);
+    }
+    m.opt.rls[e] = released;
+  }
+}
+
+void parseDynamics(const YAML::Node& v, const std::string& path, Options& opt) {
+  checkKeys(v, path, {"tend", "dt", "spectral_radius"});
+  DynamicsOptions d;
+  if (!v["tend"].IsDefined()) fail(childPath(path, "tend"), "missing: dynamics needs tend (end time) > 0");
+  d.tend = getPositive(v["tend"], childPath(path, "tend"));
+  if (!v["dt"].IsDefined()) fail(childPath(path, "dt"), "missing: dynamics needs dt (time step) > 0");
+  d.dt = getPositive(v["dt"], childPath(path, "dt"));
+  if (d.dt > d.tend) fail(childPath(path, "dt"), "expected dt <= tend (" + fmt(d.tend) + "), got " + fmt(d.dt));
+  if (v["spectral_radius"].IsDefined()) d.spectral_radius = getInRange(v["spectral_radius"], childPath(path, "spectral_radius"), 0.0, 1.0);
+  opt.dynamics = d;
+}
+
+}  // namespace
+
+void parseOptions(const YAML::Node& opt, SceneContext& ctx) {
+  Model& m = ctx.model;
+  Options& o = m.opt;
+  if (!opt.IsDefined() || opt.IsNull()) return;
+  checkKeys(opt, "opt", optionNames());
+  for (auto it = opt.begin(); it != opt.end(); ++it) {
+    const std::string k = it->first.Scalar();
+    const YAML::Node v = it->second;
+    const std::string p = childPath("opt", k);
+    if (k == "loadsteps") o.loadsteps = getIntAtLeast(v, p, 1);
+    else if (k == "calcbuck") o.calcbuck = getBool(v, p);
+    else if (k == "calccompl") o.calccompl = getBool(v, p);
+    else if (k == "calcfreq") o.calcfreq = getBool(v, p);
+    else if (k == "gravity") o.gravity = getVec3(v, p, m.dimension == 2);
+    else if (k == "rls") parseRls(v, p, ctx);
+    else if (k == "transfer") {
+      if (v.IsSequence()) {
+        if (v.size() != 2) fail(p, "expected true, false or [true, zeta], got a list of " + std::to_string(v.size()));
+        o.transfer = getBool(v[0], indexPath(p, 0));
+        o.transfer_zeta = getNonNegative(v[1], indexPath(p, 1));
+      } else if (v.IsScalar()) {
+        if (isNumber(v) && v.Scalar() != "0" && v.Scalar() != "1")
+          fail(p, "expected true, false or [true, zeta], got " + describe(v));
+        o.transfer = getBool(v, p);
+      } else {
+        fail(p, "expected true, false or [true, zeta], got " + describe(v));
+      }
+    } else if (k == "filename") {
+      o.filename = getString(v, p);
+      if (o.filename.empty()) fail(p, "expected a file name, got an empty string");
+    } else if (k == "stressperelement") o.stressperelement = getBool(v, p);
+    else if (k == "rigidstress") o.rigidstress = getBool(v, p);
+    else if (k == "showinputonly") o.showinputonly = getBool(v, p);
+    else if (k == "silent") o.silent = getBool(v, p);
+    else if (k == "compliance_nodes") {
+      if (!v.IsSequence() && !v.IsScalar()) fail(p, "expected a list of node numbers, got " + describe(v));
+      std::set<int> seen;
+      for (std::size_t i = 0; i < (v.IsSequence() ? v.size() : 1); ++i) {
+        const std::string pi = v.IsSequence() ? indexPath(p, i) : p;
+        const int n = checkedIndex(v.IsSequence() ? v[i] : v, pi, "node", m.nodes.size());
+        if (!seen.insert(n).second) fail(pi, "node " + std::to_string(n + 1) + " is listed twice");
+        o.compliance_nodes.push_back(n);
+      }
+    } else if (k == "dynamics") parseDynamics(v, p, o);
+    else if (k == "nfreq") o.nfreq = getIntAtLeast(v, p, 1);
+    else if (k == "nbuck") o.nbuck = getIntAtLeast(v, p, 1);
+  }
+}
+
+void parseFormfinding(const YAML::Node& ff, SceneContext& ctx) {
+  Model& m = ctx.model;
+  FormFinding f;
+  if (ff.IsNull()) {
+    m.formfinding = f;
+    return;
+  }
+  checkKeys(ff, "formfinding", kFormfindingKeys);
+  auto p = [](const char* k) { return childPath("formfinding", k); };
+  auto sets = [&](const char* k) {
+    std::vector<int> out;
+    const YAML::Node v = ff[k];
+    if (!v.IsSequence() && !v.IsScalar()) fail(p(k), "expected a list of eprops set numbers (1-based), got " + describe(v));
+    for (std::size_t i = 0; i < (v.IsSequence() ? v.size() : 1); ++i) {
+      const std::string pi = v.IsSequence() ? indexPath(p(k), i) : p(k);
+      const int s = checkedIndex(v.IsSequence() ? v[i] : v, pi, "eprops set", m.eprops.size());
+      if (std::find(out.begin(), out.end(), s) != out.end()) fail(pi, "eprops set " + std::to_string(s + 1) + " is listed twice");
+      out.push_back(s);
+    }
+    return out;
+  };
+  if (ff["formfinding_step"].IsDefined()) f.formfinding_step = getIntAtLeast(ff["formfinding_step"], p("formfinding_step"), 1);
+  if (ff["max_iter_equilibrium"].IsDefined())
+    f.max_iter_equilibrium = getIntAtLeast(ff["max_iter_equilibrium"], p("max_iter_equilibrium"), 1);
+  if (ff["equilibrium_accuracy"].IsDefined()) f.equilibrium_accuracy = getPositive(ff["equilibrium_accuracy"], p("equilibrium_accuracy"));
+  if (ff["formfinding_elements"].IsDefined()) f.formfinding_elements = sets("formfinding_elements");
+  if (const YAML::Node v = ff["homotopy_curve"]; v.IsDefined()) {
+    if (!v.IsSequence()) fail(p("homotopy_curve"), "expected a list of numbers in [0, 1] (one per step), got " + describe(v));
+    for (std::size_t i = 0; i < v.size(); ++i) f.homotopy_curve.push_back(getInRange(v[i], indexPath(p("homotopy_curve"), i), 0.0, 1.0));
+  }
+  if (ff["stress_adaption"].IsDefined()) f.stress_adaption = sets("stress_adaption");
+  if (ff["lambda_max"].IsDefined()) f.lambda_max = getPositive(ff["lambda_max"], p("lambda_max"));
+  if (ff["mue_relax"].IsDefined()) f.mue_relax = getNonNegative(ff["mue_relax"], p("mue_relax"));
+  if (ff["x_urs"].IsDefined()) f.x_urs = getBool(ff["x_urs"], p("x_urs"));
+  if (ff["x_urs_step"].IsDefined()) f.x_urs_step = getIntAtLeast(ff["x_urs_step"], p("x_urs_step"), 1);
+  if (ff["elastic_restart_method"].IsDefined())
+    f.elastic_restart_method = getChoice(ff["elastic_restart_method"], p("elastic_restart_method"), {"NONE", "FORCE", "DISPLACEMENT"});
+  m.formfinding = f;
+}
+
+void parseSensors(const YAML::Node& sensors, SceneContext& ctx) {
+  Model& m = ctx.model;
+  if (!sensors.IsDefined() || sensors.IsNull()) return;
+  if (!sensors.IsSequence())
+    fail("sensors", "expected a list of sensors ({element, x, variable, name}), got " + describe(sensors));
+  for (std::size_t i = 0; i < sensors.size(); ++i) {
+    const std::string path = indexPath("sensors", i);
+    const YAML::Node n = sensors[i];
+    checkKeys(n, path, kSensorKeys);
+    Sensor s;
+    if (!n["element"].IsDefined()) fail(childPath(path, "element"), "missing: a sensor needs the element it samples");
+    s.element = checkedIndex(n["element"], childPath(path, "element"), "element", m.elements.size());
+    if (m.elements[static_cast<std::size_t>(s.element)].size() != 2)
+      fail(childPath(path, "element"), "sensors sample along 2-node elements; element " + std::to_string(s.element + 1) + " has " +
+                                           std::to_string(m.elements[static_cast<std::size_t>(s.element)].size()) + " nodes");
+    if (n["x"].IsDefined()) {
+      const double L = elementLength(m, s.element);
+      s.x = getNumber(n["x"], childPath(path, "x"));
+      if (s.x < -1e-12 * L || s.x > L * (1 + 1e-12))
+        fail(childPath(path, "x"), "expected a position in [0, " + fmt(L) + "] along element " + std::to_string(s.element + 1) +
+                                       " (its length), got " + fmt(s.x));
+      s.x = std::clamp(s.x, 0.0, L);
+    }
+    if (!n["variable"].IsDefined()) fail(childPath(path, "variable"), "missing: a sensor needs a variable (e.g. Position)");
+    s.variable = getChoice(n["variable"], childPath(path, "variable"), kSensorVariables);
+    if (!n["name"].IsDefined()) fail(childPath(path, "name"), "missing: a sensor needs a name (its dataset /sensors/<name>)");
+    s.name = getString(n["name"], childPath(path, "name"));
+    if (s.name.empty() || s.name.find('/') != std::string::npos || s.name == "." )
+      fail(childPath(path, "name"), "expected a name without '/', got '" + s.name + "'");
+    for (std::size_t j = 0; j < m.sensors.size(); ++j)
+      if (m.sensors[j].name == s.name)
+        fail(childPath(path, "name"), "sensor name '" + s.name + "' is already used by sensors[" + std::to_string(j) + "]");
+    m.sensors.push_back(s);
+  }
+}
+
+}  // namespace scene
+}  // namespace sinew

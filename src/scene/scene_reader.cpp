@@ -1,0 +1,346 @@
+// Scene reader: top level, nodes, elements, the Gmsh mesh merge and command-line overrides.
+// The blocks nprops, eprops, opt, formfinding and sensors are read in their own files.
+#include "scene/scene_reader.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include "scene/nearest_name.hpp"
+#include "scene/scene_detail.hpp"
+
+namespace sinew {
+namespace scene {
+
+std::string SceneContext::elementPath(int e) const {
+  return isMeshElement(e) ? std::string("mesh") : indexPath("elements", static_cast<std::size_t>(e));
+}
+
+std::string SceneContext::elementLabel(int e) const {
+  std::string s = "element " + std::to_string(e + 1);
+  if (isMeshElement(e) && mesh) {
+    const auto& g = mesh->elements[static_cast<std::size_t>(modelElementToMesh[static_cast<std::size_t>(e) - sceneElements])];
+    s += " (Gmsh element " + std::to_string(g.tag) + ", " + mesh->file + ":" + std::to_string(g.line) + ")";
+  }
+  return s;
+}
+
+const char* typeName(ElementType t) {
+  switch (t) {
+    case ElementType::Beam: return "beam";
+    case ElementType::Cable: return "cable";
+    case ElementType::Membrane: return "membrane";
+    case ElementType::AncfCable2D: return "ancf_cable2d";
+  }
+  return "beam";
+}
+
+double elementLength(const Model& m, int e) {
+  const auto& el = m.elements[static_cast<std::size_t>(e)];
+  return norm(m.nodes[static_cast<std::size_t>(el[1])] - m.nodes[static_cast<std::size_t>(el[0])]);
+}
+
+int checkedIndex(const YAML::Node& n, const std::string& path, const std::string& what, std::size_t count) {
+  const int v = getInt(n, path);
+  if (v < 1 || static_cast<std::size_t>(v) > count)
+    fail(path, what + " " + std::to_string(v) + " does not exist (the model has " + std::to_string(count) + " " + what +
+                   "s, numbered from 1)");
+  return v - 1;
+}
+
+namespace {
+
+const std::vector<std::string> kTopKeys = {"title", "nodes", "elements", "mesh", "nprops",
+                                           "eprops", "opt", "formfinding", "sensors"};
+
+/// `nodes:` rows of 2 or 3 numbers, all of the same length. Returns the row length (0 if none).
+int parseNodes(const YAML::Node& nodes, Model& m) {
+  if (!nodes.IsDefined() || nodes.IsNull()) return 0;
+  if (!nodes.IsSequence()) fail("nodes", "expected a list of [x, y, z] rows, got " + describe(nodes));
+  int dim = 0;
+  for (std::size_t i = 0; i < nodes.size(); ++i) {
+    const std::string path = indexPath("nodes", i);
+    const YAML::Node row = nodes[i];
+    if (!row.IsSequence()) fail(path, "expected a row [x, y, z] or [x, y] for node " + std::to_string(i + 1) + ", got " + describe(row));
+    const int n = static_cast<int>(row.size());
+    if (n != 2 && n != 3) fail(path, "expected 2 or 3 numbers (x, y[, z]) for node " + std::to_string(i + 1) + ", got " + std::to_string(n));
+    if (dim == 0) dim = n;
+    if (n != dim)
+      fail(path, "expected " + std::to_string(dim) + " numbers like nodes[0] (all nodes have the same dimension), got " + std::to_string(n));
+    const auto x = getNumbers(row, path);
+    m.nodes.push_back({x[0], x[1], n == 3 ? x[2] : 0.0});
+  }
+  return dim;
+}
+
+/// `elements:` rows of 2 to 4 node numbers (ranges are checked once mesh nodes are known).
+void parseElementRows(const YAML::Node& elements, std::vector<std::vector<YAML::Node>>& rows) {
+  if (!elements.IsDefined() || elements.IsNull()) return;
+  if (!elements.IsSequence()) fail("elements", "expected a list of rows of node numbers, got " + describe(elements));
+  for (std::size_t i = 0; i < elements.size(); ++i) {
+    const std::string path = indexPath("elements", i);
+    const YAML::Node row = elements[i];
+    if (!row.IsSequence())
+      fail(path, "expected a row of node numbers for element " + std::to_string(i + 1) + ", got " + describe(row));
+    if (row.size() < 2 || row.size() > 4)
+      fail(path, "expected 2 node numbers (beam, cable) or 3 to 4 (membrane) for element " + std::to_string(i + 1) +
+                     ", got " + std::to_string(row.size()));
+    std::vector<YAML::Node> r;
+    for (std::size_t j = 0; j < row.size(); ++j) r.push_back(row[j]);
+    rows.push_back(std::move(r));
+  }
+}
+
+int elementDim(int gmshType) { return gmshType == 1 ? 1 : (gmshType == 2 || gmshType == 3) ? 2 : 0; }
+
+/// Add the Gmsh nodes and the elements that are not mere node selectors: an element is added
+/// unless every physical group it belongs to is used only as an nprops node group. Without any
+/// physical group, only elements of the highest dimension are added (Gmsh saves the boundary too).
+void mergeMesh(const YAML::Node& root, int sceneDim, SceneContext& ctx) {
+  Model& m = ctx.model;
+  const GmshMesh& mesh = *ctx.mesh;
+  std::set<std::string> epNames, npNames;
+  for (const auto& names : scanPhysicalNames(root["eprops"])) epNames.insert(names.begin(), names.end());
+  for (const auto& k : scanNodeGroupKeys(root["nprops"])) npNames.insert(k);
+
+  for (std::size_t i = 0; i < mesh.nodes.size(); ++i) {
+    const Vec3& x = mesh.nodes[i];
+    if (sceneDim == 2 && x[2] != 0.0)
+      fail("mesh", mesh.file + ":" + std::to_string(mesh.nodeLines[i]) + ": node tag " + std::to_string(mesh.nodeTags[i]) +
+                       " has z = " + fmt(x[2]) + ", but the scene's nodes are 2D (x, y)");
+    m.nodes.push_back(x);
+  }
+
+  int maxDim = 0;
+  for (const auto& e : mesh.elements) maxDim = std::max(maxDim, elementDim(e.type));
+  ctx.meshElementToModel.assign(mesh.elements.size(), -1);
+  for (std::size_t i = 0; i < mesh.elements.size(); ++i) {
+    const auto& e = mesh.elements[i];
+    if (elementDim(e.type) == 0) continue;
+    bool add = false;
+    if (e.groups.empty()) {
+      add = mesh.groups.empty() && elementDim(e.type) == maxDim;
+    } else {
+      bool inEprops = false, onlyNodeGroup = true;
+      for (int g : e.groups) {
+        const std::string& name = mesh.groups[static_cast<std::size_t>(g)].name;
+        if (epNames.count(name)) inEprops = true;
+        if (!npNames.count(name)) onlyNodeGroup = false;
+      }
+      add = inEprops || !onlyNodeGroup;
+    }
+    if (!add) continue;
+    ctx.meshElementToModel[i] = static_cast<int>(m.elements.size());
+    ctx.modelElementToMesh.push_back(static_cast<int>(i));
+    std::vector<int> el;
+    for (int n : e.nodes) el.push_back(static_cast<int>(ctx.sceneNodes) + n);
+    m.elements.push_back(std::move(el));
+  }
+}
+
+/// Element rows: node numbers in range, no node twice, no two nodes at the same place.
+void checkElementNodes(const std::vector<std::vector<YAML::Node>>& rows, SceneContext& ctx) {
+  Model& m = ctx.model;
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    std::vector<int> el;
+    for (std::size_t j = 0; j < rows[i].size(); ++j) {
+      const std::string path = indexPath(indexPath("elements", i), j);
+      const YAML::Node& n = rows[i][j];
+      if (!isNumber(n)) fail(path, "expected a node number, got " + describe(n));
+      el.push_back(checkedIndex(n, path, "node", m.nodes.size()));
+    }
+    m.elements[i] = std::move(el);
+  }
+  Vec3 lo = m.nodes[0], hi = m.nodes[0];
+  for (const auto& x : m.nodes)
+    for (int k = 0; k < 3; ++k) {
+      lo[static_cast<std::size_t>(k)] = std::min(lo[static_cast<std::size_t>(k)], x[static_cast<std::size_t>(k)]);
+      hi[static_cast<std::size_t>(k)] = std::max(hi[static_cast<std::size_t>(k)], x[static_cast<std::size_t>(k)]);
+    }
+  const double tol = 1e-12 * norm(hi - lo);
+  for (std::size_t e = 0; e < m.elements.size(); ++e) {
+    const auto& el = m.elements[e];
+    const int ei = static_cast<int>(e);
+    for (std::size_t a = 0; a < el.size(); ++a)
+      for (std::size_t b = a + 1; b < el.size(); ++b) {
+        if (el[a] == el[b])
+          fail(ctx.elementPath(ei), ctx.elementLabel(ei) + " lists node " + std::to_string(el[a] + 1) + " twice");
+        if (norm(m.nodes[static_cast<std::size_t>(el[a])] - m.nodes[static_cast<std::size_t>(el[b])]) <= tol)
+          fail(ctx.elementPath(ei), ctx.elementLabel(ei) + " has zero length: nodes " + std::to_string(el[a] + 1) + " and " +
+                                        std::to_string(el[b] + 1) + " coincide");
+      }
+  }
+}
+
+void parseRoot(const YAML::Node& root, const std::string& baseDir, Model& m) {
+  if (!root.IsDefined() || root.IsNull()) fail("", "the scene is empty: expected a map with at least nodes and elements");
+  if (!root.IsMap()) fail("", "expected a map of top-level keys (title, nodes, elements, ...), got " + describe(root));
+  checkKeys(root, "", kTopKeys);
+  SceneContext ctx{m};
+
+  const YAML::Node title = root["title"];
+  if (title.IsDefined() && !title.IsNull()) m.title = getString(title, "title");
+
+  const bool hasMesh = root["mesh"].IsDefined();
+  if (!root["nodes"].IsDefined() && !hasMesh) fail("nodes", "missing: the scene needs a list of node coordinates");
+  if (!root["elements"].IsDefined() && !hasMesh) fail("elements", "missing: the scene needs a list of elements (rows of node numbers)");
+  const int sceneDim = parseNodes(root["nodes"], m);
+  std::vector<std::vector<YAML::Node>> rows;
+  parseElementRows(root["elements"], rows);
+  ctx.sceneNodes = m.nodes.size();
+  ctx.sceneElements = rows.size();
+  m.elements.resize(rows.size());
+
+  if (hasMesh) {
+    const std::string rel = getString(root["mesh"], "mesh");
+    if (rel.empty()) fail("mesh", "expected the path of a Gmsh 4 .msh file, got an empty string");
+    std::filesystem::path p(rel);
+    if (p.is_relative() && !baseDir.empty()) p = std::filesystem::path(baseDir) / p;
+    ctx.mesh = readGmsh(p.lexically_normal().string());
+    mergeMesh(root, sceneDim, ctx);
+  }
+  m.dimension = (ctx.sceneNodes > 0 && sceneDim == 2) ? 2 : 3;
+  if (m.nodes.empty()) fail("nodes", "the model has no nodes");
+  if (m.elements.empty()) fail("elements", "the model has no elements");
+  checkElementNodes(rows, ctx);
+
+  parseEprops(root["eprops"], ctx);
+  checkElementTypes(ctx);
+  parseNprops(root["nprops"], ctx);
+  parseOptions(root["opt"], ctx);
+  const YAML::Node ff = root["formfinding"];
+  if (ff.IsDefined()) parseFormfinding(ff, ctx);
+  parseSensors(root["sensors"], ctx);
+}
+
+/// A command-line value as a YAML node: "0,0,-9.81" -> [0, 0, -9.81]; "" -> true.
+YAML::Node overrideNode(const std::string& name, const std::string& value) {
+  std::string text = value;
+  const auto first = text.find_first_not_of(" \t");
+  if (first == std::string::npos) return YAML::Node(true);
+  const char c = text[first];
+  if (text.find(',') != std::string::npos && c != '[' && c != '{' && c != '"' && c != '\'') text = "[" + text + "]";
+  try {
+    return YAML::Load(text);
+  } catch (const YAML::Exception& e) {
+    fail(childPath("opt", name), "cannot read the command-line value '" + value + "' of -" + name + ": " + e.msg);
+  }
+}
+
+void applyOverrides(YAML::Node& root, const OptionOverride& overrides, std::vector<std::pair<std::string, std::string>>& applied) {
+  if (!overrides) return;
+  if (!root.IsDefined() || root.IsNull()) root = YAML::Node(YAML::NodeType::Map);
+  if (!root.IsMap()) return;
+  for (const auto& name : optionNames()) {
+    const std::optional<std::string> v = overrides(name);
+    if (!v) continue;
+    const YAML::Node value = overrideNode(name, *v);
+    if (!root["opt"].IsDefined() || root["opt"].IsNull()) root["opt"] = YAML::Node(YAML::NodeType::Map);
+    if (!root["opt"].IsMap()) return;  // reported by the opt reader
+    root["opt"][name] = value;
+    applied.emplace_back(name, *v);
+  }
+}
+
+/// Scene line of the deepest node along `path` (1-based), 0 when unknown.
+int lineOf(const YAML::Node& root, const std::string& path) {
+  YAML::Node cur;
+  cur.reset(root);
+  int line = 0;
+  std::size_t i = 0;
+  while (i < path.size()) {
+    if (path[i] == '.') ++i;
+    if (i < path.size() && path[i] == '[') {
+      const std::size_t close = path.find(']', i);
+      if (close == std::string::npos) break;
+      const std::size_t k = std::stoul(path.substr(i + 1, close - i - 1));
+      i = close + 1;
+      if (!cur.IsSequence() || k >= cur.size()) break;
+      const YAML::Node& seq = cur;
+      YAML::Node next = seq[k];
+      cur.reset(next);
+      if (cur.Mark().line >= 0) line = cur.Mark().line + 1;
+      continue;
+    }
+    std::size_t end = path.find_first_of(".[", i);
+    if (end == std::string::npos) end = path.size();
+    const std::string key = path.substr(i, end - i);
+    i = end;
+    if (!cur.IsMap()) break;
+    bool found = false;
+    for (auto it = cur.begin(); it != cur.end(); ++it) {
+      if (it->first.IsScalar() && it->first.Scalar() == key) {
+        if (it->first.Mark().line >= 0) line = it->first.Mark().line + 1;
+        YAML::Node next = it->second;
+        cur.reset(next);
+        found = true;
+        break;
+      }
+    }
+    if (!found) break;
+  }
+  return line;
+}
+
+SceneError locate(const SceneError& e, const YAML::Node& root,
+                  const std::vector<std::pair<std::string, std::string>>& overridden, const std::string& fileLabel) {
+  const std::string& path = e.path();
+  std::string message = e.what();
+  if (!path.empty() && message.rfind(path + ": ", 0) == 0) message = message.substr(path.size() + 2);
+  if (path == "mesh" && message.find(".msh") != std::string::npos) return SceneError(path, message);
+  for (const auto& [name, value] : overridden) {
+    const std::string p = "opt." + name;
+    if (path == p || path.rfind(p + ".", 0) == 0 || path.rfind(p + "[", 0) == 0)
+      return SceneError(path, message + " (from the command line: -" + name + " " + value + ")");
+  }
+  const int line = lineOf(root, path);
+  if (line > 0) message += " (" + (fileLabel.empty() ? std::string() : fileLabel + " ") + "line " + std::to_string(line) + ")";
+  else if (!fileLabel.empty()) message += " (" + fileLabel + ")";
+  return SceneError(path, message);
+}
+
+Model parseSceneImpl(const std::string& text, const std::string& baseDir, const OptionOverride& overrides,
+                     const std::string& fileLabel) {
+  Model m;
+  m.sceneText = text;
+  YAML::Node root;
+  try {
+    root = YAML::Load(text);
+  } catch (const YAML::Exception& e) {
+    throw SceneError("", (fileLabel.empty() ? std::string() : fileLabel + ": ") + "YAML syntax error at line " +
+                             std::to_string(e.mark.line + 1) + ", column " + std::to_string(e.mark.column + 1) + ": " + e.msg);
+  }
+  std::vector<std::pair<std::string, std::string>> overridden;
+  try {
+    applyOverrides(root, overrides, overridden);
+    parseRoot(root, baseDir, m);
+  } catch (const SceneError& e) {
+    throw locate(e, root, overridden, fileLabel);
+  } catch (const YAML::Exception& e) {
+    throw SceneError("", (fileLabel.empty() ? std::string() : fileLabel + ": ") + "cannot read the scene: " + e.what());
+  }
+  return m;
+}
+
+}  // namespace
+}  // namespace scene
+
+Model parseScene(const std::string& text, const std::string& baseDir, const OptionOverride& overrides) {
+  return scene::parseSceneImpl(text, baseDir, overrides, "");
+}
+
+Model readScene(const std::string& path, const OptionOverride& overrides) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw SceneError("", "cannot open scene file '" + path + "'");
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  const std::filesystem::path p(path);
+  Model m = scene::parseSceneImpl(ss.str(), p.parent_path().string(), overrides, p.filename().string());
+  if (m.opt.filename.empty()) m.opt.filename = p.stem().string();
+  return m;
+}
+
+}  // namespace sinew

@@ -1,0 +1,32 @@
+// Scene reader (design.md section 2): YAML scene (+ optional Gmsh 4 mesh) -> validated Model.
+// Every problem throws sinew::SceneError(path, message). Paths join map keys with '.' and give
+// list positions 0-based in brackets: `nodes[3]`, `elements[2][1]`, `nprops.7.force`,
+// `eprops[2].dim`, `opt.loadsteps`; messages use the 1-based node/element numbers of the scene
+// and end with the scene line ("(line 12)", or "(file.yaml line 12)" from readScene).
+#pragma once
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "sinew/model.hpp"
+
+namespace sinew {
+
+/// overrides(name) returns the command-line value for opt field `name` (e.g. "40", "true",
+/// "0,0,-9.81", "{3: [2,3]}") or nullopt. Values are YAML scalars or flow sequences/maps; a bare
+/// comma list "0,0,-9.81" means [0,0,-9.81]; an empty value means true (a flag given alone).
+using OptionOverride = std::function<std::optional<std::string>(const std::string& optName)>;
+
+/// Parse scene text. baseDir resolves `mesh:`. Model.sceneText = text.
+Model parseScene(const std::string& text, const std::string& baseDir, const OptionOverride& overrides = {});
+/// Read a scene file; messages name the file. opt.filename defaults to the file's stem.
+Model readScene(const std::string& path, const OptionOverride& overrides = {});
+
+/// Every opt field with its type and default, for -help.
+struct OptionDoc {
+  std::string name, type, defaultValue, help;
+};
+const std::vector<OptionDoc>& sceneOptionDocs();
+
+}  // namespace sinew

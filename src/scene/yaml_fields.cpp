@@ -1,0 +1,174 @@
+#include "scene/yaml_fields.hpp"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <limits>
+#include <set>
+
+#include "scene/nearest_name.hpp"
+
+namespace sinew::scene {
+
+std::string childPath(const std::string& path, const std::string& key) {
+  return path.empty() ? key : path + "." + key;
+}
+
+std::string indexPath(const std::string& path, std::size_t i) {
+  return path + "[" + std::to_string(i) + "]";
+}
+
+std::string fmt(double v) {
+  char buf[64];
+  auto res = std::to_chars(buf, buf + sizeof buf, v);
+  return std::string(buf, res.ptr);
+}
+
+std::string describe(const YAML::Node& n) {
+  if (!n.IsDefined() || n.IsNull()) return "nothing";
+  if (n.IsMap()) return "a map";
+  if (n.IsSequence()) return "a list of " + std::to_string(n.size());
+  const std::string s = n.Scalar();
+  if (n.Tag() == "!") return "the string '" + s + "'";
+  if (isNumber(n)) return s;
+  return "'" + s + "'";
+}
+
+void fail(const std::string& path, const std::string& message) { throw SceneError(path, message); }
+
+bool isPresent(const YAML::Node& n) { return n.IsDefined(); }
+
+bool isNumber(const YAML::Node& n) {
+  if (!n.IsDefined() || !n.IsScalar() || n.Tag() == "!") return false;
+  double v = 0;
+  return YAML::convert<double>::decode(n, v) && std::isfinite(v);
+}
+
+double getNumber(const YAML::Node& n, const std::string& path) {
+  if (!isNumber(n)) fail(path, "expected a number, got " + describe(n));
+  return n.as<double>();
+}
+
+double getPositive(const YAML::Node& n, const std::string& path) {
+  const double v = getNumber(n, path);
+  if (!(v > 0)) fail(path, "expected a number > 0, got " + fmt(v));
+  return v;
+}
+
+double getNonNegative(const YAML::Node& n, const std::string& path) {
+  const double v = getNumber(n, path);
+  if (v < 0) fail(path, "expected a number >= 0, got " + fmt(v));
+  return v;
+}
+
+double getInRange(const YAML::Node& n, const std::string& path, double lo, double hi, bool hiOpen) {
+  const double v = getNumber(n, path);
+  if (v < lo || v > hi || (hiOpen && v == hi))
+    fail(path, "expected a number in [" + fmt(lo) + ", " + fmt(hi) + (hiOpen ? ")" : "]") + ", got " + fmt(v));
+  return v;
+}
+
+int getInt(const YAML::Node& n, const std::string& path) {
+  if (!isNumber(n)) fail(path, "expected an integer, got " + describe(n));
+  const double v = n.as<double>();
+  if (v != std::floor(v) || std::abs(v) > std::numeric_limits<int>::max())
+    fail(path, "expected an integer, got " + n.Scalar());
+  return static_cast<int>(v);
+}
+
+int getIntAtLeast(const YAML::Node& n, const std::string& path, int min) {
+  const int v = getInt(n, path);
+  if (v < min) fail(path, "expected an integer >= " + std::to_string(min) + ", got " + std::to_string(v));
+  return v;
+}
+
+bool getBool(const YAML::Node& n, const std::string& path) {
+  if (n.IsDefined() && n.IsScalar() && n.Tag() != "!") {
+    bool b = false;
+    if (YAML::convert<bool>::decode(n, b)) return b;
+    if (n.Scalar() == "0") return false;
+    if (n.Scalar() == "1") return true;
+  }
+  fail(path, "expected true or false, got " + describe(n));
+}
+
+std::string getString(const YAML::Node& n, const std::string& path) {
+  if (!n.IsDefined() || !n.IsScalar()) fail(path, "expected a string, got " + describe(n));
+  return n.Scalar();
+}
+
+std::string getChoice(const YAML::Node& n, const std::string& path, const std::vector<std::string>& choices) {
+  std::string list;
+  for (const auto& c : choices) list += (list.empty() ? "" : " | ") + c;
+  if (!n.IsDefined() || !n.IsScalar()) fail(path, "expected one of " + list + ", got " + describe(n));
+  const std::string s = n.Scalar();
+  if (std::find(choices.begin(), choices.end(), s) != choices.end()) return s;
+  const std::string near = nearestName(s, choices);
+  fail(path, "expected one of " + list + ", got '" + s + "'" + (near.empty() ? "" : " (did you mean '" + near + "'?)"));
+}
+
+void requireMap(const YAML::Node& n, const std::string& path) {
+  if (!n.IsDefined() || !n.IsMap()) fail(path, "expected a map, got " + describe(n));
+}
+
+void requireList(const YAML::Node& n, const std::string& path) {
+  if (!n.IsDefined() || !n.IsSequence()) fail(path, "expected a list, got " + describe(n));
+}
+
+std::vector<double> getNumbers(const YAML::Node& n, const std::string& path) {
+  if (!n.IsDefined() || !n.IsSequence()) fail(path, "expected a list of numbers, got " + describe(n));
+  std::vector<double> v;
+  v.reserve(n.size());
+  for (std::size_t i = 0; i < n.size(); ++i) v.push_back(getNumber(n[i], indexPath(path, i)));
+  return v;
+}
+
+std::vector<double> getNumbers(const YAML::Node& n, const std::string& path, std::size_t count) {
+  const std::string what = "expected " + std::to_string(count) + (count == 1 ? " number" : " numbers");
+  if (!n.IsDefined() || !n.IsSequence()) fail(path, what + ", got " + describe(n));
+  if (n.size() != count) fail(path, what + ", got " + std::to_string(n.size()));
+  return getNumbers(n, path);
+}
+
+Vec3 getVec3(const YAML::Node& n, const std::string& path, bool allow2) {
+  const std::string what = allow2 ? "expected 3 numbers (or 2 in a 2D model)" : "expected 3 numbers";
+  if (!n.IsDefined() || !n.IsSequence()) fail(path, what + ", got " + describe(n));
+  if (n.size() != 3 && !(allow2 && n.size() == 2)) fail(path, what + ", got " + std::to_string(n.size()));
+  const auto v = getNumbers(n, path);
+  return {v[0], v[1], v.size() == 3 ? v[2] : 0.0};
+}
+
+std::vector<int> getInts(const YAML::Node& n, const std::string& path, bool scalarOk) {
+  if (scalarOk && n.IsDefined() && n.IsScalar()) return {getInt(n, path)};
+  if (!n.IsDefined() || !n.IsSequence()) fail(path, "expected a list of integers, got " + describe(n));
+  std::vector<int> v;
+  v.reserve(n.size());
+  for (std::size_t i = 0; i < n.size(); ++i) v.push_back(getInt(n[i], indexPath(path, i)));
+  return v;
+}
+
+std::vector<std::string> getStrings(const YAML::Node& n, const std::string& path) {
+  if (n.IsDefined() && n.IsScalar()) return {n.Scalar()};
+  if (!n.IsDefined() || !n.IsSequence()) fail(path, "expected a list of strings, got " + describe(n));
+  std::vector<std::string> v;
+  for (std::size_t i = 0; i < n.size(); ++i) v.push_back(getString(n[i], indexPath(path, i)));
+  return v;
+}
+
+std::string keyString(const YAML::Node& key, const std::string& path) {
+  if (!key.IsScalar()) fail(path, "expected scalar keys, got " + describe(key) + " as a key");
+  return key.Scalar();
+}
+
+void checkKeys(const YAML::Node& n, const std::string& path, const std::vector<std::string>& allowed) {
+  requireMap(n, path);
+  std::set<std::string> seen;
+  for (auto it = n.begin(); it != n.end(); ++it) {
+    const std::string k = keyString(it->first, path);
+    if (std::find(allowed.begin(), allowed.end(), k) == allowed.end())
+      fail(childPath(path, k), "unknown key '" + k + "'" + suggestion(k, allowed));
+    if (!seen.insert(k).second) fail(childPath(path, k), "key '" + k + "' is given twice");
+  }
+}
+
+}  // namespace sinew::scene

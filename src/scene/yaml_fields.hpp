@@ -1,0 +1,61 @@
+// Typed access to YAML scene fields. Every getter takes the field's path (e.g. "eprops[2].dim")
+// and throws sinew::SceneError(path, "expected ..., got ...") when the value does not fit.
+// Paths: map keys joined with '.', list positions 0-based in brackets.
+#pragma once
+#include <yaml-cpp/yaml.h>
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "sinew/model.hpp"
+
+namespace sinew::scene {
+
+std::string childPath(const std::string& path, const std::string& key);
+std::string indexPath(const std::string& path, std::size_t i);
+
+/// Short description of a value for messages: "a map", "a list of 2", "nothing", "'abc'", "3.5".
+std::string describe(const YAML::Node& n);
+/// Number formatted for messages (shortest round-trip form).
+std::string fmt(double v);
+
+[[noreturn]] void fail(const std::string& path, const std::string& message);
+
+bool isNumber(const YAML::Node& n);  ///< plain scalar holding a finite number
+bool isPresent(const YAML::Node& n);  ///< defined (a key given with an empty value counts as present)
+
+double getNumber(const YAML::Node& n, const std::string& path);
+double getPositive(const YAML::Node& n, const std::string& path);     ///< > 0
+double getNonNegative(const YAML::Node& n, const std::string& path);  ///< >= 0
+/// Number in [lo, hi] (or [lo, hi) with hiOpen).
+double getInRange(const YAML::Node& n, const std::string& path, double lo, double hi, bool hiOpen = false);
+int getInt(const YAML::Node& n, const std::string& path);
+int getIntAtLeast(const YAML::Node& n, const std::string& path, int min);
+/// true/false (also yes/no/on/off) or 0/1.
+bool getBool(const YAML::Node& n, const std::string& path);
+std::string getString(const YAML::Node& n, const std::string& path);
+/// One of `choices` (message lists them and suggests the nearest).
+std::string getChoice(const YAML::Node& n, const std::string& path, const std::vector<std::string>& choices);
+
+void requireMap(const YAML::Node& n, const std::string& path);
+void requireList(const YAML::Node& n, const std::string& path);
+
+/// A list of numbers of any length.
+std::vector<double> getNumbers(const YAML::Node& n, const std::string& path);
+/// A list of exactly `count` numbers.
+std::vector<double> getNumbers(const YAML::Node& n, const std::string& path, std::size_t count);
+/// [x, y, z]; with allow2, also [x, y] (z = 0) for 2D models.
+Vec3 getVec3(const YAML::Node& n, const std::string& path, bool allow2 = false);
+/// A list of integers; a single integer is accepted as a list of one when scalarOk.
+std::vector<int> getInts(const YAML::Node& n, const std::string& path, bool scalarOk = false);
+/// A list of strings; a single string is accepted as a list of one.
+std::vector<std::string> getStrings(const YAML::Node& n, const std::string& path);
+
+/// Every key of map `n` must be in `allowed` and appear once; otherwise
+/// "unknown key 'emodd' (did you mean 'emod'?)" at path.key.
+void checkKeys(const YAML::Node& n, const std::string& path, const std::vector<std::string>& allowed);
+/// The key text of a map entry (scalar keys only).
+std::string keyString(const YAML::Node& key, const std::string& path);
+
+}  // namespace sinew::scene

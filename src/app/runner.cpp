@@ -12,6 +12,7 @@
 #include "analysis/step_analysis.hpp"
 #include "analysis/step_results.hpp"
 #include "app/plan.hpp"
+#include "app/run_context.hpp"
 #include "app/summary.hpp"
 #include "assembly/assembler.hpp"
 #include "assembly/kernel_factory.hpp"
@@ -147,70 +148,61 @@ PetscErrorCode runFromCommandLine(int argc, char** argv, int* exitCode) {
   for (const Vec3& x : initialPositions) p0.insert(p0.end(), x.begin(), x.end());
   file->writeArray("node/p0", p0, {static_cast<long>(initialPositions.size()), 3});
 
-  std::vector<std::unique_ptr<StepAnalysis>> stepAnalyses;
-  Vec U;
-  PetscCall(assembler.createVector(&U));
-  PetscCall(VecSet(U, 0.0));
-  bool converged = true;
-  std::string failure;
-  std::vector<StepReport> reports;
-  double tStatics = MPI_Wtime();
+  RunContext ctx(model, plan, assembler, results, *file);
+  ctx.comm = comm;
+  ctx.times = times;
+  PetscCall(assembler.createVector(&ctx.U));
+  PetscCall(VecSet(ctx.U, 0.0));
+  PetscCall(addStepAnalyses(ctx));
   if (model.opt.showinputonly) {
     LoadState ls;
-    file->beginStep(0, 0.0);
-    PetscCall(results.write(*file, U, ls));
-  } else if (plan.statics) {
-    StaticAnalysis statics(assembler, model.opt.loadsteps);
-    int stepIndex = 0;
-    auto onStep = [&](const StepReport& rep, Vec Ustep) -> PetscErrorCode {
-      PetscFunctionBeginUser;
-      const double tOut = MPI_Wtime();
-      LoadState ls;
-      ls.loadFactor = rep.loadFactor;
-      ls.time = rep.loadFactor;
-      file->beginStep(stepIndex++, rep.loadFactor);
-      PetscCall(results.write(*file, Ustep, ls));
-      times.output += MPI_Wtime() - tOut;
-      for (auto& a : stepAnalyses) {
-        const double ta = MPI_Wtime();
-        bool ok = true;
-        PetscCall(a->atStep(Ustep, ls, *file, &ok));
-        times.analyses += MPI_Wtime() - ta;
-        if (!ok) {
-          converged = false;
-          failure = a->failure();
-        }
+    file->beginStep(ctx.nextStep++, 0.0);
+    PetscCall(results.write(*file, ctx.U, ls));
+  } else {
+    if (plan.formfinding) PetscCall(runFormFinding(ctx));
+    if (ctx.converged && plan.dynamics) {
+      PetscCall(runDynamics(ctx));
+    } else if (ctx.converged && plan.statics) {
+      const double tStatics = MPI_Wtime();
+      const double outBefore = ctx.times.output, anaBefore = ctx.times.analyses;
+      StaticAnalysis statics(assembler, model.opt.loadsteps);
+      auto onStep = [&](const StepReport& rep, Vec Ustep) -> PetscErrorCode {
+        LoadState ls;
+        ls.loadFactor = rep.loadFactor;
+        ls.time = rep.loadFactor;
+        return ctx.writeStep(rep.loadFactor, Ustep, ls);
+      };
+      bool ok = false;
+      PetscCall(statics.run(ctx.U, onStep, &ok));
+      ctx.reports = statics.reports();
+      if (!ok && ctx.converged) {
+        ctx.converged = false;
+        ctx.failure = statics.failureMessage();
       }
-      PetscFunctionReturn(PETSC_SUCCESS);
-    };
-    bool ok = false;
-    PetscCall(statics.run(U, onStep, &ok));
-    reports = statics.reports();
-    if (!ok) {
-      converged = false;
-      failure = statics.failureMessage();
+      ctx.times.statics = MPI_Wtime() - tStatics - (ctx.times.output - outBefore) - (ctx.times.analyses - anaBefore);
     }
   }
-  times.statics = MPI_Wtime() - tStatics - times.output - times.analyses;
 
   const double tClose = MPI_Wtime();
-  file->close(converged);
-  times.output += MPI_Wtime() - tClose;
+  file->close(ctx.converged);
+  ctx.times.output += MPI_Wtime() - tClose;
   SummaryBody body;
-  body.reports = reports;
+  body.reports = ctx.reports;
   body.nodes = results.summaryRows();
-  body.stress = plan.stress;
+  body.stress = plan.stress && ctx.nextStep > 0;
   body.stressMax = results.lastStressMax();
   body.stressElement = results.lastStressElement();
-  for (auto& a : stepAnalyses) body.analysisLines += a->summary();
+  body.analysisLines = ctx.summaryLines;
+  for (auto& a : ctx.stepAnalyses) body.analysisLines += a->summary();
   body.counters = assembler.counters();
-  body.times = times;
+  body.times = ctx.times;
   body.h5 = file->path();
   body.xdmf = file->xdmfPath();
-  body.converged = converged;
-  body.failure = failure;
+  body.converged = ctx.converged;
+  body.failure = ctx.failure;
   PetscCall(printSummary(comm, body));
-  PetscCall(VecDestroy(&U));
+  PetscCall(VecDestroy(&ctx.U));
+  const bool converged = ctx.converged;
   *exitCode = converged ? 0 : 3;
   PetscFunctionReturn(PETSC_SUCCESS);
 }

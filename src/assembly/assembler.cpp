@@ -259,6 +259,26 @@ PetscErrorCode Assembler::updateStates(Vec U, const LoadState& ls) {
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+PetscErrorCode Assembler::beginLocal(Vec U, const LoadState& ls, const double** u) {
+  PetscFunctionBeginUser;
+  PetscCall(loadLocal(U, uWork_));
+  Vec ul;
+  PetscCall(VecGhostGetLocalForm(uWork_, &ul));
+  PetscCall(VecGetArrayRead(ul, u));
+  PetscCall(VecGhostRestoreLocalForm(uWork_, &ul));  // the array stays valid until endLocal
+  computeStates(*u, ls);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode Assembler::endLocal(const double** u) {
+  PetscFunctionBeginUser;
+  Vec ul;
+  PetscCall(VecGhostGetLocalForm(uWork_, &ul));
+  PetscCall(VecRestoreArrayRead(ul, u));
+  PetscCall(VecGhostRestoreLocalForm(uWork_, &ul));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode Assembler::residual(Vec U, const LoadState& ls, Vec F) {
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(SinewEvents::get().residual, 0, 0, 0, 0));

@@ -63,6 +63,19 @@ class Assembler {
   std::vector<Mat3> referenceRotations() const { return Rref_; }
   void setReferenceRotations(const std::vector<Mat3>& r) { Rref_ = r; }
 
+  // ---- building blocks for analyses that run their own element loops (dynamics, form finding)
+  /// Ghost-updated local form of U (owned entries, then ghosts) with the node states evaluated;
+  /// pair with endLocal(). Indices from gather() address this array.
+  PetscErrorCode beginLocal(Vec U, const LoadState& ls, const double** u);
+  PetscErrorCode endLocal(const double** u);
+  /// Element state q (kernel layout) and local unknown indices (-1 = constrained; multipliers
+  /// after the node DOFs) after beginLocal() or any evaluation.
+  void gather(const LocalElement& el, double* q, int* idx) const { gatherElement(el, q, nullptr, idx, nullptr); }
+  /// Multiplies the spin columns of a dense n x n element tangent by T(theta) (exact Jacobian columns).
+  void applyRotationColumns(const LocalElement& el, int n, double* K) const { rotationColumns(el, n, K); }
+  ISLocalToGlobalMapping localToGlobal() const { return l2g_; }
+  AssemblyCounters& mutableCounters() { return counters_; }
+
   const AssemblyCounters& counters() const { return counters_; }
   bool hasInertia() const { return hasInertia_; }
   bool hasGravity() const { return gravity_.has_value(); }

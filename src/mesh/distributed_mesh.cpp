@@ -260,6 +260,8 @@ DistributedMesh distributeMesh(MPI_Comm comm, const Model& model, const FeMesh& 
     LocalElement le;
     le.feIndex = e;
     le.sceneElement = fe.elements[e].sceneElement;
+    le.subIndex = e - fe.sceneElementFirst[le.sceneElement];
+    le.numSub = fe.sceneElementCount[le.sceneElement];
     le.set = fe.elements[e].set;
     le.numNodes = fe.elements[e].numNodes;
     for (int i = 0; i < le.numNodes; ++i) le.node[i] = localOf[fe.elements[e].nodes[i]];

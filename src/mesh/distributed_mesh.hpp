@@ -38,6 +38,7 @@ struct LocalNode {
 struct LocalElement {
   long feIndex = 0;       ///< global FE element id
   int sceneElement = 0;
+  int subIndex = 0, numSub = 1;  ///< position of this FE element in its nbeams-split scene element
   int set = -1;
   int numNodes = 0;
   std::array<int, 4> node{};  ///< local node indices

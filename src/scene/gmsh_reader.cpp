@@ -214,7 +214,7 @@ GmshMesh parseGmsh(std::istream& in, const std::string& file) {
         lex.integer("the minimum node tag");
         lex.integer("the maximum node tag");
       }
-      mesh.nodes.reserve(static_cast<std::size_t>(std::max(0LL, total)));
+      mesh.nodes.reserve(static_cast<std::size_t>(std::clamp(total, 0LL, 1LL << 20)));
       for (long long b = 0; b < blocks; ++b) {
         long long dim = 0, tag = 0;
         if (v41) {

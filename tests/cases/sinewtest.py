@@ -1,0 +1,85 @@
+"""Helpers for Sinew's system tests: run the sinew executable on a scene under mpirun and read
+the HDF5 result with h5py. Each test_*.py file is one ctest case; it exits non-zero on failure
+and prints the measured errors it compared."""
+import json
+import os
+import subprocess
+import sys
+
+import h5py
+import numpy as np
+
+SOURCE = os.environ.get("SINEW_SOURCE_DIR", os.path.join(os.path.dirname(__file__), "..", ".."))
+BIN = os.environ.get("SINEW_BIN", os.path.join(SOURCE, "build", "sinew"))
+MPIEXEC = os.environ.get("SINEW_MPIEXEC", "mpirun")
+WORK = os.environ.get("SINEW_WORK_DIR", os.path.join(SOURCE, "build", "tests", "work"))
+ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
+           OMPI_MCA_rmaps_base_oversubscribe="1")
+
+_failures = []
+
+
+def scene_file(name, scene):
+    """Writes a scene (dict -> JSON, which is YAML) or text to WORK/name.yaml; returns the path."""
+    os.makedirs(WORK, exist_ok=True)
+    path = os.path.join(WORK, name + ".yaml")
+    with open(path, "w") as f:
+        f.write(scene if isinstance(scene, str) else json.dumps(scene, indent=1))
+    return path
+
+
+def run(name, scene, np_=2, args=(), expect_exit=0):
+    """Runs sinew on the scene (dict, text, or an existing .yaml path) with np_ ranks.
+    Returns (result .h5 path, stdout+stderr). Fails the test on an unexpected exit code."""
+    path = scene if isinstance(scene, str) and scene.endswith(".yaml") and os.path.exists(scene) \
+        else scene_file(name, scene)
+    out = os.path.join(WORK, name + ".h5")
+    for stale in (out, out + ".part"):
+        if os.path.exists(stale):
+            os.remove(stale)
+    cmd = [MPIEXEC, "-n", str(np_), BIN, path, "-o", out] + list(args)
+    p = subprocess.run(cmd, env=ENV, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, timeout=900)
+    if p.returncode != expect_exit:
+        print(p.stdout)
+        fail(f"{name}: exit code {p.returncode}, expected {expect_exit} ({' '.join(cmd)})")
+    return out, p.stdout
+
+
+def h5(path):
+    return h5py.File(path, "r")
+
+
+def fail(msg):
+    print("FAIL:", msg)
+    _failures.append(msg)
+
+
+def check(cond, msg):
+    if not cond:
+        fail(msg)
+    return cond
+
+
+def close(measured, expected, rtol=0.0, atol=0.0, what="value"):
+    """Compares arrays/scalars; prints the measured relative and absolute errors."""
+    m = np.asarray(measured, dtype=float)
+    e = np.asarray(expected, dtype=float)
+    err = np.max(np.abs(m - e)) if m.size else 0.0
+    scale = np.max(np.abs(e)) if e.size else 0.0
+    rel = err / scale if scale > 0 else err
+    ok = np.all(np.isfinite(m)) and err <= atol + rtol * scale
+    print(f"  {what}: measured {np.array2string(m.ravel()[:6], precision=12)} expected "
+          f"{np.array2string(e.ravel()[:6], precision=12)} abs err {err:.3e} rel err {rel:.3e} "
+          f"({'ok' if ok else 'FAIL'})")
+    if not ok:
+        fail(f"{what}: abs err {err:.3e}, rel err {rel:.3e} (rtol {rtol}, atol {atol})")
+    return ok
+
+
+def done():
+    """Ends the test: prints the verdict, exits 1 if any check failed."""
+    if _failures:
+        print(f"{len(_failures)} check(s) failed")
+        sys.exit(1)
+    print("all checks passed")
+    sys.exit(0)

@@ -16,7 +16,8 @@ std::string helpText() {
   for (const auto& d : sinew::sceneOptionDocs())
     h += "  -" + d.name + " <" + d.type + "> (default " + d.defaultValue + "): " + d.help + "\n";
   h += "Sinew flags: -o <file.h5> result file; -force_rtol <1e-11> equilibrium tolerance relative to the\n"
-       "  element forces; -max_cuts <10> halvings of a failing load increment.\n";
+       "  element forces; -max_cuts <10> halvings of a failing load increment; -predictor <true> secant\n"
+       "  predictor from the last converged increment.\n";
   return h;
 }
 

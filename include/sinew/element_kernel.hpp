@@ -23,6 +23,9 @@ struct KernelInput {
   const double* qdot = nullptr;    ///< time derivatives in DOF layout (spins for Frame6); nullptr in statics
   const double* lambda = nullptr;  ///< multipliers of the kernel's constraints; nullptr when it has none
   double t = 0.0;                  ///< time (dynamics) or load factor (statics)
+  /// Optional: translations x - X0 of the kernel's Point3/Frame6 nodes (3 each), taken from the
+  /// unknowns without the round-off of x = X0 + u; stiff kernels use it for accurate elongations.
+  const double* disp = nullptr;
 };
 
 struct KernelNeeds {

@@ -26,6 +26,7 @@ class SceneError : public std::runtime_error {
 struct NodeProps {
   bool fix = false, fix_pos = false, fix_orien = false, fix_x = false, fix_y = false, fix_z = false;
   std::optional<std::array<int, 4>> fix_coords;  ///< ANCF: x, y, slope_x, slope_y (1 = fixed)
+  std::optional<std::array<double, 2>> slope;    ///< ANCF reference slope (nonzero; default: averaged chords)
   double mass = 0.0;
   std::array<double, 6> mominertia{};  ///< Ixx Ixy Ixz Iyy Iyz Izz (global frame, at the node)
   Vec3 force{}, force_initial{}, moment{}, moment_initial{};
@@ -60,6 +61,7 @@ struct ElementSet {
   double thickness = 0, nu = 0;
   std::array<double, 3> membrane_prestress{};  ///< s11 s22 s12
   std::optional<Vec3> prestress_dir, prestress_radial_axis;
+  double pressure = 0, pressure_initial = 0;  ///< follower surface pressure along the element normal (ramped / initial)
   // ANCF cable 2D (Exudyn names)
   double physicsMassPerLength = 0, physicsBendingStiffness = 0, physicsAxialStiffness = 0;
   double physicsBendingDamping = 0, physicsAxialDamping = 0;
@@ -72,6 +74,7 @@ struct ElementSet {
 
 struct DynamicsOptions {
   double tend = 0, dt = 0, spectral_radius = 0.9;
+  int output_every = 1;  ///< Sinew: write every k-th time step (and the last)
 };
 
 struct Options {
@@ -104,6 +107,8 @@ struct FormFinding {
   bool x_urs = false;
   int x_urs_step = 3;
   std::string elastic_restart_method = "FORCE";
+  double formfinding_tolerance = 1e-9;  ///< Sinew: stop when the step's shape change / model size is below this
+  double max_shape_change = 0.5;        ///< Sinew: a larger shape change / model size in one step is an error
 };
 
 struct Sensor {

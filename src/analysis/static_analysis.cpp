@@ -1,5 +1,7 @@
 #include "analysis/static_analysis.hpp"
 
+#include <algorithm>
+#include <cfloat>
 #include <cmath>
 #include <sstream>
 
@@ -37,6 +39,9 @@ StaticAnalysis::StaticAnalysis(Assembler& assembler, int loadsteps) : asm_(assem
   PetscCallAbort(comm, PetscOptionsGetBool(nullptr, nullptr, "-predictor", &predictor, &set));
   predictor_ = predictor;
   maxCuts_ = static_cast<int>(cuts);
+  for (const LocalNode& n : asm_.mesh().nodes)
+    for (double x : n.X0) coordMax_ = std::max(coordMax_, std::abs(x));
+  MPI_Allreduce(MPI_IN_PLACE, &coordMax_, 1, MPI_DOUBLE, MPI_MAX, comm);
 }
 
 StaticAnalysis::~StaticAnalysis() {
@@ -50,26 +55,58 @@ PetscErrorCode StaticAnalysis::formFunction(SNES, Vec U, Vec F, void* ctx) {
   return self->asm_.residual(U, self->ls_, F);
 }
 
-PetscErrorCode StaticAnalysis::formJacobian(SNES, Vec U, Mat, Mat P, void* ctx) {
+PetscErrorCode StaticAnalysis::formJacobian(SNES snes, Vec U, Mat, Mat P, void* ctx) {
+  PetscFunctionBeginUser;
   auto* self = static_cast<StaticAnalysis*>(ctx);
-  return self->asm_.jacobian(U, self->ls_, P);
+  PetscCall(self->asm_.jacobian(U, self->ls_, P));
+  PetscInt it = 0;
+  PetscCall(SNESGetIterationNumber(snes, &it));
+  if (it == 0) PetscCall(MatNorm(P, NORM_INFINITY, &self->jacobianNorm_));  // at the start state
+  PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 // Newton has converged when SNES's default test says so, or when the residual is down to the
-// round-off level of the forces being balanced: ||F|| <= force_rtol * max(||f_int||, ||f_ext||).
+// round-off level of the forces being balanced: ||F|| <= force_rtol * scale, scale = max(||f_ext||,
+// ||f_int||), with ||f_int|| capped at 10 max(||f_ext||, ||f_int|| of the last converged state) so
+// that a diverging iterate (huge internal forces) can never look converged.
+// Newton has converged when the residual is
+//   (1) below -snes_rtol times the residual of the increment at its start state (before the predictor),
+//   (2) below -force_rtol times the force scale (external loads, converged internal forces), or
+//   (3) at its round-off floor: positions carry eps * max|X|, so a stiffness entry k gives
+//       residual noise ~ k eps max|X| per row; once the residual is below 8 eps ||J||_inf max|X|
+//       and 1e-3 of its start (a diverged iterate never qualifies), Newton stops when an
+//       iteration no longer reduces it tenfold (quadratic convergence has ended in noise).
+// A Newton update below -snes_stol * |x| alone proves nothing and does not end the iteration.
 PetscErrorCode StaticAnalysis::convergenceTest(SNES snes, PetscInt it, PetscReal xnorm, PetscReal snorm,
                                                PetscReal fnorm, SNESConvergedReason* reason, void* ctx) {
   PetscFunctionBeginUser;
   auto* self = static_cast<StaticAnalysis*>(ctx);
   PetscCall(SNESConvergedDefault(snes, it, xnorm, snorm, fnorm, reason, nullptr));
-  // a Newton update below stol * |x| ends the iteration only near equilibrium (round-off floor)
-  if (*reason == SNES_CONVERGED_SNORM_RELATIVE && fnorm > 1e-6 * std::max(self->asm_.externalForceNorm(), self->asm_.internalForceNorm()))
-    *reason = SNES_CONVERGED_ITERATING;
-  if (*reason == SNES_CONVERGED_ITERATING) {
-    const double scale = std::max(self->asm_.externalForceNorm(), self->asm_.internalForceNorm());
-    if (fnorm <= self->forceRtol_ * scale) *reason = SNES_CONVERGED_FNORM_ABS;
+  if (*reason > 0) *reason = SNES_CONVERGED_ITERATING;  // decided below
+  if (it == 0) self->fnorm0_ = fnorm;
+  PetscReal atol, rtol, stol;
+  PetscInt maxit, maxf;
+  PetscCall(SNESGetTolerances(snes, &atol, &rtol, &stol, &maxit, &maxf));
+  const double fext = self->asm_.externalForceNorm(), fint = self->asm_.internalForceNorm();
+  const double ref = std::max(fext, self->fintConverged_);
+  const double scale = std::max(fext, std::min(fint, 10.0 * ref));
+  if (it == 0 && self->unloaded_ && self->jacobianNorm_ == 0.0) {  // no load: the start state may be equilibrium
+    Vec U;
+    PetscCall(SNESGetSolution(snes, &U));
+    PetscCall(self->asm_.jacobian(U, self->ls_, self->J_));
+    PetscCall(MatNorm(self->J_, NORM_INFINITY, &self->jacobianNorm_));
   }
+  const double floor = 8.0 * DBL_EPSILON * self->jacobianNorm_ * self->coordMax_;
+  if (fnorm <= atol) *reason = SNES_CONVERGED_FNORM_ABS;
+  else if (fnorm <= rtol * self->fnormStart_) *reason = SNES_CONVERGED_FNORM_RELATIVE;
+  else if (fnorm <= self->forceRtol_ * scale) *reason = SNES_CONVERGED_FNORM_ABS;
+  else if (it == 0 && fnorm <= 1e-2 * floor)
+    *reason = SNES_CONVERGED_FNORM_ABS;  // the start state is in equilibrium to round-off
+  else if (it > 0 && fnorm <= floor && fnorm > 0.1 * self->fnormPrev_ &&
+           (fnorm <= 1e-3 * self->fnorm0_ || self->fnorm0_ <= floor))
+    *reason = SNES_CONVERGED_FNORM_ABS;  // stalled (less than 10x per iteration) below the floor estimate
   if (!std::isfinite(fnorm)) *reason = SNES_DIVERGED_FNORM_NAN;
+  self->fnormPrev_ = fnorm;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -86,7 +123,10 @@ PetscErrorCode StaticAnalysis::solveIncrement(Vec U, double lambda, bool* ok, in
   PetscCall(SNESGetFunctionNorm(snes_, &f));
   *its = static_cast<int>(n);
   *fnorm = f;
-  *ok = *why > 0;
+  // a reported convergence with a residual above its start value (a line search ending on a wild
+  // trial point) is a failure, whatever the reason code says
+  *ok = *why > 0 && f <= fnorm0_;
+  if (*why > 0 && !*ok) *why = SNES_DIVERGED_LINE_SEARCH;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -109,6 +149,12 @@ PetscErrorCode StaticAnalysis::run(Vec U, const StepCallback& onStep, bool* conv
       const double next = std::min(target, lambda + dl);
       PetscCall(VecCopy(U, Usave));
       const auto Rsave = asm_.referenceRotations();
+      // residual of the load increment at the start state: -snes_rtol is relative to it (not to
+      // the residual of the predicted state, which the stiff axial modes can make much larger)
+      ls_.loadFactor = next;
+      ls_.time = next;
+      PetscCall(asm_.residual(U, ls_, F_));
+      PetscCall(VecNorm(F_, NORM_2, &fnormStart_));
       // predictor: extrapolate the last increment (rotation increments included)
       if (dlPrev > 0 && predictor_) PetscCall(VecAXPY(U, (next - lambda) / dlPrev, dU));
       bool ok = false;
@@ -121,6 +167,8 @@ PetscErrorCode StaticAnalysis::run(Vec U, const StepCallback& onStep, bool* conv
       rep.residualNorm = fnorm;
       if (ok) {
         PetscCall(VecWAXPY(dU, -1.0, Usave, U));
+        PetscCall(asm_.residual(U, ls_, F_));  // line searches may end on a trial evaluation
+        fintConverged_ = asm_.internalForceNorm();
         dlPrev = next - lambda;
         PetscCall(asm_.absorbRotations(U));
         lambda = next;
@@ -128,6 +176,13 @@ PetscErrorCode StaticAnalysis::run(Vec U, const StepCallback& onStep, bool* conv
       }
       PetscCall(VecCopy(Usave, U));
       asm_.setReferenceRotations(Rsave);
+      {  // a failed LU factorization (MUMPS) must not be reused by the retry: refactor from scratch
+        KSP ksp;
+        PC pc;
+        PetscCall(SNESGetKSP(snes_, &ksp));
+        PetscCall(KSPGetPC(ksp, &pc));
+        PetscCall(PCReset(pc));
+      }
       if (++cuts > maxCuts_) {
         std::ostringstream msg;
         msg << "load step " << step << " of " << loadsteps_ << " did not converge: Newton stopped at load factor "
@@ -136,6 +191,7 @@ PetscErrorCode StaticAnalysis::run(Vec U, const StepCallback& onStep, bool* conv
             << "). Try more load steps (-loadsteps), a line search (-snes_linesearch_type bt|l2), "
                "-snes_monitor to watch the residual, or check supports and rigid modes for a mechanism.";
         failure_ = msg.str();
+        linearFailed_ = why == SNES_DIVERGED_LINEAR_SOLVE;
         *converged = false;
         break;
       }

@@ -31,6 +31,11 @@ class StaticAnalysis {
   PetscErrorCode run(Vec U, const StepCallback& onStep, bool* converged);
   const std::vector<StepReport>& reports() const { return reports_; }
   const std::string& failureMessage() const { return failure_; }
+  /// True when the last failed increment ended with SNES_DIVERGED_LINEAR_SOLVE (singular tangent).
+  bool linearSolveFailed() const { return linearFailed_; }
+  /// The model has no external load at all: a start residual at the round-off floor
+  /// (8 eps ||J||_inf max|X|) is equilibrium without a Newton step (a free-free body has a singular J).
+  void setUnloaded(bool u) { unloaded_ = u; }
   SNES snes() const { return snes_; }
 
  private:
@@ -47,10 +52,17 @@ class StaticAnalysis {
   Vec F_ = nullptr;
   LoadState ls_;
   double forceRtol_ = 1e-11;
+  double jacobianNorm_ = 0;  ///< ||J||_inf at the start of the increment (round-off floor of the residual)
+  double fnormStart_ = 0;              ///< residual of the increment at its start state (before the predictor)
+  double fnorm0_ = 0, fnormPrev_ = 0;  ///< residual at iteration 0 and at the previous iteration
+  double fintConverged_ = 0;          ///< ||f_int|| at the last converged state
+  bool unloaded_ = false;
+  double coordMax_ = 0;      ///< largest |node coordinate| (positions carry round-off eps * coordMax_)
   int maxCuts_ = 10;
   bool predictor_ = true;  ///< secant predictor from the last converged increment
   std::vector<StepReport> reports_;
   std::string failure_;
+  bool linearFailed_ = false;
 };
 
 }  // namespace sinew

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <sstream>
+#include <string>
 
 namespace sinew {
 
@@ -23,6 +24,15 @@ Plan makePlan(const Model& model) {
     sections |= s.type == ElementType::Beam && s.cshape != CrossSection::None &&
                 std::any_of(s.flex.begin(), s.flex.end(), [](bool b) { return b; });
   }
+  if (p.dynamics && beams)
+    throw SceneError("opt.dynamics", "time integration supports ancf_cable2d, cable and membrane elements; this scene has "
+                                     "beams (or rigid elements, which are beams) whose rotation nodes dynamics does not integrate");
+  for (size_t i = 0; i < model.sensors.size(); ++i) {
+    const int e = model.sensors[i].element, set = model.elementSet[e];
+    if (set < 0 || model.eprops[set].type != ElementType::AncfCable2D)
+      throw SceneError("sensors[" + std::to_string(i) + "].element",
+                       "sensors sample ancf_cable2d elements; element " + std::to_string(e + 1) + " is not one");
+  }
   for (const auto& [node, np] : model.nprops) {
     p.inertia |= np.mass > 0;
     for (double v : np.mominertia) p.inertia |= v != 0.0;
@@ -31,6 +41,32 @@ Plan makePlan(const Model& model) {
   p.buckling = model.opt.calcbuck;
   p.compliance = model.opt.calccompl && beams && model.dimension == 3;
   p.transfer = model.opt.transfer;
+  if (p.transfer) {
+    // SPACAR Light builds the state-space model about an unloaded equilibrium: refuse load ramps
+    auto loadPath = [](int node, const char* field) { return "nprops." + std::to_string(node + 1) + "." + field; };
+    for (const auto& [node, np] : model.nprops) {
+      const char* field = norm(np.force) != 0.0 ? "force" : (norm(np.moment) != 0.0 ? "moment" : nullptr);
+      if (field)
+        throw SceneError(loadPath(node, field),
+                         std::string("applied load together with opt.transfer: the state-space model is linearized "
+                                     "about an unloaded equilibrium (as in SPACAR Light); remove ") +
+                             loadPath(node, field) + " or set opt.transfer: false");
+    }
+    bool in = false, out = false;
+    for (const auto& [node, np] : model.nprops) {
+      in |= !np.transfer_in.empty();
+      out |= !np.transfer_out.empty();
+    }
+    if (!in || !out)
+      throw SceneError("opt.transfer", std::string("the state-space model needs at least one nprops transfer_in and one "
+                                                   "transfer_out; the scene has no ") +
+                                           (!in ? "transfer_in" : "transfer_out"));
+    if (!p.inertia)
+      throw SceneError("opt.transfer", "the state-space model needs mass (eprops dens or nprops mass/mominertia)");
+    if (p.dynamics)
+      throw SceneError("opt.transfer", "the state-space model is built at the end of the static load steps; "
+                                       "remove opt.dynamics or opt.transfer");
+  }
   p.stress = sections || model.opt.rigidstress;
   p.stressPerElement = p.stress && model.opt.stressperelement;
   return p;

@@ -2,12 +2,14 @@
 
 #include <petscsnes.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
 #include <sstream>
 
+#include "analysis/constraint_check.hpp"
 #include "analysis/static_analysis.hpp"
 #include "analysis/step_analysis.hpp"
 #include "analysis/step_results.hpp"
@@ -16,6 +18,7 @@
 #include "app/summary.hpp"
 #include "assembly/assembler.hpp"
 #include "assembly/kernel_factory.hpp"
+#include "elements/ancf_cable2d.hpp"
 #include "elements/beam_section.hpp"
 #include "mesh/distributed_mesh.hpp"
 #include "mesh/fe_mesh.hpp"
@@ -63,6 +66,20 @@ void warnings(MPI_Comm comm, const Model& model) {
       }
     }
   }
+}
+
+/// No external load of any kind: no gravity, massProportionalLoad or pressure, and zero nodal loads and
+/// prescribed motions on every node (collective).
+bool unloaded(const Model& model, const DistributedMesh& mesh, const Assembler& assembler) {
+  int loaded = model.opt.gravity.has_value() || assembler.hasPressure();
+  for (const ElementSet& s : model.eprops) loaded |= s.massProportionalLoad.has_value();
+  for (const LocalNode& n : mesh.nodes) {
+    for (int k = 0; k < 6; ++k)
+      loaded |= n.load[k] != 0.0 || n.loadInitial[k] != 0.0 || n.prescribed[k] != 0.0 || n.prescribedInitial[k] != 0.0;
+    for (int k = 0; k < 3; ++k) loaded |= n.rot[k] != 0.0 || n.rotInitial[k] != 0.0;
+  }
+  MPI_Allreduce(MPI_IN_PLACE, &loaded, 1, MPI_INT, MPI_LOR, mesh.comm);
+  return !loaded;
 }
 
 }  // namespace
@@ -121,6 +138,7 @@ PetscErrorCode runFromCommandLine(int argc, char** argv, int* exitCode) {
   layout.scene = model.sceneText;
   layout.ndof = dmesh->numGlobalUnknowns;
   layout.nranks = dmesh->size;
+  if (plan.dynamics) layout.stepName = "time";
   int nranks = dmesh->size;
   // the global model arrays are not needed past set-up
   std::vector<Vec3> initialPositions;
@@ -134,7 +152,38 @@ PetscErrorCode runFromCommandLine(int argc, char** argv, int* exitCode) {
   times.setup = MPI_Wtime() - t0;
 
   SummaryHeader header{model.title, scenePath, nranks, dmesh->numGlobalUnknowns, plan.describe(model)};
-  PetscCall(printHeader(comm, header));
+  if (!model.opt.silent) PetscCall(printHeader(comm, header));
+
+  // Mechanisms and redundant constraints are model errors (exit 2), found before any file exists.
+  PetscBool checkModel = PETSC_TRUE;
+  PetscCall(PetscOptionsGetBool(nullptr, nullptr, "-constraint_check", &checkModel, nullptr));
+  if (checkModel && plan.statics && !plan.formfinding && !model.opt.showinputonly) {
+    Vec U0;
+    PetscCall(assembler.createVector(&U0));
+    PetscCall(VecSet(U0, 0.0));
+    ConstraintReport check;
+    PetscCall(checkConstraints(assembler, model, U0, LoadState{}, &check));
+    PetscCall(VecDestroy(&U0));
+    // Rigid-body modes without any load are legitimate for a frequency analysis (a free-free body:
+    // the unloaded reference state is the equilibrium; the modal shift handles the singular K).
+    if (check.singular && check.redundant == 0 && plan.frequencies && unloaded(model, *dmesh, assembler)) {
+      check.singular = false;
+      if (!model.opt.silent)
+        PetscCall(PetscPrintf(comm, "  note: free motions with zero stiffness (rigid-body modes) and no loads: the frequency "
+                                    "analysis runs about the unloaded reference state\n"));
+    }
+    if (check.singular) {
+      PetscCall(PetscPrintf(comm, "%s", check.message.c_str()));
+      // a result file of an earlier run under this name does not belong to this scene
+      if (dmesh->rank == 0) {
+        std::error_code ec;
+        std::filesystem::remove(h5, ec);
+        std::filesystem::remove(h5 + ".part", ec);
+      }
+      *exitCode = 2;
+      PetscFunctionReturn(PETSC_SUCCESS);
+    }
+  }
 
   std::unique_ptr<ResultFile> file;
   try {
@@ -149,6 +198,7 @@ PetscErrorCode runFromCommandLine(int argc, char** argv, int* exitCode) {
   file->writeArray("node/p0", p0, {static_cast<long>(initialPositions.size()), 3});
 
   RunContext ctx(model, plan, assembler, results, *file);
+  bool modelError = false;  // a singular tangent found when Newton's linear solve failed
   ctx.comm = comm;
   ctx.times = times;
   PetscCall(assembler.createVector(&ctx.U));
@@ -166,6 +216,7 @@ PetscErrorCode runFromCommandLine(int argc, char** argv, int* exitCode) {
       const double tStatics = MPI_Wtime();
       const double outBefore = ctx.times.output, anaBefore = ctx.times.analyses;
       StaticAnalysis statics(assembler, model.opt.loadsteps);
+      statics.setUnloaded(unloaded(model, *dmesh, assembler));
       auto onStep = [&](const StepReport& rep, Vec Ustep) -> PetscErrorCode {
         LoadState ls;
         ls.loadFactor = rep.loadFactor;
@@ -178,6 +229,16 @@ PetscErrorCode runFromCommandLine(int argc, char** argv, int* exitCode) {
       if (!ok && ctx.converged) {
         ctx.converged = false;
         ctx.failure = statics.failureMessage();
+        if (statics.linearSolveFailed() && checkModel) {  // name the mechanism / redundancy if there is one
+          LoadState ls;
+          ls.loadFactor = ls.time = ctx.reports.empty() ? 0.0 : ctx.reports.back().loadFactor;
+          ConstraintReport check;
+          PetscCall(checkConstraints(assembler, model, ctx.U, ls, &check));
+          if (check.singular) {
+            ctx.failure += "\n" + check.message;
+            modelError = true;
+          }
+        }
       }
       ctx.times.statics = MPI_Wtime() - tStatics - (ctx.times.output - outBefore) - (ctx.times.analyses - anaBefore);
     }
@@ -194,16 +255,24 @@ PetscErrorCode runFromCommandLine(int argc, char** argv, int* exitCode) {
   body.stressElement = results.lastStressElement();
   body.analysisLines = ctx.summaryLines;
   for (auto& a : ctx.stepAnalyses) body.analysisLines += a->summary();
+  if (std::any_of(model.eprops.begin(), model.eprops.end(), [](const ElementSet& s) { return s.type == ElementType::AncfCable2D; })) {
+    const AncfCable2D::EvaluationCounts c = AncfCable2D::evaluationCounts();
+    long n[2] = {c.userFunctions, c.dampingTerms};
+    MPI_Allreduce(MPI_IN_PLACE, n, 2, MPI_LONG, MPI_SUM, comm);
+    body.analysisLines += "  ancf_cable2d force laws: " + std::to_string(n[0]) + " user-function evaluations, " +
+                          std::to_string(n[1]) + " damping-term evaluations\n";
+  }
   body.counters = assembler.counters();
   body.times = ctx.times;
   body.h5 = file->path();
   body.xdmf = file->xdmfPath();
   body.converged = ctx.converged;
   body.failure = ctx.failure;
-  PetscCall(printSummary(comm, body));
+  if (!model.opt.silent) PetscCall(printSummary(comm, body));
+  else if (!body.converged) PetscCall(PetscPrintf(comm, "error: %s\n", body.failure.c_str()));
   PetscCall(VecDestroy(&ctx.U));
   const bool converged = ctx.converged;
-  *exitCode = converged ? 0 : 3;
+  *exitCode = converged ? 0 : (modelError ? 2 : 3);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

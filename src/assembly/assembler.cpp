@@ -30,14 +30,34 @@ const SinewEvents& SinewEvents::get() {
 
 namespace {
 constexpr int kMaxElementRows = 4 * 6 + 6;
+
+std::vector<std::optional<Vec3>>& accelerationTable() {
+  static std::vector<std::optional<Vec3>> table;
+  return table;
+}
+}  // namespace
+
+void registerSetAccelerations(std::vector<std::optional<Vec3>> table) { accelerationTable() = std::move(table); }
+
+bool Assembler::bodyAcceleration(const LocalElement& el, const LoadState& ls, Vec3* a) const {
+  const std::optional<Vec3>* own =
+      el.set >= 0 && static_cast<size_t>(el.set) < setAccel_.size() && setAccel_[el.set] ? &setAccel_[el.set] : nullptr;
+  if ((!gravity_ && !own) || !el.kernel->hasInertia()) return false;
+  const double scale = ls.gravityRamped ? ls.loadFactor : 1.0;
+  Vec3 b = gravity_ ? *gravity_ : Vec3{};
+  if (own) b = b + **own;
+  *a = scale * b;
+  return true;
 }
 
 Assembler::Assembler(DistributedMesh& mesh, const std::optional<Vec3>& gravity) : mesh_(mesh), gravity_(gravity) {
   const int nl = static_cast<int>(mesh_.nodes.size());
   state_.assign(12 * static_cast<size_t>(nl), 0.0);
+  disp_.assign(3 * static_cast<size_t>(nl), 0.0);
   Rref_.assign(nl, identity3());
   T_.assign(nl, identity3());
   hasTheta_.assign(nl, 0);
+  setAccel_ = accelerationTable();
   int inertia = 0;
   for (const LocalElement& e : mesh_.elements) inertia |= e.kernel->hasInertia();
   for (int i = 0; i < mesh_.numOwnedNodes; ++i) {
@@ -47,6 +67,7 @@ Assembler::Assembler(DistributedMesh& mesh, const std::optional<Vec3>& gravity) 
   }
   MPI_Allreduce(MPI_IN_PLACE, &inertia, 1, MPI_INT, MPI_LOR, mesh_.comm);
   hasInertia_ = inertia != 0;
+  initLoads();
   PetscCallAbort(mesh_.comm, createVector(&uWork_));
   PetscCallAbort(mesh_.comm, VecDuplicate(uWork_, &fWork_));
   PetscCallAbort(mesh_.comm, createFullVector(&fullWork_));
@@ -144,7 +165,10 @@ void Assembler::computeStates(const double* u, const LoadState& ls) {
       s[3] = n.slope0[1] + value(3);
       continue;
     }
-    for (int k = 0; k < 3; ++k) s[k] = n.X0[k] + value(k);
+    for (int k = 0; k < 3; ++k) {
+      disp_[3 * i + k] = value(k);
+      s[k] = n.X0[k] + disp_[3 * i + k];
+    }
     if (n.kind != NodeKind::Frame6) continue;
     Mat3 R;
     if (n.rotationPrescribed) {
@@ -170,6 +194,8 @@ void Assembler::gatherElement(const LocalElement& el, double* q, const double* /
     const LocalNode& n = mesh_.nodes[el.node[i]];
     const double* s = &state_[12 * static_cast<size_t>(el.node[i])];
     for (int k = 0; k < stateSize(kinds[i]); ++k) q[qs++] = s[k];
+    if (kinds[i] != NodeKind::Ancf2D && i < 4)
+      for (int k = 0; k < 3; ++k) elemDisp_[3 * i + k] = disp_[3 * static_cast<size_t>(el.node[i]) + k];
     for (int k = 0; k < dofSize(kinds[i]); ++k, ++d) {
       idx[d] = n.dof[k];
       if (fullIdx) fullIdx[d] = n.fullDof[k];
@@ -198,6 +224,7 @@ PetscErrorCode Assembler::assembleForces(const double* u, const LoadState& ls, T
   PetscFunctionBeginUser;
   std::array<double, 48> q;
   std::array<int, kMaxElementRows> idx, fidx;
+  std::array<double, kMaxElementRows> qdot;
   std::vector<double> fb;
   const double gscale = ls.gravityRamped ? ls.loadFactor : 1.0;
   const Vec3 g = gravity_ ? gscale * *gravity_ : Vec3{};
@@ -205,7 +232,9 @@ PetscErrorCode Assembler::assembleForces(const double* u, const LoadState& ls, T
   KernelNeeds needs;
   for (const LocalElement& el : mesh_.elements) {
     gatherElement(el, q.data(), u, idx.data(), fidx.data());
-    KernelInput in{q.data(), nullptr, el.firstMultiplier >= 0 ? u + el.firstMultiplier : nullptr, ls.time};
+    KernelInput in{q.data(), gatherVelocity(el, idx.data(), qdot.data()),
+                   el.firstMultiplier >= 0 ? u + el.firstMultiplier : nullptr, ls.time};
+    in.disp = elemDisp_.data();
     el.kernel->evaluate(in, needs, out_);
     const int nd = el.kernel->numDofs(), nc = el.kernel->numConstraints();
     const int* map = target == Target::Residual ? idx.data() : fidx.data();
@@ -215,8 +244,8 @@ PetscErrorCode Assembler::assembleForces(const double* u, const LoadState& ls, T
     }
     if (target == Target::Residual)
       for (int j = 0; j < nc; ++j) out[idx[nd + j]] += out_.f[nd + j];
-    if (gravity_ && el.kernel->hasInertia()) {
-      el.kernel->bodyForce(q.data(), g, fb);
+    if (Vec3 a; bodyAcceleration(el, ls, &a)) {
+      el.kernel->bodyForce(q.data(), a, fb);
       for (int k = 0; k < nd; ++k)
         if (map[k] >= 0) out[map[k]] -= fb[k];
     }
@@ -239,6 +268,7 @@ PetscErrorCode Assembler::assembleForces(const double* u, const LoadState& ls, T
       if (map[k] >= 0) out[map[k]] -= fe[k];
     }
   }
+  if (anyPressure_) fext2 += addPressureForces(ls, target, out);
   double norms[2] = {fint2, fext2};
   MPI_Allreduce(MPI_IN_PLACE, norms, 2, MPI_DOUBLE, MPI_SUM, mesh_.comm);
   fextNorm_ = std::sqrt(norms[1]);
@@ -346,12 +376,25 @@ PetscErrorCode Assembler::jacobian(Vec U, const LoadState& ls, Mat J) {
   for (const LocalElement& el : mesh_.elements) {
     gatherElement(el, q.data(), u, idx.data(), nullptr);
     KernelInput in{q.data(), nullptr, el.firstMultiplier >= 0 ? u + el.firstMultiplier : nullptr, ls.time};
+    in.disp = elemDisp_.data();
     el.kernel->evaluate(in, needs, out_);
     const int n = el.kernel->numDofs() + el.kernel->numConstraints();
     rotationColumns(el, n, out_.K.data());
     PetscCall(MatSetValuesLocal(J, n, idx.data(), n, idx.data(), out_.K.data(), ADD_VALUES));
   }
-  // tangent of slope torques on ANCF nodes: d/ds of -tau (-s_y, s_x)/|s|^2
+  PetscCall(addSlopeTorqueTangent(ls, J));
+  PetscCall(addLoadTangents(ls, J));
+  PetscCall(VecRestoreArrayRead(ul, &u));
+  PetscCall(VecGhostRestoreLocalForm(uWork_, &ul));
+  PetscCall(MatAssemblyBegin(J, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatAssemblyEnd(J, MAT_FINAL_ASSEMBLY));
+  PetscCall(PetscLogEventEnd(SinewEvents::get().jacobian, 0, 0, 0, 0));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+// tangent of slope torques on ANCF nodes (node states current): d/ds of -tau (-s_y, s_x)/|s|^2
+PetscErrorCode Assembler::addSlopeTorqueTangent(const LoadState& ls, Mat J) {
+  PetscFunctionBeginUser;
   const double lam = ls.loadFactor;
   for (int i = 0; i < mesh_.numOwnedNodes; ++i) {
     const LocalNode& n = mesh_.nodes[i];
@@ -366,11 +409,6 @@ PetscErrorCode Assembler::jacobian(Vec U, const LoadState& ls, Mat J) {
     const PetscInt rows[2] = {n.dof[2], n.dof[3]};
     PetscCall(MatSetValuesLocal(J, 2, rows, 2, rows, K, ADD_VALUES));
   }
-  PetscCall(VecRestoreArrayRead(ul, &u));
-  PetscCall(VecGhostRestoreLocalForm(uWork_, &ul));
-  PetscCall(MatAssemblyBegin(J, MAT_FINAL_ASSEMBLY));
-  PetscCall(MatAssemblyEnd(J, MAT_FINAL_ASSEMBLY));
-  PetscCall(PetscLogEventEnd(SinewEvents::get().jacobian, 0, 0, 0, 0));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -394,6 +432,7 @@ PetscErrorCode Assembler::splitTangent(Vec U, const LoadState& ls, Mat Km, Mat K
   for (const LocalElement& el : mesh_.elements) {
     gatherElement(el, q.data(), u, idx.data(), nullptr);
     KernelInput in{q.data(), nullptr, el.firstMultiplier >= 0 ? u + el.firstMultiplier : nullptr, ls.time};
+    in.disp = elemDisp_.data();
     el.kernel->evaluate(in, needs, out_);
     const int n = el.kernel->numDofs() + el.kernel->numConstraints();
     rotationColumns(el, n, out_.K.data());

@@ -7,12 +7,27 @@
 #include "sinew/petsc_compat.hpp"
 #include <petscvec.h>
 
+#include <array>
 #include <optional>
 #include <vector>
 
 #include "mesh/distributed_mesh.hpp"
 
 namespace sinew {
+
+/// Surface pressure of an eprops set (membranes): pressureInitial + loadFactor * pressure, a follower
+/// load along the current element normal n = g1 x g2 / |g1 x g2| (node order, right-hand rule).
+struct SetPressure {
+  double pressure = 0, pressureInitial = 0;
+};
+/// Registers the pressure of every eprops set; makeKernelFactory does this from the model and the
+/// Assembler constructor reads it. An empty or all-zero table means no pressure terms at all.
+void registerSetPressures(std::vector<SetPressure> table);
+
+/// Mass-proportional load of every eprops set (Exudyn LoadMassProportional, `massProportionalLoad`):
+/// a body-force acceleration on the set's elements with inertia, added to gravity (ramped with the
+/// load factor in statics, constant in dynamics). makeKernelFactory registers it from the model.
+void registerSetAccelerations(std::vector<std::optional<Vec3>> table);
 
 struct LoadState {
   double loadFactor = 0.0;     ///< ramps `force`, `moment`, `displ_*`, `rot`, gravity
@@ -23,6 +38,7 @@ struct LoadState {
 /// Counters that prove which phases ran (also visible as PetscLogEvents in -log_view).
 struct AssemblyCounters {
   long residuals = 0, jacobians = 0, masses = 0, splitTangents = 0, stressRecoveries = 0;
+  long dampingMatrices = 0;  ///< element damping matrices D evaluated (dynamics, hasDamping() only)
 };
 
 class Assembler {
@@ -76,12 +92,32 @@ class Assembler {
   ISLocalToGlobalMapping localToGlobal() const { return l2g_; }
   AssemblyCounters& mutableCounters() { return counters_; }
 
+  // ---- dynamics (assembler_dynamics.cpp); V, A in the unknowns layout, constrained DOFs at rest
+  /// F = M A + f_int(U, V, t) - f_ext(t) (kernels see the velocities: damping, user functions).
+  PetscErrorCode dynamicResidual(Vec U, Vec V, Vec A, const LoadState& ls, Vec F);
+  /// J = K(U, V) + shiftV D(U, V) + shiftA M; D only from kernels with hasDamping().
+  PetscErrorCode dynamicJacobian(Vec U, Vec V, const LoadState& ls, double shiftV, double shiftA, Mat J);
+  /// Kinetic energy 1/2 V^T M V (global).
+  PetscErrorCode kineticEnergy(Vec U, Vec V, const LoadState& ls, double* T);
+
+  /// Body-force acceleration on element el: gravity plus its set's massProportionalLoad, scaled by
+  /// the load factor when ls.gravityRamped. False when the element has neither (or no inertia).
+  bool bodyAcceleration(const LocalElement& el, const LoadState& ls, Vec3* a) const;
+
   const AssemblyCounters& counters() const { return counters_; }
   bool hasInertia() const { return hasInertia_; }
   bool hasGravity() const { return gravity_.has_value(); }
   /// Characteristic force of the current external loads (for relative convergence tests).
   double externalForceNorm() const { return fextNorm_; }
   double internalForceNorm() const { return fintNorm_; }
+  /// Some local or remote membrane carries a pressure (then residual and Jacobian have load terms).
+  bool hasPressure() const { return anyPressure_; }
+  /// Newton regularization of slack cables in elastic analyses: k = slackStiffness * EA / L (or
+  /// * N0 / L when EA = 0) added to the Jacobian only (the residual, hence the solution, is exact).
+  void setSlackStiffness(double s) { slackStiffness_ = s; }
+  double slackStiffness() const { return slackStiffness_; }
+  /// Number of slack cables (elastic, zero force) at the last Jacobian, summed over ranks.
+  long slackCables() const { return slackCables_; }
 
  private:
   enum class Target { Residual, Full };
@@ -90,6 +126,13 @@ class Assembler {
   void gatherElement(const LocalElement& el, double* q, const double* u, int* idx, int* fullIdx) const;
   void rotationColumns(const LocalElement& el, int n, double* K) const;
   PetscErrorCode assembleForces(const double* u, const LoadState& ls, Target target, double* out);
+  // assembler_pressure.cpp: surface pressure (follower) and slack-cable regularization
+  void initLoads();
+  double addPressureForces(const LoadState& ls, Target target, double* out);
+  PetscErrorCode addLoadTangents(const LoadState& ls, Mat J);
+  PetscErrorCode addSlopeTorqueTangent(const LoadState& ls, Mat J);
+  /// Element velocities (kernel DOF layout) from vLocal_, or nullptr in statics.
+  const double* gatherVelocity(const LocalElement& el, const int* idx, double* qdot) const;
 
   DistributedMesh& mesh_;
   std::optional<Vec3> gravity_;
@@ -97,11 +140,20 @@ class Assembler {
   Vec uWork_ = nullptr, fWork_ = nullptr, fullWork_ = nullptr;
   ISLocalToGlobalMapping l2g_ = nullptr;
   std::vector<double> state_;  // 12 per local node
+  std::vector<double> disp_;   // 3 per local node: translations x - X0 exactly as in the unknowns
+  mutable std::array<double, 12> elemDisp_{};  // disp_ of the element being evaluated (kernel order)
   std::vector<Mat3> Rref_, T_;
   std::vector<char> hasTheta_;
   KernelOutput out_;
+  const double* vLocal_ = nullptr;  // local form of the velocities while a dynamic evaluation runs
   AssemblyCounters counters_;
   double fextNorm_ = 0, fintNorm_ = 0;
+  std::vector<std::pair<int, SetPressure>> pressureElems_;  // local element index, pressure
+  bool anyPressure_ = false;
+  std::vector<int> cableElems_;  // local elements with a Cable3D kernel
+  std::vector<std::optional<Vec3>> setAccel_;  // massProportionalLoad per eprops set
+  double slackStiffness_ = 1e-8;
+  long slackCables_ = 0;
 };
 
 /// PetscLogEvents of Sinew's phases (registered once).

@@ -1,5 +1,7 @@
 #include "assembly/kernel_factory.hpp"
 
+#include "assembly/assembler.hpp"
+
 #include <algorithm>
 #include <map>
 #include <memory>
@@ -33,6 +35,15 @@ double constraintScaleOf(const Model& model) {
 
 KernelFactory makeKernelFactory(const Model& model) {
   const double scale = constraintScaleOf(model);
+  // membrane pressures per set, for the assembler's follower-load terms
+  std::vector<SetPressure> pressures(model.eprops.size());
+  for (size_t set = 0; set < model.eprops.size(); ++set)
+    if (model.eprops[set].type == ElementType::Membrane)
+      pressures[set] = {model.eprops[set].pressure, model.eprops[set].pressure_initial};
+  registerSetPressures(std::move(pressures));
+  std::vector<std::optional<Vec3>> accelerations(model.eprops.size());
+  for (size_t set = 0; set < model.eprops.size(); ++set) accelerations[set] = model.eprops[set].massProportionalLoad;
+  registerSetAccelerations(std::move(accelerations));
   // ANCF parameters (and their compiled user functions) once per property set
   auto ancf = std::make_shared<std::map<int, AncfCable2DParameters>>();
   for (size_t set = 0; set < model.eprops.size(); ++set) {
@@ -59,8 +70,19 @@ KernelFactory makeKernelFactory(const Model& model) {
           const ElementSet& s = m.eprops[set];
           for (int i = 0; i < 6; ++i)
             if (s.flex[i]) modes[i] = BeamMode::Flexible;
-          const bool needsSection = s.dens > 0 || std::any_of(s.flex.begin(), s.flex.end(), [](bool b) { return b; });
-          if (needsSection) sec = beamSection(s, sceneElementLength(m, el.sceneElement));
+          const bool flexible = std::any_of(s.flex.begin(), s.flex.end(), [](bool b) { return b; });
+          const bool needsSection = s.dens > 0 || flexible;
+          if (needsSection) {
+            sec = beamSection(s, sceneElementLength(m, el.sceneElement));
+          } else if (m.opt.rigidstress && s.cshape != CrossSection::None) {
+            // rigid set reported with rigidstress: section geometry only (stresses from the multipliers)
+            ElementSet geometry = s;
+            geometry.dens = 1.0;
+            sec = beamSection(geometry, sceneElementLength(m, el.sceneElement));
+            sec.rho = sec.rhoA = sec.rhoIy = sec.rhoIz = sec.rhoIp = 0.0;
+          }
+          // rigid elements are skipped in the stress output unless opt.rigidstress
+          if (!flexible && !m.opt.rigidstress) sec.stressRecovery = false;
           orien = s.orien;
         }
         if (auto it = m.opt.rls.find(el.sceneElement); it != m.opt.rls.end())

@@ -1,12 +1,15 @@
 // Exudyn ObjectANCFCable2D kernel (see ancf_cable2d.hpp for the formulation).
 #include "elements/ancf_cable2d.hpp"
 
+#include <atomic>
 #include <cmath>
 #include <stdexcept>
 
 namespace sinew {
 
 namespace {
+// force-law evaluation counters of this process (AncfCable2D::evaluationCounts)
+std::atomic<long> gUserFunctionCalls{0}, gDampingTerms{0};
 
 // Integration rules on [-1, 1] (Exudyn's gaussRuleOrder9/7/5/3 and the 3-point Lobatto rule).
 struct Rule {
@@ -288,27 +291,44 @@ struct AncfCable2D::Law {
     return a;
   }
   // N = EA (eps - eps_ref) + d_eps eps_t   (Exudyn eq. (N))
+  static UserFunctionValue user(const Expression& e, const AncfCable2DParameters& p, double t, double xiNorm,
+                                const PointState& s, double epsRef, double kapRef) {
+    gUserFunctionCalls.fetch_add(1, std::memory_order_relaxed);
+    if (e.uses(UfVar::axialStrain_t) || e.uses(UfVar::curvature_t)) gDampingTerms.fetch_add(1, std::memory_order_relaxed);
+    return e.evaluate(args(p, t, xiNorm, s, epsRef, kapRef));
+  }
   static UserFunctionValue axial(const AncfCable2DParameters& p, double t, double xiNorm, const PointState& s,
                                  double epsRef, double kapRef) {
-    if (p.axialForceUserFunction) return p.axialForceUserFunction->evaluate(args(p, t, xiNorm, s, epsRef, kapRef));
+    if (p.axialForceUserFunction) return user(*p.axialForceUserFunction, p, t, xiNorm, s, epsRef, kapRef);
     UserFunctionValue v;
-    v.value = p.physicsAxialStiffness * (s.eps - epsRef) + p.physicsAxialDamping * s.eps_t;
+    v.value = p.physicsAxialStiffness * (s.eps - epsRef);
     v.dAxialStrain = p.physicsAxialStiffness;
-    v.dAxialStrain_t = p.physicsAxialDamping;
+    if (p.physicsAxialDamping != 0.0) {
+      gDampingTerms.fetch_add(1, std::memory_order_relaxed);
+      v.value += p.physicsAxialDamping * s.eps_t;
+      v.dAxialStrain_t = p.physicsAxialDamping;
+    }
     return v;
   }
   // M = EI (K - K_ref) + d_K K_t   (Exudyn eq. (M))
   static UserFunctionValue bending(const AncfCable2DParameters& p, double t, double xiNorm, const PointState& s,
                                    double epsRef, double kapRef) {
-    if (p.bendingMomentUserFunction)
-      return p.bendingMomentUserFunction->evaluate(args(p, t, xiNorm, s, epsRef, kapRef));
+    if (p.bendingMomentUserFunction) return user(*p.bendingMomentUserFunction, p, t, xiNorm, s, epsRef, kapRef);
     UserFunctionValue v;
-    v.value = p.physicsBendingStiffness * (s.kap - kapRef) + p.physicsBendingDamping * s.kap_t;
+    v.value = p.physicsBendingStiffness * (s.kap - kapRef);
     v.dCurvature = p.physicsBendingStiffness;
-    v.dCurvature_t = p.physicsBendingDamping;
+    if (p.physicsBendingDamping != 0.0) {
+      gDampingTerms.fetch_add(1, std::memory_order_relaxed);
+      v.value += p.physicsBendingDamping * s.kap_t;
+      v.dCurvature_t = p.physicsBendingDamping;
+    }
     return v;
   }
 };
+
+AncfCable2D::EvaluationCounts AncfCable2D::evaluationCounts() {
+  return {gUserFunctionCalls.load(std::memory_order_relaxed), gDampingTerms.load(std::memory_order_relaxed)};
+}
 
 void AncfCable2D::evaluate(const KernelInput& in, const KernelNeeds& needs, KernelOutput& out) const {
   const double* q = in.q;

@@ -85,6 +85,15 @@ class AncfCable2D : public ElementKernel {
   const AncfCable2DParameters& parameters() const { return p_; }
   const std::array<double, 8>& referenceCoordinates() const { return qRef_; }
 
+  /// Force-law evaluations of all AncfCable2D kernels of this process so far: user-function calls,
+  /// and integration-point evaluations with a damping term (d_eps eps_t or d_K K_t with a nonzero
+  /// damping parameter, or a user function that reads axialStrain_t / curvature_t). Zero when the
+  /// scene gives no user function (resp. no damping): nothing runs that was not asked for.
+  struct EvaluationCounts {
+    long userFunctions = 0, dampingTerms = 0;
+  };
+  static EvaluationCounts evaluationCounts();
+
   static std::array<double, 4> shape(double x, double L);
   static std::array<double, 4> shape_x(double x, double L);
   static std::array<double, 4> shape_xx(double x, double L);

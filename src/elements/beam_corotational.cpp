@@ -130,7 +130,7 @@ BeamCorotational::BeamCorotational(const Vec3& Xp, const Vec3& Xq, const std::op
   if (hasInertia_ && !(sec_.rhoA > 0.0)) hasInertia_ = false;
 }
 
-void BeamCorotational::kinematics(const double* q, Kinematics& k) const {
+void BeamCorotational::kinematics(const double* q, Kinematics& k, const double* disp) const {
   const Vec3 xp = load3(q), xq = load3(q + 12);
   const Mat3 Rp = load9(q + 3), Rq = load9(q + 15);
   const Vec3 l = xq - xp;
@@ -141,8 +141,14 @@ void BeamCorotational::kinematics(const double* q, Kinematics& k) const {
   k.nyq = Rq * ey0_; k.nzq = Rq * ez0_;
   const double l0 = l0_;
   for (auto& row : k.g) std::fill(row, row + kDofs, 0.0);
-  // e1 = |l| - l0
-  k.e[0] = k.L - l0;
+  // e1 = |l| - l0. With the node translations u given, e1 = (|l|^2 - l0^2) / (|l| + l0) with
+  // |l|^2 - l0^2 = 2 l0 ex0 . du + du . du (du = u_q - u_p): no cancellation of |l| against l0.
+  if (disp) {
+    const Vec3 du{disp[3] - disp[0], disp[4] - disp[1], disp[5] - disp[2]};
+    k.e[0] = (2.0 * l0 * dot(ex0_, du) + dot(du, du)) / (k.L + l0);
+  } else {
+    k.e[0] = k.L - l0;
+  }
   setVec(k.g[0], XP, -k.lhat);
   setVec(k.g[0], XQ, k.lhat);
   // e2 = l0 (nz^p . ny^q - ny^p . nz^q) / 2; d(a.b)/dw_a = a x b
@@ -193,7 +199,7 @@ void BeamCorotational::stresses(const Kinematics& k, const double* lambda, doubl
 
 void BeamCorotational::evaluate(const KernelInput& in, const KernelNeeds& needs, KernelOutput& out) const {
   Kinematics k;
-  kinematics(in.q, k);
+  kinematics(in.q, k, in.disp);
   double sig[6];  // total generalized stresses (flexible S eps, rigid scale * lambda)
   stresses(k, in.lambda, sig);
   const int n = kDofs + nRigid_;
@@ -359,7 +365,7 @@ std::array<double, 6> BeamCorotational::generalizedStresses(const double* q, con
 }
 
 double BeamCorotational::vonMisesMax(const double* q, const double* lambda) const {
-  if (!(sec_.A > 0.0)) return 0.0;
+  if (!(sec_.A > 0.0) || !sec_.stressRecovery) return 0.0;
   Kinematics k;
   kinematics(q, k);
   double sig[6];

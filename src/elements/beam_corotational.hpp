@@ -57,7 +57,8 @@ class BeamCorotational : public ElementKernel {
 
  private:
   struct Kinematics;
-  void kinematics(const double* q, Kinematics& k) const;
+  /// disp (optional, 6 values): node translations x - X0, for a cancellation-free elongation.
+  void kinematics(const double* q, Kinematics& k, const double* disp = nullptr) const;
   void stresses(const Kinematics& k, const double* lambda, double* sig) const;
 
   double l0_ = 0;

@@ -22,6 +22,7 @@ struct BeamSection {
   double rhoIy = 0, rhoIz = 0, rhoIp = 0;  ///< rotary inertias per length
   double ymax = 0, zmax = 0;   ///< extreme fibre distances (circ: both d/2)
   double torsionStressFactor = 0;  ///< tau_max = torsionStressFactor * T (rect T t_min/It, circ T d/(2 It))
+  bool stressRecovery = true;      ///< false: no Von Mises stress (rigid elements without opt.rigidstress)
 };
 
 /// Rect torsion constant of reference B6 for sides s1, s2 (any order), series summed to convergence.

@@ -86,6 +86,10 @@ FeMesh discretize(const Model& model) {
     if (l > 0) s = {s[0] / l, s[1] / l};
     else s = {1.0, 0.0};
   }
+  // nprops slope: the given reference slope of an ANCF scene node (not normalized: |r'| != 1 is
+  // a reference axial stretch, as with Exudyn's initial coordinates)
+  for (const auto& [node, np] : model.nprops)
+    if (np.slope && mesh.kind[node] == NodeKind::Ancf2D) mesh.slope[node] = *np.slope;
   return mesh;
 }
 

@@ -15,7 +15,7 @@ const std::vector<std::string> kCommonKeys = {"elems", "type", "physical", "colo
 const std::vector<std::string> kBeamKeys = {"flex", "nbeams", "cw", "emod", "smod", "dens", "cshape", "dim", "orien"};
 const std::vector<std::string> kCableKeys = {"area", "emod", "dens", "prestress", "prestress_stress"};
 const std::vector<std::string> kMembraneKeys = {"thickness", "emod", "nu", "dens", "prestress", "prestress_dir",
-                                                "prestress_radial_axis"};
+                                                "prestress_radial_axis", "pressure", "pressure_initial"};
 const std::vector<std::string> kAncfKeys = {"physicsMassPerLength", "physicsBendingStiffness", "physicsAxialStiffness",
                                             "physicsBendingDamping", "physicsAxialDamping", "physicsReferenceAxialStrain",
                                             "physicsReferenceCurvature", "strainIsRelativeToReference",
@@ -154,6 +154,9 @@ void parseMembrane(const YAML::Node& n, const std::string& path, ElementSet& s) 
       fail(childPath(path, "prestress_radial_axis"), "give either prestress_dir or prestress_radial_axis, not both");
     s.prestress_radial_axis = getDirection(v, childPath(path, "prestress_radial_axis"));
   }
+  if (const YAML::Node v = n["pressure"]; v.IsDefined()) s.pressure = getNumber(v, childPath(path, "pressure"));
+  if (const YAML::Node v = n["pressure_initial"]; v.IsDefined())
+    s.pressure_initial = getNumber(v, childPath(path, "pressure_initial"));
 }
 
 void parseAncf(const YAML::Node& n, const std::string& path, ElementSet& s) {

@@ -16,7 +16,7 @@ const std::vector<std::string> kNpropsKeys = {
     "fix",         "fix_pos",       "fix_orien",   "fix_x",          "fix_y",          "fix_z",
     "fix_coords",  "mass",          "mominertia",  "displ_x",        "displ_y",        "displ_z",
     "displ_initial_x", "displ_initial_y", "displ_initial_z", "rot", "rot_initial", "force",
-    "force_initial", "moment",      "moment_initial", "transfer_in", "transfer_out"};
+    "force_initial", "moment",      "moment_initial", "transfer_in", "transfer_out", "slope"};
 const std::vector<std::string> kTransferIn = {"force_x", "force_y", "force_z", "moment_x", "moment_y", "moment_z"};
 const std::vector<std::string> kTransferOut = {"displ_x", "displ_y", "displ_z", "veloc_x", "veloc_y", "veloc_z"};
 const char* kAxis[3] = {"x", "y", "z"};
@@ -114,6 +114,11 @@ void applyProps(NodeProps& np, LoadSources& src, const YAML::Node& n, const std:
         fc[i] = (c.Scalar() == "1" || c.Scalar() == "true") ? 1 : 0;
       }
       np.fix_coords = fc;
+    } else if (k == "slope") {
+      const auto sv = getNumbers(v, p, 2);
+      if (!std::isfinite(sv[0]) || !std::isfinite(sv[1]) || std::hypot(sv[0], sv[1]) == 0.0)
+        fail(p, "expected a nonzero reference slope [slope_x, slope_y], got [" + fmt(sv[0]) + ", " + fmt(sv[1]) + "]");
+      np.slope = std::array<double, 2>{sv[0], sv[1]};
     } else if (k == "mass") np.mass = getNonNegative(v, p);
     else if (k == "mominertia") np.mominertia = getMominertia(v, p);
     else if (k.rfind("displ_initial_", 0) == 0) np.displ_initial[static_cast<std::size_t>(k.back() - 'x')] = getNumber(v, p);
@@ -231,6 +236,9 @@ void parseNprops(const YAML::Node& nprops, SceneContext& ctx) {
         if (e.props["fix_coords"].IsDefined() && !ancfNode[static_cast<std::size_t>(node)])
           fail(childPath(e.path, "fix_coords"), "fix_coords applies to nodes of ancf_cable2d elements; node " +
                                                     std::to_string(node + 1) + " is not on one");
+        if (e.props["slope"].IsDefined() && !ancfNode[static_cast<std::size_t>(node)])
+          fail(childPath(e.path, "slope"), "slope (ANCF reference slope) applies to nodes of ancf_cable2d elements; node " +
+                                               std::to_string(node + 1) + " is not on one");
       }
   for (const auto& [node, np] : m.nprops) checkConflicts(node, np, sources[node]);
 }

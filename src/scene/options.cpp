@@ -25,8 +25,9 @@ const std::vector<OptionDoc>& sceneOptionDocs() {
       {"showinputonly", "bool", "false", "read and check the scene, print it, and stop"},
       {"silent", "bool", "false", "no summary on stdout"},
       {"compliance_nodes", "[node numbers]", "all nodes", "nodes whose compliance matrices are computed"},
-      {"dynamics", "{tend, dt, spectral_radius}", "none",
-       "time integration (generalized-alpha) to tend with step dt; spectral_radius in [0,1] defaults to 0.9"},
+      {"dynamics", "{tend, dt, spectral_radius, output_every}", "none",
+       "time integration (generalized-alpha) to tend with step dt; spectral_radius in [0,1] defaults to 0.9; "
+       "output_every k writes every k-th step (default 1)"},
       {"nfreq", "integer >= 1", "6", "number of natural frequencies"},
       {"nbuck", "integer >= 1", "3", "number of buckling load multipliers"},
   };
@@ -46,7 +47,7 @@ namespace {
 const std::vector<std::string> kFormfindingKeys = {
     "formfinding_step", "max_iter_equilibrium", "equilibrium_accuracy", "formfinding_elements", "homotopy_curve",
     "stress_adaption",  "lambda_max",           "mue_relax",            "x_urs",                "x_urs_step",
-    "elastic_restart_method"};
+    "elastic_restart_method", "formfinding_tolerance", "max_shape_change"};
 const std::vector<std::string> kSensorKeys = {"element", "x", "variable", "name"};
 const std::vector<std::string> kSensorVariables = {
     "Position",      "Displacement",   "Velocity",  "VelocityLocal", "Rotation",        "Director1",          "StrainLocal",
@@ -81,7 +82,7 @@ void parseRls(const YAML::Node& v, const std::string& path, SceneContext& ctx) {
 }
 
 void parseDynamics(const YAML::Node& v, const std::string& path, Options& opt) {
-  checkKeys(v, path, {"tend", "dt", "spectral_radius"});
+  checkKeys(v, path, {"tend", "dt", "spectral_radius", "output_every"});
   DynamicsOptions d;
   if (!v["tend"].IsDefined()) fail(childPath(path, "tend"), "missing: dynamics needs tend (end time) > 0");
   d.tend = getPositive(v["tend"], childPath(path, "tend"));
@@ -89,6 +90,7 @@ void parseDynamics(const YAML::Node& v, const std::string& path, Options& opt) {
   d.dt = getPositive(v["dt"], childPath(path, "dt"));
   if (d.dt > d.tend) fail(childPath(path, "dt"), "expected dt <= tend (" + fmt(d.tend) + "), got " + fmt(d.dt));
   if (v["spectral_radius"].IsDefined()) d.spectral_radius = getInRange(v["spectral_radius"], childPath(path, "spectral_radius"), 0.0, 1.0);
+  if (v["output_every"].IsDefined()) d.output_every = getIntAtLeast(v["output_every"], childPath(path, "output_every"), 1);
   opt.dynamics = d;
 }
 
@@ -180,6 +182,16 @@ void parseFormfinding(const YAML::Node& ff, SceneContext& ctx) {
   if (ff["x_urs_step"].IsDefined()) f.x_urs_step = getIntAtLeast(ff["x_urs_step"], p("x_urs_step"), 1);
   if (ff["elastic_restart_method"].IsDefined())
     f.elastic_restart_method = getChoice(ff["elastic_restart_method"], p("elastic_restart_method"), {"NONE", "FORCE", "DISPLACEMENT"});
+  if (ff["formfinding_tolerance"].IsDefined())
+    f.formfinding_tolerance = getNonNegative(ff["formfinding_tolerance"], p("formfinding_tolerance"));
+  if (ff["max_shape_change"].IsDefined()) f.max_shape_change = getPositive(ff["max_shape_change"], p("max_shape_change"));
+  for (int s : f.formfinding_elements)
+    if (m.eprops[static_cast<std::size_t>(s)].type != ElementType::Cable && m.eprops[static_cast<std::size_t>(s)].type != ElementType::Membrane)
+      fail(p("formfinding_elements"), "eprops set " + std::to_string(s + 1) + " is not a cable or membrane set (only those can be form-found)");
+  for (int s : f.stress_adaption)
+    if (std::find(f.formfinding_elements.begin(), f.formfinding_elements.end(), s) == f.formfinding_elements.end() &&
+        !f.formfinding_elements.empty())
+      fail(p("stress_adaption"), "eprops set " + std::to_string(s + 1) + " is not in formfinding_elements");
   m.formfinding = f;
 }
 

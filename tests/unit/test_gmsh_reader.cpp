@@ -149,6 +149,15 @@ TEST(GmshReader, ErrorsNameFileAndLine) {
 
 TEST(GmshReader, SceneMapsPhysicalGroups) {
   const sinew::Model m = sinew::readScene(sourceDir() + "/tests/scenes/good/sail_mesh.yaml");
+  // the CARAT++ formfinding block, every field
+  ASSERT_TRUE(m.formfinding.has_value());
+  EXPECT_EQ(m.formfinding->formfinding_step, 10);
+  EXPECT_EQ(m.formfinding->formfinding_elements, (std::vector<int>{0, 1}));
+  EXPECT_EQ(m.formfinding->stress_adaption, (std::vector<int>{0}));
+  EXPECT_EQ(m.formfinding->homotopy_curve, (std::vector<double>{0, 0, 0.5}));
+  EXPECT_DOUBLE_EQ(m.formfinding->equilibrium_accuracy, 1e-6);
+  EXPECT_EQ(m.formfinding->elastic_restart_method, "DISPLACEMENT");
+
   EXPECT_EQ(m.dimension, 3);
   ASSERT_EQ(m.nodes.size(), 10u);       // 1 scene node + 9 mesh nodes
   ASSERT_EQ(m.elements.size(), 11u);    // 1 scene element + 2 edge cables + 8 triangles (edge_fixed lines only select nodes)

@@ -1,0 +1,83 @@
+#!/usr/bin/python3
+"""Benchmark of the compliance analysis (not a ctest): an n x n grid of steel beams in the xy
+plane (6 (n^2 - 4) unknowns, corners clamped), compliance of every node, one load step, on
+`--np` ranks. Reports the factorization time, the block-solve time and their ratio, and with
+--doc appends a section to docs/performance.md.
+
+usage: scripts/bench_compliance.py [--n 129] [--np 2] [--batch 96] [--doc]"""
+import argparse
+import os
+import re
+import subprocess
+import time
+
+SOURCE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..")
+
+
+def scene(n, h=0.05):
+    idx = lambda i, j: i * n + j + 1  # noqa: E731
+    nodes = [[i * h, j * h, 0.0] for i in range(n) for j in range(n)]
+    elems = [[idx(i, j), idx(i, j + 1)] for i in range(n) for j in range(n - 1)]
+    elems += [[idx(i, j), idx(i + 1, j)] for i in range(n - 1) for j in range(n)]
+    corners = [idx(0, 0), idx(0, n - 1), idx(n - 1, 0), idx(n - 1, n - 1)]
+    centre = idx(n // 2, n // 2)
+    nprops = ", ".join(f"{c}: {{fix: true}}" for c in corners) + f", {centre}: {{force: [0, 0, 1]}}"
+    return (f"title: compliance benchmark grid {n}x{n}\n"
+            f"nodes: {nodes}\nelements: {elems}\nnprops: {{{nprops}}}\n"
+            f"eprops: [{{elems: [1:{len(elems)}], flex: [1, 2, 3, 4, 5, 6], emod: 210e9, smod: 80e9, "
+            f"cshape: circ, dim: [0.01]}}]\n"
+            f"opt: {{loadsteps: 1}}\n"), len(elems)
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--n", type=int, default=129)
+    ap.add_argument("--np", type=int, default=2)
+    ap.add_argument("--batch", type=int, default=96)
+    ap.add_argument("--bin", default=os.path.join(SOURCE, "build", "sinew"))
+    ap.add_argument("--doc", action="store_true", help="append the result to docs/performance.md")
+    a = ap.parse_args()
+    text, ne = scene(a.n)
+    # element list as a range is not YAML: write the explicit list
+    text = text.replace(f"[1:{ne}]", "[" + ", ".join(str(e) for e in range(1, ne + 1)) + "]")
+    work = os.path.join(SOURCE, "build", "bench")
+    os.makedirs(work, exist_ok=True)
+    path = os.path.join(work, f"compliance_grid{a.n}.yaml")
+    with open(path, "w") as f:
+        f.write(text)
+    env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
+               OMPI_MCA_rmaps_base_oversubscribe="1")
+    cmd = ["mpirun", "-n", str(a.np), a.bin, path, "-o", path.replace(".yaml", ".h5"),
+           "-compliance_batch", str(a.batch)]
+    t0 = time.time()
+    p = subprocess.run(cmd, env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    wall = time.time() - t0
+    if p.returncode != 0:
+        print(p.stdout)
+        raise SystemExit(f"sinew failed ({p.returncode})")
+    unknowns = int(re.search(r"(\d+) unknowns", p.stdout).group(1))
+    m = re.search(r"compliance: (\d+) unit loads per step, (\d+) factorizations?, (\d+) block solves; "
+                  r"factor ([\d.]+) s, solves ([\d.]+) s", p.stdout)
+    cols, nfac, nblk, tf, ts = int(m.group(1)), int(m.group(2)), int(m.group(3)), float(m.group(4)), float(m.group(5))
+    rows = [("grid", f"{a.n} x {a.n} beams ({ne} elements)"), ("unknowns", unknowns), ("ranks", a.np),
+            ("unit loads (columns)", cols), ("columns per MatMatSolve", a.batch), ("block solves", nblk),
+            ("factorization (assembly + MUMPS LU)", f"{tf:.3f} s"), ("all block solves", f"{ts:.3f} s"),
+            ("solves / factorization", f"{ts / tf:.1f}"), ("per unit load", f"{1e3 * ts / max(cols, 1):.3f} ms"),
+            ("whole run (wall, incl. statics and output)", f"{wall:.1f} s")]
+    for k, v in rows:
+        print(f"{k:45s} {v}")
+    if a.doc:
+        doc = os.path.join(SOURCE, "docs", "performance.md")
+        with open(doc, "a") as f:
+            if os.path.getsize(doc) == 0 if os.path.exists(doc) else True:
+                f.write("# Performance\n")
+            f.write(f"\n## Compliance of every node ({unknowns} unknowns, {a.np} ranks)\n"
+                    f"`scripts/bench_compliance.py --n {a.n} --np {a.np} --batch {a.batch}`: one MUMPS LU of the "
+                    "tangent, then MatMatSolve on blocks of unit loads (free DOFs of the nodes).\n\n"
+                    "| quantity | value |\n|---|---|\n")
+            for k, v in rows:
+                f.write(f"| {k} | {v} |\n")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,65 @@
+#!/usr/bin/env python3
+"""Bode plot of every input/output pair of the state-space model in a Sinew result file
+(/statespace/A, B, C, D written with opt.transfer):  H(i w) = C (i w I - A)^-1 B + D.
+
+usage: scripts/bode.py result.h5 [-o bode.png] [--points 800]"""
+import argparse
+
+import h5py
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+
+IN_NAMES = ["force_x", "force_y", "force_z", "moment_x", "moment_y", "moment_z"]
+OUT_NAMES = ["displ_x", "displ_y", "displ_z", "veloc_x", "veloc_y", "veloc_z"]
+
+
+def frequency_response(A, B, C, D, w):
+    """H[k, out, in] at the circular frequencies w."""
+    n = A.shape[0]
+    H = np.empty((len(w), C.shape[0], B.shape[1]), dtype=complex)
+    for k, wk in enumerate(w):
+        H[k] = C @ np.linalg.solve(1j * wk * np.eye(n) - A, B) + D
+    return H
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("h5")
+    ap.add_argument("-o", "--output", default="bode.png")
+    ap.add_argument("--points", type=int, default=800)
+    a = ap.parse_args()
+    with h5py.File(a.h5, "r") as f:
+        if "statespace" not in f:
+            raise SystemExit(f"{a.h5} has no /statespace (run the scene with opt.transfer: true)")
+        g = f["statespace"]
+        A, B, C, D = (g[k][:] for k in "ABCD")
+        ins, outs = g["inputs"][:].astype(int), g["outputs"][:].astype(int)
+        hz = g["freq"][:]
+    w_modes = 2 * np.pi * np.abs(hz[hz != 0])
+    lo = 0.1 * (w_modes.min() if w_modes.size else 1.0)
+    hi = 10 * (w_modes.max() if w_modes.size else 1.0)
+    w = np.logspace(np.log10(lo), np.log10(hi), a.points)
+    H = frequency_response(A, B, C, D, w)
+    fig, ax = plt.subplots(2, 1, sharex=True, figsize=(8, 7))
+    for o, (on, oc) in enumerate(outs):
+        for i, (inn, ic) in enumerate(ins):
+            label = f"{OUT_NAMES[oc - 1]}({on}) / {IN_NAMES[ic - 1]}({inn})"
+            ax[0].loglog(w / (2 * np.pi), np.abs(H[:, o, i]), label=label)
+            ax[1].semilogx(w / (2 * np.pi), np.degrees(np.unwrap(np.angle(H[:, o, i]))), label=label)
+    ax[0].set_ylabel("magnitude")
+    ax[1].set_ylabel("phase (deg)")
+    ax[1].set_xlabel("frequency (Hz)")
+    ax[0].legend(fontsize=8)
+    for x in ax:
+        x.grid(True, which="both", alpha=0.3)
+    ax[0].set_title(f"Bode plot: {len(outs)} output(s) x {len(ins)} input(s), {A.shape[0]} states")
+    fig.tight_layout()
+    fig.savefig(a.output, dpi=120)
+    print(f"wrote {a.output}")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,75 @@
+#!/usr/bin/python3
+"""Draws the input geometry of a Sinew result file (e.g. from `showinputonly: true`): scene nodes
+and elements with their 1-based numbers, as in SPACAR Light's input check.
+
+usage: scripts/plot_input.py result.h5 [-o input.png] [--step K] [--view 3d|xy|xz|yz]
+Elements come from /mesh/lines (+ triangles, quads) labelled by /mesh/<kind>_element; positions
+from /mesh/p and /node/p of step K (default 0, the input geometry)."""
+import argparse
+import os
+
+import h5py
+import matplotlib
+import numpy as np
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("h5")
+    ap.add_argument("-o", "--output", help="PNG file (default: <result>_input.png)")
+    ap.add_argument("--step", type=int, default=0)
+    ap.add_argument("--view", default=None, choices=["3d", "xy", "xz", "yz"],
+                    help="projection (default: xy for 2D models and flat models, else 3d)")
+    a = ap.parse_args()
+    out = a.output or os.path.splitext(a.h5)[0] + "_input.png"
+    with h5py.File(a.h5, "r") as f:
+        nodes = f["node/p"][a.step] if "node/p" in f else f["node/p0"][()]
+        mp = f["mesh/p"][a.step] if "mesh/p" in f else nodes
+        cells = []
+        for kind in ("lines", "triangles", "quads"):
+            if f"mesh/{kind}" in f:
+                conn = f[f"mesh/{kind}"][()]
+                owner = f[f"mesh/{kind}_element"][()]
+                cells += [(c, int(e)) for c, e in zip(conn, owner)]
+        title = f.attrs.get("scene", "")
+    flat = np.ptp(nodes[:, 2]) < 1e-12 * max(np.ptp(nodes), 1e-300) if len(nodes) else True
+    view = a.view or ("xy" if flat else "3d")
+    axes = {"xy": (0, 1), "xz": (0, 2), "yz": (1, 2)}
+    fig = plt.figure(figsize=(8, 6))
+    if view == "3d":
+        ax = fig.add_subplot(projection="3d")
+        proj = lambda p: (p[..., 0], p[..., 1], p[..., 2])  # noqa: E731
+    else:
+        ax = fig.add_subplot()
+        i, j = axes[view]
+        proj = lambda p: (p[..., i], p[..., j])  # noqa: E731
+        ax.set_aspect("equal")
+    centres = {}
+    for conn, e in cells:
+        pts = mp[np.append(conn, conn[0]) if len(conn) > 2 else conn]
+        ax.plot(*proj(pts), color="tab:blue", lw=1.5)
+        centres.setdefault(e, []).append(mp[conn].mean(axis=0))
+    for e, cs in sorted(centres.items()):
+        c = np.mean(cs, axis=0)
+        ax.text(*proj(c), f"{e}", color="tab:blue", fontsize=9, ha="center", va="bottom",
+                bbox=dict(boxstyle="round,pad=0.15", fc="white", ec="tab:blue", lw=0.5))
+    ax.scatter(*proj(nodes), color="black", s=14, zorder=3)
+    for n, p in enumerate(nodes, start=1):
+        ax.text(*proj(p), f" {n}", color="black", fontsize=9, ha="left", va="top")
+    if view == "3d":
+        ax.set_xlabel("x"), ax.set_ylabel("y"), ax.set_zlabel("z")
+    else:
+        ax.set_xlabel("xyz"[axes[view][0]]), ax.set_ylabel("xyz"[axes[view][1]])
+    first = title.splitlines()[0] if isinstance(title, str) and title else ""
+    ax.set_title(f"{os.path.basename(a.h5)}: {len(nodes)} nodes (black), {len(centres)} elements (blue)"
+                 + (f"\n{first}" if first.startswith("title") else ""))
+    fig.tight_layout()
+    fig.savefig(out, dpi=120)
+    print(out)
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,32 @@
+// Singular models, SPACAR Light style: before the first load step (and when Newton's linear
+// solve fails) the tangent J = [K G^T; G 0] (K: stiffness over the free node DOFs, G: rigid-mode
+// constraint Jacobian, multipliers as unknowns) is checked for a null space:
+//   (a) over-constraint: G^T lambda = 0 for some lambda != 0 (dependent constraint rows), the
+//       null vector lives on the multipliers -> the elements and modes carrying it are named;
+//   (b) mechanism: K u = 0 with G u = 0 (missing supports, released modes), the null vector
+//       lives on the node DOFs -> the nodes/DOFs that move and the nearby releases are named.
+// Null vectors come from subspace inverse iteration on the shifted pencil (J + sigma D) x = D y,
+// D = diag(|J_ii|) on node rows and -||G_i||^2 / mean(diag K) on multiplier rows, factored
+// once with MUMPS (works in parallel); a direction is null when ||J v|| <= tol ||D v||.
+#pragma once
+#include <petscvec.h>
+
+#include <string>
+
+#include "assembly/assembler.hpp"
+#include "sinew/model.hpp"
+
+namespace sinew {
+
+struct ConstraintReport {
+  bool singular = false;
+  int mechanisms = 0, redundant = 0;  ///< null directions on node DOFs / on multipliers
+  std::string message;               ///< rank 0: what is wrong and what to fix (empty when regular)
+};
+
+/// Collective. Checks the tangent at state U (load state ls). Options: -constraint_check_tol
+/// (default 1e-11), -constraint_check_vectors (subspace size, default 3).
+PetscErrorCode checkConstraints(Assembler& assembler, const Model& model, Vec U, const LoadState& ls,
+                                ConstraintReport* report);
+
+}  // namespace sinew

@@ -1,0 +1,365 @@
+#include "analysis/dynamic_analysis.hpp"
+
+#include <cfloat>
+#include <cmath>
+#include <sstream>
+
+namespace sinew {
+
+DynamicAnalysis::DynamicAnalysis(Assembler& assembler, const DynamicsOptions& opts) : asm_(assembler), opts_(opts) {
+  const double rho = opts_.spectral_radius;
+  alphaM_ = (2.0 * rho - 1.0) / (rho + 1.0);
+  alphaF_ = rho / (rho + 1.0);
+  gamma_ = 0.5 + alphaF_ - alphaM_;
+  beta_ = 0.25 * (gamma_ + 0.5) * (gamma_ + 0.5);
+  ls_.loadFactor = 1.0;  // loads act from t = 0 (step loads); user functions see t
+  ls_.gravityRamped = false;
+  MPI_Comm comm = asm_.mesh().comm;
+  PetscCallAbort(comm, asm_.createMatrix(&J_));
+  PetscCallAbort(comm, asm_.createVector(&F_));
+  for (Vec* v : {&Un_, &Vn_, &An_, &Qn_, &V1_, &A1_, &Q1_, &Cu_}) PetscCallAbort(comm, VecDuplicate(F_, v));
+  char scheme[64] = "arnold_bruls";
+  PetscBool set = PETSC_FALSE;
+  PetscCallAbort(comm, PetscOptionsGetString(nullptr, nullptr, "-dynamics_scheme", scheme, sizeof(scheme), &set));
+  useTS_ = std::string(scheme) == "tsalpha2";
+  if (!useTS_ && std::string(scheme) != "arnold_bruls")
+    throw SceneError("-dynamics_scheme", "expected arnold_bruls or tsalpha2, got " + std::string(scheme));
+  PetscInt cuts = maxCuts_;
+  PetscCallAbort(comm, PetscOptionsGetInt(nullptr, nullptr, "-max_cuts", &cuts, &set));
+  maxCuts_ = static_cast<int>(cuts);
+  PetscInt grow = growAfter_;
+  PetscCallAbort(comm, PetscOptionsGetInt(nullptr, nullptr, "-dt_grow_after", &grow, &set));
+  growAfter_ = static_cast<int>(grow);
+  PetscReal rtol = forceRtol_;
+  PetscCallAbort(comm, PetscOptionsGetReal(nullptr, nullptr, "-force_rtol", &rtol, &set));
+  forceRtol_ = rtol;
+  for (const LocalNode& n : asm_.mesh().nodes)
+    for (double x : n.X0) coordMax_ = std::max(coordMax_, std::abs(x));
+  MPI_Allreduce(MPI_IN_PLACE, &coordMax_, 1, MPI_DOUBLE, MPI_MAX, comm);
+}
+
+DynamicAnalysis::~DynamicAnalysis() {
+  SNESDestroy(&snes_);
+  MatDestroy(&J_);
+  for (Vec* v : {&F_, &Un_, &Vn_, &An_, &Qn_, &V1_, &A1_, &Q1_, &Cu_}) VecDestroy(v);
+}
+
+// ---------------------------------------------------------------- Arnold-Brüls, own step loop
+
+PetscErrorCode DynamicAnalysis::rates(Vec U) {
+  PetscFunctionBeginUser;
+  const double h = h_, bh2 = beta_ * h * h;
+  // a_{n+1} = (q_{n+1} - Cu) / (beta h^2)
+  PetscCall(VecWAXPY(A1_, -1.0, Cu_, U));
+  PetscCall(VecScale(A1_, 1.0 / bh2));
+  // qd_{n+1} = qd_n + h (1 - gamma) a_n + h gamma a_{n+1}
+  PetscCall(VecCopy(Vn_, V1_));
+  PetscCall(VecAXPBYPCZ(V1_, h * (1.0 - gamma_), h * gamma_, 1.0, An_, A1_));
+  // qdd_{n+1} = ((1 - alpha_m) a_{n+1} + alpha_m a_n - alpha_f qdd_n) / (1 - alpha_f)
+  PetscCall(VecSet(Q1_, 0.0));
+  PetscCall(VecAXPBYPCZ(Q1_, (1.0 - alphaM_) / (1.0 - alphaF_), alphaM_ / (1.0 - alphaF_), 0.0, A1_, An_));
+  PetscCall(VecAXPY(Q1_, -alphaF_ / (1.0 - alphaF_), Qn_));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode DynamicAnalysis::formFunction(SNES, Vec U, Vec F, void* ctx) {
+  PetscFunctionBeginUser;
+  auto* self = static_cast<DynamicAnalysis*>(ctx);
+  PetscCall(self->rates(U));
+  PetscCall(self->asm_.dynamicResidual(U, self->V1_, self->Q1_, self->ls_, F));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode DynamicAnalysis::formJacobian(SNES snes, Vec U, Mat, Mat P, void* ctx) {
+  PetscFunctionBeginUser;
+  auto* self = static_cast<DynamicAnalysis*>(ctx);
+  const double h = self->h_;
+  // dqd/dq = gamma/(beta h), dqdd/dq = (1 - alpha_m)/((1 - alpha_f) beta h^2)
+  const double shiftV = self->gamma_ / (self->beta_ * h);
+  const double shiftA = (1.0 - self->alphaM_) / ((1.0 - self->alphaF_) * self->beta_ * h * h);
+  PetscCall(self->rates(U));
+  PetscCall(self->asm_.dynamicJacobian(U, self->V1_, self->ls_, shiftV, shiftA, P));
+  PetscInt it = 0;
+  if (snes) PetscCall(SNESGetIterationNumber(snes, &it));
+  if (it == 0) PetscCall(MatNorm(P, NORM_INFINITY, &self->jacobianNorm_));  // at the predictor
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+// Converged when the residual is at the round-off level of the forces it balances (as in statics).
+PetscErrorCode DynamicAnalysis::convergenceTest(SNES snes, PetscInt it, PetscReal xnorm, PetscReal snorm, PetscReal fnorm,
+                                                SNESConvergedReason* reason, void* ctx) {
+  PetscFunctionBeginUser;
+  auto* self = static_cast<DynamicAnalysis*>(ctx);
+  PetscCall(SNESConvergedDefault(snes, it, xnorm, snorm, fnorm, reason, nullptr));
+  const double scale = std::max(self->asm_.externalForceNorm(), self->asm_.internalForceNorm());
+  if (*reason == SNES_CONVERGED_SNORM_RELATIVE && fnorm > 1e-6 * scale) *reason = SNES_CONVERGED_ITERATING;
+  if (*reason == SNES_CONVERGED_ITERATING && it > 0 && fnorm <= self->forceRtol_ * scale) *reason = SNES_CONVERGED_FNORM_ABS;
+  // round-off floor (as in statics): coordinates carry eps max|X|, so ||F|| <= 8 eps ||J||_inf max|X|
+  // is equilibrium once the residual has dropped below 1e-3 of its start (stiff axial terms, small loads)
+  if (it == 0) self->fnorm0_ = fnorm;
+  if (*reason == SNES_CONVERGED_ITERATING && it > 0 && fnorm <= 1e-3 * self->fnorm0_ &&
+      fnorm <= 8.0 * DBL_EPSILON * self->jacobianNorm_ * self->coordMax_)
+    *reason = SNES_CONVERGED_FNORM_ABS;
+  if (!std::isfinite(fnorm)) *reason = SNES_DIVERGED_FNORM_NAN;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+// M qdd_0 = f_ext(0) - f_int(q_0, qd_0, 0): one KSP solve (options prefix init_, LU by default).
+PetscErrorCode DynamicAnalysis::initialAccelerations(Vec U, Vec V, Vec Qdd, bool* ok) {
+  PetscFunctionBeginUser;
+  MPI_Comm comm = asm_.mesh().comm;
+  Mat M;
+  PetscCall(asm_.createMatrix(&M));
+  LoadState ls0 = ls_;
+  ls0.time = 0.0;
+  PetscCall(asm_.mass(U, ls0, M));
+  PetscCall(VecSet(Qdd, 0.0));
+  PetscCall(asm_.dynamicResidual(U, V, Qdd, ls0, F_));  // f_int - f_ext
+  PetscCall(VecScale(F_, -1.0));
+  KSP ksp;
+  PC pc;
+  PetscCall(KSPCreate(comm, &ksp));
+  PetscCall(KSPSetOptionsPrefix(ksp, "init_"));
+  PetscCall(KSPSetOperators(ksp, M, M));
+  PetscCall(KSPSetType(ksp, KSPPREONLY));
+  PetscCall(KSPGetPC(ksp, &pc));
+  PetscCall(PCSetType(pc, PCLU));
+  PetscCall(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
+  PetscCall(KSPSetFromOptions(ksp));
+  PetscCall(KSPSolve(ksp, F_, Qdd));
+  KSPConvergedReason why;
+  PetscCall(KSPGetConvergedReason(ksp, &why));
+  PetscReal nrm = 0;
+  PetscCall(VecNorm(Qdd, NORM_INFINITY, &nrm));
+  *ok = why >= 0 && std::isfinite(nrm);
+  if (!*ok)
+    failure_ = std::string("opt.dynamics: the initial accelerations M a0 = f_ext - f_int could not be solved (") +
+               KSPConvergedReasons[why] +
+               "); the mass matrix is singular: every free coordinate needs mass (physicsMassPerLength, dens or nodal mass)";
+  PetscCall(KSPDestroy(&ksp));
+  PetscCall(MatDestroy(&M));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode DynamicAnalysis::step(double t1, bool* ok, int* its, double* fnorm, SNESConvergedReason* why) {
+  PetscFunctionBeginUser;
+  const double h = h_;
+  ls_.time = t1;
+  // Cu = q_n + h qd_n + h^2 (1/2 - beta) a_n; predictor q = q_n + h qd_n + h^2/2 a_n
+  PetscCall(VecCopy(Un_, Cu_));
+  PetscCall(VecAXPBYPCZ(Cu_, h, h * h * (0.5 - beta_), 1.0, Vn_, An_));
+  Vec U;
+  PetscCall(SNESGetSolution(snes_, &U));
+  PetscCall(VecWAXPY(U, h * h * beta_, An_, Cu_));
+  PetscCall(SNESSolve(snes_, nullptr, U));
+  PetscCall(SNESGetConvergedReason(snes_, why));
+  PetscInt n;
+  PetscCall(SNESGetIterationNumber(snes_, &n));
+  PetscReal f;
+  PetscCall(SNESGetFunctionNorm(snes_, &f));
+  *its = static_cast<int>(n);
+  *fnorm = f;
+  *ok = *why > 0;
+  if (*ok) {
+    PetscCall(rates(U));
+    PetscCall(VecCopy(U, Un_));
+    PetscCall(VecCopy(V1_, Vn_));
+    PetscCall(VecCopy(A1_, An_));
+    PetscCall(VecCopy(Q1_, Qn_));
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode DynamicAnalysis::runArnoldBruls(Vec U, const StepCallback& onStep, bool* converged) {
+  PetscFunctionBeginUser;
+  MPI_Comm comm = asm_.mesh().comm;
+  PetscCall(SNESCreate(comm, &snes_));
+  PetscCall(SNESSetType(snes_, SNESNEWTONLS));
+  PetscCall(SNESSetFunction(snes_, F_, formFunction, this));
+  PetscCall(SNESSetJacobian(snes_, J_, J_, formJacobian, this));
+  PetscCall(SNESSetTolerances(snes_, 1e-50, 1e-10, 1e-12, 50, 10000));
+  PetscCall(SNESSetDivergenceTolerance(snes_, -1.0));
+  SNESLineSearch lsrch;
+  PetscCall(SNESGetLineSearch(snes_, &lsrch));
+  PetscCall(SNESLineSearchSetType(lsrch, SNESLINESEARCHBASIC));
+  PetscCall(SNESSetConvergenceTest(snes_, convergenceTest, this, nullptr));
+  KSP ksp;
+  PC pc;
+  PetscCall(SNESGetKSP(snes_, &ksp));
+  PetscCall(KSPSetType(ksp, KSPPREONLY));
+  PetscCall(KSPGetPC(ksp, &pc));
+  PetscCall(PCSetType(pc, PCLU));
+  PetscCall(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
+  PetscCall(SNESSetFromOptions(snes_));
+  Vec Usol;
+  PetscCall(VecDuplicate(U, &Usol));
+  PetscCall(SNESSetSolution(snes_, Usol));
+  PetscCall(VecDestroy(&Usol));
+
+  PetscCall(VecCopy(U, Un_));
+  PetscCall(VecSet(Vn_, 0.0));
+  bool ok = false;
+  PetscCall(initialAccelerations(Un_, Vn_, Qn_, &ok));
+  if (!ok) {
+    *converged = false;
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  PetscCall(VecCopy(Qn_, An_));  // a_0 = qdd_0
+  if (onStep) PetscCall(onStep(0, 0.0, Un_, Vn_, Qn_));
+
+  const double dt = opts_.dt, tend = opts_.tend;
+  const int nsteps = std::max(1, static_cast<int>(std::ceil(tend / dt - 1e-9)));
+  double t = 0.0;
+  *converged = true;
+  // Sub-step size h: halved when Newton fails, doubled again after growAfter_ successes in a row
+  // (never above dt), so one hard moment does not leave the rest of the run at a tiny step.
+  double h = dt;
+  int successes = 0;
+  for (int k = 1; k <= nsteps; ++k) {
+    const double target = k == nsteps ? tend : k * dt;
+    int cuts = 0;
+    bool reduced = h < dt;
+    while (t < target) {
+      h_ = std::min(h, target - t);
+      const double t1 = (target - t - h_ <= 1e-12 * dt) ? target : t + h_;
+      int its = 0;
+      double fnorm = 0;
+      SNESConvergedReason why;
+      PetscCall(step(t1, &ok, &its, &fnorm, &why));
+      report_.newtonIterations += its;
+      ++report_.substeps;
+      if (ok) {
+        t = t1;
+        if (h < dt && growAfter_ > 0 && ++successes >= growAfter_) {
+          h = std::min(2.0 * h, dt);
+          successes = 0;
+        }
+        continue;
+      }
+      successes = 0;
+      if (++cuts > maxCuts_) {
+        std::ostringstream msg;
+        msg << "time step " << k << " of " << nsteps << " did not converge: Newton stopped at t = " << t1 << " ("
+            << SNESConvergedReasons[why] << ", residual norm " << fnorm << ") after " << maxCuts_
+            << " halvings of the step (last converged time " << t
+            << "). Try a smaller opt.dynamics.dt, a line search (-snes_linesearch_type bt), -snes_monitor, or check "
+               "supports and masses.";
+        failure_ = msg.str();
+        *converged = false;
+        break;
+      }
+      h = 0.5 * h_;
+      reduced = true;
+      PetscCall(PetscPrintf(comm, "  t = %.6g: Newton failed (%s); retrying with dt = %.3g\n", t1,
+                            SNESConvergedReasons[why], h));
+    }
+    if (!*converged) break;
+    report_.steps = k;
+    report_.reducedSteps += reduced;
+    report_.time = t;
+    if (onStep) PetscCall(onStep(k, t, Un_, Vn_, Qn_));
+  }
+  PetscCall(VecCopy(Un_, U));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+// ---------------------------------------------------------------- PETSc TSALPHA2 (Chung-Hulbert)
+
+PetscErrorCode DynamicAnalysis::tsI2Function(TS, PetscReal t, Vec U, Vec V, Vec A, Vec F, void* ctx) {
+  PetscFunctionBeginUser;
+  auto* self = static_cast<DynamicAnalysis*>(ctx);
+  LoadState ls = self->ls_;
+  ls.time = t;
+  PetscCall(self->asm_.dynamicResidual(U, V, A, ls, F));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode DynamicAnalysis::tsI2Jacobian(TS, PetscReal t, Vec U, Vec V, Vec, PetscReal shiftV, PetscReal shiftA, Mat,
+                                             Mat P, void* ctx) {
+  PetscFunctionBeginUser;
+  auto* self = static_cast<DynamicAnalysis*>(ctx);
+  LoadState ls = self->ls_;
+  ls.time = t;
+  PetscCall(self->asm_.dynamicJacobian(U, V, ls, shiftV, shiftA, P));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+namespace {
+struct TSMonitorCtx {
+  const DynamicAnalysis::StepCallback* onStep;
+  Vec A;
+  DynamicsReport* report;
+};
+PetscErrorCode tsMonitor(TS ts, PetscInt step, PetscReal t, Vec U, void* ctx) {
+  PetscFunctionBeginUser;
+  auto* m = static_cast<TSMonitorCtx*>(ctx);
+  if (step == 0) PetscFunctionReturn(PETSC_SUCCESS);  // t = 0 is written before TSSolve
+  Vec X, V;
+  PetscCall(TS2GetSolution(ts, &X, &V));
+  m->report->steps = static_cast<int>(step);
+  m->report->time = t;
+  if (*m->onStep) PetscCall((*m->onStep)(static_cast<int>(step), t, U, V, m->A));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+}  // namespace
+
+PetscErrorCode DynamicAnalysis::runTSAlpha2(Vec U, const StepCallback& onStep, bool* converged) {
+  PetscFunctionBeginUser;
+  MPI_Comm comm = asm_.mesh().comm;
+  TS ts;
+  PetscCall(TSCreate(comm, &ts));
+  PetscCall(TSSetType(ts, TSALPHA2));
+  PetscCall(TSSetI2Function(ts, F_, tsI2Function, this));
+  PetscCall(TSSetI2Jacobian(ts, J_, J_, tsI2Jacobian, this));
+  PetscCall(TSAlpha2SetRadius(ts, opts_.spectral_radius));
+  PetscCall(TSSetTimeStep(ts, opts_.dt));
+  PetscCall(TSSetMaxTime(ts, opts_.tend));
+  PetscCall(TSSetExactFinalTime(ts, TS_EXACTFINALTIME_MATCHSTEP));
+  PetscCall(TSSetMaxSNESFailures(ts, -1));  // a failed step is retried with a smaller step
+  SNES snes;
+  KSP ksp;
+  PC pc;
+  PetscCall(TSGetSNES(ts, &snes));
+  PetscCall(SNESSetTolerances(snes, 1e-50, 1e-10, 1e-12, 50, 10000));
+  PetscCall(SNESSetConvergenceTest(snes, convergenceTest, this, nullptr));
+  PetscCall(SNESGetKSP(snes, &ksp));
+  PetscCall(KSPSetType(ksp, KSPPREONLY));
+  PetscCall(KSPGetPC(ksp, &pc));
+  PetscCall(PCSetType(pc, PCLU));
+  PetscCall(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
+  Vec V, A;
+  PetscCall(VecDuplicate(U, &V));
+  PetscCall(VecDuplicate(U, &A));
+  PetscCall(VecSet(V, 0.0));
+  bool ok = false;
+  PetscCall(initialAccelerations(U, V, A, &ok));
+  if (ok) {
+    if (onStep) PetscCall(onStep(0, 0.0, U, V, A));
+    TSMonitorCtx mctx{&onStep, A, &report_};
+    PetscCall(VecSet(A, 0.0));  // TSALPHA2 does not expose its accelerations: sensors see qdd = 0
+    PetscCall(TSMonitorSet(ts, tsMonitor, &mctx, nullptr));
+    PetscCall(TS2SetSolution(ts, U, V));
+    PetscCall(TSSetFromOptions(ts));
+    PetscCall(TSSolve(ts, U));
+    TSConvergedReason why;
+    PetscCall(TSGetConvergedReason(ts, &why));
+    ok = why > 0;
+    if (!ok) failure_ = std::string("opt.dynamics: TSALPHA2 stopped (") + TSConvergedReasons[why] + ")";
+  }
+  *converged = ok;
+  PetscCall(VecDestroy(&V));
+  PetscCall(VecDestroy(&A));
+  PetscCall(TSDestroy(&ts));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode DynamicAnalysis::run(Vec U, const StepCallback& onStep, bool* converged) {
+  PetscFunctionBeginUser;
+  PetscCall(PetscLogEventBegin(SinewEvents::get().dynamics, 0, 0, 0, 0));
+  if (useTS_) PetscCall(runTSAlpha2(U, onStep, converged));
+  else PetscCall(runArnoldBruls(U, onStep, converged));
+  PetscCall(PetscLogEventEnd(SinewEvents::get().dynamics, 0, 0, 0, 0));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+}  // namespace sinew

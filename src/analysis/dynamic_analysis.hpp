@@ -1,0 +1,84 @@
+// Implicit time integration of M qdd + f_int(q, qd, t) = f_ext(t) with the generalized-alpha
+// method in the variant of Arnold & Brüls (2007), as Exudyn's GeneralizedAlpha solver uses it:
+//   q_{n+1}  = q_n + h qd_n + h^2 (1/2 - beta) a_n + h^2 beta a_{n+1}
+//   qd_{n+1} = qd_n + h (1 - gamma) a_n + h gamma a_{n+1}
+//   (1 - alpha_m) a_{n+1} + alpha_m a_n = (1 - alpha_f) qdd_{n+1} + alpha_f qdd_n
+//   M qdd_{n+1} + f_int(q_{n+1}, qd_{n+1}, t_{n+1}) = f_ext(t_{n+1})      (equilibrium at t_{n+1})
+// alpha_m = (2 rho - 1)/(rho + 1), alpha_f = rho/(rho + 1), gamma = 1/2 + alpha_f - alpha_m,
+// beta = (gamma + 1/2)^2 / 4 (rho = spectral radius at infinity), a_0 = qdd_0 from M qdd_0 =
+// f_ext(0) - f_int(q_0, qd_0, 0). Each step is one SNES solve for q_{n+1} (options without
+// prefix: -snes_*, -ksp_*, -pc_*); a failed step is retried with halved steps (-max_cuts).
+// PETSc's TSALPHA2 is the Chung-Hulbert variant (equilibrium at t_{n+1-alpha_f}); it is
+// available with -dynamics_scheme tsalpha2 (docs/ancf_cable2d.md compares both).
+#pragma once
+#include <petscsnes.h>
+#include <petscts.h>
+
+#include <functional>
+#include <string>
+
+#include "assembly/assembler.hpp"
+#include "sinew/model.hpp"
+
+namespace sinew {
+
+struct DynamicsReport {
+  int steps = 0;             ///< time steps of size dt completed
+  int reducedSteps = 0;      ///< steps that needed halved sub-steps
+  int substeps = 0;          ///< SNES solves (1 per step without cuts)
+  int newtonIterations = 0;
+  double time = 0;           ///< last converged time
+};
+
+class DynamicAnalysis {
+ public:
+  DynamicAnalysis(Assembler& assembler, const DynamicsOptions& opts);
+  ~DynamicAnalysis();
+  DynamicAnalysis(const DynamicAnalysis&) = delete;
+  DynamicAnalysis& operator=(const DynamicAnalysis&) = delete;
+
+  /// Called at t = 0 (step 0, after the initial accelerations) and after every time step:
+  /// U, V and the accelerations Qdd at time t.
+  using StepCallback = std::function<PetscErrorCode(int step, double t, Vec U, Vec V, Vec Qdd)>;
+  /// Integrates from U (in: initial state, at rest; out: state at the last converged time).
+  PetscErrorCode run(Vec U, const StepCallback& onStep, bool* converged);
+  const DynamicsReport& report() const { return report_; }
+  const std::string& failureMessage() const { return failure_; }
+  double alphaM() const { return alphaM_; }
+  double alphaF() const { return alphaF_; }
+
+ private:
+  static PetscErrorCode formFunction(SNES, Vec U, Vec F, void* ctx);
+  static PetscErrorCode formJacobian(SNES, Vec U, Mat J, Mat P, void* ctx);
+  static PetscErrorCode convergenceTest(SNES, PetscInt it, PetscReal xnorm, PetscReal snorm, PetscReal fnorm,
+                                        SNESConvergedReason* reason, void* ctx);
+  static PetscErrorCode tsI2Function(TS, PetscReal t, Vec U, Vec V, Vec A, Vec F, void* ctx);
+  static PetscErrorCode tsI2Jacobian(TS, PetscReal t, Vec U, Vec V, Vec A, PetscReal shiftV, PetscReal shiftA, Mat J,
+                                     Mat P, void* ctx);
+  PetscErrorCode initialAccelerations(Vec U, Vec V, Vec Qdd, bool* ok);
+  /// a_{n+1}, qd_{n+1}, qdd_{n+1} of the iterate U (step size h_).
+  PetscErrorCode rates(Vec U);
+  PetscErrorCode step(double t1, bool* ok, int* its, double* fnorm, SNESConvergedReason* why);
+  PetscErrorCode runArnoldBruls(Vec U, const StepCallback& onStep, bool* converged);
+  PetscErrorCode runTSAlpha2(Vec U, const StepCallback& onStep, bool* converged);
+
+  Assembler& asm_;
+  DynamicsOptions opts_;
+  double alphaM_, alphaF_, gamma_, beta_;
+  double h_ = 0;
+  LoadState ls_;
+  SNES snes_ = nullptr;
+  Mat J_ = nullptr;
+  Vec F_ = nullptr;
+  Vec Un_ = nullptr, Vn_ = nullptr, An_ = nullptr, Qn_ = nullptr;  // step start: q, qd, a (algorithmic), qdd
+  Vec V1_ = nullptr, A1_ = nullptr, Q1_ = nullptr, Cu_ = nullptr;  // iterate rates; Cu = predictor part of q
+  double forceRtol_ = 1e-10;
+  int maxCuts_ = 10;
+  int growAfter_ = 3;  ///< after a halving, double the sub-step after this many successes (0: never)
+  double jacobianNorm_ = 0, coordMax_ = 0, fnorm0_ = 0;  ///< round-off floor of the residual (convergenceTest)
+  bool useTS_ = false;
+  DynamicsReport report_;
+  std::string failure_;
+};
+
+}  // namespace sinew

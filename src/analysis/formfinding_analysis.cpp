@@ -1,0 +1,333 @@
+#include "analysis/formfinding_analysis.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+#include "elements/cable3d.hpp"
+#include "elements/membrane.hpp"
+
+namespace sinew {
+
+namespace {
+/// Area of a triangle or (half the diagonal cross product of) a quad at the states q.
+double elementArea(int nn, const double* q) {
+  auto v = [&](int a, int b) { return Vec3{q[3 * b] - q[3 * a], q[3 * b + 1] - q[3 * a + 1], q[3 * b + 2] - q[3 * a + 2]}; };
+  return nn == 3 ? 0.5 * norm(cross(v(0, 1), v(0, 2))) : 0.5 * norm(cross(v(0, 2), v(1, 3)));
+}
+}  // namespace
+
+FormFindingAnalysis::FormFindingAnalysis(Assembler& assembler, const FormFinding& ff, const std::vector<ElementSet>& eprops)
+    : asm_(assembler), ff_(ff), eprops_(eprops) {
+  DistributedMesh& m = asm_.mesh();
+  MPI_Comm comm = m.comm;
+  ffSets_ = ff_.formfinding_elements;
+  if (ffSets_.empty())
+    for (size_t s = 0; s < eprops_.size(); ++s)
+      if (eprops_[s].type == ElementType::Cable || eprops_[s].type == ElementType::Membrane) ffSets_.push_back(static_cast<int>(s));
+  auto inList = [](const std::vector<int>& v, int s) { return std::find(v.begin(), v.end(), s) != v.end(); };
+  // initial states (load factor 0): the reference of a NONE restart, initial areas, model size
+  Vec U0;
+  PetscCallAbort(comm, asm_.createVector(&U0));
+  PetscCallAbort(comm, VecSet(U0, 0.0));
+  const double* u;
+  PetscCallAbort(comm, asm_.beginLocal(U0, ls_, &u));
+  std::array<double, 48> q;
+  std::array<int, 32> idx;
+  double quality = 1.0;
+  for (size_t e = 0; e < m.elements.size(); ++e) {
+    const LocalElement& el = m.elements[e];
+    if (el.set < 0 || !inList(ffSets_, el.set)) continue;
+    ElementKernel* k = el.kernel.get();
+    auto* cable = dynamic_cast<Cable3D*>(k);
+    auto* mem = dynamic_cast<Membrane*>(k);
+    if (!cable && !mem) continue;
+    asm_.gather(el, q.data(), idx.data());
+    elems_.push_back(static_cast<int>(e));
+    std::array<double, 12> s{};
+    std::copy(q.begin(), q.begin() + 3 * el.numNodes, s.begin());
+    initial_.push_back(s);
+    area0_.push_back(mem ? elementArea(el.numNodes, q.data()) : 0.0);
+    if (mem) quality = std::min(quality, mem->meshQuality(q.data()));
+    const bool adapt = inList(ff_.stress_adaption, el.set);
+    if (cable) cable->setStressAdaption(adapt ? ff_.lambda_max : 0.0, ff_.mue_relax);
+    if (mem) mem->setStressAdaption(adapt ? ff_.lambda_max : 0.0, ff_.mue_relax);
+  }
+  double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
+  for (int i = 0; i < m.numOwnedNodes; ++i)
+    for (int k = 0; k < 3; ++k) {
+      lo[k] = std::min(lo[k], asm_.nodeState(i)[k]);
+      hi[k] = std::max(hi[k], asm_.nodeState(i)[k]);
+    }
+  PetscCallAbort(comm, asm_.endLocal(&u));
+  PetscCallAbort(comm, VecDestroy(&U0));
+  MPI_Allreduce(MPI_IN_PLACE, lo, 3, MPI_DOUBLE, MPI_MIN, comm);
+  MPI_Allreduce(MPI_IN_PLACE, hi, 3, MPI_DOUBLE, MPI_MAX, comm);
+  MPI_Allreduce(MPI_IN_PLACE, &quality, 1, MPI_DOUBLE, MPI_MIN, comm);
+  quality0_ = quality;
+  size_ = std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) + (hi[2] - lo[2]) * (hi[2] - lo[2]));
+  if (!(size_ > 0.0)) size_ = 1.0;
+  long n = static_cast<long>(elems_.size());
+  MPI_Allreduce(&n, &nff_, 1, MPI_LONG, MPI_SUM, comm);
+
+  PetscCallAbort(comm, asm_.createMatrix(&J_));
+  PetscCallAbort(comm, asm_.createVector(&F_));
+  PetscCallAbort(comm, SNESCreate(comm, &snes_));
+  PetscCallAbort(comm, SNESSetOptionsPrefix(snes_, "ff_"));
+  PetscCallAbort(comm, SNESSetType(snes_, SNESNEWTONLS));
+  PetscCallAbort(comm, SNESSetFunction(snes_, F_, formFunction, this));
+  PetscCallAbort(comm, SNESSetJacobian(snes_, J_, J_, formJacobian, this));
+  PetscCallAbort(comm, SNESSetTolerances(snes_, 1e-50, 1e-50, 0.0, ff_.max_iter_equilibrium, 100000));
+  PetscCallAbort(comm, SNESSetDivergenceTolerance(snes_, -1.0));
+  SNESLineSearch ls;
+  PetscCallAbort(comm, SNESGetLineSearch(snes_, &ls));
+  PetscCallAbort(comm, SNESLineSearchSetType(ls, SNESLINESEARCHBASIC));
+  PetscCallAbort(comm, SNESSetConvergenceTest(snes_, convergenceTest, this, nullptr));
+  KSP ksp;
+  PC pc;
+  PetscCallAbort(comm, SNESGetKSP(snes_, &ksp));
+  PetscCallAbort(comm, KSPSetType(ksp, KSPPREONLY));
+  PetscCallAbort(comm, KSPGetPC(ksp, &pc));
+  PetscCallAbort(comm, PCSetType(pc, PCLU));
+  PetscCallAbort(comm, PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
+  PetscCallAbort(comm, SNESSetFromOptions(snes_));
+}
+
+FormFindingAnalysis::~FormFindingAnalysis() {
+  SNESDestroy(&snes_);
+  MatDestroy(&J_);
+  VecDestroy(&F_);
+}
+
+PetscErrorCode FormFindingAnalysis::formFunction(SNES, Vec U, Vec F, void* ctx) {
+  auto* self = static_cast<FormFindingAnalysis*>(ctx);
+  return self->asm_.residual(U, self->ls_, F);
+}
+
+PetscErrorCode FormFindingAnalysis::formJacobian(SNES, Vec U, Mat, Mat P, void* ctx) {
+  auto* self = static_cast<FormFindingAnalysis*>(ctx);
+  return self->asm_.jacobian(U, self->ls_, P);
+}
+
+PetscErrorCode FormFindingAnalysis::convergenceTest(SNES snes, PetscInt it, PetscReal xnorm, PetscReal snorm,
+                                                    PetscReal fnorm, SNESConvergedReason* reason, void* ctx) {
+  PetscFunctionBeginUser;
+  auto* self = static_cast<FormFindingAnalysis*>(ctx);
+  PetscCall(SNESConvergedDefault(snes, it, xnorm, snorm, fnorm, reason, nullptr));
+  if (*reason == SNES_CONVERGED_ITERATING) {
+    const double scale = std::max(self->asm_.externalForceNorm(), self->asm_.internalForceNorm());
+    if (fnorm <= self->ff_.equilibrium_accuracy * scale) *reason = SNES_CONVERGED_FNORM_ABS;
+  }
+  if (!std::isfinite(fnorm)) *reason = SNES_DIVERGED_FNORM_NAN;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+void FormFindingAnalysis::setMode(double lambda, bool xurs) {
+  for (int e : elems_) {
+    ElementKernel* k = asm_.mesh().elements[static_cast<size_t>(e)].kernel.get();
+    if (auto* c = dynamic_cast<Cable3D*>(k)) c->setFormFinding(true, lambda);
+    if (auto* mem = dynamic_cast<Membrane*>(k)) {
+      mem->setFormFinding(true, lambda);
+      mem->setXurs(xurs);
+    }
+  }
+}
+
+PetscErrorCode FormFindingAnalysis::updateReferences(Vec U, long* badElement, double* quality) {
+  PetscFunctionBeginUser;
+  DistributedMesh& m = asm_.mesh();
+  const double* u;
+  PetscCall(asm_.beginLocal(U, ls_, &u));
+  std::array<double, 48> q;
+  std::array<int, 32> idx;
+  long bad = 0;
+  double qmin = 1.0;
+  for (size_t i = 0; i < elems_.size(); ++i) {
+    const LocalElement& el = m.elements[static_cast<size_t>(elems_[i])];
+    asm_.gather(el, q.data(), idx.data());
+    ElementKernel* k = el.kernel.get();
+    if (auto* c = dynamic_cast<Cable3D*>(k)) {
+      if (c->length(q.data()) <= 1e-12 * size_) bad = std::max(bad, static_cast<long>(el.sceneElement) + 1);
+      else c->updateReference(q.data());
+    } else if (auto* mem = dynamic_cast<Membrane*>(k)) {
+      const double a = elementArea(el.numNodes, q.data());
+      if (!(a > 1e-3 * area0_[i])) {
+        bad = std::max(bad, static_cast<long>(el.sceneElement) + 1);
+        continue;
+      }
+      qmin = std::min(qmin, mem->meshQuality(q.data()));
+      try {
+        mem->updateReference(q.data());
+      } catch (const std::invalid_argument&) {
+        bad = std::max(bad, static_cast<long>(el.sceneElement) + 1);
+      }
+    }
+  }
+  PetscCall(asm_.endLocal(&u));
+  MPI_Allreduce(&bad, badElement, 1, MPI_LONG, MPI_MAX, m.comm);
+  MPI_Allreduce(&qmin, quality, 1, MPI_DOUBLE, MPI_MIN, m.comm);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode FormFindingAnalysis::shapeChange(Vec U, Vec Uprev, double* change) {
+  PetscFunctionBeginUser;
+  DistributedMesh& m = asm_.mesh();
+  const PetscScalar *a, *b;
+  PetscCall(VecGetArrayRead(U, &a));
+  PetscCall(VecGetArrayRead(Uprev, &b));
+  double mx = 0.0;
+  for (int i = 0; i < m.numOwnedNodes; ++i) {
+    const LocalNode& n = m.nodes[i];
+    double d2 = 0.0;
+    for (int k = 0; k < 3 && k < n.ndof; ++k)
+      if (n.dof[k] >= 0 && n.status[k] == DofStatus::Free) d2 += (a[n.dof[k]] - b[n.dof[k]]) * (a[n.dof[k]] - b[n.dof[k]]);
+    mx = std::max(mx, std::sqrt(d2));
+  }
+  PetscCall(VecRestoreArrayRead(U, &a));
+  PetscCall(VecRestoreArrayRead(Uprev, &b));
+  MPI_Allreduce(MPI_IN_PLACE, &mx, 1, MPI_DOUBLE, MPI_MAX, m.comm);
+  *change = mx / size_;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+std::string FormFindingAnalysis::setNames() const {
+  std::ostringstream s;
+  for (size_t i = 0; i < ffSets_.size(); ++i) {
+    const ElementSet& es = eprops_[static_cast<size_t>(ffSets_[i])];
+    s << (i ? ", " : "") << "eprops[" << ffSets_[i] << "] ("
+      << (es.type == ElementType::Membrane ? "membrane" : "cable") << " set " << ffSets_[i] + 1 << ")";
+  }
+  return s.str();
+}
+
+PetscErrorCode FormFindingAnalysis::run(Vec U, const StepCallback& onStep, bool* ok) {
+  PetscFunctionBeginUser;
+  MPI_Comm comm = asm_.mesh().comm;
+  *ok = true;
+  if (nff_ == 0) {
+    *ok = false;
+    failure_ = "formfinding: no cable or membrane element to form-find (formfinding_elements names the eprops sets)";
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  Vec Uprev;
+  PetscCall(VecDuplicate(U, &Uprev));
+  ls_ = LoadState{};  // load factor 0: initial loads only
+  const int nsteps = ff_.formfinding_step;
+  for (int k = 1; k <= nsteps; ++k) {
+    FormFindingStepReport rep;
+    rep.step = k;
+    const auto& hc = ff_.homotopy_curve;
+    rep.lambda = hc.empty() ? 0.0 : hc[static_cast<size_t>(std::min<int>(k, static_cast<int>(hc.size())) - 1)];
+    rep.xurs = ff_.x_urs && k >= ff_.x_urs_step;
+    setMode(rep.lambda, rep.xurs);
+    PetscCall(VecCopy(U, Uprev));
+    PetscCall(SNESSolve(snes_, nullptr, U));
+    SNESConvergedReason why;
+    PetscInt its;
+    PetscReal fnorm;
+    PetscCall(SNESGetConvergedReason(snes_, &why));
+    PetscCall(SNESGetIterationNumber(snes_, &its));
+    PetscCall(SNESGetFunctionNorm(snes_, &fnorm));
+    rep.newtonIterations = static_cast<int>(its);
+    rep.residualNorm = fnorm;
+    rep.equilibrium = why > 0;
+    std::ostringstream msg;
+    if (why < 0 && why != SNES_DIVERGED_MAX_IT) {
+      msg << "formfinding step " << k << " of " << nsteps << ": no equilibrium (" << SNESConvergedReasons[why]
+          << ", residual norm " << fnorm << ") for the form-found sets " << setNames()
+          << ". A singular tangent means a mechanism: a node held only by unstressed elements, a free membrane "
+             "edge without an edge cable, or supports missing. Check prestress and supports; -ff_snes_monitor "
+             "shows the iterations.";
+      failure_ = msg.str();
+      *ok = false;
+      break;
+    }
+    PetscCall(asm_.absorbRotations(U));
+    PetscCall(shapeChange(U, Uprev, &rep.shapeChange));
+    if (!(rep.shapeChange <= ff_.max_shape_change)) {
+      msg << "formfinding step " << k << " of " << nsteps << ": the shape changed by " << rep.shapeChange
+          << " of the model size (max_shape_change " << ff_.max_shape_change << ") in the form-found sets "
+          << setNames()
+          << ": there is no equilibrium shape for this prestress; the prestress is too low for the loads or the "
+             "edge cables, or a membrane edge is unsupported (add an edge cable or supports).";
+      failure_ = msg.str();
+      *ok = false;
+      break;
+    }
+    long bad = 0;
+    PetscCall(updateReferences(U, &bad, &rep.meshQuality));
+    if (bad > 0) {
+      msg << "formfinding step " << k << " of " << nsteps << ": element " << bad
+          << " collapsed (area below 1e-3 of its initial area, or zero length) in the form-found sets " << setNames()
+          << ": the surface crumples instead of converging; a membrane edge is unsupported or the prestress "
+             "is too low against the edge cables or loads.";
+      failure_ = msg.str();
+      *ok = false;
+      break;
+    }
+    reports_.push_back(rep);
+    if (onStep) PetscCall(onStep(rep, U));
+    if (rep.shapeChange < ff_.formfinding_tolerance) break;
+  }
+  if (*ok && !reports_.empty() && !reports_.back().equilibrium) {
+    std::ostringstream msg;
+    msg << "formfinding step " << reports_.back().step << ": equilibrium_accuracy " << ff_.equilibrium_accuracy
+        << " not reached in max_iter_equilibrium = " << ff_.max_iter_equilibrium << " iterations (residual norm "
+        << reports_.back().residualNorm << "); raise max_iter_equilibrium or formfinding_step";
+    failure_ = msg.str();
+    *ok = false;
+  }
+  PetscCall(VecDestroy(&Uprev));
+  (void)comm;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode FormFindingAnalysis::restart(Vec U) {
+  PetscFunctionBeginUser;
+  DistributedMesh& m = asm_.mesh();
+  const std::string& method = ff_.elastic_restart_method;
+  for (size_t i = 0; i < elems_.size(); ++i) {
+    ElementKernel* k = m.elements[static_cast<size_t>(elems_[i])].kernel.get();
+    auto* c = dynamic_cast<Cable3D*>(k);
+    auto* mem = dynamic_cast<Membrane*>(k);
+    if (c) c->setFormFinding(false, 0.0);
+    if (mem) {
+      mem->setFormFinding(false, 0.0);
+      mem->setXurs(false);
+    }
+    if (method == "FORCE") continue;
+    if (c) c->setPrestressForce(0.0);
+    if (mem) mem->setPrestress({0.0, 0.0, 0.0});
+    if (method == "NONE") {
+      const double* X = initial_[i].data();
+      if (c) c->setReferenceLength(norm(Vec3{X[3] - X[0], X[4] - X[1], X[5] - X[2]}));
+      if (mem) mem->setReference(X);
+    }
+  }
+  if (method == "NONE") {
+    PetscCall(VecSet(U, 0.0));
+  } else if (method == "FORCE") {
+    // node reference positions := found positions (free translations), then U := 0 there
+    const double* u;
+    PetscCall(asm_.beginLocal(U, ls_, &u));
+    for (LocalNode& n : m.nodes) {
+      if (n.kind == NodeKind::Ancf2D) continue;
+      for (int k = 0; k < 3; ++k)
+        if (n.status[k] == DofStatus::Free) n.X0[k] += u[n.dof[k]];
+    }
+    PetscCall(asm_.endLocal(&u));
+    PetscScalar* uo;
+    PetscCall(VecGetArray(U, &uo));
+    for (int i = 0; i < m.numOwnedNodes; ++i) {
+      const LocalNode& n = m.nodes[i];
+      if (n.kind == NodeKind::Ancf2D) continue;
+      for (int k = 0; k < 3; ++k)
+        if (n.status[k] == DofStatus::Free) uo[n.dof[k]] = 0.0;
+    }
+    PetscCall(VecRestoreArray(U, &uo));
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+}  // namespace sinew

@@ -1,0 +1,109 @@
+// Form finding with the Updated Reference Strategy (URS, Bletzinger & Ramm 1999; design.md section 2,
+// `formfinding` block with CARAT++ names), then the elastic restart of the load analysis.
+//
+// Form-found elements: the cable and membrane kernels of the sets in formfinding_elements (every
+// cable and membrane set when the list is empty). They run in form-finding mode (prescribed
+// prestress, stress-dependent stiffness only, homotopy factor lambda); every other element stays
+// elastic with its own reference. Loads during form finding: those of load factor 0, i.e.
+// force_initial, moment_initial, displ_initial_*, pressure_initial (ramped loads, gravity and
+// `pressure` act in the load analysis only).
+// Step k = 1..formfinding_step:
+//   1. lambda_k = homotopy_curve[k-1] (the last entry for later steps; 0 without a curve); membranes
+//      switch to xURS when x_urs and k >= x_urs_step;
+//   2. equilibrium R(u) = 0 with an own SNES (options prefix ff_: -ff_snes_monitor, -ff_ksp_type ...),
+//      at most max_iter_equilibrium Newton iterations; converged when
+//      ||R|| <= equilibrium_accuracy * max(||f_int||, ||f_ext||) (element-force scale of assembler);
+//      reaching max_iter_equilibrium continues with the next step (as CARAT++), but the last step
+//      must be in equilibrium;
+//   3. shape change s_k = max_nodes |u_k - u_{k-1}| / D, D = diagonal of the bounding box of the
+//      initial nodes; s_k > max_shape_change is an error (no equilibrium shape: prestress too low
+//      for the loads/edge cables, or a free membrane edge), naming the form-found sets;
+//   4. the reference of every form-found kernel := current shape (updateReference, with stress
+//      adaption first for the sets in stress_adaption: lambda_max, mue_relax); a membrane whose
+//      area drops below 1e-3 of its initial area, or degenerates, is an error (crumpling);
+//   5. the step is reported (residual ||R||, s_k, smallest membrane mesh quality); the loop stops
+//      early when s_k < formfinding_tolerance (Sinew extension, default 1e-9).
+// The solution vector U always holds displacements from the initial geometry.
+//
+// Elastic restart (elastic_restart_method), afterwards every kernel is elastic:
+//   FORCE        found shape = new reference: node reference positions X0 := found positions,
+//                U := 0; form-found kernels keep the found shape as reference and the (adapted)
+//                form-finding prestress as initial stress (cable N0, membrane S0).
+//   DISPLACEMENT found shape as the stress-free reference: form-found kernels keep the found shape
+//                as reference with zero initial stress; U (displacements from the initial
+//                geometry) and X0 are kept, so displacements continue from form finding.
+//   NONE         back to the initial geometry without prestress: U := 0, form-found kernels get
+//                their initial reference and zero initial stress.
+#pragma once
+#include <petscsnes.h>
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "assembly/assembler.hpp"
+#include "sinew/model.hpp"
+
+namespace sinew {
+
+struct FormFindingStepReport {
+  int step = 0;
+  double lambda = 0;          ///< homotopy factor
+  bool xurs = false;
+  int newtonIterations = 0;
+  double residualNorm = 0;    ///< ||R|| after the equilibrium iterations
+  bool equilibrium = false;   ///< equilibrium_accuracy reached
+  double shapeChange = 0;     ///< max nodal displacement change / model size
+  double meshQuality = 1;     ///< smallest membrane mesh quality after the step (1 without membranes)
+};
+
+class FormFindingAnalysis {
+ public:
+  /// eprops: the model's property sets (names in messages, which sets are form-found).
+  FormFindingAnalysis(Assembler& assembler, const FormFinding& ff, const std::vector<ElementSet>& eprops);
+  ~FormFindingAnalysis();
+  FormFindingAnalysis(const FormFindingAnalysis&) = delete;
+  FormFindingAnalysis& operator=(const FormFindingAnalysis&) = delete;
+
+  using StepCallback = std::function<PetscErrorCode(const FormFindingStepReport&, Vec U)>;
+  /// Runs the form-finding steps from U (displacements from the initial geometry). Collective.
+  PetscErrorCode run(Vec U, const StepCallback& onStep, bool* ok);
+  /// Switches every form-found kernel to elastic as elastic_restart_method says (see file comment).
+  PetscErrorCode restart(Vec U);
+
+  const std::vector<FormFindingStepReport>& reports() const { return reports_; }
+  const std::string& failureMessage() const { return failure_; }
+  double modelSize() const { return size_; }
+  double initialMeshQuality() const { return quality0_; }
+  long numFormFoundElements() const { return nff_; }
+  SNES snes() const { return snes_; }
+
+ private:
+  static PetscErrorCode formFunction(SNES, Vec U, Vec F, void* ctx);
+  static PetscErrorCode formJacobian(SNES, Vec U, Mat J, Mat P, void* ctx);
+  static PetscErrorCode convergenceTest(SNES, PetscInt it, PetscReal xnorm, PetscReal snorm, PetscReal fnorm,
+                                        SNESConvergedReason* reason, void* ctx);
+  void setMode(double lambda, bool xurs);
+  /// Updates the references; returns 0 or the 1-based scene element that degenerated (collective max).
+  PetscErrorCode updateReferences(Vec U, long* badElement, double* quality);
+  PetscErrorCode shapeChange(Vec U, Vec Uprev, double* change);
+  std::string setNames() const;
+
+  Assembler& asm_;
+  FormFinding ff_;
+  std::vector<ElementSet> eprops_;
+  std::vector<int> ffSets_;
+  std::vector<int> elems_;                       // local elements that are form-found
+  std::vector<std::array<double, 12>> initial_;  // their initial state (NONE restart)
+  std::vector<double> area0_;                    // initial membrane areas (0 for cables)
+  SNES snes_ = nullptr;
+  Mat J_ = nullptr;
+  Vec F_ = nullptr;
+  LoadState ls_;
+  double size_ = 1.0, quality0_ = 1.0;
+  long nff_ = 0;
+  std::vector<FormFindingStepReport> reports_;
+  std::string failure_;
+};
+
+}  // namespace sinew

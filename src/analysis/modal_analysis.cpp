@@ -1,0 +1,257 @@
+#include "analysis/modal_analysis.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <numbers>
+#include <sstream>
+
+namespace sinew {
+
+PetscErrorCode modeShapeRows(const DistributedMesh& m, Vec x, std::vector<double>& rows) {
+  PetscFunctionBeginUser;
+  rows.assign(3 * static_cast<size_t>(m.numOwnedNodes), 0.0);
+  const PetscScalar* a;
+  PetscCall(VecGetArrayRead(x, &a));
+  for (int i = 0; i < m.numOwnedNodes; ++i) {
+    const LocalNode& n = m.nodes[i];
+    const int nt = n.kind == NodeKind::Ancf2D ? 2 : 3;
+    for (int k = 0; k < nt; ++k) {
+      const int d = n.dof[k];
+      if (n.status[k] == DofStatus::Free && d >= 0 && d < m.numOwnedUnknowns) rows[3 * i + k] = a[d];
+    }
+  }
+  PetscCall(VecRestoreArrayRead(x, &a));
+  double amax = 0.0;
+  for (double v : rows) amax = std::max(amax, std::abs(v));
+  MPI_Allreduce(MPI_IN_PLACE, &amax, 1, MPI_DOUBLE, MPI_MAX, m.comm);
+  PetscReal xmax;
+  PetscCall(VecNorm(x, NORM_INFINITY, &xmax));
+  if (!(amax > 1e-10 * xmax)) {  // no translation (torsion, pure rotation): round-off is not a shape
+    std::fill(rows.begin(), rows.end(), 0.0);
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  // sign: the largest component (lowest FE node and direction among near-ties) is positive
+  long key = std::numeric_limits<long>::max();
+  double sign = 0.0;
+  for (int i = 0; i < m.numOwnedNodes; ++i)
+    for (int k = 0; k < 3; ++k) {
+      const double v = rows[3 * i + k];
+      const long kk = 3 * m.nodes[i].gid + k;
+      if (std::abs(v) >= (1.0 - 1e-8) * amax && kk < key) {
+        key = kk;
+        sign = v > 0 ? 1.0 : -1.0;
+      }
+    }
+  long gkey = key;
+  MPI_Allreduce(MPI_IN_PLACE, &gkey, 1, MPI_LONG, MPI_MIN, m.comm);
+  double s = key == gkey ? sign : 0.0;
+  MPI_Allreduce(MPI_IN_PLACE, &s, 1, MPI_DOUBLE, MPI_SUM, m.comm);
+  const double scale = (s < 0 ? -1.0 : 1.0) / amax;
+  for (double& v : rows) v *= scale;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+double frequencyHz(double omega2, double zeroTol) {
+  const double twoPi = 2.0 * std::numbers::pi;
+  if (!std::isfinite(omega2)) return std::numeric_limits<double>::quiet_NaN();
+  if (omega2 >= 0.0) return std::sqrt(omega2) / twoPi;
+  if (omega2 > -zeroTol) return 0.0;
+  return -std::sqrt(-omega2) / twoPi;
+}
+
+ModalAnalysis::ModalAnalysis(Assembler& assembler, int nfreq, bool writeResults)
+    : asm_(assembler), write_(writeResults), nev_(nfreq) {
+  MPI_Comm comm = asm_.mesh().comm;
+  PetscCallAbort(comm, asm_.createMatrix(&K_));
+  PetscCallAbort(comm, asm_.createMatrix(&M_));
+  PetscCallAbort(comm, MatCreateVecs(K_, &dK_, &dM_));
+  PetscCallAbort(comm, EPSCreate(comm, &eps_));
+  PetscCallAbort(comm, EPSSetProblemType(eps_, EPS_GHEP));
+  PetscCallAbort(comm, EPSSetDimensions(eps_, nfreq, PETSC_DEFAULT, PETSC_DEFAULT));
+  PetscCallAbort(comm, EPSSetWhichEigenpairs(eps_, EPS_TARGET_MAGNITUDE));
+  PetscCallAbort(comm, EPSSetTarget(eps_, 0.0));
+  PetscCallAbort(comm, EPSSetPurify(eps_, PETSC_TRUE));  // keeps the multipliers' infinite eigenvalues out
+  ST st;
+  KSP ksp;
+  PC pc;
+  PetscCallAbort(comm, EPSGetST(eps_, &st));
+  PetscCallAbort(comm, STSetType(st, STSINVERT));
+  PetscCallAbort(comm, STSetMatStructure(st, SUBSET_NONZERO_PATTERN));  // pattern(M) within pattern(K)
+  PetscCallAbort(comm, STGetKSP(st, &ksp));
+  PetscCallAbort(comm, KSPSetType(ksp, KSPPREONLY));
+  PetscCallAbort(comm, KSPGetPC(ksp, &pc));
+  PetscCallAbort(comm, PCSetType(pc, PCLU));
+  PetscCallAbort(comm, PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
+  PetscCallAbort(comm, EPSSetFromOptions(eps_));  // last: -eps_* and -st_* flags win
+  PetscInt nev, ncv, mpd;
+  PetscCallAbort(comm, EPSGetDimensions(eps_, &nev, &ncv, &mpd));
+  nev_ = static_cast<int>(nev);
+  PetscBool set = PETSC_FALSE;
+  PetscCallAbort(comm, PetscOptionsHasName(nullptr, nullptr, "-eps_target", &set));
+  userTarget_ = set;
+  PetscReal rel = shiftRel_;
+  PetscCallAbort(comm, PetscOptionsGetReal(nullptr, nullptr, "-freq_shift_rel", &rel, &set));
+  shiftRel_ = rel;
+  modes_.resize(nev_, nullptr);
+  for (Vec& v : modes_) PetscCallAbort(comm, MatCreateVecs(K_, &v, nullptr));
+}
+
+ModalAnalysis::~ModalAnalysis() {
+  EPSDestroy(&eps_);
+  for (Vec& v : modes_) VecDestroy(&v);
+  VecDestroy(&dK_);
+  VecDestroy(&dM_);
+  MatDestroy(&K_);
+  MatDestroy(&Kt_);
+  MatDestroy(&M_);
+}
+
+// K: tangent at the converged state (theta = 0), made symmetric: at equilibrium under conservative
+// loads it is; what remains (follower-type moment terms) is reported as asymmetry_ (-info).
+PetscErrorCode ModalAnalysis::assemble(Vec U, const LoadState& ls) {
+  PetscFunctionBeginUser;
+  PetscCall(asm_.jacobian(U, ls, K_));
+  PetscCall(MatTranspose(K_, MAT_INITIAL_MATRIX, &Kt_));
+  PetscCall(MatAXPY(Kt_, -1.0, K_, UNKNOWN_NONZERO_PATTERN));  // K^T - K
+  PetscReal nk, nd;
+  PetscCall(MatNorm(K_, NORM_FROBENIUS, &nk));
+  PetscCall(MatNorm(Kt_, NORM_FROBENIUS, &nd));
+  const double asym = nk > 0 ? nd / nk : 0.0;
+  asymmetry_ = std::max(asymmetry_, asym);
+  if (nd > 0) PetscCall(MatAXPY(K_, 0.5, Kt_, UNKNOWN_NONZERO_PATTERN));
+  PetscCall(MatDestroy(&Kt_));
+  PetscCall(PetscInfo(nullptr, "step %d: ||K - K^T||_F / ||K||_F = %g (symmetric part used)\n", step_, asym));
+  PetscCall(asm_.mass(U, ls, M_));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+// Spectrum scale s = min over rows with mass and stiffness of K_ii / M_ii (the Rayleigh quotient of
+// a unit vector: an estimate from above of the lowest eigenvalues). sigma = -shiftRel * s keeps
+// K - sigma M regular when K is singular (free-free structures: rigid-body modes at omega = 0).
+PetscErrorCode ModalAnalysis::shiftTarget(double* sigma, double* scale) {
+  PetscFunctionBeginUser;
+  PetscCall(MatGetDiagonal(K_, dK_));
+  PetscCall(MatGetDiagonal(M_, dM_));
+  const PetscScalar *k, *m;
+  PetscInt n;
+  PetscCall(VecGetLocalSize(dK_, &n));
+  PetscCall(VecGetArrayRead(dK_, &k));
+  PetscCall(VecGetArrayRead(dM_, &m));
+  double s = std::numeric_limits<double>::max();
+  for (PetscInt i = 0; i < n; ++i)
+    if (m[i] > 0 && k[i] > 0) s = std::min(s, k[i] / m[i]);
+  PetscCall(VecRestoreArrayRead(dK_, &k));
+  PetscCall(VecRestoreArrayRead(dM_, &m));
+  MPI_Allreduce(MPI_IN_PLACE, &s, 1, MPI_DOUBLE, MPI_MIN, asm_.mesh().comm);
+  if (s == std::numeric_limits<double>::max()) s = 1.0;
+  *scale = s;
+  *sigma = -shiftRel_ * s;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode ModalAnalysis::atStep(Vec U, const LoadState& ls, ResultFile& file, bool* ok) {
+  PetscFunctionBeginUser;
+  ++step_;
+  const DistributedMesh& mesh = asm_.mesh();
+  PetscCall(assemble(U, ls));
+  double sigma = 0, scale = 1;
+  PetscCall(shiftTarget(&sigma, &scale));
+  if (!userTarget_) PetscCall(EPSSetTarget(eps_, sigma));
+  PetscCall(EPSSetOperators(eps_, K_, M_));
+  PetscCall(PetscLogEventBegin(SinewEvents::get().eigen, 0, 0, 0, 0));
+  PetscCall(EPSSolve(eps_));
+  PetscCall(PetscLogEventEnd(SinewEvents::get().eigen, 0, 0, 0, 0));
+  PetscInt nconv;
+  PetscCall(EPSGetConverged(eps_, &nconv));
+  EPSConvergedReason reason;
+  PetscCall(EPSGetConvergedReason(eps_, &reason));
+
+  // eigenpairs: drop infinite ones (zero mass norm: constraint directions), M-normalize the rest
+  PetscReal mmax;
+  PetscCall(VecMax(dM_, nullptr, &mmax));
+  struct Pair {
+    double lambda;
+    int index;
+  };
+  std::vector<Pair> pairs;
+  Vec Mx;
+  PetscCall(MatCreateVecs(K_, &Mx, nullptr));
+  std::vector<Vec> found;
+  const int take = std::min<int>(static_cast<int>(nconv), nev_ + 8);
+  for (int i = 0; i < take && static_cast<int>(pairs.size()) < nev_; ++i) {
+    PetscScalar kr, ki;
+    Vec x;
+    PetscCall(MatCreateVecs(K_, &x, nullptr));
+    PetscCall(EPSGetEigenpair(eps_, i, &kr, &ki, x, nullptr));
+    PetscReal xn;
+    PetscCall(VecNormalize(x, &xn));
+    PetscCall(MatMult(M_, x, Mx));
+    PetscScalar xMx;
+    PetscCall(VecDot(x, Mx, &xMx));
+    if (!std::isfinite(kr) || !(xMx > 1e-12 * mmax)) {
+      ++spurious_;
+      PetscCall(VecDestroy(&x));
+      continue;
+    }
+    PetscCall(VecScale(x, 1.0 / std::sqrt(xMx)));
+    pairs.push_back({kr, static_cast<int>(found.size())});
+    found.push_back(x);
+  }
+  PetscCall(VecDestroy(&Mx));
+  std::stable_sort(pairs.begin(), pairs.end(), [](const Pair& a, const Pair& b) { return a.lambda < b.lambda; });
+
+  const double zeroTol = 1e-6 * scale;
+  hz_.assign(nev_, std::numeric_limits<double>::quiet_NaN());
+  for (size_t j = 0; j < pairs.size(); ++j) {
+    hz_[j] = frequencyHz(pairs[j].lambda, zeroTol);
+    PetscCall(VecCopy(found[pairs[j].index], modes_[j]));
+  }
+  for (Vec& x : found) PetscCall(VecDestroy(&x));
+  PetscCall(PetscInfo(nullptr, "step %d: target %g (scale %g), %d converged, reason %s\n", step_, userTarget_ ? 0.0 : sigma,
+                      scale, static_cast<int>(nconv), EPSConvergedReasons[reason]));
+
+  if (static_cast<int>(pairs.size()) < nev_) {
+    *ok = false;
+    std::ostringstream msg;
+    msg << "natural frequencies at step " << step_ << ": SLEPc converged " << pairs.size() << " of " << nev_
+        << " eigenpairs (" << EPSConvergedReasons[reason]
+        << "); try -eps_max_it, -eps_ncv, a looser -eps_tol, or fewer frequencies (-nfreq)";
+    failure_ = msg.str();
+  }
+  if (write_) {
+    file.writeStepRow("freq", hz_);
+    std::vector<double> rows;
+    for (int j = 0; j < nev_; ++j) {
+      if (j < static_cast<int>(pairs.size())) PetscCall(modeShapeRows(mesh, modes_[j], rows));
+      else rows.assign(3 * static_cast<size_t>(mesh.numOwnedNodes), 0.0);
+      file.writeMeshField("mesh/mode_freq_" + std::to_string(j + 1), rows, {3});
+    }
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+std::string ModalAnalysis::summary() const {
+  if (!write_ || hz_.empty()) return {};
+  std::ostringstream s;
+  char buf[64];
+  s << "\n natural frequencies (Hz, last step):";
+  int zeros = 0, negative = 0;
+  for (double f : hz_) {
+    std::snprintf(buf, sizeof buf, " %.6g", f);
+    s << buf;
+    zeros += f == 0.0;
+    negative += f < 0.0;
+  }
+  s << "\n";
+  if (zeros) s << "   " << zeros << " rigid-body mode(s) (omega^2 at round-off level, reported as 0)\n";
+  if (negative) s << "   " << negative << " negative omega^2 reported as -sqrt(-omega^2)/(2 pi): the state is unstable\n";
+  if (asymmetry_ > 1e-6) {
+    std::snprintf(buf, sizeof buf, "%.2e", asymmetry_);
+    s << "   tangent asymmetry ||K - K^T||/||K|| up to " << buf << " (non-conservative loads): symmetric part used\n";
+  }
+  return s.str();
+}
+
+}  // namespace sinew

@@ -1,0 +1,42 @@
+// Sensors (scene block `sensors`): Exudyn output variables of ancf_cable2d elements sampled at an
+// axial position x of a scene element at every written step. The FE element that holds x is
+// found from the nbeams split (LocalElement::subIndex/numSub); the value is computed by the
+// rank that owns that element with AncfCable2D::output(q, qdot, qddot) and reduced to rank 0,
+// which writes /sensors/<name> [ns, k].
+#pragma once
+#include <string>
+#include <vector>
+
+#include "analysis/step_analysis.hpp"
+#include "sinew/model.hpp"
+
+namespace sinew {
+
+class AncfCable2D;
+
+class SensorAnalysis : public StepAnalysis {
+ public:
+  SensorAnalysis(Assembler& assembler, const std::vector<Sensor>& sensors);
+  const char* name() const override { return "sensors"; }
+  /// Velocities and accelerations (unknowns layout) of the next atStep; nullptr = at rest (statics).
+  void setRates(Vec V, Vec A) {
+    V_ = V;
+    A_ = A;
+  }
+  PetscErrorCode atStep(Vec U, const LoadState& ls, ResultFile& file, bool* ok) override;
+  /// Number of values of an output variable (3 for vectors, 1 for scalars).
+  static int valueCount(const std::string& variable);
+
+ private:
+  struct Probe {
+    Sensor sensor;
+    int element = -1;  ///< local element index on the owning rank, -1 elsewhere
+    double xLocal = 0;
+    const AncfCable2D* kernel = nullptr;
+  };
+  Assembler& asm_;
+  std::vector<Probe> probes_;
+  Vec V_ = nullptr, A_ = nullptr;
+};
+
+}  // namespace sinew

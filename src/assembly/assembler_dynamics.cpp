@@ -1,0 +1,187 @@
+// Assembler members for time integration: residual and Jacobian of the equations of motion
+//   F(U, V, A, t) = M A + f_int(U, V, t) - f_ext(t),   J = K + shiftV D + shiftA M,
+// with the kernels' consistent (constant for ANCF) mass, their damping matrices D = df/dqdot
+// (only kernels with hasDamping()) and nodal point masses on the translations.
+#include <array>
+
+#include "assembly/assembler.hpp"
+
+namespace sinew {
+
+namespace {
+constexpr int kMaxRows = 4 * 6 + 6;
+
+/// Ghost-updated local form of a ghosted vector (read access); pair with restoreLocalRead.
+PetscErrorCode getLocalRead(Vec X, Vec* xl, const PetscScalar** x) {
+  PetscFunctionBeginUser;
+  PetscCall(VecGhostUpdateBegin(X, INSERT_VALUES, SCATTER_FORWARD));
+  PetscCall(VecGhostUpdateEnd(X, INSERT_VALUES, SCATTER_FORWARD));
+  PetscCall(VecGhostGetLocalForm(X, xl));
+  PetscCall(VecGetArrayRead(*xl, x));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+PetscErrorCode restoreLocalRead(Vec X, Vec* xl, const PetscScalar** x) {
+  PetscFunctionBeginUser;
+  PetscCall(VecRestoreArrayRead(*xl, x));
+  PetscCall(VecGhostRestoreLocalForm(X, xl));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+}  // namespace
+
+const double* Assembler::gatherVelocity(const LocalElement& el, const int* idx, double* qdot) const {
+  if (!vLocal_) return nullptr;
+  const int nd = el.kernel->numDofs();
+  for (int k = 0; k < nd; ++k) qdot[k] = idx[k] >= 0 ? vLocal_[idx[k]] : 0.0;
+  return qdot;
+}
+
+PetscErrorCode Assembler::dynamicResidual(Vec U, Vec V, Vec A, const LoadState& ls, Vec F) {
+  PetscFunctionBeginUser;
+  PetscCall(PetscLogEventBegin(SinewEvents::get().residual, 0, 0, 0, 0));
+  ++counters_.residuals;
+  PetscCall(loadLocal(U, uWork_));
+  Vec ul, fl, vl, al;
+  const PetscScalar *u, *v, *a;
+  PetscScalar* f;
+  PetscCall(getLocalRead(V, &vl, &v));
+  PetscCall(getLocalRead(A, &al, &a));
+  PetscCall(VecGhostGetLocalForm(uWork_, &ul));
+  PetscCall(VecGhostGetLocalForm(fWork_, &fl));
+  PetscCall(VecGetArrayRead(ul, &u));
+  PetscCall(VecSet(fl, 0.0));
+  PetscCall(VecGetArray(fl, &f));
+  computeStates(u, ls);
+  vLocal_ = v;
+  const PetscErrorCode ierr = assembleForces(u, ls, Target::Residual, f);
+  vLocal_ = nullptr;
+  PetscCall(ierr);
+  // inertia M A: element masses and nodal point masses
+  std::array<double, 48> q;
+  std::array<int, kMaxRows> idx;
+  std::vector<double> Me;
+  for (const LocalElement& el : mesh_.elements) {
+    if (!el.kernel->hasInertia()) continue;
+    gatherElement(el, q.data(), u, idx.data(), nullptr);
+    el.kernel->mass(q.data(), Me);
+    const int n = el.kernel->numDofs();
+    for (int r = 0; r < n; ++r) {
+      if (idx[r] < 0) continue;
+      double s = 0.0;
+      for (int c = 0; c < n; ++c)
+        if (idx[c] >= 0) s += Me[static_cast<size_t>(r) * n + c] * a[idx[c]];
+      f[idx[r]] += s;
+    }
+  }
+  for (int i = 0; i < mesh_.numOwnedNodes; ++i) {
+    const LocalNode& n = mesh_.nodes[i];
+    if (n.mass <= 0) continue;
+    const int nt = n.kind == NodeKind::Ancf2D ? 2 : 3;
+    for (int k = 0; k < nt; ++k)
+      if (n.dof[k] >= 0) f[n.dof[k]] += n.mass * a[n.dof[k]];
+  }
+  PetscCall(VecRestoreArray(fl, &f));
+  PetscCall(VecRestoreArrayRead(ul, &u));
+  PetscCall(VecGhostRestoreLocalForm(fWork_, &fl));
+  PetscCall(VecGhostRestoreLocalForm(uWork_, &ul));
+  PetscCall(restoreLocalRead(A, &al, &a));
+  PetscCall(restoreLocalRead(V, &vl, &v));
+  PetscCall(VecGhostUpdateBegin(fWork_, ADD_VALUES, SCATTER_REVERSE));
+  PetscCall(VecGhostUpdateEnd(fWork_, ADD_VALUES, SCATTER_REVERSE));
+  PetscCall(VecCopy(fWork_, F));
+  PetscCall(PetscLogEventEnd(SinewEvents::get().residual, 0, 0, 0, 0));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode Assembler::dynamicJacobian(Vec U, Vec V, const LoadState& ls, double shiftV, double shiftA, Mat J) {
+  PetscFunctionBeginUser;
+  PetscCall(PetscLogEventBegin(SinewEvents::get().jacobian, 0, 0, 0, 0));
+  ++counters_.jacobians;
+  PetscCall(loadLocal(U, uWork_));
+  Vec ul, vl;
+  const PetscScalar *u, *v;
+  PetscCall(getLocalRead(V, &vl, &v));
+  PetscCall(VecGhostGetLocalForm(uWork_, &ul));
+  PetscCall(VecGetArrayRead(ul, &u));
+  computeStates(u, ls);
+  PetscCall(MatZeroEntries(J));
+  std::array<double, 48> q;
+  std::array<int, kMaxRows> idx;
+  std::array<double, kMaxRows> qdot;
+  std::vector<double> Me;
+  vLocal_ = v;
+  for (const LocalElement& el : mesh_.elements) {
+    gatherElement(el, q.data(), u, idx.data(), nullptr);
+    KernelNeeds needs;
+    needs.tangent = true;
+    needs.damping = shiftV != 0.0 && el.kernel->hasDamping();
+    counters_.dampingMatrices += needs.damping;
+    KernelInput in{q.data(), gatherVelocity(el, idx.data(), qdot.data()),
+                   el.firstMultiplier >= 0 ? u + el.firstMultiplier : nullptr, ls.time};
+    in.disp = elemDisp_.data();
+    el.kernel->evaluate(in, needs, out_);
+    const int nd = el.kernel->numDofs(), n = nd + el.kernel->numConstraints();
+    rotationColumns(el, n, out_.K.data());
+    if (needs.damping)
+      for (int r = 0; r < nd; ++r)
+        for (int c = 0; c < nd; ++c) out_.K[static_cast<size_t>(r) * n + c] += shiftV * out_.D[static_cast<size_t>(r) * nd + c];
+    if (shiftA != 0.0 && el.kernel->hasInertia()) {
+      el.kernel->mass(q.data(), Me);
+      for (int r = 0; r < nd; ++r)
+        for (int c = 0; c < nd; ++c) out_.K[static_cast<size_t>(r) * n + c] += shiftA * Me[static_cast<size_t>(r) * nd + c];
+    }
+    PetscCall(MatSetValuesLocal(J, n, idx.data(), n, idx.data(), out_.K.data(), ADD_VALUES));
+  }
+  vLocal_ = nullptr;
+  for (int i = 0; i < mesh_.numOwnedNodes; ++i) {
+    const LocalNode& n = mesh_.nodes[i];
+    if (n.mass <= 0 || shiftA == 0.0) continue;
+    const int nt = n.kind == NodeKind::Ancf2D ? 2 : 3;
+    const double m = shiftA * n.mass;
+    for (int k = 0; k < nt; ++k) {
+      const PetscInt r = n.dof[k];
+      PetscCall(MatSetValuesLocal(J, 1, &r, 1, &r, &m, ADD_VALUES));
+    }
+  }
+  PetscCall(addSlopeTorqueTangent(ls, J));
+  PetscCall(VecRestoreArrayRead(ul, &u));
+  PetscCall(VecGhostRestoreLocalForm(uWork_, &ul));
+  PetscCall(restoreLocalRead(V, &vl, &v));
+  PetscCall(MatAssemblyBegin(J, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatAssemblyEnd(J, MAT_FINAL_ASSEMBLY));
+  PetscCall(PetscLogEventEnd(SinewEvents::get().jacobian, 0, 0, 0, 0));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode Assembler::kineticEnergy(Vec U, Vec V, const LoadState& ls, double* T) {
+  PetscFunctionBeginUser;
+  PetscCall(updateStates(U, ls));
+  Vec vl;
+  const PetscScalar* v;
+  PetscCall(getLocalRead(V, &vl, &v));
+  std::array<double, 48> q;
+  std::array<int, kMaxRows> idx;
+  std::vector<double> Me;
+  double t = 0.0;
+  // elements: each element once (owned by one rank)
+  for (const LocalElement& el : mesh_.elements) {
+    if (!el.kernel->hasInertia()) continue;
+    gatherElement(el, q.data(), nullptr, idx.data(), nullptr);
+    el.kernel->mass(q.data(), Me);
+    const int n = el.kernel->numDofs();
+    for (int r = 0; r < n; ++r)
+      for (int c = 0; c < n; ++c)
+        if (idx[r] >= 0 && idx[c] >= 0) t += 0.5 * v[idx[r]] * Me[static_cast<size_t>(r) * n + c] * v[idx[c]];
+  }
+  for (int i = 0; i < mesh_.numOwnedNodes; ++i) {
+    const LocalNode& n = mesh_.nodes[i];
+    const int nt = n.kind == NodeKind::Ancf2D ? 2 : 3;
+    for (int k = 0; k < nt && n.mass > 0; ++k)
+      if (n.dof[k] >= 0) t += 0.5 * n.mass * v[n.dof[k]] * v[n.dof[k]];
+  }
+  PetscCall(restoreLocalRead(V, &vl, &v));
+  MPI_Allreduce(MPI_IN_PLACE, &t, 1, MPI_DOUBLE, MPI_SUM, mesh_.comm);
+  *T = t;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+}  // namespace sinew

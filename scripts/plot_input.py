@@ -4,7 +4,7 @@ and elements with their 1-based numbers, as in SPACAR Light's input check.
 
 usage: scripts/plot_input.py result.h5 [-o input.png] [--step K] [--view 3d|xy|xz|yz]
 Elements come from /mesh/lines (+ triangles, quads) labelled by /mesh/<kind>_element; positions
-from /mesh/p and /node/p of step K (default 0, the input geometry)."""
+from /node/p0 and /mesh/p - /mesh/u (the input geometry), or /node/p and /mesh/p of step K."""
 import argparse
 import os
 
@@ -20,14 +20,18 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("h5")
     ap.add_argument("-o", "--output", help="PNG file (default: <result>_input.png)")
-    ap.add_argument("--step", type=int, default=0)
+    ap.add_argument("--step", type=int, default=None, help="draw the state of step K instead of the input")
     ap.add_argument("--view", default=None, choices=["3d", "xy", "xz", "yz"],
                     help="projection (default: xy for 2D models and flat models, else 3d)")
     a = ap.parse_args()
     out = a.output or os.path.splitext(a.h5)[0] + "_input.png"
     with h5py.File(a.h5, "r") as f:
-        nodes = f["node/p"][a.step] if "node/p" in f else f["node/p0"][()]
-        mp = f["mesh/p"][a.step] if "mesh/p" in f else nodes
+        if a.step is None:  # the input geometry: initial positions
+            nodes = f["node/p0"][()] if "node/p0" in f else f["node/p"][0]
+            mp = f["mesh/p"][0] - f["mesh/u"][0] if "mesh/u" in f else nodes
+        else:
+            nodes = f["node/p"][a.step]
+            mp = f["mesh/p"][a.step] if "mesh/p" in f else nodes
         cells = []
         for kind in ("lines", "triangles", "quads"):
             if f"mesh/{kind}" in f:

@@ -62,6 +62,7 @@ PetscErrorCode StepResults::write(ResultFile& file, Vec U, const LoadState& ls) 
   PetscCall(VecGetArrayRead(fl, &fr));
   std::vector<double> p, quat, axang, eul, slope, Freac, Mreac, meshP, meshU;
   rows_.clear();
+  maxMove_ = MaxMove{};
   for (int i = 0; i < m.numOwnedNodes; ++i) {
     const LocalNode& n = m.nodes[i];
     const double* s = asm_.nodeState(i);
@@ -93,7 +94,8 @@ PetscErrorCode StepResults::write(ResultFile& file, Vec U, const LoadState& ls) 
     }
     bool report = false;
     for (int k = 0; k < 6; ++k) report |= n.load[k] != 0.0 || n.loadInitial[k] != 0.0 || n.status[k] != DofStatus::Free;
-    if (report) {
+    const double umag = norm(x - n.X0);
+    if (report || umag > maxMove_.u) {
       NodeSummaryRow row;
       row.node = n.sceneNode + 1;
       const Vec3 rv = logSO3(R);
@@ -103,7 +105,8 @@ PetscErrorCode StepResults::write(ResultFile& file, Vec U, const LoadState& ls) 
         row.v[6 + k] = F[k];
         row.v[9 + k] = M[k];
       }
-      rows_.push_back(row);
+      if (report) rows_.push_back(row);
+      else maxMove_ = MaxMove{umag, row};
     }
   }
   PetscCall(VecRestoreArrayRead(fl, &fr));
@@ -156,6 +159,21 @@ std::vector<NodeSummaryRow> StepResults::summaryRows() const {
   std::vector<NodeSummaryRow> all(m.rank == 0 ? total / sizeof(NodeSummaryRow) : 0);
   MPI_Gatherv(rows_.data(), n * static_cast<int>(sizeof(NodeSummaryRow)), MPI_BYTE, all.data(), bytes.data(),
               displs.data(), MPI_BYTE, 0, m.comm);
+  // the node that moves most, when no load or support names it already
+  struct {
+    double u;
+    int rank;
+  } mine{maxMove_.u, m.rank}, best{};
+  MPI_Allreduce(&mine, &best, 1, MPI_DOUBLE_INT, MPI_MAXLOC, m.comm);
+  if (best.u > 0 && best.rank != 0 && m.rank == best.rank)
+    MPI_Send(&maxMove_.row, sizeof(NodeSummaryRow), MPI_BYTE, 0, 7, m.comm);
+  if (best.u > 0 && m.rank == 0) {
+    NodeSummaryRow row = maxMove_.row;
+    if (best.rank != 0) MPI_Recv(&row, sizeof(NodeSummaryRow), MPI_BYTE, best.rank, 7, m.comm, MPI_STATUS_IGNORE);
+    bool present = false;
+    for (const auto& r : all) present |= r.node == row.node;
+    if (!present) all.push_back(row);
+  }
   std::sort(all.begin(), all.end(), [](const auto& a, const auto& b) { return a.node < b.node; });
   return all;
 }

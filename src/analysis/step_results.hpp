@@ -47,6 +47,10 @@ class StepResults {
   PetscSF stressSF_ = nullptr;  // FE element leaves -> scene element roots, MPI_MAX
   PetscInt elemLo_ = 0, elemHi_ = 0;
   std::vector<NodeSummaryRow> rows_;
+  struct MaxMove {
+    double u = -1.0;
+    NodeSummaryRow row;
+  } maxMove_;  ///< the unreported node with the largest displacement (for the summary)
   double stressMax_ = 0;
   int stressElement_ = -1;
 };

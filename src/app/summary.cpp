@@ -27,7 +27,7 @@ PetscErrorCode printSummary(MPI_Comm comm, const SummaryBody& b) {
     }
   }
   if (!b.nodes.empty()) {
-    s << "\n loaded and supported nodes (last step)\n"
+    s << "\n loaded and supported nodes, and the node that moves most (last step)\n"
          " node          ux          uy          uz      rot_x      rot_y      rot_z\n";
     for (const auto& n : b.nodes) {
       std::snprintf(line, sizeof line, " %4d %11.4e %11.4e %11.4e %10.4g %10.4g %10.4g\n", n.node, n.v[0], n.v[1], n.v[2],

@@ -1,7 +1,10 @@
 // Compliance matrices of nodes (SPACAR Light `calccompl`): at every converged step the tangent
-// J = dF/dU (rigid modes as multipliers, supports eliminated) is factored once with MUMPS and
-// solved for unit loads on the free DOFs of the requested nodes, in blocks of columns
-// (MatMatSolve on a dense right-hand-side block), never forming an inverse.
+// J = dF/dU (rigid modes as multipliers, supports eliminated) is factored once with MUMPS; only
+// the 6x6 diagonal blocks of J^-1 at the requested nodes are computed, never the inverse itself:
+//   selinv (default): MUMPS selected entries of the inverse (ICNTL(30), MatMumpsGetInverse), the
+//                     pattern of all wanted blocks in one sparse matrix on the MUMPS host;
+//   sparse:           unit loads as sparse right-hand sides (MatMatTransposeSolve, ICNTL(20)=1);
+//   dense:            unit loads as dense right-hand-side blocks (MatMatSolve).
 //   CMglob[node] (6x6): rows = (translation, spin) response of the node, columns = unit (force,
 //                       moment) on the node, global axes; constrained rows/columns are 0.
 //   CMloc = Q^T CMglob Q, Q = blockdiag(R, R), R = current rotation of the node (node frame).
@@ -18,9 +21,12 @@ namespace sinew {
 
 class ComplianceAnalysis : public StepAnalysis {
  public:
+  enum class Method { SelectedInverse, SparseRhs, DenseRhs };
+
   /// nodes: 0-based scene nodes whose compliance is computed; empty = every scene node.
-  /// Options (prefix compl_): -compl_ksp_*/-compl_pc_* (factorization), -compliance_batch
-  /// (right-hand-side columns per MatMatSolve, default 96).
+  /// Options (prefix compl_): -compl_ksp_*/-compl_pc_* (factorization), -compliance_method
+  /// selinv|sparse|dense (default selinv), -compliance_batch (right-hand-side columns per solve of
+  /// the sparse and dense methods, default 96).
   ComplianceAnalysis(Assembler& assembler, const std::vector<int>& nodes);
   ~ComplianceAnalysis() override;
   const char* name() const override { return "compliance"; }
@@ -28,18 +34,26 @@ class ComplianceAnalysis : public StepAnalysis {
   std::string summary() const override;
   std::string failure() const override { return failure_; }
 
-  /// Number of factorizations and MatMatSolve batches so far (tests, benchmarks).
+  /// Number of factorizations and MUMPS solve calls so far (tests, benchmarks).
   long factorizations() const { return factorizations_; }
   long batches() const { return batches_; }
   double factorSeconds() const { return factorTime_; }
   double solveSeconds() const { return solveTime_; }
 
  private:
+  /// The free DOFs of one requested owned node: local node index and its DOF slots k (0..5).
+  struct Group {
+    int node;
+    std::vector<int> k;
+  };
+  PetscErrorCode selectedInverse(Mat F, std::vector<double>& glob);
+  PetscErrorCode rhsBlocks(Mat F, bool sparse, std::vector<double>& glob);
+
   Assembler& asm_;
   Mat J_ = nullptr;
   KSP ksp_ = nullptr;
-  std::vector<int> nodes_;        ///< owned local nodes (scene nodes) whose compliance is computed
-  std::vector<char> wanted_;      ///< per owned local node
+  std::vector<Group> groups_;     ///< requested owned nodes with at least one free DOF
+  Method method_ = Method::SelectedInverse;
   PetscInt batch_ = 96;
   long totalColumns_ = 0, factorizations_ = 0, batches_ = 0;
   double factorTime_ = 0, solveTime_ = 0;

@@ -30,6 +30,7 @@ DynamicAnalysis::DynamicAnalysis(Assembler& assembler, const DynamicsOptions& op
   PetscInt grow = growAfter_;
   PetscCallAbort(comm, PetscOptionsGetInt(nullptr, nullptr, "-dt_grow_after", &grow, &set));
   growAfter_ = static_cast<int>(grow);
+  if (growAfter_ < 0) throw SceneError("-dt_grow_after", "expected a count >= 0, got " + std::to_string(growAfter_));
   PetscReal rtol = forceRtol_;
   PetscCallAbort(comm, PetscOptionsGetReal(nullptr, nullptr, "-force_rtol", &rtol, &set));
   forceRtol_ = rtol;
@@ -213,15 +214,18 @@ PetscErrorCode DynamicAnalysis::runArnoldBruls(Vec U, const StepCallback& onStep
   *converged = true;
   // Sub-step size h: halved when Newton fails, doubled again after growAfter_ successes in a row
   // (never above dt), so one hard moment does not leave the rest of the run at a tiny step.
+  // growAfter_ = 0 is the former rule: every time step restarts at dt, no growth inside a step.
   double h = dt;
   int successes = 0;
   for (int k = 1; k <= nsteps; ++k) {
     const double target = k == nsteps ? tend : k * dt;
     int cuts = 0;
+    if (growAfter_ == 0) h = dt;
     bool reduced = h < dt;
     while (t < target) {
-      h_ = std::min(h, target - t);
-      const double t1 = (target - t - h_ <= 1e-12 * dt) ? target : t + h_;
+      // a remainder below 1e-6 of the sub-step is round-off of the summed sub-steps: end on target
+      h_ = target - t - h <= 1e-6 * h ? target - t : h;
+      const double t1 = h_ == target - t ? target : t + h_;
       int its = 0;
       double fnorm = 0;
       SNESConvergedReason why;

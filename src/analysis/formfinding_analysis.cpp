@@ -73,6 +73,9 @@ FormFindingAnalysis::FormFindingAnalysis(Assembler& assembler, const FormFinding
 
   PetscCallAbort(comm, asm_.createMatrix(&J_));
   PetscCallAbort(comm, asm_.createVector(&F_));
+  PetscCallAbort(comm, asm_.createVector(&nrm_));
+  PetscCallAbort(comm, asm_.createVector(&mdiag_));
+  PetscCallAbort(comm, asm_.createVector(&moff_));
   PetscCallAbort(comm, SNESCreate(comm, &snes_));
   PetscCallAbort(comm, SNESSetOptionsPrefix(snes_, "ff_"));
   PetscCallAbort(comm, SNESSetType(snes_, SNESNEWTONLS));
@@ -91,6 +94,11 @@ FormFindingAnalysis::FormFindingAnalysis(Assembler& assembler, const FormFinding
   PetscCallAbort(comm, KSPGetPC(ksp, &pc));
   PetscCallAbort(comm, PCSetType(pc, PCLU));
   PetscCallAbort(comm, PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
+  // MUMPS fill-reducing ordering: SCOTCH (ICNTL(7) = 3) unless the user chose one. Measured on the
+  // sail (55k unknowns, docs/performance.md): the automatic choice factors 1.6-2.4x slower.
+  PetscBool ordering = PETSC_FALSE;
+  PetscCallAbort(comm, PetscOptionsHasName(nullptr, "ff_", "-mat_mumps_icntl_7", &ordering));
+  if (!ordering) PetscCallAbort(comm, PetscOptionsSetValue(nullptr, "-ff_mat_mumps_icntl_7", "3"));
   PetscCallAbort(comm, SNESSetFromOptions(snes_));
 }
 
@@ -98,6 +106,9 @@ FormFindingAnalysis::~FormFindingAnalysis() {
   SNESDestroy(&snes_);
   MatDestroy(&J_);
   VecDestroy(&F_);
+  VecDestroy(&nrm_);
+  VecDestroy(&mdiag_);
+  VecDestroy(&moff_);
 }
 
 PetscErrorCode FormFindingAnalysis::formFunction(SNES, Vec U, Vec F, void* ctx) {
@@ -191,6 +202,124 @@ PetscErrorCode FormFindingAnalysis::shapeChange(Vec U, Vec Uprev, double* change
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+PetscErrorCode FormFindingAnalysis::normalShapeChange(Vec U, Vec Uprev, double* change) {
+  PetscFunctionBeginUser;
+  DistributedMesh& m = asm_.mesh();
+  // nodal sums over the form-found elements at the current shape (ghost contributions added):
+  // nrm_ = sum of membrane area vectors, mdiag_/moff_ = sum of e e^T of cables (xx yy zz / xy yz zx)
+  Vec nl, dl, ol;
+  PetscCall(VecSet(nrm_, 0.0));
+  PetscCall(VecSet(mdiag_, 0.0));
+  PetscCall(VecSet(moff_, 0.0));
+  PetscCall(VecGhostGetLocalForm(nrm_, &nl));
+  PetscCall(VecGhostGetLocalForm(mdiag_, &dl));
+  PetscCall(VecGhostGetLocalForm(moff_, &ol));
+  PetscScalar *na, *da, *oa;
+  PetscCall(VecGetArray(nl, &na));
+  PetscCall(VecGetArray(dl, &da));
+  PetscCall(VecGetArray(ol, &oa));
+  const double* u;
+  PetscCall(asm_.beginLocal(U, ls_, &u));
+  std::array<double, 48> q;
+  std::array<int, 32> idx;
+  auto freeXYZ = [](const LocalNode& n) {
+    for (int k = 0; k < 3; ++k)
+      if (k >= n.ndof || n.dof[k] < 0 || n.status[k] != DofStatus::Free) return false;
+    return true;
+  };
+  for (int e : elems_) {
+    const LocalElement& el = m.elements[static_cast<size_t>(e)];
+    asm_.gather(el, q.data(), idx.data());
+    auto v = [&](int a, int b) { return Vec3{q[3 * b] - q[3 * a], q[3 * b + 1] - q[3 * a + 1], q[3 * b + 2] - q[3 * a + 2]}; };
+    const bool cable = dynamic_cast<Cable3D*>(el.kernel.get()) != nullptr;
+    Vec3 a{};
+    if (cable) {
+      a = v(0, 1);
+      const double l = norm(a);
+      if (l > 0.0) a = (1.0 / l) * a;
+    } else {
+      a = el.numNodes == 3 ? 0.5 * cross(v(0, 1), v(0, 2)) : 0.5 * cross(v(0, 2), v(1, 3));
+    }
+    for (int j = 0; j < el.numNodes; ++j) {
+      const LocalNode& n = m.nodes[static_cast<size_t>(el.node[static_cast<size_t>(j)])];
+      if (!freeXYZ(n)) continue;
+      for (int k = 0; k < 3; ++k) {
+        if (cable) {
+          da[n.dof[k]] += a[k] * a[k];
+          oa[n.dof[k]] += a[k] * a[(k + 1) % 3];
+        } else {
+          na[n.dof[k]] += a[k];
+        }
+      }
+    }
+  }
+  PetscCall(asm_.endLocal(&u));
+  PetscCall(VecRestoreArray(nl, &na));
+  PetscCall(VecRestoreArray(dl, &da));
+  PetscCall(VecRestoreArray(ol, &oa));
+  PetscCall(VecGhostRestoreLocalForm(nrm_, &nl));
+  PetscCall(VecGhostRestoreLocalForm(mdiag_, &dl));
+  PetscCall(VecGhostRestoreLocalForm(moff_, &ol));
+  for (Vec w : {nrm_, mdiag_, moff_}) {
+    PetscCall(VecGhostUpdateBegin(w, ADD_VALUES, SCATTER_REVERSE));
+    PetscCall(VecGhostUpdateEnd(w, ADD_VALUES, SCATTER_REVERSE));
+  }
+  const PetscScalar *a, *b, *N, *D, *O;
+  PetscCall(VecGetArrayRead(U, &a));
+  PetscCall(VecGetArrayRead(Uprev, &b));
+  PetscCall(VecGetArrayRead(nrm_, &N));
+  PetscCall(VecGetArrayRead(mdiag_, &D));
+  PetscCall(VecGetArrayRead(moff_, &O));
+  double mx = 0.0;
+  for (int i = 0; i < m.numOwnedNodes; ++i) {
+    const LocalNode& n = m.nodes[i];
+    if (!freeXYZ(n)) {  // partly constrained: every free component counts
+      double d2 = 0.0;
+      for (int k = 0; k < 3 && k < n.ndof; ++k)
+        if (n.dof[k] >= 0 && n.status[k] == DofStatus::Free) d2 += (a[n.dof[k]] - b[n.dof[k]]) * (a[n.dof[k]] - b[n.dof[k]]);
+      mx = std::max(mx, std::sqrt(d2));
+      continue;
+    }
+    Vec3 d, nv;
+    for (int k = 0; k < 3; ++k) {
+      d[k] = a[n.dof[k]] - b[n.dof[k]];
+      nv[k] = N[n.dof[k]];
+    }
+    const double trace = D[n.dof[0]] + D[n.dof[1]] + D[n.dof[2]];
+    const bool membrane = norm(nv) > 0.0;
+    if (membrane && trace == 0.0) {
+      const Vec3 nn = (1.0 / norm(nv)) * nv;
+      d = dot(d, nn) * nn;
+    } else if (membrane) {
+      // cable direction tensor M = sum e e^T; collinear cables: largest eigenvalue = trace
+      const double M[3][3] = {{D[n.dof[0]], O[n.dof[0]], O[n.dof[2]]},
+                              {O[n.dof[0]], D[n.dof[1]], O[n.dof[1]]},
+                              {O[n.dof[2]], O[n.dof[1]], D[n.dof[2]]}};
+      int c = 0;
+      for (int k = 1; k < 3; ++k)
+        if (M[k][k] > M[c][c]) c = k;
+      Vec3 t{M[0][c], M[1][c], M[2][c]};
+      for (int it = 0; it < 30; ++it) {  // power iteration (M is positive semidefinite)
+        Vec3 s{};
+        for (int r = 0; r < 3; ++r) s[r] = M[r][0] * t[0] + M[r][1] * t[1] + M[r][2] * t[2];
+        t = (1.0 / norm(s)) * s;
+      }
+      double lam = 0.0;
+      for (int r = 0; r < 3; ++r) lam += t[r] * (M[r][0] * t[0] + M[r][1] * t[1] + M[r][2] * t[2]);
+      if (lam >= 0.9 * trace) d = d - dot(d, t) * t;
+    }
+    mx = std::max(mx, norm(d));
+  }
+  PetscCall(VecRestoreArrayRead(U, &a));
+  PetscCall(VecRestoreArrayRead(Uprev, &b));
+  PetscCall(VecRestoreArrayRead(nrm_, &N));
+  PetscCall(VecRestoreArrayRead(mdiag_, &D));
+  PetscCall(VecRestoreArrayRead(moff_, &O));
+  MPI_Allreduce(MPI_IN_PLACE, &mx, 1, MPI_DOUBLE, MPI_MAX, m.comm);
+  *change = mx / size_;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 std::string FormFindingAnalysis::setNames() const {
   std::ostringstream s;
   for (size_t i = 0; i < ffSets_.size(); ++i) {
@@ -245,6 +374,7 @@ PetscErrorCode FormFindingAnalysis::run(Vec U, const StepCallback& onStep, bool*
     }
     PetscCall(asm_.absorbRotations(U));
     PetscCall(shapeChange(U, Uprev, &rep.shapeChange));
+    PetscCall(normalShapeChange(U, Uprev, &rep.shapeChangeNormal));
     if (!(rep.shapeChange <= ff_.max_shape_change)) {
       msg << "formfinding step " << k << " of " << nsteps << ": the shape changed by " << rep.shapeChange
           << " of the model size (max_shape_change " << ff_.max_shape_change << ") in the form-found sets "
@@ -268,7 +398,11 @@ PetscErrorCode FormFindingAnalysis::run(Vec U, const StepCallback& onStep, bool*
     }
     reports_.push_back(rep);
     if (onStep) PetscCall(onStep(rep, U));
-    if (rep.shapeChange < ff_.formfinding_tolerance) break;
+    // stop on the normal change, from step 2 on and while the total change does not grow (an
+    // in-plane collapse of a flat membrane has zero normal change but a growing total change)
+    if (k >= 2 && rep.shapeChangeNormal < ff_.formfinding_tolerance &&
+        rep.shapeChange <= reports_[reports_.size() - 2].shapeChange)
+      break;
   }
   if (*ok && !reports_.empty() && !reports_.back().equilibrium) {
     std::ostringstream msg;

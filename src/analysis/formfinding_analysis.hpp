@@ -18,11 +18,20 @@
 //   3. shape change s_k = max_nodes |u_k - u_{k-1}| / D, D = diagonal of the bounding box of the
 //      initial nodes; s_k > max_shape_change is an error (no equilibrium shape: prestress too low
 //      for the loads/edge cables, or a free membrane edge), naming the form-found sets;
+//      normal shape change n_k = max_nodes |P_a (u_k - u_{k-1})| / D with the projection P_a onto
+//      the shape-relevant directions of node a (the tangential motion of a membrane's nodes within
+//      its surface, and of an edge node along its edge cable, leaves the shape unchanged and is not
+//      determined by the URS: Bletzinger et al. measure the normal change): P_a = n n^T (n =
+//      area-weighted normal of the adjacent form-found membranes) at membrane nodes without
+//      cables, I - t t^T (t = direction of the adjacent collinear form-found cables) at membrane
+//      nodes on edge cables, I at all other nodes (cable nets, loaded chains, partly fixed nodes);
 //   4. the reference of every form-found kernel := current shape (updateReference, with stress
 //      adaption first for the sets in stress_adaption: lambda_max, mue_relax); a membrane whose
 //      area drops below 1e-3 of its initial area, or degenerates, is an error (crumpling);
 //   5. the step is reported (residual ||R||, s_k, smallest membrane mesh quality); the loop stops
-//      early when s_k < formfinding_tolerance (Sinew extension, default 1e-9).
+//      early when n_k < formfinding_tolerance (Sinew extension, default 1e-9), k >= 2 and
+//      s_k <= s_{k-1}: the shape has converged even when the mesh still drifts in the surface (a
+//      growing total change is an in-plane collapse, not convergence).
 // The solution vector U always holds displacements from the initial geometry.
 //
 // Elastic restart (elastic_restart_method), afterwards every kernel is elastic:
@@ -54,6 +63,7 @@ struct FormFindingStepReport {
   double residualNorm = 0;    ///< ||R|| after the equilibrium iterations
   bool equilibrium = false;   ///< equilibrium_accuracy reached
   double shapeChange = 0;     ///< max nodal displacement change / model size
+  double shapeChangeNormal = 0;  ///< max nodal shape-relevant change / model size (stop criterion)
   double meshQuality = 1;     ///< smallest membrane mesh quality after the step (1 without membranes)
 };
 
@@ -87,6 +97,9 @@ class FormFindingAnalysis {
   /// Updates the references; returns 0 or the 1-based scene element that degenerated (collective max).
   PetscErrorCode updateReferences(Vec U, long* badElement, double* quality);
   PetscErrorCode shapeChange(Vec U, Vec Uprev, double* change);
+  /// Shape-relevant part of the step's nodal motion (file comment, step 3): normal component at
+  /// membrane nodes, component across the edge cable at membrane edge nodes, full elsewhere.
+  PetscErrorCode normalShapeChange(Vec U, Vec Uprev, double* change);
   std::string setNames() const;
 
   Assembler& asm_;
@@ -99,6 +112,7 @@ class FormFindingAnalysis {
   SNES snes_ = nullptr;
   Mat J_ = nullptr;
   Vec F_ = nullptr;
+  Vec nrm_ = nullptr, mdiag_ = nullptr, moff_ = nullptr;  // nodal normal sums, cable direction tensors
   LoadState ls_;
   double size_ = 1.0, quality0_ = 1.0;
   long nff_ = 0;

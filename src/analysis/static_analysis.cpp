@@ -38,6 +38,12 @@ StaticAnalysis::StaticAnalysis(Assembler& assembler, int loadsteps) : asm_(assem
   PetscBool predictor = PETSC_TRUE;
   PetscCallAbort(comm, PetscOptionsGetBool(nullptr, nullptr, "-predictor", &predictor, &set));
   predictor_ = predictor;
+  PetscBool adaptive = PETSC_TRUE;
+  PetscInt growIts = growIts_;
+  PetscCallAbort(comm, PetscOptionsGetBool(nullptr, nullptr, "-adaptive_increments", &adaptive, &set));
+  PetscCallAbort(comm, PetscOptionsGetInt(nullptr, nullptr, "-increment_grow_its", &growIts, &set));
+  adaptive_ = adaptive;
+  growIts_ = static_cast<int>(growIts);
   maxCuts_ = static_cast<int>(cuts);
   for (const LocalNode& n : asm_.mesh().nodes)
     for (double x : n.X0) coordMax_ = std::max(coordMax_, std::abs(x));
@@ -100,8 +106,8 @@ PetscErrorCode StaticAnalysis::convergenceTest(SNES snes, PetscInt it, PetscReal
   if (fnorm <= atol) *reason = SNES_CONVERGED_FNORM_ABS;
   else if (fnorm <= rtol * self->fnormStart_) *reason = SNES_CONVERGED_FNORM_RELATIVE;
   else if (fnorm <= self->forceRtol_ * scale) *reason = SNES_CONVERGED_FNORM_ABS;
-  else if (it == 0 && fnorm <= 1e-2 * floor)
-    *reason = SNES_CONVERGED_FNORM_ABS;  // the start state is in equilibrium to round-off
+  else if (it == 0 && fnorm <= (self->unloaded_ ? 1.0 : 1e-2) * floor)
+    *reason = SNES_CONVERGED_FNORM_ABS;  // the start state is in equilibrium to round-off (no load: any floor residual)
   else if (it > 0 && fnorm <= floor && fnorm > 0.1 * self->fnormPrev_ &&
            (fnorm <= 1e-3 * self->fnorm0_ || self->fnorm0_ <= floor))
     *reason = SNES_CONVERGED_FNORM_ABS;  // stalled (less than 10x per iteration) below the floor estimate
@@ -137,16 +143,22 @@ PetscErrorCode StaticAnalysis::run(Vec U, const StepCallback& onStep, bool* conv
   PetscCall(VecDuplicate(U, &Usave));
   PetscCall(VecDuplicate(U, &dU));
   double dlPrev = 0.0;
+  // adaptive increments: a halved increment grows back (x2 after an increment that converged in at
+  // most -increment_grow_its Newton iterations), never beyond the user's load step; the size carries
+  // over to the next load step, so a hard stretch is not retried at full size step after step
+  const double dlMax = 1.0 / loadsteps_;
+  double dlAdapt = dlMax;
   *converged = true;
   double lambda = 0.0;
   for (int step = 1; step <= loadsteps_; ++step) {
     const double target = static_cast<double>(step) / loadsteps_;
     StepReport rep;
     rep.step = step;
-    double dl = target - lambda;
+    double dl = adaptive_ ? std::min(dlAdapt, target - lambda) : target - lambda;
     int cuts = 0;
+    bool predict = predictor_;  // a failed increment is first retried without the predictor
     while (lambda < target) {
-      const double next = std::min(target, lambda + dl);
+      const double next = target - (lambda + dl) < 1e-9 * dlMax ? target : lambda + dl;  // no sliver increments
       PetscCall(VecCopy(U, Usave));
       const auto Rsave = asm_.referenceRotations();
       // residual of the load increment at the start state: -snes_rtol is relative to it (not to
@@ -156,7 +168,8 @@ PetscErrorCode StaticAnalysis::run(Vec U, const StepCallback& onStep, bool* conv
       PetscCall(asm_.residual(U, ls_, F_));
       PetscCall(VecNorm(F_, NORM_2, &fnormStart_));
       // predictor: extrapolate the last increment (rotation increments included)
-      if (dlPrev > 0 && predictor_) PetscCall(VecAXPY(U, (next - lambda) / dlPrev, dU));
+      const bool predicted = dlPrev > 0 && predict;
+      if (predicted) PetscCall(VecAXPY(U, (next - lambda) / dlPrev, dU));
       bool ok = false;
       int its = 0;
       double fnorm = 0;
@@ -172,6 +185,10 @@ PetscErrorCode StaticAnalysis::run(Vec U, const StepCallback& onStep, bool* conv
         dlPrev = next - lambda;
         PetscCall(asm_.absorbRotations(U));
         lambda = next;
+        if (adaptive_) {
+          if (its <= growIts_) dl = std::min(2.0 * dl, dlMax);
+          dlAdapt = dl;
+        }
         continue;
       }
       PetscCall(VecCopy(Usave, U));
@@ -182,6 +199,12 @@ PetscErrorCode StaticAnalysis::run(Vec U, const StepCallback& onStep, bool* conv
         PetscCall(SNESGetKSP(snes_, &ksp));
         PetscCall(KSPGetPC(ksp, &pc));
         PetscCall(PCReset(pc));
+      }
+      if (predicted) {  // e.g. the last increment carried a large shape change (a slack cable taking its form)
+        predict = false;
+        PetscCall(PetscPrintf(comm, "  step %d: Newton failed at load factor %.6g (%s); retrying without the predictor\n",
+                              step, next, SNESConvergedReasons[why]));
+        continue;
       }
       if (++cuts > maxCuts_) {
         std::ostringstream msg;
@@ -195,7 +218,7 @@ PetscErrorCode StaticAnalysis::run(Vec U, const StepCallback& onStep, bool* conv
         *converged = false;
         break;
       }
-      dl *= 0.5;
+      dl = adaptive_ ? 0.5 * (next - lambda) : 0.5 * dl;
       PetscCall(PetscPrintf(comm, "  step %d: Newton failed at load factor %.6g (%s); retrying with increment %.3g\n",
                             step, next, SNESConvergedReasons[why], dl));
     }

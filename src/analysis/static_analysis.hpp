@@ -1,5 +1,6 @@
 // Load-stepped nonlinear statics: SNES (Newton, line search, MUMPS by default) on the
-// assembler's residual; a failed increment is retried with halved increments.
+// assembler's residual; a failed increment is retried with halved increments, which grow
+// back (x2) after quick convergence (-adaptive_increments, -increment_grow_its).
 #pragma once
 #include <petscsnes.h>
 
@@ -60,6 +61,8 @@ class StaticAnalysis {
   double coordMax_ = 0;      ///< largest |node coordinate| (positions carry round-off eps * coordMax_)
   int maxCuts_ = 10;
   bool predictor_ = true;  ///< secant predictor from the last converged increment
+  bool adaptive_ = true;   ///< -adaptive_increments: halved increments grow back (x2) after quick convergence
+  int growIts_ = 5;        ///< -increment_grow_its: "quick" = at most this many Newton iterations
   std::vector<StepReport> reports_;
   std::string failure_;
   bool linearFailed_ = false;

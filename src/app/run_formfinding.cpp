@@ -23,22 +23,25 @@ PetscErrorCode runFormFinding(RunContext& ctx) {
   bool ok = false;
   PetscCall(analysis.run(ctx.U, onStep, &ok));
   const auto& reps = analysis.reports();
-  std::vector<double> res, change;
+  std::vector<double> res, change, normal;
   for (const auto& r : reps) {
     res.push_back(r.residualNorm);
     change.push_back(r.shapeChange);
+    normal.push_back(r.shapeChangeNormal);
   }
   ctx.file.writeArray("formfinding/residual", res, {static_cast<long>(res.size())});
   ctx.file.writeArray("formfinding/shape_change", change, {static_cast<long>(change.size())});
+  ctx.file.writeArray("formfinding/shape_change_normal", normal, {static_cast<long>(normal.size())});
   std::string s = "\n form finding (URS): " + std::to_string(analysis.numFormFoundElements()) +
                   " form-found elements, model size " ;
   char line[256];
-  std::snprintf(line, sizeof line, "%.4g, restart %s\n  step  lambda  xURS  Newton its   residual  shape change  mesh quality\n",
+  std::snprintf(line, sizeof line, "%.4g, restart %s\n  step  lambda  xURS  Newton its   residual  shape change  normal change  mesh quality\n",
                 analysis.modelSize(), ff.elastic_restart_method.c_str());
   s += line;
   for (const auto& r : reps) {
-    std::snprintf(line, sizeof line, " %5d  %6.3g  %4s  %10d  %9.3e  %12.4e  %12.4f%s\n", r.step, r.lambda,
-                  r.xurs ? "yes" : "no", r.newtonIterations, r.residualNorm, r.shapeChange, r.meshQuality,
+    std::snprintf(line, sizeof line, " %5d  %6.3g  %4s  %10d  %9.3e  %12.4e  %13.4e  %12.4f%s\n", r.step, r.lambda,
+                  r.xurs ? "yes" : "no", r.newtonIterations, r.residualNorm, r.shapeChange, r.shapeChangeNormal,
+                  r.meshQuality,
                   r.equilibrium ? "" : "  (max_iter_equilibrium reached)");
     s += line;
   }

@@ -132,3 +132,27 @@ def to_yaml(scene):
             return o.item()
         return o
     return yaml.safe_dump(clean(s), default_flow_style=None, sort_keys=False, width=200)
+
+
+def catenary_scene(n=40, span=10.0, length=12.0, w=1.0, EA=1e7, N0=5.0, loadsteps=1):
+    """C4 chain of n elastic cables (area 1, emod EA) between fixed ends (0,0,0), (span,0,0) under
+    gravity w per unstretched length (ramped). Start: equal chords on a circular arc, each of length
+    L = h / (1 - N0/EA) with prestress N0, so that every cable is taut and its stress-free length is
+    h = length / n exactly; density 1 - N0/EA makes the weight rho A L = w h."""
+    eps = N0 / EA
+    S = length / (1 - eps)
+    f = lambda th: np.sin(th / 2) / (n * np.sin(th / (2 * n))) - span / S
+    lo, hi = 1e-9, 2 * np.pi - 1e-9
+    for _ in range(200):
+        mid = 0.5 * (lo + hi)
+        lo, hi = (mid, hi) if f(mid) > 0 else (lo, mid)
+    th = 0.5 * (lo + hi)
+    R = span / (2 * np.sin(th / 2))
+    ang = -np.pi / 2 - th / 2 + th * np.arange(n + 1) / n
+    X = np.c_[span / 2 + R * np.cos(ang), np.zeros(n + 1), R * np.sin(ang) - R * np.sin(ang[0])]
+    X[0], X[n] = [0, 0, 0], [span, 0, 0]
+    return {"title": "C4 catenary", "nodes": X.tolist(), "elements": [[i + 1, i + 2] for i in range(n)],
+            "nprops": {"1": {"fix": True}, str(n + 1): {"fix": True}},
+            "eprops": [{"elems": list(range(1, n + 1)), "type": "cable", "area": 1.0, "emod": EA, "dens": w * (1 - eps),
+                        "prestress": N0}],
+            "opt": {"loadsteps": loadsteps, "gravity": [0, 0, -w]}}

@@ -24,6 +24,16 @@ with st.h5(h5a) as f:
     ua2 = f["node/p"][-1]
 # 'only what is asked': statics without gravity and calcfreq false assembles no mass matrix
 st.check(re.search(r"\b0 mass\b", out) is not None, "A1 (gravity) without frequencies: no mass assembly expected")
+# ... and no user function and no damping term is evaluated (force-law counters of the summary)
+m = re.search(r"(\d+) user-function evaluations, (\d+) damping-term evaluations", out)
+st.check(m is not None and int(m.group(1)) == 0 and int(m.group(2)) == 0,
+         "A1: 0 user-function and 0 damping-term evaluations expected")
+# massProportionalLoad [0, -9.81] on the set (Exudyn LoadMassProportional) instead of gravity: same tip
+a1m = cantilever(32, EA=1e6, EI=833.3333333333333)
+a1m["eprops"][0]["massProportionalLoad"] = [0, -9.81]
+h5m, _ = st.run("ancf_a1_massload", text(a1m))
+with st.h5(h5m) as f:
+    st.close(tip_displacement(f)[0], -0.5013058140308901, rtol=1e-10, what="A1 with massProportionalLoad: tip ux")
 a1_1rank, _ = st.run("ancf_a1_1rank", text(a1), np_=1)
 with st.h5(a1_1rank) as f:
     st.close(f["node/p"][-1], ua2, atol=1e-12, what="A1 1 rank vs 2 ranks, node positions")

@@ -48,6 +48,7 @@ def main():
     args = ap.parse_args()
     os.makedirs(WORK, exist_ok=True)
     conv, iters = [], []
+    load0 = os.getloadavg()[0]
     for n in args.converge:
         conv.append(run(args.bin, n, 1))
         print(conv[-1], flush=True)
@@ -58,7 +59,8 @@ def main():
     sec = ["## ANCF cable", "",
            "A1 refined (`scripts/bench_ancf.py`): static cantilever under gravity, 1 load step, Newton + MUMPS LU, "
            "`calcfreq: false`; 4 n unknowns. Statics = the solver phase of the run summary; memory = /usr/bin/time -v "
-           "maximum resident set (largest process). Machine: 2 cores shared with other jobs (load 4 to 7).", "",
+           "maximum resident set (largest process). Machine: 2 cores shared with other jobs; load average (1 min) "
+           f"{load0:.1f} before and {os.getloadavg()[0]:.1f} after the runs.", "",
            "Full solve, 1 rank:", "",
            "| elements | converged | Newton iterations | statics [s] | wall [s] | peak RSS [MB] |", "|---|---|---|---|---|---|"]
     for r in conv:

@@ -6,7 +6,9 @@ into `--nbeams` Timoshenko elements, the bottom face clamped), on `--np` ranks. 
 
 Reports the unknowns, the frequencies, the wall time (whole mpirun and the solver phases of the
 summary), the SinewEigen event time from -log_view and the peak resident memory of every rank
-(/usr/bin/time -f %M around each rank). Extra arguments after `--` go to sinew, e.g.
+(/usr/bin/time -f %M around each rank); the whole output is kept in build/bench/*.log. The time
+outside the summary phases is mostly the start-up constraint check (a MUMPS factorization and
+subspace iteration; `-- -constraint_check false` skips it). Extra arguments after `--` go to sinew, e.g.
   scripts/bench_modal.py -- -st_ksp_type cg -st_pc_type gamg      (iterative shift-and-invert)
 With --doc it prints a Markdown table row for docs/performance.md.
 
@@ -86,13 +88,26 @@ def main():
     hz = [float(v) for v in re.search(r"natural frequencies \(Hz, last step\):([^\n]*)", out).group(1).split()]
     phases = re.search(r"wall time: setup ([\d.]+) s, statics ([\d.]+) s, step analyses ([\d.]+) s, output ([\d.]+) s",
                        out)
-    eig = re.search(r"^SinewEigen\s+\d+\s+[\d.]+\s+([\d.e+-]+)", out, re.M)
+    with open(path.replace(".yaml", ".log"), "w") as f:
+        f.write(out)
+
+    def event(name):  # (count, max time) of a -log_view event
+        m = re.search(rf"^{name}\s+(\d+)\s+[\d.]+\s+([\d.e+-]+)", out, re.M)
+        return (int(m.group(1)), float(m.group(2))) if m else (0, 0.0)
+
+    eig = event("SinewEigen")
+    lu = event("MatLUFactorNum")
+    total = float(re.search(r"^Time \(sec\):\s+([\d.e+-]+)", out, re.M).group(1))
+    outside = total - sum(float(v) for v in phases.groups())
     rss = [int(v) / 1024 for v in re.findall(r"peak_rss_kb (\d+)", out)]
     rows = [("lattice", f"{a.n}^3 cells, {nn} joints, {ne} members x {a.nbeams} elements"),
             ("unknowns", unknowns), ("ranks", a.np), ("sinew flags", " ".join(a.extra) or "(defaults)"),
             ("frequencies [Hz]", " ".join(f"{v:.6g}" for v in hz)),
             ("setup / statics / step analyses / output [s]", " / ".join(phases.groups())),
-            ("SinewEigen (EPSSolve incl. factorization) [s]", eig.group(1) if eig else "n/a"),
+            ("SinewEigen (EPSSolve incl. factorization) [s]", f"{eig[1]:.1f}"),
+            ("MUMPS numeric factorizations (count, total) [s]", f"{lu[0]}, {lu[1]:.1f}"),
+            ("PETSc lifetime (-log_view Time) [s]", f"{total:.1f}"),
+            ("outside the summary phases (constraint check) [s]", f"{outside:.1f}"),
             ("whole run (wall) [s]", f"{wall:.1f}"),
             ("peak RSS per rank [MB]", " / ".join(f"{v:.0f}" for v in rss)),
             ("load average before / after", f"{load0[0]:.2f} / {load1[0]:.2f}")]

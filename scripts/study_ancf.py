@@ -6,7 +6,7 @@
   dynamics: the A3 model (1 element, step tip load, generalized-alpha rho = 0.6, t = 0.1); tip error
            against a run with dt = 1e-6 for dt = 1e-2 ... 1e-5,
 with the wall time of each run. Writes docs/accuracy_ancf.md and docs/accuracy_ancf.png; 1 rank,
-about two minutes (most of it the dt = 1e-6 run).
+222 s measured on the shared machine, most of it the dt = 1e-6 run.
 
 usage: scripts/study_ancf.py [--bin build/sinew] [--np 1]"""
 import argparse

@@ -156,7 +156,6 @@ PetscErrorCode StaticAnalysis::run(Vec U, const StepCallback& onStep, bool* conv
     rep.step = step;
     double dl = adaptive_ ? std::min(dlAdapt, target - lambda) : target - lambda;
     int cuts = 0;
-    bool predict = predictor_;  // a failed increment is first retried without the predictor
     while (lambda < target) {
       const double next = target - (lambda + dl) < 1e-9 * dlMax ? target : lambda + dl;  // no sliver increments
       PetscCall(VecCopy(U, Usave));
@@ -168,8 +167,7 @@ PetscErrorCode StaticAnalysis::run(Vec U, const StepCallback& onStep, bool* conv
       PetscCall(asm_.residual(U, ls_, F_));
       PetscCall(VecNorm(F_, NORM_2, &fnormStart_));
       // predictor: extrapolate the last increment (rotation increments included)
-      const bool predicted = dlPrev > 0 && predict;
-      if (predicted) PetscCall(VecAXPY(U, (next - lambda) / dlPrev, dU));
+      if (dlPrev > 0 && predictor_) PetscCall(VecAXPY(U, (next - lambda) / dlPrev, dU));
       bool ok = false;
       int its = 0;
       double fnorm = 0;
@@ -199,12 +197,6 @@ PetscErrorCode StaticAnalysis::run(Vec U, const StepCallback& onStep, bool* conv
         PetscCall(SNESGetKSP(snes_, &ksp));
         PetscCall(KSPGetPC(ksp, &pc));
         PetscCall(PCReset(pc));
-      }
-      if (predicted) {  // e.g. the last increment carried a large shape change (a slack cable taking its form)
-        predict = false;
-        PetscCall(PetscPrintf(comm, "  step %d: Newton failed at load factor %.6g (%s); retrying without the predictor\n",
-                              step, next, SNESConvergedReasons[why]));
-        continue;
       }
       if (++cuts > maxCuts_) {
         std::ostringstream msg;

@@ -85,6 +85,7 @@ Membrane::Membrane(std::span<const Vec3> X, const MembraneProps& props, const Pr
   C_[0][1] = C_[1][0] = c * props.nu;
   C_[2][2] = c * 0.5 * (1.0 - props.nu);
   sAct_ = props.prestress;
+  sBase_ = props.prestress;
   double Xs[12];
   for (int a = 0; a < nn_; ++a)
     for (int k = 0; k < 3; ++k) Xs[3 * a + k] = X[a][k];
@@ -96,6 +97,7 @@ std::span<const NodeKind> Membrane::nodeKinds() const { return {kMemNodes, stati
 void Membrane::setPrestress(const std::array<double, 3>& s0) {
   props_.prestress = s0;
   sAct_ = s0;
+  sBase_ = s0;
 }
 
 void Membrane::setFormFinding(bool on, double lambda) {
@@ -143,6 +145,7 @@ void Membrane::setReference(const double* X) {
     PrestressFrame::axes<double>(n, s, E1, E2);
     // Jm[alpha][i] = G_alpha . E_i;  dN/dX = Jm^-1 dN/dxi
     const double J00 = dot(G1, E1), J01 = dot(G1, E2), J10 = dot(G2, E1), J11 = dot(G2, E2);
+    P.A[0][0] = J00, P.A[0][1] = J10, P.A[1][0] = J01, P.A[1][1] = J11;
     const double det = J00 * J11 - J01 * J10;
     const double I00 = J11 / det, I01 = -J01 / det, I10 = -J10 / det, I11 = J00 / det;
     for (int a = 0; a < 4; ++a) {
@@ -173,7 +176,7 @@ void Membrane::updateReference(const double* q) {
       for (int i = 0; i < 2; ++i)
         for (int j = 0; j < 2; ++j) W[i][j] += std::sqrt(s) * Nk[k][i] * Nk[k][j];
     }
-    const double S[2][2] = {{sAct_[0], sAct_[2]}, {sAct_[2], sAct_[1]}};
+    const double S[2][2] = {{sBase_[0], sBase_[2]}, {sBase_[2], sBase_[1]}};
     double WS[2][2] = {}, Sh[2][2] = {};
     for (int i = 0; i < 2; ++i)
       for (int j = 0; j < 2; ++j)
@@ -182,10 +185,56 @@ void Membrane::updateReference(const double* q) {
       for (int j = 0; j < 2; ++j)
         for (int k = 0; k < 2; ++k) Sh[i][j] += WS[i][k] * W[k][j];
     const double mu = mueRelax_;
-    sAct_ = {(1 - mu) * Sh[0][0] + mu * sAct_[0], (1 - mu) * Sh[1][1] + mu * sAct_[1],
-             (1 - mu) * Sh[0][1] + mu * sAct_[2]};
+    sBase_ = {(1 - mu) * Sh[0][0] + mu * sBase_[0], (1 - mu) * Sh[1][1] + mu * sBase_[1],
+              (1 - mu) * Sh[0][1] + mu * sBase_[2]};
   }
   setReference(q);
+  sAct_ = sBase_;
+  if (muMax_ > 1.0) {
+    double n[2][2], mu[2];
+    distortion(n, mu);
+    double W[2][2] = {};
+    for (int k = 0; k < 2; ++k) {
+      const double w = mu[k] / std::clamp(mu[k], 1.0 / muMax_, muMax_);
+      for (int i = 0; i < 2; ++i)
+        for (int j = 0; j < 2; ++j) W[i][j] += w * n[k][i] * n[k][j];
+    }
+    const double S[2][2] = {{sBase_[0], sBase_[2]}, {sBase_[2], sBase_[1]}};
+    double Sh[2][2] = {};
+    for (int i = 0; i < 2; ++i)
+      for (int j = 0; j < 2; ++j)
+        for (int k = 0; k < 2; ++k)
+          for (int l = 0; l < 2; ++l) Sh[i][j] += W[i][k] * S[k][l] * W[l][j];
+    sAct_ = {Sh[0][0], Sh[1][1], Sh[0][1]};
+  }
+}
+
+void Membrane::distortion(double n[2][2], double mu[2]) const {
+  // B = A T^-1, T = dY/dxi of the ideal element (triangle: nodes (0,0), (1,0), (1/2, sqrt(3)/2);
+  // quad: the square of the isoparametric coordinates), evaluated at the centre point
+  const Point& P = pts_[ngp_];
+  double B[2][2];
+  if (nn_ == 3) {
+    const double r3 = std::sqrt(3.0);  // T^-1 = [1, -1/sqrt3; 0, 2/sqrt3]
+    for (int i = 0; i < 2; ++i) B[i][0] = P.A[i][0], B[i][1] = -P.A[i][0] / r3 + 2.0 * P.A[i][1] / r3;
+  } else {
+    for (int i = 0; i < 2; ++i) B[i][0] = P.A[i][0], B[i][1] = P.A[i][1];
+  }
+  const double detB = std::abs(B[0][0] * B[1][1] - B[0][1] * B[1][0]);
+  const double m11 = (B[0][0] * B[0][0] + B[0][1] * B[0][1]) / detB;
+  const double m22 = (B[1][0] * B[1][0] + B[1][1] * B[1][1]) / detB;
+  const double m12 = (B[0][0] * B[1][0] + B[0][1] * B[1][1]) / detB;
+  const double m = 0.5 * (m11 + m22), r = std::sqrt(0.25 * (m11 - m22) * (m11 - m22) + m12 * m12);
+  const double th = 0.5 * std::atan2(2.0 * m12, m11 - m22);
+  n[0][0] = std::cos(th), n[0][1] = std::sin(th), n[1][0] = -std::sin(th), n[1][1] = std::cos(th);
+  mu[0] = std::sqrt(m + r);
+  mu[1] = 1.0 / mu[0];  // det M = 1
+}
+
+double Membrane::shapeDistortion() const {
+  double n[2][2], mu[2];
+  distortion(n, mu);
+  return mu[0];
 }
 
 // ---------------------------------------------------------------------------------------------

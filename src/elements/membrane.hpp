@@ -32,7 +32,22 @@
 //   W = sum_k sqrt(s_k) N_k N_k^T,  S_act <- (1 - mueRelax) W S_act W + mueRelax S_act.
 //   So the prestress along a principal direction stretched beyond lambdaMax grows by
 //   lambda_k/lambdaMax (compressed below 1/lambdaMax: shrinks), components stay attached to the
-//   prestress frame. Within the bounds nothing changes.
+//   prestress frame. Within the bounds nothing changes. This limits the distortion a step ADDS; it
+//   cannot repair a distorted initial mesh: with lambda = 0 the reference problem of a flat patch is
+//   the cotangent Laplacian of the reference mesh, which reproduces the reference exactly (linear
+//   precision), so the step deformation is the identity and nothing is adapted.
+// Shape distortion control (setDistortionControl(muMax), Sinew; applied in updateReference after the
+//   reference is set to q, non-cumulative): the element's distortion is measured against its ideal
+//   shape (equilateral triangle / square with the element's node order): B = dX/dY maps ideal
+//   coordinates Y to the reference prestress-frame coordinates X at the centre,
+//   M = B B^T / det B = sum_k mu_k^2 n_k n_k^T (det M = 1, mu_1 = 1/mu_2 >= 1: shape only, size and
+//   rotation drop out). With w_k = mu_k / clamp(mu_k, 1/muMax, muMax), Wd = sum_k w_k n_k n_k^T:
+//     S_act = Wd S_base Wd,   S_base = prescribed prestress (after step-stretch adaption).
+//   For isotropic S_base = s I and muMax -> 1 the reference term t int_A S_act : dE dA becomes the
+//   Dirichlet energy of the map from the ideal element (= 2 x current area + conformal distortion),
+//   whose minimiser pulls the element toward its ideal shape; elements with mu <= muMax keep the
+//   prescribed stress. At a converged shape (x = X) the element carries sigma = Wd S_base Wd (the
+//   prescribed stress where the mesh is good, anisotropic where it had to be regularised).
 #pragma once
 #include <array>
 #include <span>
@@ -90,6 +105,10 @@ class Membrane final : public ElementKernel {
   void updateReference(const double* q);
   /// lambdaMax > 1 switches stress adaption on, <= 1 off.
   void setStressAdaption(double lambdaMax, double mueRelax);
+  /// muMax > 1 switches shape distortion control on (see the file comment), <= 1 off.
+  void setDistortionControl(double muMax) { muMax_ = muMax; }
+  /// Principal stretch mu_1 >= 1 of the reference element relative to its ideal shape (1 = ideal).
+  double shapeDistortion() const;
   void setXurs(bool on) { xurs_ = on; }
   bool xurs() const { return xurs_; }
 
@@ -105,7 +124,10 @@ class Membrane final : public ElementKernel {
     double N[4] = {};
     double dN[4][2] = {};  ///< dN_a / dX^i (reference prestress-frame coordinates)
     double wJ0 = 0.0;      ///< weight * reference area Jacobian
+    double A[2][2] = {};   ///< A[i][alpha] = dX^i / dxi^alpha (prestress-frame coordinates)
   };
+  /// Principal directions n_k (rows) and stretches mu_k of M = B B^T / det B (shape distortion).
+  void distortion(double n[2][2], double mu[2]) const;
   template <int M> void ffTangent(const double* q, double* f, double* K) const;
   void cauchyAt(const double* q, int p, double sig[3]) const;
 
@@ -115,9 +137,10 @@ class Membrane final : public ElementKernel {
   MembraneProps props_;
   PrestressFrame frame_;
   std::array<double, 3> sAct_{};
+  std::array<double, 3> sBase_{};  ///< prestress after step-stretch adaption, before distortion control
   double C_[3][3] = {};
   bool ff_ = false, xurs_ = false;
-  double lambda_ = 0.0, lambdaMax_ = 0.0, mueRelax_ = 0.0;
+  double lambda_ = 0.0, lambdaMax_ = 0.0, mueRelax_ = 0.0, muMax_ = 0.0;
 };
 
 }  // namespace sinew

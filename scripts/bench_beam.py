@@ -30,7 +30,8 @@ def kernel_bench():
     exe = "/tmp/sinew_bench_beam_kernel"
     cmd = ["g++", "-std=c++20", "-O2", "-I" + os.path.join(SRC, "include"), "-I" + os.path.join(SRC, "src")] + \
           [os.path.join(SRC, f) for f in ("src/math/rotation.cpp", "src/elements/beam_section.cpp",
-                                          "src/elements/beam_corotational.cpp", "tests/unit/bench_beam_kernel.cpp")] + \
+                                          "src/elements/beam_corotational.cpp", "src/elements/element_kernel.cpp",
+                                          "tests/unit/bench_beam_kernel.cpp")] + \
           ["-o", exe]
     subprocess.run(cmd, check=True)
     out = subprocess.run(["taskset", "-c", "0", exe], stdout=subprocess.PIPE, text=True, check=True).stdout

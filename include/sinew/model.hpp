@@ -104,6 +104,7 @@ struct FormFinding {
   std::vector<int> stress_adaption;       ///< 0-based eprops set indices
   double lambda_max = 1.1;
   double mue_relax = 0.0;
+  double distortion_max = 0.0;          ///< Sinew: shape distortion bound of stress adaption (<= 1: off)
   bool x_urs = false;
   int x_urs_step = 3;
   std::string elastic_restart_method = "FORCE";

@@ -53,6 +53,7 @@ FormFindingAnalysis::FormFindingAnalysis(Assembler& assembler, const FormFinding
     const bool adapt = inList(ff_.stress_adaption, el.set);
     if (cable) cable->setStressAdaption(adapt ? ff_.lambda_max : 0.0, ff_.mue_relax);
     if (mem) mem->setStressAdaption(adapt ? ff_.lambda_max : 0.0, ff_.mue_relax);
+    if (mem) mem->setDistortionControl(adapt ? ff_.distortion_max : 0.0);
   }
   double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
   for (int i = 0; i < m.numOwnedNodes; ++i)

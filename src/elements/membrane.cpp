@@ -189,6 +189,15 @@ void Membrane::updateReference(const double* q) {
               (1 - mu) * Sh[0][1] + mu * sBase_[2]};
   }
   setReference(q);
+  applyDistortionControl();
+}
+
+void Membrane::setDistortionControl(double muMax) {
+  muMax_ = muMax;
+  applyDistortionControl();
+}
+
+void Membrane::applyDistortionControl() {
   sAct_ = sBase_;
   if (muMax_ > 1.0) {
     double n[2][2], mu[2];

@@ -106,7 +106,8 @@ class Membrane final : public ElementKernel {
   /// lambdaMax > 1 switches stress adaption on, <= 1 off.
   void setStressAdaption(double lambdaMax, double mueRelax);
   /// muMax > 1 switches shape distortion control on (see the file comment), <= 1 off.
-  void setDistortionControl(double muMax) { muMax_ = muMax; }
+  /// Takes effect at once on the current reference (so the first form-finding step is controlled).
+  void setDistortionControl(double muMax);
   /// Principal stretch mu_1 >= 1 of the reference element relative to its ideal shape (1 = ideal).
   double shapeDistortion() const;
   void setXurs(bool on) { xurs_ = on; }
@@ -128,6 +129,7 @@ class Membrane final : public ElementKernel {
   };
   /// Principal directions n_k (rows) and stretches mu_k of M = B B^T / det B (shape distortion).
   void distortion(double n[2][2], double mu[2]) const;
+  void applyDistortionControl();  ///< sAct_ := Wd sBase_ Wd (sBase_ when off)
   template <int M> void ffTangent(const double* q, double* f, double* K) const;
   void cauchyAt(const double* q, int p, double sig[3]) const;
 

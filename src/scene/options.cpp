@@ -47,7 +47,7 @@ namespace {
 const std::vector<std::string> kFormfindingKeys = {
     "formfinding_step", "max_iter_equilibrium", "equilibrium_accuracy", "formfinding_elements", "homotopy_curve",
     "stress_adaption",  "lambda_max",           "mue_relax",            "x_urs",                "x_urs_step",
-    "elastic_restart_method", "formfinding_tolerance", "max_shape_change"};
+    "elastic_restart_method", "formfinding_tolerance", "max_shape_change", "distortion_max"};
 const std::vector<std::string> kSensorKeys = {"element", "x", "variable", "name"};
 const std::vector<std::string> kSensorVariables = {
     "Position",      "Displacement",   "Velocity",  "VelocityLocal", "Rotation",        "Director1",          "StrainLocal",
@@ -178,6 +178,7 @@ void parseFormfinding(const YAML::Node& ff, SceneContext& ctx) {
   if (ff["stress_adaption"].IsDefined()) f.stress_adaption = sets("stress_adaption");
   if (ff["lambda_max"].IsDefined()) f.lambda_max = getPositive(ff["lambda_max"], p("lambda_max"));
   if (ff["mue_relax"].IsDefined()) f.mue_relax = getNonNegative(ff["mue_relax"], p("mue_relax"));
+  if (ff["distortion_max"].IsDefined()) f.distortion_max = getNonNegative(ff["distortion_max"], p("distortion_max"));
   if (ff["x_urs"].IsDefined()) f.x_urs = getBool(ff["x_urs"], p("x_urs"));
   if (ff["x_urs_step"].IsDefined()) f.x_urs_step = getIntAtLeast(ff["x_urs_step"], p("x_urs_step"), 1);
   if (ff["elastic_restart_method"].IsDefined())

@@ -59,7 +59,7 @@ def run_lattice(n, np_, solver=(), work="/tmp/sinew_bench_beam"):
     log = p.stdout
     rss = [int(x) / 1024 for x in re.findall(r"Maximum resident set size \(kbytes\): (\d+)", log)]
     m = re.search(r"(\d+) unknowns", log)
-    t = re.search(r"wall time: setup ([\d.]+) s, statics ([\d.]+) s", log)
+    t = re.search(r"wall time: setup ([\d.]+) s, (?:constraint check [\d.]+ s, )?statics ([\d.]+) s", log)
     its = re.search(r"^\s+1\s+1\s+(\d+)\s+(\d+)\s+(\S+)", log, re.M)
     r = dict(n=n, np=np_, ne=ne, ndof=int(m.group(1)) if m else 0, wall=wall, rss=rss, exit=p.returncode,
              setup=float(t.group(1)) if t else float("nan"), statics=float(t.group(2)) if t else float("nan"),

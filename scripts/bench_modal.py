@@ -86,8 +86,8 @@ def main():
         raise SystemExit(f"sinew failed ({p.returncode})")
     unknowns = int(re.search(r"(\d+) unknowns", out).group(1))
     hz = [float(v) for v in re.search(r"natural frequencies \(Hz, last step\):([^\n]*)", out).group(1).split()]
-    phases = re.search(r"wall time: setup ([\d.]+) s, statics ([\d.]+) s, step analyses ([\d.]+) s, output ([\d.]+) s",
-                       out)
+    phases = re.search(r"wall time: setup ([\d.]+) s, (?:constraint check [\d.]+ s, )?statics ([\d.]+) s, "
+                       r"step analyses ([\d.]+) s, output ([\d.]+) s", out)
     with open(path.replace(".yaml", ".log"), "w") as f:
         f.write(out)
 

@@ -83,7 +83,7 @@ def run(name, scene, rtol):
                        stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, timeout=300)
     wall = time.perf_counter() - t0
     # the solver's own time (set-up + statics from the summary), free of MPI start-up
-    m = re.search(r"wall time: setup ([0-9.]+) s, statics ([0-9.]+) s", p.stdout)
+    m = re.search(r"wall time: setup ([0-9.]+) s, (?:constraint check [0-9.]+ s, )?statics ([0-9.]+) s", p.stdout)
     if m:
         wall = float(m.group(1)) + float(m.group(2))
     its = sum(int(m.group(1)) for m in re.finditer(r"^\s+\d+\s+\S+\s+(\d+)\s+\d+\s+\S+$", p.stdout, re.M))

@@ -11,7 +11,7 @@
 namespace sinew {
 
 struct Timings {
-  double setup = 0, statics = 0, analyses = 0, output = 0;
+  double setup = 0, check = 0, statics = 0, analyses = 0, output = 0;
 };
 
 struct SummaryHeader {

@@ -23,6 +23,7 @@ const SinewEvents& SinewEvents::get() {
     PetscLogEventRegister("SinewOutput", cls, &e.output);
     PetscLogEventRegister("SinewDynamics", cls, &e.dynamics);
     PetscLogEventRegister("SinewFormFind", cls, &e.formfinding);
+    PetscLogEventRegister("SinewConstrCheck", cls, &e.constraintCheck);
     return e;
   }();
   return ev;

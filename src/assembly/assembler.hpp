@@ -158,7 +158,7 @@ class Assembler {
 
 /// PetscLogEvents of Sinew's phases (registered once).
 struct SinewEvents {
-  PetscLogEvent setup, residual, jacobian, mass, splitTangent, stress, eigen, compliance, output, dynamics, formfinding;
+  PetscLogEvent setup, residual, jacobian, mass, splitTangent, stress, eigen, compliance, output, dynamics, formfinding, constraintCheck;
   static const SinewEvents& get();
 };
 

@@ -596,7 +596,11 @@ TEST(AncfCable2D, RefinedCantileverStaticStepIsFast) {
   const int iters = solveStatic(c, F10, clampNode0(n), 1, q, true);
   const double sec = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   std::printf("  16384 elements: one static step, %d Newton iterations, %.3f s\n", iters, sec);
-  EXPECT_LT(sec, 1.0);  // measured 0.26 .. 0.58 s (7 iterations, 2 cores shared with other builds)
+  // Measured 0.26 .. 0.58 s (7 iterations) on a quiet core, 1.56 s with 6 other jobs on 2 cores: the
+  // wall-clock bound only guards against a gross regression (e.g. allocation in evaluate); the
+  // timing itself is reported by scripts/bench_ancf.py. The iteration count is deterministic.
+  EXPECT_LT(sec, 5.0);
+  EXPECT_LE(iters, 8);
   // Kernel share: 16384 tangent evaluations (allocation-free after the first call); measured ~1 us each.
   KernelNeeds needs;
   needs.tangent = true;

@@ -10,6 +10,12 @@ namespace sinew {
 StaticAnalysis::StaticAnalysis(Assembler& assembler, int loadsteps) : asm_(assembler), loadsteps_(loadsteps) {
   MPI_Comm comm = asm_.mesh().comm;
   PetscCallAbort(comm, asm_.createMatrix(&J_));
+  {  // rigid-body modes as near-null space: used by algebraic multigrid (-pc_type gamg), ignored by LU
+    MatNullSpace nsp;
+    PetscCallAbort(comm, asm_.rigidBodyModes(&nsp));
+    PetscCallAbort(comm, MatSetNearNullSpace(J_, nsp));
+    PetscCallAbort(comm, MatNullSpaceDestroy(&nsp));
+  }
   PetscCallAbort(comm, asm_.createVector(&F_));
   PetscCallAbort(comm, SNESCreate(comm, &snes_));
   PetscCallAbort(comm, SNESSetType(snes_, SNESNEWTONLS));

@@ -17,7 +17,8 @@ std::string helpText() {
     h += "  -" + d.name + " <" + d.type + "> (default " + d.defaultValue + "): " + d.help + "\n";
   h += "Sinew flags: -o <file.h5> result file; -force_rtol <1e-11> equilibrium tolerance relative to the\n"
        "  element forces; -max_cuts <10> halvings of a failing load increment; -predictor <true> secant\n"
-       "  predictor from the last converged increment.\n";
+       "  predictor from the last converged increment; -constraint_check <true> mechanism / redundant constraint\n"
+       "  check before solving, for models up to -constraint_check_max_unknowns <200000>.\n";
   return h;
 }
 

@@ -157,6 +157,17 @@ PetscErrorCode runFromCommandLine(int argc, char** argv, int* exitCode) {
   // Mechanisms and redundant constraints are model errors (exit 2), found before any file exists.
   PetscBool checkModel = PETSC_TRUE;
   PetscCall(PetscOptionsGetBool(nullptr, nullptr, "-constraint_check", &checkModel, nullptr));
+  // The check factors the tangent once (MUMPS): above this size it would cost as much memory as a
+  // direct solve, so large models (often solved iteratively) skip it up front; a failing linear
+  // solve still triggers it as a diagnostic.
+  PetscInt checkMax = 200000;
+  PetscCall(PetscOptionsGetInt(nullptr, nullptr, "-constraint_check_max_unknowns", &checkMax, nullptr));
+  if (checkModel && dmesh->numGlobalUnknowns > checkMax) {
+    checkModel = PETSC_FALSE;
+    if (!model.opt.silent)
+      PetscCall(PetscPrintf(comm, "  note: constraint check skipped (%ld unknowns > -constraint_check_max_unknowns %ld)\n",
+                            dmesh->numGlobalUnknowns, static_cast<long>(checkMax)));
+  }
   if (checkModel && plan.statics && !plan.formfinding && !model.opt.showinputonly) {
     Vec U0;
     PetscCall(assembler.createVector(&U0));

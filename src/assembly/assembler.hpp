@@ -90,6 +90,8 @@ class Assembler {
   /// Multiplies the spin columns of a dense n x n element tangent by T(theta) (exact Jacobian columns).
   void applyRotationColumns(const LocalElement& el, int n, double* K) const { rotationColumns(el, n, K); }
   ISLocalToGlobalMapping localToGlobal() const { return l2g_; }
+  /// Rigid-body motions in the unknowns' layout (orthonormal): the near-null space for -pc_type gamg.
+  PetscErrorCode rigidBodyModes(MatNullSpace* nsp) const;
   AssemblyCounters& mutableCounters() { return counters_; }
 
   // ---- dynamics (assembler_dynamics.cpp); V, A in the unknowns layout, constrained DOFs at rest

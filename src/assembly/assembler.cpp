@@ -135,6 +135,8 @@ PetscErrorCode Assembler::createMatrix(Mat* A) const {
   PetscCall(MatDestroy(&P));
   PetscCall(MatSetLocalToGlobalMapping(*A, l2g_, l2g_));
   PetscCall(MatSetOption(*A, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_TRUE));
+  // every assembly sends the same off-process entries: PETSc reuses the communication pattern
+  PetscCall(MatSetOption(*A, MAT_SUBSET_OFF_PROC_ENTRIES, PETSC_TRUE));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -156,12 +156,18 @@ DistributedMesh distributeMesh(MPI_Comm comm, const Model& model, const FeMesh& 
   dm.dimension = model.dimension;
 
   const std::vector<int> epart = partitionElements(comm, fe, dm.size);
-  std::vector<int> owner(nn, dm.size);
+  // Owner of a node: one of the ranks whose elements meet there. Interface nodes alternate between
+  // the lowest and the highest such rank (by node id), so both sides of an interface own about
+  // half of it and receive about half of the off-process matrix entries.
+  std::vector<int> owner(nn, dm.size), highest(nn, -1);
   for (int e = 0; e < ne; ++e)
     for (int i = 0; i < fe.elements[e].numNodes; ++i) {
-      int& o = owner[fe.elements[e].nodes[i]];
-      o = std::min(o, epart[e]);
+      const int n = fe.elements[e].nodes[i];
+      owner[n] = std::min(owner[n], epart[e]);
+      highest[n] = std::max(highest[n], epart[e]);
     }
+  for (int n = 0; n < nn; ++n)
+    if (highest[n] >= 0 && (n & 1)) owner[n] = highest[n];
 
   // Constraint status of every node (set-up only), then a global numbering: per rank, its owned
   // nodes' free DOFs in ascending node order, then its elements' multipliers.

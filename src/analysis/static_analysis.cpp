@@ -162,6 +162,7 @@ PetscErrorCode StaticAnalysis::run(Vec U, const StepCallback& onStep, bool* conv
     rep.step = step;
     double dl = adaptive_ ? std::min(dlAdapt, target - lambda) : target - lambda;
     int cuts = 0;
+    bool predictNext = true;
     while (lambda < target) {
       const double next = target - (lambda + dl) < 1e-9 * dlMax ? target : lambda + dl;  // no sliver increments
       PetscCall(VecCopy(U, Usave));
@@ -173,7 +174,8 @@ PetscErrorCode StaticAnalysis::run(Vec U, const StepCallback& onStep, bool* conv
       PetscCall(asm_.residual(U, ls_, F_));
       PetscCall(VecNorm(F_, NORM_2, &fnormStart_));
       // predictor: extrapolate the last increment (rotation increments included)
-      if (dlPrev > 0 && predictor_) PetscCall(VecAXPY(U, (next - lambda) / dlPrev, dU));
+      const bool predicted = dlPrev > 0 && predictor_ && predictNext;
+      if (predicted) PetscCall(VecAXPY(U, (next - lambda) / dlPrev, dU));
       bool ok = false;
       int its = 0;
       double fnorm = 0;
@@ -183,6 +185,7 @@ PetscErrorCode StaticAnalysis::run(Vec U, const StepCallback& onStep, bool* conv
       ++rep.increments;
       rep.residualNorm = fnorm;
       if (ok) {
+        predictNext = true;
         PetscCall(VecWAXPY(dU, -1.0, Usave, U));
         PetscCall(asm_.residual(U, ls_, F_));  // line searches may end on a trial evaluation
         fintConverged_ = asm_.internalForceNorm();
@@ -203,6 +206,10 @@ PetscErrorCode StaticAnalysis::run(Vec U, const StepCallback& onStep, bool* conv
         PetscCall(SNESGetKSP(snes_, &ksp));
         PetscCall(KSPGetPC(ksp, &pc));
         PetscCall(PCReset(pc));
+      }
+      if (predicted) {  // the extrapolation can overshoot a sharply bending path: same increment from the last state
+        predictNext = false;
+        continue;
       }
       if (++cuts > maxCuts_) {
         std::ostringstream msg;

@@ -56,6 +56,7 @@ PetscErrorCode printSummary(MPI_Comm comm, const SummaryBody& b) {
                 b.times.setup, b.times.check, b.times.statics, b.times.analyses, b.times.output, b.counters.residuals,
                 b.counters.jacobians, b.counters.masses, b.counters.splitTangents, b.counters.stressRecoveries);
   s << line;
+  if (b.counters.pressureLoads > 0) s << " pressure: " << b.counters.pressureLoads << " follower element loads (rank 0)\n";
   s << " results: " << b.h5 << " (ParaView: " << b.xdmf << ")\n";
   if (!b.converged) s << "\nerror: " << b.failure << "\n";
   PetscCall(PetscPrintf(comm, "%s", s.str().c_str()));

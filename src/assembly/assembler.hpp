@@ -39,6 +39,7 @@ struct LoadState {
 struct AssemblyCounters {
   long residuals = 0, jacobians = 0, masses = 0, splitTangents = 0, stressRecoveries = 0;
   long dampingMatrices = 0;  ///< element damping matrices D evaluated (dynamics, hasDamping() only)
+  long pressureLoads = 0;    ///< follower pressure element loads evaluated (membranes with pressure only)
 };
 
 class Assembler {

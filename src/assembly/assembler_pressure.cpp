@@ -101,6 +101,7 @@ double Assembler::addPressureForces(const LoadState& ls, Target target, double* 
     if (p == 0.0) continue;
     gatherElement(el, q.data(), nullptr, idx.data(), fidx.data());
     pressureElement(el.numNodes, q.data(), p, f.data(), nullptr);
+    ++counters_.pressureLoads;
     const int* map = target == Target::Residual ? idx.data() : fidx.data();
     for (int k = 0; k < 3 * el.numNodes; ++k) {
       fext2 += f[k] * f[k];

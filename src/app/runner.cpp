@@ -153,6 +153,15 @@ PetscErrorCode runFromCommandLine(int argc, char** argv, int* exitCode) {
 
   SummaryHeader header{model.title, scenePath, nranks, dmesh->numGlobalUnknowns, plan.describe(model)};
   if (!model.opt.silent) PetscCall(printHeader(comm, header));
+  if (!model.opt.silent && nranks > 1) {  // partition balance: elements, owned unknowns, ghosts per rank
+    long mine[3] = {static_cast<long>(dmesh->elements.size()), dmesh->numOwnedUnknowns,
+                    static_cast<long>(dmesh->ghostUnknowns.size())};
+    long lo[3], hi[3];
+    MPI_Allreduce(mine, lo, 3, MPI_LONG, MPI_MIN, comm);
+    MPI_Allreduce(mine, hi, 3, MPI_LONG, MPI_MAX, comm);
+    PetscCall(PetscPrintf(comm, "  partition (METIS): elements %ld..%ld, owned unknowns %ld..%ld, ghost unknowns %ld..%ld per rank\n",
+                          lo[0], hi[0], lo[1], hi[1], lo[2], hi[2]));
+  }
 
   // Mechanisms and redundant constraints are model errors (exit 2), found before any file exists.
   PetscBool checkModel = PETSC_TRUE;

@@ -24,6 +24,7 @@ const SinewEvents& SinewEvents::get() {
     PetscLogEventRegister("SinewDynamics", cls, &e.dynamics);
     PetscLogEventRegister("SinewFormFind", cls, &e.formfinding);
     PetscLogEventRegister("SinewConstrCheck", cls, &e.constraintCheck);
+    PetscLogEventRegister("SinewJacElements", cls, &e.jacobianElements);
     return e;
   }();
   return ev;
@@ -376,6 +377,7 @@ PetscErrorCode Assembler::jacobian(Vec U, const LoadState& ls, Mat J) {
   std::array<int, kMaxElementRows> idx;
   KernelNeeds needs;
   needs.tangent = true;
+  PetscCall(PetscLogEventBegin(SinewEvents::get().jacobianElements, 0, 0, 0, 0));
   for (const LocalElement& el : mesh_.elements) {
     gatherElement(el, q.data(), u, idx.data(), nullptr);
     KernelInput in{q.data(), nullptr, el.firstMultiplier >= 0 ? u + el.firstMultiplier : nullptr, ls.time};
@@ -385,6 +387,7 @@ PetscErrorCode Assembler::jacobian(Vec U, const LoadState& ls, Mat J) {
     rotationColumns(el, n, out_.K.data());
     PetscCall(MatSetValuesLocal(J, n, idx.data(), n, idx.data(), out_.K.data(), ADD_VALUES));
   }
+  PetscCall(PetscLogEventEnd(SinewEvents::get().jacobianElements, 0, 0, 0, 0));
   PetscCall(addSlopeTorqueTangent(ls, J));
   PetscCall(addLoadTangents(ls, J));
   PetscCall(VecRestoreArrayRead(ul, &u));

@@ -162,6 +162,7 @@ class Assembler {
 /// PetscLogEvents of Sinew's phases (registered once).
 struct SinewEvents {
   PetscLogEvent setup, residual, jacobian, mass, splitTangent, stress, eigen, compliance, output, dynamics, formfinding, constraintCheck;
+  PetscLogEvent jacobianElements;  ///< the element loop of SinewJacobian (kernels + MatSetValuesLocal)
   static const SinewEvents& get();
 };
 

@@ -1,3 +1,4 @@
+#include "analysis/solver_defaults.hpp"
 #include "analysis/buckling_analysis.hpp"
 
 #include <algorithm>
@@ -22,15 +23,11 @@ BucklingAnalysis::BucklingAnalysis(Assembler& assembler, int nbuck) : asm_(assem
   PetscCallAbort(comm, EPSSetTarget(eps_, 0.0));
   ST st;
   KSP ksp;
-  PC pc;
   PetscCallAbort(comm, EPSGetST(eps_, &st));
   PetscCallAbort(comm, STSetType(st, STSINVERT));
   PetscCallAbort(comm, STSetMatStructure(st, SUBSET_NONZERO_PATTERN));
   PetscCallAbort(comm, STGetKSP(st, &ksp));
-  PetscCallAbort(comm, KSPSetType(ksp, KSPPREONLY));
-  PetscCallAbort(comm, KSPGetPC(ksp, &pc));
-  PetscCallAbort(comm, PCSetType(pc, PCLU));
-  PetscCallAbort(comm, PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
+  PetscCallAbort(comm, useDirectSolver(ksp));
   PetscCallAbort(comm, EPSSetFromOptions(eps_));
   PetscBool set = PETSC_FALSE;
   PetscCallAbort(comm, PetscOptionsHasName(nullptr, "buck_", "-eps_nev", &set));

@@ -1,3 +1,4 @@
+#include "analysis/solver_defaults.hpp"
 #include "analysis/constraint_check.hpp"
 
 #include <petscksp.h>
@@ -161,12 +162,10 @@ PetscErrorCode checkConstraints(Assembler& assembler, const Model& model, Vec U,
   PetscCall(KSPCreate(comm, &ksp));
   PetscCall(KSPSetOptionsPrefix(ksp, "constraint_check_"));
   PetscCall(KSPSetOperators(ksp, As, As));
-  PetscCall(KSPSetType(ksp, KSPPREONLY));
-  PetscCall(KSPGetPC(ksp, &pc));
-  PetscCall(PCSetType(pc, PCLU));
-  PetscCall(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
+  PetscCall(useDirectSolver(ksp));
   PetscCall(KSPSetFromOptions(ksp));
   PetscCall(KSPSetUp(ksp));
+  PetscCall(KSPGetPC(ksp, &pc));
   PCFailedReason why = PC_NOERROR;
   PetscCall(PCGetFailedReason(pc, &why));
   int failed = why != PC_NOERROR;

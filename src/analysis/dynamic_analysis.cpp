@@ -1,3 +1,4 @@
+#include "analysis/solver_defaults.hpp"
 #include "analysis/dynamic_analysis.hpp"
 
 #include <cfloat>
@@ -34,9 +35,7 @@ DynamicAnalysis::DynamicAnalysis(Assembler& assembler, const DynamicsOptions& op
   PetscReal rtol = forceRtol_;
   PetscCallAbort(comm, PetscOptionsGetReal(nullptr, nullptr, "-force_rtol", &rtol, &set));
   forceRtol_ = rtol;
-  for (const LocalNode& n : asm_.mesh().nodes)
-    for (double x : n.X0) coordMax_ = std::max(coordMax_, std::abs(x));
-  MPI_Allreduce(MPI_IN_PLACE, &coordMax_, 1, MPI_DOUBLE, MPI_MAX, comm);
+  coordMax_ = asm_.coordinateScale();
 }
 
 DynamicAnalysis::~DynamicAnalysis() {
@@ -118,14 +117,10 @@ PetscErrorCode DynamicAnalysis::initialAccelerations(Vec U, Vec V, Vec Qdd, bool
   PetscCall(asm_.dynamicResidual(U, V, Qdd, ls0, F_));  // f_int - f_ext
   PetscCall(VecScale(F_, -1.0));
   KSP ksp;
-  PC pc;
   PetscCall(KSPCreate(comm, &ksp));
   PetscCall(KSPSetOptionsPrefix(ksp, "init_"));
   PetscCall(KSPSetOperators(ksp, M, M));
-  PetscCall(KSPSetType(ksp, KSPPREONLY));
-  PetscCall(KSPGetPC(ksp, &pc));
-  PetscCall(PCSetType(pc, PCLU));
-  PetscCall(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
+  PetscCall(useDirectSolver(ksp));
   PetscCall(KSPSetFromOptions(ksp));
   PetscCall(KSPSolve(ksp, F_, Qdd));
   KSPConvergedReason why;
@@ -185,12 +180,8 @@ PetscErrorCode DynamicAnalysis::runArnoldBruls(Vec U, const StepCallback& onStep
   PetscCall(SNESLineSearchSetType(lsrch, SNESLINESEARCHBASIC));
   PetscCall(SNESSetConvergenceTest(snes_, convergenceTest, this, nullptr));
   KSP ksp;
-  PC pc;
   PetscCall(SNESGetKSP(snes_, &ksp));
-  PetscCall(KSPSetType(ksp, KSPPREONLY));
-  PetscCall(KSPGetPC(ksp, &pc));
-  PetscCall(PCSetType(pc, PCLU));
-  PetscCall(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
+  PetscCall(useDirectSolver(ksp));
   PetscCall(SNESSetFromOptions(snes_));
   Vec Usol;
   PetscCall(VecDuplicate(U, &Usol));
@@ -322,15 +313,11 @@ PetscErrorCode DynamicAnalysis::runTSAlpha2(Vec U, const StepCallback& onStep, b
   PetscCall(TSSetMaxSNESFailures(ts, -1));  // a failed step is retried with a smaller step
   SNES snes;
   KSP ksp;
-  PC pc;
   PetscCall(TSGetSNES(ts, &snes));
   PetscCall(SNESSetTolerances(snes, 1e-50, 1e-10, 1e-12, 50, 10000));
   PetscCall(SNESSetConvergenceTest(snes, convergenceTest, this, nullptr));
   PetscCall(SNESGetKSP(snes, &ksp));
-  PetscCall(KSPSetType(ksp, KSPPREONLY));
-  PetscCall(KSPGetPC(ksp, &pc));
-  PetscCall(PCSetType(pc, PCLU));
-  PetscCall(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
+  PetscCall(useDirectSolver(ksp));
   Vec V, A;
   PetscCall(VecDuplicate(U, &V));
   PetscCall(VecDuplicate(U, &A));

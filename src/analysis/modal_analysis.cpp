@@ -1,3 +1,4 @@
+#include "analysis/solver_defaults.hpp"
 #include "analysis/modal_analysis.hpp"
 
 #include <algorithm>
@@ -75,15 +76,11 @@ ModalAnalysis::ModalAnalysis(Assembler& assembler, int nfreq, bool writeResults)
   PetscCallAbort(comm, EPSSetPurify(eps_, PETSC_TRUE));  // keeps the multipliers' infinite eigenvalues out
   ST st;
   KSP ksp;
-  PC pc;
   PetscCallAbort(comm, EPSGetST(eps_, &st));
   PetscCallAbort(comm, STSetType(st, STSINVERT));
   PetscCallAbort(comm, STSetMatStructure(st, SUBSET_NONZERO_PATTERN));  // pattern(M) within pattern(K)
   PetscCallAbort(comm, STGetKSP(st, &ksp));
-  PetscCallAbort(comm, KSPSetType(ksp, KSPPREONLY));
-  PetscCallAbort(comm, KSPGetPC(ksp, &pc));
-  PetscCallAbort(comm, PCSetType(pc, PCLU));
-  PetscCallAbort(comm, PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
+  PetscCallAbort(comm, useDirectSolver(ksp));
   PetscCallAbort(comm, EPSSetFromOptions(eps_));  // last: -eps_* and -st_* flags win
   PetscInt nev, ncv, mpd;
   PetscCallAbort(comm, EPSGetDimensions(eps_, &nev, &ncv, &mpd));

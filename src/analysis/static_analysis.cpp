@@ -1,3 +1,4 @@
+#include "analysis/solver_defaults.hpp"
 #include "analysis/static_analysis.hpp"
 
 #include <algorithm>
@@ -28,12 +29,8 @@ StaticAnalysis::StaticAnalysis(Assembler& assembler, int loadsteps) : asm_(assem
   PetscCallAbort(comm, SNESLineSearchSetType(ls, SNESLINESEARCHBASIC));
   PetscCallAbort(comm, SNESSetConvergenceTest(snes_, convergenceTest, this, nullptr));
   KSP ksp;
-  PC pc;
   PetscCallAbort(comm, SNESGetKSP(snes_, &ksp));
-  PetscCallAbort(comm, KSPSetType(ksp, KSPPREONLY));
-  PetscCallAbort(comm, KSPGetPC(ksp, &pc));
-  PetscCallAbort(comm, PCSetType(pc, PCLU));
-  PetscCallAbort(comm, PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
+  PetscCallAbort(comm, useDirectSolver(ksp));
   PetscCallAbort(comm, SNESSetFromOptions(snes_));
   PetscReal rtol = forceRtol_;
   PetscBool set = PETSC_FALSE;
@@ -51,9 +48,7 @@ StaticAnalysis::StaticAnalysis(Assembler& assembler, int loadsteps) : asm_(assem
   adaptive_ = adaptive;
   growIts_ = static_cast<int>(growIts);
   maxCuts_ = static_cast<int>(cuts);
-  for (const LocalNode& n : asm_.mesh().nodes)
-    for (double x : n.X0) coordMax_ = std::max(coordMax_, std::abs(x));
-  MPI_Allreduce(MPI_IN_PLACE, &coordMax_, 1, MPI_DOUBLE, MPI_MAX, comm);
+  coordMax_ = asm_.coordinateScale();
 }
 
 StaticAnalysis::~StaticAnalysis() {

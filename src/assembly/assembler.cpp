@@ -68,6 +68,9 @@ Assembler::Assembler(DistributedMesh& mesh, const std::optional<Vec3>& gravity) 
     for (double v : n.mominertia) inertia |= v != 0.0;
   }
   MPI_Allreduce(MPI_IN_PLACE, &inertia, 1, MPI_INT, MPI_LOR, mesh_.comm);
+  for (const LocalNode& n : mesh_.nodes)
+    for (double x : n.X0) coordMax_ = std::max(coordMax_, std::abs(x));
+  MPI_Allreduce(MPI_IN_PLACE, &coordMax_, 1, MPI_DOUBLE, MPI_MAX, mesh_.comm);
   hasInertia_ = inertia != 0;
   initLoads();
   PetscCallAbort(mesh_.comm, createVector(&uWork_));

@@ -112,6 +112,8 @@ class Assembler {
   bool hasGravity() const { return gravity_.has_value(); }
   /// Characteristic force of the current external loads (for relative convergence tests).
   double externalForceNorm() const { return fextNorm_; }
+  /// Largest |reference coordinate| of the model: positions carry round-off eps times this.
+  double coordinateScale() const { return coordMax_; }
   double internalForceNorm() const { return fintNorm_; }
   /// Some local or remote membrane carries a pressure (then residual and Jacobian have load terms).
   bool hasPressure() const { return anyPressure_; }
@@ -151,6 +153,7 @@ class Assembler {
   const double* vLocal_ = nullptr;  // local form of the velocities while a dynamic evaluation runs
   AssemblyCounters counters_;
   double fextNorm_ = 0, fintNorm_ = 0;
+  double coordMax_ = 0;
   std::vector<std::pair<int, SetPressure>> pressureElems_;  // local element index, pressure
   bool anyPressure_ = false;
   std::vector<int> cableElems_;  // local elements with a Cable3D kernel

@@ -1,5 +1,6 @@
 #include "assembly/assembler.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 
@@ -76,6 +77,13 @@ Assembler::Assembler(DistributedMesh& mesh, const std::optional<Vec3>& gravity) 
   PetscCallAbort(mesh_.comm, createVector(&uWork_));
   PetscCallAbort(mesh_.comm, VecDuplicate(uWork_, &fWork_));
   PetscCallAbort(mesh_.comm, createFullVector(&fullWork_));
+  PetscBool coo = PETSC_TRUE;
+  PetscCallAbort(mesh_.comm, PetscOptionsGetBool(nullptr, nullptr, "-assembly_coo", &coo, nullptr));
+  // the same decision on every rank (the COO calls are collective): no rank has cables, pressure
+  // elements or ANCF nodes (their node and load tangents are added outside the element blocks)
+  int cooOk = coo && !mesh_.anyAncf && pressureElems_.empty() && cableElems_.empty();
+  MPI_Allreduce(MPI_IN_PLACE, &cooOk, 1, MPI_INT, MPI_LAND, mesh_.comm);
+  cooAssembly_ = cooOk != 0;
   std::vector<PetscInt> l2g(mesh_.numLocalUnknowns());
   for (int i = 0; i < mesh_.numLocalUnknowns(); ++i) l2g[i] = static_cast<PetscInt>(mesh_.localToGlobalUnknown(i));
   PetscCallAbort(mesh_.comm, ISLocalToGlobalMappingCreate(mesh_.comm, 1, static_cast<PetscInt>(l2g.size()), l2g.data(),
@@ -375,12 +383,15 @@ PetscErrorCode Assembler::jacobian(Vec U, const LoadState& ls, Mat J) {
   PetscCall(VecGhostGetLocalForm(uWork_, &ul));
   PetscCall(VecGetArrayRead(ul, &u));
   computeStates(u, ls);
-  PetscCall(MatZeroEntries(J));
+  const bool coo = cooApplies();
+  if (coo) PetscCall(prepareCOO(J));
+  else PetscCall(MatZeroEntries(J));
   std::array<double, 48> q;
   std::array<int, kMaxElementRows> idx;
   KernelNeeds needs;
   needs.tangent = true;
   PetscCall(PetscLogEventBegin(SinewEvents::get().jacobianElements, 0, 0, 0, 0));
+  size_t offset = 0;
   for (const LocalElement& el : mesh_.elements) {
     gatherElement(el, q.data(), u, idx.data(), nullptr);
     KernelInput in{q.data(), nullptr, el.firstMultiplier >= 0 ? u + el.firstMultiplier : nullptr, ls.time};
@@ -388,9 +399,21 @@ PetscErrorCode Assembler::jacobian(Vec U, const LoadState& ls, Mat J) {
     el.kernel->evaluate(in, needs, out_);
     const int n = el.kernel->numDofs() + el.kernel->numConstraints();
     rotationColumns(el, n, out_.K.data());
-    PetscCall(MatSetValuesLocal(J, n, idx.data(), n, idx.data(), out_.K.data(), ADD_VALUES));
+    if (coo) {
+      std::copy(out_.K.begin(), out_.K.begin() + n * n, cooValues_.begin() + static_cast<long>(offset));
+      offset += static_cast<size_t>(n) * n;
+    } else {
+      PetscCall(MatSetValuesLocal(J, n, idx.data(), n, idx.data(), out_.K.data(), ADD_VALUES));
+    }
   }
   PetscCall(PetscLogEventEnd(SinewEvents::get().jacobianElements, 0, 0, 0, 0));
+  if (coo) {  // the matrix is assembled by MatSetValuesCOO (repeated entries are summed)
+    PetscCall(MatSetValuesCOO(J, cooValues_.data(), INSERT_VALUES));
+    PetscCall(VecRestoreArrayRead(ul, &u));
+    PetscCall(VecGhostRestoreLocalForm(uWork_, &ul));
+    PetscCall(PetscLogEventEnd(SinewEvents::get().jacobian, 0, 0, 0, 0));
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
   PetscCall(addSlopeTorqueTangent(ls, J));
   PetscCall(addLoadTangents(ls, J));
   PetscCall(VecRestoreArrayRead(ul, &u));
@@ -402,6 +425,36 @@ PetscErrorCode Assembler::jacobian(Vec U, const LoadState& ls, Mat J) {
 }
 
 // tangent of slope torques on ANCF nodes (node states current): d/ds of -tau (-s_y, s_x)/|s|^2
+// COO assembly needs the tangent to be exactly the element blocks: no node-level or load tangents.
+bool Assembler::cooApplies() const { return cooAssembly_; }
+
+PetscErrorCode Assembler::prepareCOO(Mat J) {
+  PetscFunctionBeginUser;
+  // a marker composed with the matrix: it dies with the matrix (a later matrix may reuse the address)
+  PetscObject marker = nullptr;
+  PetscCall(PetscObjectQuery(reinterpret_cast<PetscObject>(J), "SinewCOO", &marker));
+  if (marker) PetscFunctionReturn(PETSC_SUCCESS);
+  std::vector<PetscInt> ci, cj;
+  std::array<int, kMaxElementRows> idx;
+  std::array<double, 48> q;
+  for (const LocalElement& el : mesh_.elements) {
+    gatherElement(el, q.data(), nullptr, idx.data(), nullptr);
+    const int n = el.kernel->numDofs() + el.kernel->numConstraints();
+    for (int r = 0; r < n; ++r)
+      for (int c = 0; c < n; ++c) {
+        ci.push_back(idx[r] >= 0 ? static_cast<PetscInt>(mesh_.localToGlobalUnknown(idx[r])) : -1);
+        cj.push_back(idx[c] >= 0 ? static_cast<PetscInt>(mesh_.localToGlobalUnknown(idx[c])) : -1);
+      }
+  }
+  cooValues_.assign(ci.size(), 0.0);
+  PetscCall(MatSetPreallocationCOO(J, static_cast<PetscCount>(ci.size()), ci.data(), cj.data()));
+  PetscContainer tag;
+  PetscCall(PetscContainerCreate(mesh_.comm, &tag));
+  PetscCall(PetscObjectCompose(reinterpret_cast<PetscObject>(J), "SinewCOO", reinterpret_cast<PetscObject>(tag)));
+  PetscCall(PetscContainerDestroy(&tag));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode Assembler::addSlopeTorqueTangent(const LoadState& ls, Mat J) {
   PetscFunctionBeginUser;
   const double lam = ls.loadFactor;

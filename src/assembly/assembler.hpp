@@ -154,6 +154,12 @@ class Assembler {
   AssemblyCounters counters_;
   double fextNorm_ = 0, fintNorm_ = 0;
   double coordMax_ = 0;
+  // COO assembly of element tangents (MatSetPreallocationCOO / MatSetValuesCOO): the index pattern
+  // is set once per matrix, each Jacobian then only fills cooValues_ in element order.
+  bool cooAssembly_ = true;
+  std::vector<PetscScalar> cooValues_;
+  PetscErrorCode prepareCOO(Mat J);
+  bool cooApplies() const;
   std::vector<std::pair<int, SetPressure>> pressureElems_;  // local element index, pressure
   bool anyPressure_ = false;
   std::vector<int> cableElems_;  // local elements with a Cable3D kernel

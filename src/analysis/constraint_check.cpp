@@ -162,7 +162,7 @@ PetscErrorCode checkConstraints(Assembler& assembler, const Model& model, Vec U,
   PetscCall(KSPCreate(comm, &ksp));
   PetscCall(KSPSetOptionsPrefix(ksp, "constraint_check_"));
   PetscCall(KSPSetOperators(ksp, As, As));
-  PetscCall(useDirectSolver(ksp));
+  PetscCall(useDirectSolver(ksp, m));
   PetscCall(KSPSetFromOptions(ksp));
   PetscCall(KSPSetUp(ksp));
   PetscCall(KSPGetPC(ksp, &pc));

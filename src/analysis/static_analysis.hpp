@@ -18,6 +18,10 @@ struct StepReport {
   int newtonIterations = 0;
   int increments = 0;      ///< SNES solves used (1 = no cut)
   double residualNorm = 0;
+  /// Newton converged on its update (rule 4 of the convergence test): the residual is at the
+  /// round-off noise of the stored positions, which can exceed the load itself (fine ANCF cables)
+  bool convergedOnUpdate = false;
+  double relativeUpdate = 0;  ///< ||dU|| / ||U|| of the last Newton update of the step
 };
 
 class StaticAnalysis {
@@ -48,14 +52,22 @@ class StaticAnalysis {
 
   Assembler& asm_;
   int loadsteps_;
+  static PetscErrorCode tangentMult(Mat A, Vec x, Vec y);
+  PetscErrorCode setUpElementwiseOperator();
+
   SNES snes_ = nullptr;
   Mat J_ = nullptr;
+  Mat Jop_ = nullptr;
+  PetscInt luReuseIts_ = 4;  ///< -lu_reuse_its: keep the LU factors while GMRES needs at most this many iterations  ///< element-wise tangent operator (MATSHELL) when -tangent_operator elementwise
   Vec F_ = nullptr;
   LoadState ls_;
   double forceRtol_ = 1e-11;
   double jacobianNorm_ = 0;  ///< ||J||_inf at the start of the increment (round-off floor of the residual)
   double fnormStart_ = 0;              ///< residual of the increment at its start state (before the predictor)
   double fnorm0_ = 0, fnormPrev_ = 0;  ///< residual at iteration 0 and at the previous iteration
+  double snormPrev_ = 0;               ///< Newton update of the previous iteration
+  bool onUpdate_ = false;              ///< the last SNES solve converged by rule (4)
+  double relUpdate_ = 0;               ///< ||dU|| / ||U|| of the last Newton update
   double fintConverged_ = 0;          ///< ||f_int|| at the last converged state
   bool unloaded_ = false;
   double coordMax_ = 0;      ///< largest |node coordinate| (positions carry round-off eps * coordMax_)

@@ -20,9 +20,19 @@ PetscErrorCode printSummary(MPI_Comm comm, const SummaryBody& b) {
   char line[256];
   if (!b.reports.empty()) {
     s << "\n step  load factor  Newton its  increments  residual\n";
+    bool onUpdate = false;
     for (const auto& r : b.reports) {
-      std::snprintf(line, sizeof line, " %4d  %11.4g  %10d  %10d  %.3e\n", r.step, r.loadFactor, r.newtonIterations,
-                    r.increments, r.residualNorm);
+      std::snprintf(line, sizeof line, " %4d  %11.4g  %10d  %10d  %.3e%s\n", r.step, r.loadFactor, r.newtonIterations,
+                    r.increments, r.residualNorm, r.convergedOnUpdate ? " *" : "");
+      s << line;
+      onUpdate = onUpdate || r.convergedOnUpdate;
+    }
+    if (onUpdate) {
+      const auto& last = b.reports.back();
+      std::snprintf(line, sizeof line,
+                    " * converged on the Newton update (last |dU|/|U| = %.1e): the residual is at the round-off\n"
+                    "   noise of the stored coordinates, see docs/ancf_cable2d.md\n",
+                    last.relativeUpdate);
       s << line;
     }
   }

@@ -26,6 +26,7 @@ const SinewEvents& SinewEvents::get() {
     PetscLogEventRegister("SinewFormFind", cls, &e.formfinding);
     PetscLogEventRegister("SinewConstrCheck", cls, &e.constraintCheck);
     PetscLogEventRegister("SinewJacElements", cls, &e.jacobianElements);
+    PetscLogEventRegister("SinewTangentOp", cls, &e.tangentOperator);
     return e;
   }();
   return ev;
@@ -94,6 +95,8 @@ Assembler::~Assembler() {
   VecDestroy(&uWork_);
   VecDestroy(&fWork_);
   VecDestroy(&fullWork_);
+  VecDestroy(&xOp_);
+  VecDestroy(&yOp_);
   ISLocalToGlobalMappingDestroy(&l2g_);
 }
 
@@ -383,15 +386,16 @@ PetscErrorCode Assembler::jacobian(Vec U, const LoadState& ls, Mat J) {
   PetscCall(VecGhostGetLocalForm(uWork_, &ul));
   PetscCall(VecGetArrayRead(ul, &u));
   computeStates(u, ls);
-  const bool coo = cooApplies();
+  const bool coo = J && cooApplies();
   if (coo) PetscCall(prepareCOO(J));
-  else PetscCall(MatZeroEntries(J));
+  else if (J) PetscCall(MatZeroEntries(J));
   std::array<double, 48> q;
   std::array<int, kMaxElementRows> idx;
   KernelNeeds needs;
   needs.tangent = true;
   PetscCall(PetscLogEventBegin(SinewEvents::get().jacobianElements, 0, 0, 0, 0));
-  size_t offset = 0;
+  size_t offset = 0, kept = 0;
+  if (keepBlocks_) torqueBlocks_.clear();
   for (const LocalElement& el : mesh_.elements) {
     gatherElement(el, q.data(), u, idx.data(), nullptr);
     KernelInput in{q.data(), nullptr, el.firstMultiplier >= 0 ? u + el.firstMultiplier : nullptr, ls.time};
@@ -399,32 +403,35 @@ PetscErrorCode Assembler::jacobian(Vec U, const LoadState& ls, Mat J) {
     el.kernel->evaluate(in, needs, out_);
     const int n = el.kernel->numDofs() + el.kernel->numConstraints();
     rotationColumns(el, n, out_.K.data());
+    if (keepBlocks_) {
+      if (blocks_.size() < kept + static_cast<size_t>(n) * n) blocks_.resize(kept + static_cast<size_t>(n) * n);
+      std::copy(out_.K.begin(), out_.K.begin() + n * n, blocks_.begin() + static_cast<long>(kept));
+      kept += static_cast<size_t>(n) * n;
+    }
     if (coo) {
       std::copy(out_.K.begin(), out_.K.begin() + n * n, cooValues_.begin() + static_cast<long>(offset));
       offset += static_cast<size_t>(n) * n;
-    } else {
+    } else if (J) {
       PetscCall(MatSetValuesLocal(J, n, idx.data(), n, idx.data(), out_.K.data(), ADD_VALUES));
     }
   }
   PetscCall(PetscLogEventEnd(SinewEvents::get().jacobianElements, 0, 0, 0, 0));
   if (coo) {  // the matrix is assembled by MatSetValuesCOO (repeated entries are summed)
     PetscCall(MatSetValuesCOO(J, cooValues_.data(), INSERT_VALUES));
-    PetscCall(VecRestoreArrayRead(ul, &u));
-    PetscCall(VecGhostRestoreLocalForm(uWork_, &ul));
-    PetscCall(PetscLogEventEnd(SinewEvents::get().jacobian, 0, 0, 0, 0));
-    PetscFunctionReturn(PETSC_SUCCESS);
+  } else {
+    PetscCall(addSlopeTorqueTangent(ls, J));
+    if (J) PetscCall(addLoadTangents(ls, J));
   }
-  PetscCall(addSlopeTorqueTangent(ls, J));
-  PetscCall(addLoadTangents(ls, J));
   PetscCall(VecRestoreArrayRead(ul, &u));
   PetscCall(VecGhostRestoreLocalForm(uWork_, &ul));
-  PetscCall(MatAssemblyBegin(J, MAT_FINAL_ASSEMBLY));
-  PetscCall(MatAssemblyEnd(J, MAT_FINAL_ASSEMBLY));
+  if (J && !coo) {
+    PetscCall(MatAssemblyBegin(J, MAT_FINAL_ASSEMBLY));
+    PetscCall(MatAssemblyEnd(J, MAT_FINAL_ASSEMBLY));
+  }
   PetscCall(PetscLogEventEnd(SinewEvents::get().jacobian, 0, 0, 0, 0));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-// tangent of slope torques on ANCF nodes (node states current): d/ds of -tau (-s_y, s_x)/|s|^2
 // COO assembly needs the tangent to be exactly the element blocks: no node-level or load tangents.
 bool Assembler::cooApplies() const { return cooAssembly_; }
 
@@ -455,6 +462,8 @@ PetscErrorCode Assembler::prepareCOO(Mat J) {
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+// tangent of slope torques on ANCF nodes (node states current): d/ds of -tau (-s_y, s_x)/|s|^2;
+// J = nullptr: only kept as blocks for applyTangent
 PetscErrorCode Assembler::addSlopeTorqueTangent(const LoadState& ls, Mat J) {
   PetscFunctionBeginUser;
   const double lam = ls.loadFactor;
@@ -469,7 +478,8 @@ PetscErrorCode Assembler::addSlopeTorqueTangent(const LoadState& ls, Mat J) {
     const double K[4] = {-tau * (2 * sx * sy / s4), -tau * (-1 / s2 + 2 * sy * sy / s4),
                          -tau * (1 / s2 - 2 * sx * sx / s4), -tau * (-2 * sx * sy / s4)};
     const PetscInt rows[2] = {n.dof[2], n.dof[3]};
-    PetscCall(MatSetValuesLocal(J, 2, rows, 2, rows, K, ADD_VALUES));
+    if (J) PetscCall(MatSetValuesLocal(J, 2, rows, 2, rows, K, ADD_VALUES));
+    if (keepBlocks_) torqueBlocks_.push_back({i, {K[0], K[1], K[2], K[3]}});
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -59,7 +59,7 @@ class Assembler {
 
   /// F = f_int(U) - f_ext at the unknowns (constraint rows: constraint values).
   PetscErrorCode residual(Vec U, const LoadState& ls, Vec F);
-  /// J = dF/dU.
+  /// J = dF/dU. J = nullptr: only the kept element blocks (keepTangentBlocks) are updated.
   PetscErrorCode jacobian(Vec U, const LoadState& ls, Mat J);
   /// Material and geometric parts of the tangent (spin columns, used at converged states).
   PetscErrorCode splitTangent(Vec U, const LoadState& ls, Mat Km, Mat Kg);
@@ -106,6 +106,21 @@ class Assembler {
   /// Body-force acceleration on element el: gravity plus its set's massProportionalLoad, scaled by
   /// the load factor when ls.gravityRamped. False when the element has neither (or no inertia).
   bool bodyAcceleration(const LocalElement& el, const LoadState& ls, Vec3* a) const;
+
+  // ---- element-wise tangent operator (tangent_operator.cpp)
+  /// From now on jacobian() also keeps every element block (and the slope-torque node blocks), so
+  /// that applyTangent() can apply the same tangent element by element.
+  void keepTangentBlocks(bool on) { keepBlocks_ = on; }
+  /// y = J x from the kept blocks of the last jacobian(), each block applied to its element's part
+  /// of x minus the translation of the element's first node (a rigid translation is in the null space
+  /// of every element tangent). The assembled matrix applies the same J, but its products carry
+  /// round-off eps * |J| * |x|; here it is eps * |J_e| * |x_e - t_e|, which matters when element
+  /// stiffnesses are huge and x is a large, locally almost rigid motion (fine ANCF cables: bending
+  /// stiffness EI/h^3 against a soft global mode). Logged as SinewTangentOp.
+  PetscErrorCode applyTangent(Vec x, Vec y);
+  /// applyTangent() reproduces jacobian(): no rank has pressure loads or cables (their load and
+  /// regularization tangents are not element blocks). Collective.
+  bool elementwiseTangentAvailable() const;
 
   const AssemblyCounters& counters() const { return counters_; }
   bool hasInertia() const { return hasInertia_; }
@@ -160,6 +175,12 @@ class Assembler {
   std::vector<PetscScalar> cooValues_;
   PetscErrorCode prepareCOO(Mat J);
   bool cooApplies() const;
+  // kept tangent blocks (keepTangentBlocks): element blocks in element order, then 2x2 slope-torque
+  // blocks of owned ANCF nodes (node index, K row-major)
+  bool keepBlocks_ = false;
+  std::vector<double> blocks_;
+  std::vector<std::pair<int, std::array<double, 4>>> torqueBlocks_;
+  Vec xOp_ = nullptr, yOp_ = nullptr;  // ghosted work vectors of applyTangent
   std::vector<std::pair<int, SetPressure>> pressureElems_;  // local element index, pressure
   bool anyPressure_ = false;
   std::vector<int> cableElems_;  // local elements with a Cable3D kernel
@@ -172,6 +193,7 @@ class Assembler {
 struct SinewEvents {
   PetscLogEvent setup, residual, jacobian, mass, splitTangent, stress, eigen, compliance, output, dynamics, formfinding, constraintCheck;
   PetscLogEvent jacobianElements;  ///< the element loop of SinewJacobian (kernels + MatSetValuesLocal)
+  PetscLogEvent tangentOperator;   ///< Assembler::applyTangent (element-wise products with the tangent)
   static const SinewEvents& get();
 };
 

@@ -159,6 +159,9 @@ class Assembler {
   bool hasInertia_ = false;
   Vec uWork_ = nullptr, fWork_ = nullptr, fullWork_ = nullptr;
   ISLocalToGlobalMapping l2g_ = nullptr;
+  PetscErrorCode preallocationCounts() const;
+  mutable bool countsReady_ = false;
+  mutable std::vector<PetscInt> dnnz_, onnz_;  // nonzeros per owned row (diagonal / off-diagonal block)
   std::vector<double> state_;  // 12 per local node
   std::vector<double> disp_;   // 3 per local node: translations x - X0 exactly as in the unknowns
   mutable std::array<double, 12> elemDisp_{};  // disp_ of the element being evaluated (kernel order)
@@ -194,6 +197,7 @@ struct SinewEvents {
   PetscLogEvent setup, residual, jacobian, mass, splitTangent, stress, eigen, compliance, output, dynamics, formfinding, constraintCheck;
   PetscLogEvent jacobianElements;  ///< the element loop of SinewJacobian (kernels + MatSetValuesLocal)
   PetscLogEvent tangentOperator;   ///< Assembler::applyTangent (element-wise products with the tangent)
+  PetscLogEvent cooSetup;          ///< one-time COO pattern of a matrix (inside SinewJacobian)
   static const SinewEvents& get();
 };
 

@@ -5,8 +5,6 @@ inextensible elastica (theta'' = -(P L^2/EI) cos theta, shooting with RK4 in num
 discretisation error plus the axial stretch P/EA (~1e-8)."""
 import re
 
-import numpy as np
-
 import ancf_scenes as A
 import sinewtest as st
 
@@ -14,30 +12,9 @@ EI, EA, L = 1.0, 1e8, 2.0
 alpha = 3.0  # P L^2 / EI
 
 
-def elastica(alpha, n=1000):
-    """Tip (x, y) / L of the inextensible cantilever under a fixed transverse tip load."""
-    def end(k0):
-        u = np.array([0.0, k0, 0.0, 0.0])  # theta, theta', x, y over s in [0, 1]
-        h = 1.0 / n
-        f = lambda u: np.array([u[1], -alpha * np.cos(u[0]), np.cos(u[0]), np.sin(u[0])])
-        for _ in range(n):
-            k1 = f(u); k2 = f(u + h / 2 * k1); k3 = f(u + h / 2 * k2); k4 = f(u + h * k3)
-            u = u + h / 6 * (k1 + 2 * k2 + 2 * k3 + k4)
-        return u
-    a, b = 0.0, alpha  # theta'(1) = 0: bisection on k0 = theta'(0)
-    fa = end(a)[1]
-    for _ in range(55):
-        m = 0.5 * (a + b)
-        fm = end(m)[1]
-        if fa * fm <= 0:
-            b = m
-        else:
-            a, fa = m, fm
-    u = end(0.5 * (a + b))
-    return u[2], u[3]
 
 
-x_ref, y_ref = elastica(alpha)
+x_ref, y_ref = A.elastica(alpha)
 scene = A.cantilever(1024, L=L, EA=EA, EI=EI, rhoA=1.0, force=alpha * EI / L**2, opt={"loadsteps": 1})
 h5, out = st.run("ancf_hard_stiff", A.text(scene))
 m = re.search(r"^\s+1\s+1\s+(\d+)\s+(\d+)", out, re.M)

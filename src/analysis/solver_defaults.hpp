@@ -22,7 +22,9 @@ inline PetscErrorCode useDirectSolver(KSP ksp) {
 /// cable elements, no multipliers, symmetric positive tangents in statics) is factored with PETSc's
 /// own LU in nested-dissection order: the chain's elimination tree has thousands of tiny fronts,
 /// where MUMPS spends its time in per-front overhead (A1 with 16384 elements, 65538 unknowns:
-/// factorization 8 ms and solve 1 ms against 50 ms and 10 ms with MUMPS). Everything else: MUMPS.
+/// factorization 8 ms and solve 1 ms against 50 ms and 10 ms with MUMPS). PETSc's LU does not
+/// pivot: zero pivots are shifted (the static solver wraps it in GMRES on the exact operator, and
+/// the constraint check factors a diagonally shifted tangent). Everything else: MUMPS.
 inline PetscErrorCode useDirectSolver(KSP ksp, const DistributedMesh& mesh) {
   PetscFunctionBeginUser;
   PetscCall(useDirectSolver(ksp));
@@ -36,6 +38,8 @@ inline PetscErrorCode useDirectSolver(KSP ksp, const DistributedMesh& mesh) {
   PetscCall(KSPGetPC(ksp, &pc));
   PetscCall(PCFactorSetMatSolverType(pc, MATSOLVERPETSC));
   PetscCall(PCFactorSetMatOrderingType(pc, MATORDERINGND));
+  // no pivoting: a zero pivot (a wild Newton iterate) is shifted instead of failing the solve
+  PetscCall(PCFactorSetShiftType(pc, MAT_SHIFT_NONZERO));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -65,7 +65,7 @@ class StaticAnalysis {
   double jacobianNorm_ = 0;  ///< ||J||_inf at the start of the increment (round-off floor of the residual)
   double fnormStart_ = 0;              ///< residual of the increment at its start state (before the predictor)
   double fnorm0_ = 0, fnormPrev_ = 0;  ///< residual at iteration 0 and at the previous iteration
-  double snormPrev_ = 0;               ///< Newton update of the previous iteration
+  double relUpdatePrev_ = 0;           ///< relative Newton update of the previous iteration
   bool onUpdate_ = false;              ///< the last SNES solve converged by rule (4)
   double relUpdate_ = 0;               ///< ||dU|| / ||U|| of the last Newton update
   double fintConverged_ = 0;          ///< ||f_int|| at the last converged state

@@ -3,8 +3,6 @@
 import json
 import re
 
-import numpy as np
-
 
 def text(scene):
     """JSON text (valid YAML) with integer nprops keys."""
@@ -41,6 +39,7 @@ def tip_displacement(f):
 def elastica(alpha, n=1000):
     """Tip (x, y) / L of the inextensible cantilever under a fixed transverse tip load, alpha = P L^2 / EI
     (theta'' = -alpha cos theta, shooting with RK4 and bisection on theta'(0))."""
+    import numpy as np
     def end(k0):
         u = np.array([0.0, k0, 0.0, 0.0])  # theta, theta', x, y over s in [0, 1]
         h = 1.0 / n

@@ -83,8 +83,20 @@ PetscErrorCode StaticAnalysis::setUpElementwiseOperator() {
   PetscCall(SNESGetKSP(snes_, &ksp));
   PetscCall(KSPSetType(ksp, KSPGMRES));
   PetscCall(KSPSetPCSide(ksp, PC_RIGHT));
-  PetscCall(KSPGMRESSetRestart(ksp, 100));
+  PetscCall(KSPGMRESSetRestart(ksp, 30));
   PetscCall(KSPSetTolerances(ksp, 1e-10, 1e-300, PETSC_DEFAULT, 200));
+  // fine cables: a coarse space of cubic Hermite functions along the split scene elements takes
+  // the soft modes the LU gets wrong (cable_coarse_space.hpp); -ancf_coarse_ratio r sets the fine
+  // elements per coarse element (0: none; default ~sqrt(ANCF elements) once a scene element is
+  // split into at least 1024 elements)
+  PetscInt ratio = CableCoarseSpace::defaultRatio(asm_.mesh(), 1024);
+  PetscCall(PetscOptionsGetInt(nullptr, nullptr, "-ancf_coarse_ratio", &ratio, nullptr));
+  if (ratio > 0) {
+    coarse_ = std::make_unique<CableCoarseSpace>(asm_, static_cast<int>(ratio));
+    PC pc;
+    PetscCall(KSPGetPC(ksp, &pc));
+    PetscCall(coarse_->install(pc));
+  }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -5,9 +5,11 @@
 #include <petscsnes.h>
 
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
+#include "analysis/cable_coarse_space.hpp"
 #include "assembly/assembler.hpp"
 
 namespace sinew {
@@ -42,6 +44,8 @@ class StaticAnalysis {
   /// (8 eps ||J||_inf max|X|) is equilibrium without a Newton step (a free-free body has a singular J).
   void setUnloaded(bool u) { unloaded_ = u; }
   SNES snes() const { return snes_; }
+  /// The cable coarse space in use (nullptr when none).
+  const CableCoarseSpace* coarseSpace() const { return coarse_.get(); }
 
  private:
   static PetscErrorCode formFunction(SNES, Vec U, Vec F, void* ctx);
@@ -53,11 +57,13 @@ class StaticAnalysis {
   Assembler& asm_;
   int loadsteps_;
   static PetscErrorCode tangentMult(Mat A, Vec x, Vec y);
+
   PetscErrorCode setUpElementwiseOperator();
 
   SNES snes_ = nullptr;
   Mat J_ = nullptr;
   Mat Jop_ = nullptr;
+  std::unique_ptr<CableCoarseSpace> coarse_;  ///< two-level preconditioner of fine ANCF cables
   PetscInt luReuseIts_ = 4;  ///< -lu_reuse_its: keep the LU factors while GMRES needs at most this many iterations  ///< element-wise tangent operator (MATSHELL) when -tangent_operator elementwise
   Vec F_ = nullptr;
   LoadState ls_;

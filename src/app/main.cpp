@@ -18,7 +18,9 @@ std::string helpText() {
   h += "Sinew flags: -o <file.h5> result file; -force_rtol <1e-11> equilibrium tolerance relative to the\n"
        "  element forces; -max_cuts <10> halvings of a failing load increment; -predictor <true> secant\n"
        "  predictor from the last converged increment; -constraint_check <true> mechanism / redundant constraint\n"
-       "  check before solving, for models up to -constraint_check_max_unknowns <200000>.\n";
+       "  check before solving, for models up to -constraint_check_max_unknowns <200000>; -tangent_operator\n"
+       "  <auto|elementwise|assembled> Newton systems of statics solved by GMRES on the element-wise tangent\n"
+       "  (auto: for models with ANCF cables) or by the LU of the assembled tangent alone.\n";
   return h;
 }
 

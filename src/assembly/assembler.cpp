@@ -28,6 +28,7 @@ const SinewEvents& SinewEvents::get() {
     PetscLogEventRegister("SinewJacElements", cls, &e.jacobianElements);
     PetscLogEventRegister("SinewTangentOp", cls, &e.tangentOperator);
     PetscLogEventRegister("SinewCOOSetup", cls, &e.cooSetup);
+    PetscLogEventRegister("SinewCoarseSpace", cls, &e.coarseSpace);
     return e;
   }();
   return ev;

@@ -121,6 +121,9 @@ class Assembler {
   /// applyTangent() reproduces jacobian(): no rank has pressure loads or cables (their load and
   /// regularization tangents are not element blocks). Collective.
   bool elementwiseTangentAvailable() const;
+  /// The kept block of the element whose block starts at `offset` (sum of n^2 over the elements
+  /// before it, in mesh().elements order).
+  const double* tangentBlock(size_t offset) const { return blocks_.data() + offset; }
 
   const AssemblyCounters& counters() const { return counters_; }
   bool hasInertia() const { return hasInertia_; }
@@ -198,6 +201,7 @@ struct SinewEvents {
   PetscLogEvent jacobianElements;  ///< the element loop of SinewJacobian (kernels + MatSetValuesLocal)
   PetscLogEvent tangentOperator;   ///< Assembler::applyTangent (element-wise products with the tangent)
   PetscLogEvent cooSetup;          ///< one-time COO pattern of a matrix (inside SinewJacobian)
+  PetscLogEvent coarseSpace;       ///< set-up of the cable coarse space (fine LU + coarse matrix)
   static const SinewEvents& get();
 };
 

@@ -13,7 +13,7 @@
 //   position:  H1(xi) r_a + Lc H2(xi) s_a + H3(xi) r_b + Lc H4(xi) s_b
 //   slope:     (H1'(xi) r_a + Lc H2'(xi) s_a + H3'(xi) r_b + Lc H4'(xi) s_b) / Lc
 #pragma once
-#include <petscksp.h>
+#include <petscsnes.h>
 
 #include <array>
 #include <vector>
@@ -36,6 +36,14 @@ class CableCoarseSpace {
   PetscErrorCode install(PC pc);
   int coarseNodes() const { return static_cast<int>(nodeCount_); }
   int coarseUnknowns() const { return 4 * static_cast<int>(nodeCount_); }
+  /// Coarse predictor (grid sequencing without a second mesh): solves the nonlinear problem in the
+  /// coarse space, P^T F(U + P u) = 0, by Newton with Jacobian Ac (a SNES on the replicated coarse
+  /// unknowns, options prefix "coarse_snes_"; every rank runs it in lock-step, its function is
+  /// collective), and adds P u to U. The coarse space holds a cable of about sqrt(n) Hermite
+  /// elements, whose Newton path from a straight cable is as tame as a 1000-element cable's; the
+  /// fine Newton then starts within the discretization error of that cable. On failure U is unchanged.
+  PetscErrorCode predict(Vec U, const LoadState& ls, int* its, bool* ok);
+  long predictorIterations() const { return predictorIts_; }
   /// Coarse set-ups (factorizations of Ac) and applications so far.
   long setups() const { return setups_; }
   long applications() const { return applications_; }
@@ -50,6 +58,16 @@ class CableCoarseSpace {
   PetscErrorCode prolongAdd(Vec coarse, Vec fine);   // fine += P coarse (owned rows)
   PetscErrorCode coarseCorrection(Vec r, Vec y);     // y += P Ac^-1 P^T r
   PetscErrorCode assembleCoarse();
+  static PetscErrorCode coarseFunction(SNES, Vec u, Vec r, void* ctx);
+  static PetscErrorCode coarseJacobian(SNES, Vec u, Mat J, Mat P, void* ctx);
+  SNES snes_ = nullptr;
+  Vec U0_ = nullptr, Uw_ = nullptr, Fw_ = nullptr, uc_ = nullptr, fc_ = nullptr;
+  LoadState ls_;
+  long predictorIts_ = 0;
+  double f0_ = 0, fPrev_ = 0;
+  static PetscErrorCode coarseConverged(SNES, PetscInt it, PetscReal xnorm, PetscReal snorm, PetscReal fnorm,
+                                        SNESConvergedReason* reason, void* ctx);
+  std::array<PetscReal, 64> history_{};
 
   struct Row {  // one fine unknown: local index and its weights on 4 coarse unknowns
     int fine = -1;

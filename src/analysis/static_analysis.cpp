@@ -91,6 +91,9 @@ PetscErrorCode StaticAnalysis::setUpElementwiseOperator() {
   // split into at least 1024 elements)
   PetscInt ratio = CableCoarseSpace::defaultRatio(asm_.mesh(), 1024);
   PetscCall(PetscOptionsGetInt(nullptr, nullptr, "-ancf_coarse_ratio", &ratio, nullptr));
+  PetscBool cpred = PETSC_TRUE;
+  PetscCall(PetscOptionsGetBool(nullptr, nullptr, "-ancf_coarse_predictor", &cpred, nullptr));
+  coarsePredictor_ = cpred;
   if (ratio > 0) {
     coarse_ = std::make_unique<CableCoarseSpace>(asm_, static_cast<int>(ratio));
     PC pc;
@@ -260,6 +263,11 @@ PetscErrorCode StaticAnalysis::run(Vec U, const StepCallback& onStep, bool* conv
       // predictor: extrapolate the last increment (rotation increments included)
       const bool predicted = dlPrev > 0 && predictor_ && predictNext;
       if (predicted) PetscCall(VecAXPY(U, (next - lambda) / dlPrev, dU));
+      if (coarse_ && coarsePredictor_) {  // nonlinear solve in the cable coarse space first
+        int cits = 0;
+        bool cok = false;
+        PetscCall(coarse_->predict(U, ls_, &cits, &cok));
+      }
       bool ok = false;
       int its = 0;
       double fnorm = 0;

@@ -64,6 +64,7 @@ class StaticAnalysis {
   Mat J_ = nullptr;
   Mat Jop_ = nullptr;
   std::unique_ptr<CableCoarseSpace> coarse_;  ///< two-level preconditioner of fine ANCF cables
+  bool coarsePredictor_ = true;  ///< -ancf_coarse_predictor: nonlinear coarse solve before each increment
   PetscInt luReuseIts_ = 4;  ///< -lu_reuse_its: keep the LU factors while GMRES needs at most this many iterations  ///< element-wise tangent operator (MATSHELL) when -tangent_operator elementwise
   Vec F_ = nullptr;
   LoadState ls_;

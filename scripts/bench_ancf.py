@@ -50,7 +50,7 @@ def run(binary, n, np_, extra=()):
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("--converge", type=int, nargs="*", default=[32, 1024, 16384, 65536, 262144])
+    ap.add_argument("--converge", type=int, nargs="*", default=[32, 1024, 16384, 65536, 262144, 1048576])
     ap.add_argument("--iteration", type=int, nargs="*", default=[16384, 262144, 1048576])
     ap.add_argument("--bin", default=os.path.join(ROOT, "build", "sinew"))
     args = ap.parse_args()
@@ -85,7 +85,7 @@ def main():
     sec += ["", "One plain Newton iteration (`-tangent_operator assembled -snes_max_it 1 -max_cuts 0`: residual, "
             "tangent, LU factorization and solve, residual; the run then stops unconverged on purpose, so only its "
             "cost is reported: the machinery's growth with n):", "",
-            "| elements | unknowns | ranks | GMRES its | one iteration [s] | wall [s] | peak RSS [MB] |",
+            "| elements | unknowns | ranks | KSP its | one iteration [s] | wall [s] | peak RSS [MB] |",
             "|---|---|---|---|---|---|---|"]
     for r in iters:
         sec.append(f"| {r['n']} | {4 * r['n'] + 1} | {r['np']} | {r['gmres']} | {r['statics']:.3f} | {r['wall']:.2f} | "

@@ -64,10 +64,9 @@ class CableCoarseSpace {
   Vec U0_ = nullptr, Uw_ = nullptr, Fw_ = nullptr, uc_ = nullptr, fc_ = nullptr;
   LoadState ls_;
   long predictorIts_ = 0;
-  double f0_ = 0, fPrev_ = 0;
+  double relPrev_ = 1.0;
   static PetscErrorCode coarseConverged(SNES, PetscInt it, PetscReal xnorm, PetscReal snorm, PetscReal fnorm,
                                         SNESConvergedReason* reason, void* ctx);
-  std::array<PetscReal, 64> history_{};
 
   struct Row {  // one fine unknown: local index and its weights on 4 coarse unknowns
     int fine = -1;

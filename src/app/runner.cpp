@@ -250,6 +250,11 @@ PetscErrorCode runFromCommandLine(int argc, char** argv, int* exitCode) {
       bool ok = false;
       PetscCall(statics.run(ctx.U, onStep, &ok));
       ctx.reports = statics.reports();
+      if (const CableCoarseSpace* cs = statics.coarseSpace())
+        ctx.summaryLines += "  cable coarse space: " + std::to_string(cs->coarseNodes()) + " coarse nodes, " +
+                            std::to_string(cs->setups()) + " set-ups, " + std::to_string(cs->applications()) +
+                            " applications; coarse predictor " + std::to_string(cs->predictorIterations()) +
+                            " Newton iterations\n";
       if (!ok && ctx.converged) {
         ctx.converged = false;
         ctx.failure = statics.failureMessage();

@@ -2,8 +2,8 @@
 //
 // The LU factors of a fine cable's assembled tangent (condition ~ n^4) are exact except in its
 // softest, smooth modes, where their error eps |L||U| is amplified up to cond * eps. A coarse
-// space of cubic Hermite functions along each split scene element (one coarse element per r fine
-// ones) represents exactly those modes. One application, for a residual x:
+// space of cubic Hermite functions along each split scene element (one coarse element per r ~
+// 2 sqrt(n) fine ones) represents exactly those modes. One application, for a residual x:
 //   y1 = P Ac^-1 P^T x,  y2 = y1 + LU^-1 (x - J y1),  y = y2 + P Ac^-1 P^T (x - J y2),
 // with J the element-wise operator (Assembler::applyTangent) and Ac = sum_e P_e^T J_e P_e assembled
 // from the kept element blocks, each applied to its coarse functions minus their translation (the
@@ -39,7 +39,7 @@ class CableCoarseSpace {
   /// Coarse predictor (grid sequencing without a second mesh): solves the nonlinear problem in the
   /// coarse space, P^T F(U + P u) = 0, by Newton with Jacobian Ac (a SNES on the replicated coarse
   /// unknowns, options prefix "coarse_snes_"; every rank runs it in lock-step, its function is
-  /// collective), and adds P u to U. The coarse space holds a cable of about sqrt(n) Hermite
+  /// collective), and adds P u to U. The coarse space holds a cable of about sqrt(n)/2 Hermite
   /// elements, whose Newton path from a straight cable is as tame as a 1000-element cable's; the
   /// fine Newton then starts within the discretization error of that cable. On failure U is unchanged.
   PetscErrorCode predict(Vec U, const LoadState& ls, int* its, bool* ok);
@@ -47,7 +47,7 @@ class CableCoarseSpace {
   /// Coarse set-ups (factorizations of Ac) and applications so far.
   long setups() const { return setups_; }
   long applications() const { return applications_; }
-  /// Default ratio: fine elements per coarse element ~ sqrt(total ANCF elements) (at least 8);
+  /// Default ratio: fine elements per coarse element ~ 2 sqrt(total ANCF elements) (at least 8);
   /// 0 when no scene element is split into at least `minSplit` ANCF elements (no coarse space).
   static int defaultRatio(const DistributedMesh& mesh, int minSplit);
 

@@ -90,7 +90,7 @@ PetscErrorCode StaticAnalysis::setUpElementwiseOperator() {
   PetscCall(KSPSetTolerances(ksp, 1e-6, 1e-300, PETSC_DEFAULT, 200));
   // fine cables: a coarse space of cubic Hermite functions along the split scene elements takes
   // the soft modes the LU gets wrong (cable_coarse_space.hpp); -ancf_coarse_ratio r sets the fine
-  // elements per coarse element (0: none; default ~sqrt(ANCF elements) once a scene element is
+  // elements per coarse element (0: none; default ~2 sqrt(ANCF elements) once a scene element is
   // split into at least 1024 elements)
   PetscInt ratio = CableCoarseSpace::defaultRatio(asm_.mesh(), 1024);
   PetscCall(PetscOptionsGetInt(nullptr, nullptr, "-ancf_coarse_ratio", &ratio, nullptr));
@@ -201,7 +201,7 @@ PetscErrorCode StaticAnalysis::convergenceTest(SNES snes, PetscInt it, PetscReal
   const double floor2 = floor * std::sqrt(static_cast<double>(self->asm_.mesh().numGlobalUnknowns));
   if (*reason == SNES_CONVERGED_ITERATING && it > 1 && fnorm <= floor2 && (self->Jop_ || self->fnorm0_ <= floor2)) {
     const double rel = self->relUpdate_;
-    if (rel <= 1e-8 || (rel <= 1e-6 && rel > 0.1 * self->relUpdatePrev_)) {
+    if (updateConverged(rel, self->relUpdatePrev_, 1e-8, 1e-6)) {
       *reason = SNES_CONVERGED_SNORM_RELATIVE;
       self->onUpdate_ = true;
     }

@@ -21,7 +21,7 @@ std::string helpText() {
        "  check before solving, for models up to -constraint_check_max_unknowns <200000>; -tangent_operator\n"
        "  <auto|elementwise|assembled> Newton systems of statics solved by GMRES on the element-wise tangent\n"
        "  (auto: for models with ANCF cables) or by the LU of the assembled tangent alone; -ancf_coarse_ratio <r>\n"
-       "  fine ANCF elements per coarse element of the two-level preconditioner (0: none; default ~sqrt(n) from\n"
+       "  fine ANCF elements per coarse element of the two-level preconditioner (0: none; default ~2 sqrt(n) from\n"
        "  1024 elements per scene element); -ancf_coarse_predictor <true> nonlinear coarse solve per increment.\n";
   return h;
 }

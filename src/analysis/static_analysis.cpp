@@ -84,10 +84,13 @@ PetscErrorCode StaticAnalysis::setUpElementwiseOperator() {
   PetscCall(KSPSetType(ksp, KSPGMRES));
   PetscCall(KSPSetPCSide(ksp, PC_RIGHT));
   PetscCall(KSPGMRESSetRestart(ksp, 30));
-  // rtol 1e-6: the residual of a fine cable is mostly round-off noise, and the element-wise products
-  // are accurate to eps |J_e| |dU_e - t|; at 1,048,576 A1 elements GMRES broke down at rtol 1e-8
-  // (Newton converges on its update whatever the inexactness of each increment)
-  PetscCall(KSPSetTolerances(ksp, 1e-6, 1e-300, PETSC_DEFAULT, 200));
+  // rtol 1e-10 (one level) or 1e-6 (with the coarse space below): the residual of a fine cable is
+  // mostly round-off noise, and the element-wise products are accurate to eps |J_e| |dU_e - t|; at
+  // 1,048,576 A1 elements GMRES broke down at rtol 1e-8 (Newton converges on its update whatever
+  // the inexactness of each increment). Without the coarse space the LU's soft modes need the
+  // tighter solve: at 16384 elements rtol 1e-6 cost cut increments (44 Newton iterations) where
+  // 1e-10 converged in one load step (9 iterations).
+  PetscCall(KSPSetTolerances(ksp, 1e-10, 1e-300, PETSC_DEFAULT, 200));
   // fine cables: a coarse space of cubic Hermite functions along the split scene elements takes
   // the soft modes the LU gets wrong (cable_coarse_space.hpp); -ancf_coarse_ratio r sets the fine
   // elements per coarse element (0: none; default ~2 sqrt(ANCF elements) once a scene element is
@@ -99,6 +102,7 @@ PetscErrorCode StaticAnalysis::setUpElementwiseOperator() {
   coarsePredictor_ = cpred;
   if (ratio > 0) {
     coarse_ = std::make_unique<CableCoarseSpace>(asm_, static_cast<int>(ratio));
+    PetscCall(KSPSetTolerances(ksp, 1e-6, 1e-300, PETSC_DEFAULT, 200));
     PC pc;
     PetscCall(KSPGetPC(ksp, &pc));
     PetscCall(coarse_->install(pc));

@@ -79,23 +79,24 @@ CableCoarseSpace::CableCoarseSpace(Assembler& assembler, int ratio) : asm_(assem
     double lc;
   };
   std::map<int, Layout> layout;
+  std::vector<std::array<int, 2>> elems;  // coarse elements (coarse node pairs)
   for (const auto& [s, info] : scene) {
     const int ns = static_cast<int>(info.numSub);
     const int mc = std::max(1, static_cast<int>(std::lround(static_cast<double>(ns) / ratio)));
     layout[s] = {ns, mc, next, info.lfe * ns / mc};
     const int a0 = endNode[static_cast<int>(info.en0)], b0 = endNode[static_cast<int>(info.en1)];
-    for (int c = 0; c < mc; ++c) elems_.push_back({c == 0 ? a0 : next + c - 1, c + 1 == mc ? b0 : next + c});
+    for (int c = 0; c < mc; ++c) elems.push_back({c == 0 ? a0 : next + c - 1, c + 1 == mc ? b0 : next + c});
     next += mc - 1;
   }
   nodeCount_ = static_cast<size_t>(next);
   // 3. coarse graph (coarse element neighbours) and the CSR pattern of Ac
-  adjacency_.assign(nodeCount_, {});
-  for (size_t k = 0; k < nodeCount_; ++k) adjacency_[k].push_back(static_cast<int>(k));
-  for (const auto& e : elems_) {
-    adjacency_[e[0]].push_back(e[1]);
-    adjacency_[e[1]].push_back(e[0]);
+  std::vector<std::vector<int>> adjacency(nodeCount_);  // coarse node -> neighbours (incl. itself)
+  for (size_t k = 0; k < nodeCount_; ++k) adjacency[k].push_back(static_cast<int>(k));
+  for (const auto& e : elems) {
+    adjacency[e[0]].push_back(e[1]);
+    adjacency[e[1]].push_back(e[0]);
   }
-  for (auto& a : adjacency_) {
+  for (auto& a : adjacency) {
     std::sort(a.begin(), a.end());
     a.erase(std::unique(a.begin(), a.end()), a.end());
   }
@@ -103,7 +104,7 @@ CableCoarseSpace::CableCoarseSpace(Assembler& assembler, int ratio) : asm_(assem
   // rows of a coarse node also reach the neighbours of its neighbours
   std::vector<std::vector<int>> reach(nodeCount_);
   for (size_t k = 0; k < nodeCount_; ++k) {
-    for (int j : adjacency_[k]) reach[k].insert(reach[k].end(), adjacency_[j].begin(), adjacency_[j].end());
+    for (int j : adjacency[k]) reach[k].insert(reach[k].end(), adjacency[j].begin(), adjacency[j].end());
     std::sort(reach[k].begin(), reach[k].end());
     reach[k].erase(std::unique(reach[k].begin(), reach[k].end()), reach[k].end());
   }
@@ -209,9 +210,7 @@ PetscErrorCode CableCoarseSpace::restrictTo(Vec fine, Vec coarse) {
     for (int j = 0; j < 4; ++j) c[r.coarse[j]] += r.w[j] * f[r.fine];
   PetscInt nc;
   PetscCall(VecGetLocalSize(coarse, &nc));
-  MPI_Allreduce(MPI_IN_PLACE, c, static_cast<int>(nc), MPI_DOUBLE, MPI_SUM, asm_.mesh().comm);
-  for (PetscInt i = 0; i < nc; ++i)
-    if (fixed_[i]) c[i] = 0.0;
+  MPI_Allreduce(MPI_IN_PLACE, c, static_cast<int>(nc), MPI_DOUBLE, MPI_SUM, asm_.mesh().comm);  // fixed: w = 0
   PetscCall(VecRestoreArray(coarse, &c));
   PetscCall(VecRestoreArrayRead(fine, &f));
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -407,7 +406,7 @@ PetscErrorCode CableCoarseSpace::coarseConverged(SNES snes, PetscInt it, PetscRe
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode CableCoarseSpace::predict(Vec U, const LoadState& ls, int* its, bool* ok) {
+PetscErrorCode CableCoarseSpace::predict(Vec U, const LoadState& ls) {
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(SinewEvents::get().coarseSpace, 0, 0, 0, 0));
   ls_ = ls;
@@ -447,12 +446,10 @@ PetscErrorCode CableCoarseSpace::predict(Vec U, const LoadState& ls, int* its, b
   PetscInt n;
   PetscCall(SNESGetConvergedReason(snes_, &why));
   PetscCall(SNESGetIterationNumber(snes_, &n));
-  *its = static_cast<int>(n);
   predictorIts_ += n;
   PetscReal un;
   PetscCall(VecNorm(uc_, NORM_INFINITY, &un));
-  *ok = std::isfinite(un) && why > 0;
-  if (*ok) PetscCall(prolongAdd(uc_, U));
+  if (why > 0 && std::isfinite(un)) PetscCall(prolongAdd(uc_, U));  // on failure U stays as it was
   PetscCall(PetscLogEventEnd(SinewEvents::get().coarseSpace, 0, 0, 0, 0));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -35,14 +35,14 @@ class CableCoarseSpace {
   /// PETSc LU for ANCF-only models on one process; -fine_pc_factor_* changes it).
   PetscErrorCode install(PC pc);
   int coarseNodes() const { return static_cast<int>(nodeCount_); }
-  int coarseUnknowns() const { return 4 * static_cast<int>(nodeCount_); }
   /// Coarse predictor (grid sequencing without a second mesh): solves the nonlinear problem in the
   /// coarse space, P^T F(U + P u) = 0, by Newton with Jacobian Ac (a SNES on the replicated coarse
   /// unknowns, options prefix "coarse_snes_"; every rank runs it in lock-step, its function is
   /// collective), and adds P u to U. The coarse space holds a cable of about sqrt(n)/2 Hermite
   /// elements, whose Newton path from a straight cable is as tame as a 1000-element cable's; the
   /// fine Newton then starts within the discretization error of that cable. On failure U is unchanged.
-  PetscErrorCode predict(Vec U, const LoadState& ls, int* its, bool* ok);
+  PetscErrorCode predict(Vec U, const LoadState& ls);
+  /// Coarse Newton iterations of all predictions so far.
   long predictorIterations() const { return predictorIts_; }
   /// Coarse set-ups (factorizations of Ac) and applications so far.
   long setups() const { return setups_; }
@@ -75,8 +75,6 @@ class CableCoarseSpace {
   };
   Assembler& asm_;
   size_t nodeCount_ = 0;
-  std::vector<std::array<int, 2>> elems_;       // coarse elements (coarse node pairs)
-  std::vector<std::vector<int>> adjacency_;     // coarse node -> neighbour coarse nodes (incl. itself)
   std::vector<char> fixed_;                     // per coarse unknown: constrained (not in the space)
   std::vector<Row> rows_;
   struct NodeMap {  // where a local fine node lies: coarse element (a, b), xi in [0, 1], length
@@ -90,7 +88,7 @@ class CableCoarseSpace {
   std::vector<double> acValues_;
   Mat Ac_ = nullptr;
   KSP coarseKsp_ = nullptr, fineKsp_ = nullptr;
-  Vec rc_ = nullptr, yc_ = nullptr, t1_ = nullptr, t2_ = nullptr, t3_ = nullptr;
+  Vec rc_ = nullptr, yc_ = nullptr, t1_ = nullptr, t2_ = nullptr;
   long setups_ = 0, applications_ = 0;
 };
 

@@ -84,13 +84,6 @@ PetscErrorCode StaticAnalysis::setUpElementwiseOperator() {
   PetscCall(KSPSetType(ksp, KSPGMRES));
   PetscCall(KSPSetPCSide(ksp, PC_RIGHT));
   PetscCall(KSPGMRESSetRestart(ksp, 30));
-  // rtol 1e-10 (one level) or 1e-6 (with the coarse space below): the residual of a fine cable is
-  // mostly round-off noise, and the element-wise products are accurate to eps |J_e| |dU_e - t|; at
-  // 1,048,576 A1 elements GMRES broke down at rtol 1e-8 (Newton converges on its update whatever
-  // the inexactness of each increment). Without the coarse space the LU's soft modes need the
-  // tighter solve: at 16384 elements rtol 1e-6 cost cut increments (44 Newton iterations) where
-  // 1e-10 converged in one load step (9 iterations).
-  PetscCall(KSPSetTolerances(ksp, 1e-10, 1e-300, PETSC_DEFAULT, 200));
   // fine cables: a coarse space of cubic Hermite functions along the split scene elements takes
   // the soft modes the LU gets wrong (cable_coarse_space.hpp); -ancf_coarse_ratio r sets the fine
   // elements per coarse element (0: none; default ~2 sqrt(ANCF elements) once a scene element is
@@ -100,9 +93,15 @@ PetscErrorCode StaticAnalysis::setUpElementwiseOperator() {
   PetscBool cpred = PETSC_TRUE;
   PetscCall(PetscOptionsGetBool(nullptr, nullptr, "-ancf_coarse_predictor", &cpred, nullptr));
   coarsePredictor_ = cpred;
+  // rtol 1e-10 (one level) or 1e-6 (with the coarse space): the residual of a fine cable is mostly
+  // round-off noise, and the element-wise products are accurate to eps |J_e| |dU_e - t|; at
+  // 1,048,576 A1 elements GMRES broke down at rtol 1e-8 (Newton converges on its update whatever
+  // the inexactness of each increment). Without the coarse space the LU's soft modes need the
+  // tighter solve: at 16384 elements rtol 1e-6 cost cut increments (44 Newton iterations) where
+  // 1e-10 converged in one load step (9 iterations).
+  PetscCall(KSPSetTolerances(ksp, ratio > 0 ? 1e-6 : 1e-10, 1e-300, PETSC_DEFAULT, 200));
   if (ratio > 0) {
     coarse_ = std::make_unique<CableCoarseSpace>(asm_, static_cast<int>(ratio));
-    PetscCall(KSPSetTolerances(ksp, 1e-6, 1e-300, PETSC_DEFAULT, 200));
     PC pc;
     PetscCall(KSPGetPC(ksp, &pc));
     PetscCall(coarse_->install(pc));
@@ -133,9 +132,9 @@ PetscErrorCode StaticAnalysis::formFunction(SNES, Vec U, Vec F, void* ctx) {
 PetscErrorCode StaticAnalysis::formJacobian(SNES snes, Vec U, Mat, Mat P, void* ctx) {
   PetscFunctionBeginUser;
   auto* self = static_cast<StaticAnalysis*>(ctx);
+  PetscCall(self->asm_.jacobian(U, self->ls_, P));
   PetscInt it = 0;
   PetscCall(SNESGetIterationNumber(snes, &it));
-  PetscCall(self->asm_.jacobian(U, self->ls_, P));
   if (it == 0) PetscCall(MatNorm(P, NORM_INFINITY, &self->jacobianNorm_));  // at the start state
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -270,11 +269,7 @@ PetscErrorCode StaticAnalysis::run(Vec U, const StepCallback& onStep, bool* conv
       // predictor: extrapolate the last increment (rotation increments included)
       const bool predicted = dlPrev > 0 && predictor_ && predictNext;
       if (predicted) PetscCall(VecAXPY(U, (next - lambda) / dlPrev, dU));
-      if (coarse_ && coarsePredictor_) {  // nonlinear solve in the cable coarse space first
-        int cits = 0;
-        bool cok = false;
-        PetscCall(coarse_->predict(U, ls_, &cits, &cok));
-      }
+      if (coarse_ && coarsePredictor_) PetscCall(coarse_->predict(U, ls_));  // nonlinear coarse solve first
       bool ok = false;
       int its = 0;
       double fnorm = 0;

@@ -54,18 +54,16 @@ class StaticAnalysis {
                                         SNESConvergedReason* reason, void* ctx);
   PetscErrorCode solveIncrement(Vec U, double lambda, bool* ok, int* its, double* fnorm, SNESConvergedReason* why);
 
-  Assembler& asm_;
-  int loadsteps_;
   static PetscErrorCode tangentMult(Mat A, Vec x, Vec y);
-
   PetscErrorCode setUpElementwiseOperator();
 
+  Assembler& asm_;
+  int loadsteps_;
   SNES snes_ = nullptr;
   Mat J_ = nullptr;
-  Mat Jop_ = nullptr;
+  Mat Jop_ = nullptr;  ///< element-wise tangent operator (MATSHELL) when -tangent_operator elementwise
   std::unique_ptr<CableCoarseSpace> coarse_;  ///< two-level preconditioner of fine ANCF cables
   bool coarsePredictor_ = true;  ///< -ancf_coarse_predictor: nonlinear coarse solve before each increment
-  PetscInt luReuseIts_ = 4;  ///< -lu_reuse_its: keep the LU factors while GMRES needs at most this many iterations  ///< element-wise tangent operator (MATSHELL) when -tangent_operator elementwise
   Vec F_ = nullptr;
   LoadState ls_;
   double forceRtol_ = 1e-11;

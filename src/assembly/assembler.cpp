@@ -35,7 +35,6 @@ const SinewEvents& SinewEvents::get() {
 }
 
 namespace {
-constexpr int kMaxElementRows = 4 * 6 + 6;
 
 std::vector<std::optional<Vec3>>& accelerationTable() {
   static std::vector<std::optional<Vec3>> table;

@@ -15,6 +15,9 @@
 
 namespace sinew {
 
+/// Largest element block: 4 nodes of 6 DOFs and 6 rigid-mode multipliers (index and work arrays).
+inline constexpr int kMaxElementRows = 4 * 6 + 6;
+
 /// Surface pressure of an eprops set (membranes): pressureInitial + loadFactor * pressure, a follower
 /// load along the current element normal n = g1 x g2 / |g1 x g2| (node order, right-hand rule).
 struct SetPressure {

@@ -9,7 +9,6 @@
 namespace sinew {
 
 namespace {
-constexpr int kMaxRows = 4 * 6 + 6;
 
 /// Ghost-updated local form of a ghosted vector (read access); pair with restoreLocalRead.
 PetscErrorCode getLocalRead(Vec X, Vec* xl, const PetscScalar** x) {
@@ -57,7 +56,7 @@ PetscErrorCode Assembler::dynamicResidual(Vec U, Vec V, Vec A, const LoadState& 
   PetscCall(ierr);
   // inertia M A: element masses and nodal point masses
   std::array<double, 48> q;
-  std::array<int, kMaxRows> idx;
+  std::array<int, kMaxElementRows> idx;
   std::vector<double> Me;
   for (const LocalElement& el : mesh_.elements) {
     if (!el.kernel->hasInertia()) continue;
@@ -105,8 +104,8 @@ PetscErrorCode Assembler::dynamicJacobian(Vec U, Vec V, const LoadState& ls, dou
   computeStates(u, ls);
   PetscCall(MatZeroEntries(J));
   std::array<double, 48> q;
-  std::array<int, kMaxRows> idx;
-  std::array<double, kMaxRows> qdot;
+  std::array<int, kMaxElementRows> idx;
+  std::array<double, kMaxElementRows> qdot;
   std::vector<double> Me;
   vLocal_ = v;
   for (const LocalElement& el : mesh_.elements) {
@@ -159,7 +158,7 @@ PetscErrorCode Assembler::kineticEnergy(Vec U, Vec V, const LoadState& ls, doubl
   const PetscScalar* v;
   PetscCall(getLocalRead(V, &vl, &v));
   std::array<double, 48> q;
-  std::array<int, kMaxRows> idx;
+  std::array<int, kMaxElementRows> idx;
   std::vector<double> Me;
   double t = 0.0;
   // elements: each element once (owned by one rank)

@@ -19,7 +19,6 @@
 namespace sinew {
 
 namespace {
-constexpr int kMaxElementRows = 4 * 6 + 6;
 
 std::vector<SetPressure>& pressureTable() {
   static std::vector<SetPressure> table;

@@ -5,10 +5,6 @@
 
 namespace sinew {
 
-namespace {
-constexpr int kMaxBlockRows = 4 * 6 + 6;
-}  // namespace
-
 bool Assembler::elementwiseTangentAvailable() const {
   int ok = pressureElems_.empty() && cableElems_.empty();
   MPI_Allreduce(MPI_IN_PLACE, &ok, 1, MPI_INT, MPI_LAND, mesh_.comm);
@@ -31,8 +27,8 @@ PetscErrorCode Assembler::applyTangent(Vec x, Vec y) {
   PetscCall(VecSet(yl, 0.0));
   PetscCall(VecGetArrayRead(xl, &xa));
   PetscCall(VecGetArray(yl, &ya));
-  std::array<int, kMaxBlockRows> idx;
-  std::array<double, kMaxBlockRows> d;
+  std::array<int, kMaxElementRows> idx;
+  std::array<double, kMaxElementRows> d;
   size_t offset = 0;
   for (const LocalElement& el : mesh_.elements) {
     const auto kinds = el.kernel->nodeKinds();

@@ -9,8 +9,12 @@ tangent operator (preconditioned by the LU) and converges on the Newton update (
       predictor): one load step, tip vs 16384 elements within 2e-9 m (measured 4e-10 m).
   (2) The same scene with the assembled operator alone (-tangent_operator assembled) does not converge
       (the case this machinery exists for); with the element-wise operator but without the cable
-      coarse space and predictor (-ancf_coarse_ratio 0) it still converges (10 Newton iterations
-      measured), to the same tip within 1e-9 m (measured 6.2e-11 m). The coarse space is built only for split scene
+      coarse space and predictor (-ancf_coarse_ratio 0) it still converges, to the same tip within
+      1e-9 m (measured 4.3e-11 m). Without the coarse predictor, full Newton from the straight cable
+      is chaotic: one load step and 10 Newton iterations on one machine, but on an AMD EPYC with
+      OpenBLAS' Haswell kernels the first increment diverges (residual 1e20, GMRES breakdown) and
+      the run converges after two halvings (30 Newton iterations, 3 increments). So the one-level
+      path is checked for convergence and the tip, not for the count of increments. The coarse space is built only for split scene
       elements of at least 1024 ANCF elements (its summary line is absent at 32 elements).
   (3) Hard case EA/EI = 1e8 (EI = 1, tip force 3 EI/L^2) with 16384 elements, 1 load step, 2 ranks:
       tip vs the inextensible elastica within 1e-7 L (measured 8.8e-9 m: the axial stretch P/EA)."""
@@ -20,9 +24,11 @@ import ancf_scenes as A
 import sinewtest as st
 
 
-def one_step(out, what):
+def one_step(out, what, cuts_allowed=False):
     m = re.search(r"^\s+1\s+1\s+(\d+)\s+(\d+)\s+\S+( \*)?", out, re.M)
-    st.check(m is not None and int(m.group(2)) == 1, f"{what}: one load step, no cut increments")
+    st.check(m is not None and (cuts_allowed or int(m.group(2)) == 1), f"{what}: one load step, no cut increments")
+    if m and cuts_allowed:
+        print(f"  {what}: {m.group(2)} increment(s)")
     if m:
         print(f"  {what}: {m.group(1)} Newton iterations, converged on the update: {bool(m.group(3))}")
     return m
@@ -49,7 +55,7 @@ _, out = st.run("ancf_fine_a1_assembled", A.text(A.cantilever(16384, **a1)), np_
 st.check("did not converge" in out, "assembled operator alone: Newton fails at n = 16384")
 
 h5, out = st.run("ancf_fine_a1_onelevel", A.text(A.cantilever(16384, **a1)), np_=2, args=["-ancf_coarse_ratio", "0"])
-one_step(out, "A1 n = 16384 without coarse space")
+one_step(out, "A1 n = 16384 without coarse space", cuts_allowed=True)
 st.check("cable coarse space:" not in out, "-ancf_coarse_ratio 0: no coarse space")
 with st.h5(h5) as f:
     st.close(A.tip_displacement(f), tips[(16384, 2)], atol=1e-9, what="A1 tip without coarse space vs with [m]")

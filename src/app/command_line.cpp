@@ -19,6 +19,16 @@ namespace sinew {
 
 const char* sinewVersion() { return SINEW_VERSION; }
 
+const char* usageText() {
+  return "Sinew: parallel finite elements for flexures, cables and membranes.\n"
+         "Usage: mpirun -n N sinew scene.yaml [-o result.h5] [-<opt field> value ...] [Sinew flags] [PETSc options]\n"
+         "  -help: this help; Sinew's flags are in the blocks titled 'Sinew: ...' below, each with its current and\n"
+         "         default value (<now ... : formerly ...>) and the values it accepts; every scene opt field is a flag\n"
+         "  -h: the same\n"
+         "  -version: Sinew's, PETSc's and SLEPc's versions\n"
+         "A flag that is neither Sinew's nor PETSc's/SLEPc's is an error (exit 2).\n";
+}
+
 namespace {
 
 std::string lower(std::string s) {
@@ -29,6 +39,7 @@ std::string lower(std::string s) {
 /// "" when the option is a Sinew flag with an accepted value or a PETSc/SLEPc option.
 std::string optionProblem(const std::string& given, const char* value) {
   const std::string name = lower(given);
+  if (name == "h") return "";  // -help's short form (helpRequested)
   if (const Flag* f = findFlag(name)) return checkFlagValue(*f, value);
   if (isPetscFlag(name)) return "";
   std::vector<std::string> names;
@@ -129,6 +140,19 @@ PetscErrorCode printGroup(MPI_Comm comm, const FlagGroup& g) {
 
 }  // namespace
 
+PetscErrorCode helpRequested(PetscBool* help) {
+  PetscFunctionBeginUser;
+  PetscBool h = PETSC_FALSE;
+  PetscCall(PetscOptionsHasHelp(nullptr, help));
+  PetscCall(PetscOptionsHasName(nullptr, nullptr, "-h", &h));
+  if (h && !*help) {  // as -help: the usage text, then Sinew's and PETSc's objects' options
+    PetscCall(PetscOptionsSetValue(nullptr, "-help", nullptr));
+    PetscCall(PetscPrintf(PETSC_COMM_WORLD, "%s", usageText()));
+  }
+  *help = static_cast<PetscBool>(*help || h);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode handleCommandLine(MPI_Comm comm, bool* stop, int* exitCode) {
   PetscFunctionBeginUser;
   *stop = false;
@@ -152,7 +176,7 @@ PetscErrorCode handleCommandLine(MPI_Comm comm, bool* stop, int* exitCode) {
     *exitCode = 2;
     PetscFunctionReturn(PETSC_SUCCESS);
   }
-  PetscCall(PetscOptionsHasName(nullptr, nullptr, "-help", &help));
+  PetscCall(helpRequested(&help));
   if (help)
     for (const FlagGroup* g : flagGroups()) PetscCall(printGroup(comm, *g));
   PetscFunctionReturn(PETSC_SUCCESS);

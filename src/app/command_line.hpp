@@ -12,6 +12,13 @@ namespace sinew {
 /// on every rank. -help: prints Sinew's flags with their defaults in PETSc's options blocks.
 PetscErrorCode handleCommandLine(MPI_Comm comm, bool* stop, int* exitCode);
 
+/// -help, or its short form -h (Sinew's: PETSc 3.18 knows only -help; -h prints the usage text
+/// and then acts as -help).
+PetscErrorCode helpRequested(PetscBool* help);
+
+/// The text -help prints first (SlepcInitialize's help message).
+const char* usageText();
+
 /// Sinew's version (CMake project version).
 const char* sinewVersion();
 

@@ -88,7 +88,7 @@ PetscErrorCode runFromCommandLine(int argc, char** argv, int* exitCode) {
   MPI_Comm comm = PETSC_COMM_WORLD;
   *exitCode = 0;
   PetscBool help = PETSC_FALSE;
-  PetscCall(PetscOptionsHasName(nullptr, nullptr, "-help", &help));
+  PetscCall(helpRequested(&help));
   if (argc < 2 || argv[1][0] == '-') {
     if (!help) {
       PetscCall(PetscPrintf(comm, "usage: sinew scene.yaml [-o result.h5] [options]; sinew -help lists the options\n"));

@@ -13,6 +13,7 @@
 #include "analysis/static_analysis.hpp"
 #include "analysis/step_analysis.hpp"
 #include "analysis/step_results.hpp"
+#include "app/command_line.hpp"
 #include "app/plan.hpp"
 #include "app/run_context.hpp"
 #include "app/summary.hpp"
@@ -27,8 +28,6 @@
 
 namespace sinew {
 namespace {
-
-constexpr const char* kVersion = "0.1.0";
 
 /// opt fields given as flags (-loadsteps 40) override the scene.
 OptionOverride petscOverrides() {
@@ -89,7 +88,7 @@ PetscErrorCode runFromCommandLine(int argc, char** argv, int* exitCode) {
   MPI_Comm comm = PETSC_COMM_WORLD;
   *exitCode = 0;
   PetscBool help = PETSC_FALSE;
-  PetscCall(PetscOptionsHasName(nullptr, nullptr, "-help", &help));
+  PetscCall(helpRequested(&help));
   if (argc < 2 || argv[1][0] == '-') {
     if (!help) {
       PetscCall(PetscPrintf(comm, "usage: sinew scene.yaml [-o result.h5] [options]; sinew -help lists the options\n"));
@@ -134,7 +133,7 @@ PetscErrorCode runFromCommandLine(int argc, char** argv, int* exitCode) {
   StepResults results(assembler, {plan.stress, plan.stressPerElement});
   ResultLayout layout;
   results.fillLayout(layout);
-  layout.version = kVersion;
+  layout.version = sinewVersion();
   layout.scene = model.sceneText;
   layout.ndof = dmesh->numGlobalUnknowns;
   layout.nranks = dmesh->size;

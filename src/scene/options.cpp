@@ -12,7 +12,7 @@ namespace sinew {
 
 const std::vector<OptionDoc>& sceneOptionDocs() {
   static const std::vector<OptionDoc> docs = {
-      {"loadsteps", "integer >= 1", "10", "number of load steps of the static analysis"},
+      {"loadsteps", "integer 1..100000", "10", "number of load steps of the static analysis (more is an error)"},
       {"calcbuck", "bool", "false", "compute buckling load multipliers at every load step"},
       {"calccompl", "bool", "true", "compute compliance matrices of the nodes"},
       {"calcfreq", "bool", "auto (true when the scene has mass)", "compute natural frequencies"},
@@ -43,6 +43,21 @@ std::vector<std::string> optionNames() {
 }
 
 namespace {
+
+/// Every load step writes a row of every result dataset; beyond this bound a typo (-loadsteps 1e9)
+/// would fill the disk before anything useful happens.
+constexpr int kMaxLoadsteps = 100000;
+
+int loadsteps(const YAML::Node& v, const std::string& path, std::size_t numNodes) {
+  const int n = getIntAtLeast(v, path, 1);
+  if (n > kMaxLoadsteps) {
+    const double bytes = 24.0 * static_cast<double>(numNodes) * n;  // /node/p alone: 3 doubles per node and step
+    fail(path, "expected at most " + std::to_string(kMaxLoadsteps) + " load steps, got " + std::to_string(n) +
+                   " (the node positions alone would take " + fmt(bytes / 1e9) + " GB of results for " +
+                   std::to_string(numNodes) + " nodes)");
+  }
+  return n;
+}
 
 const std::vector<std::string> kFormfindingKeys = {
     "formfinding_step", "max_iter_equilibrium", "equilibrium_accuracy", "formfinding_elements", "homotopy_curve",
@@ -105,7 +120,7 @@ void parseOptions(const YAML::Node& opt, SceneContext& ctx) {
     const std::string k = it->first.Scalar();
     const YAML::Node v = it->second;
     const std::string p = childPath("opt", k);
-    if (k == "loadsteps") o.loadsteps = getIntAtLeast(v, p, 1);
+    if (k == "loadsteps") o.loadsteps = loadsteps(v, p, m.nodes.size());
     else if (k == "calcbuck") o.calcbuck = getBool(v, p);
     else if (k == "calccompl") o.calccompl = getBool(v, p);
     else if (k == "calcfreq") o.calcfreq = getBool(v, p);

@@ -1,8 +1,10 @@
 // sinew: mpirun -n N sinew scene.yaml [-o result.h5] [opt flags] [PETSc flags]
 #include <slepcsys.h>
 
+#include <csignal>
 #include <string>
 
+#include "app/interrupt.hpp"
 #include "app/runner.hpp"
 #include "scene/scene_reader.hpp"
 
@@ -15,7 +17,7 @@ std::string helpText() {
       "Scene opt fields (each can be given as a flag of the same name):\n";
   for (const auto& d : sinew::sceneOptionDocs())
     h += "  -" + d.name + " <" + d.type + "> (default " + d.defaultValue + "): " + d.help + "\n";
-  h += "Sinew flags: -o <file.h5> result file; -force_rtol <1e-11> equilibrium tolerance relative to the\n"
+  h += "Sinew flags: -o <file.h5> result file (checked and locked before the analysis; see docs/results.md); -force_rtol <1e-11> equilibrium tolerance relative to the\n"
        "  element forces; -max_cuts <10> halvings of a failing load increment; -predictor <true> secant\n"
        "  predictor from the last converged increment; -constraint_check <true> mechanism / redundant constraint\n"
        "  check before solving, for models up to -constraint_check_max_unknowns <200000>; -tangent_operator\n"
@@ -30,7 +32,9 @@ std::string helpText() {
 
 int main(int argc, char** argv) {
   static const std::string help = helpText();
+  std::signal(SIGXFSZ, SIG_IGN);  // a file-size limit (ulimit -f) becomes a write error, also in MPI_Init
   PetscCall(SlepcInitialize(&argc, &argv, nullptr, help.c_str()));
+  sinew::installInterruptHandlers();  // after PETSc's, which would abort on SIGTERM/SIGUSR1
   int code = 0;
   PetscCall(sinew::runFromCommandLine(argc, argv, &code));
   PetscCall(SlepcFinalize());

@@ -306,7 +306,13 @@ PetscErrorCode runFromCommandLine(int argc, char** argv, int* exitCode) {
   const double tClose = MPI_Wtime();
   const bool completed = ctx.converged && ctx.interruptSignal == 0 && ctx.ioError.empty();
   if (ctx.ioError.empty()) ctx.guardedWrite([&] { file->close(completed); });
-  else ctx.guardedWrite([&] { file->close(false); });  // cleans up; the published file keeps its steps
+  else {
+    try {
+      file->close(false);  // cleans up; the published file keeps the steps committed before the failure
+    } catch (const std::exception&) {
+      // the first failure is the one reported
+    }
+  }
   ctx.times.output += MPI_Wtime() - tClose;
   if (!ctx.ioError.empty() || ctx.interruptSignal) {
     const int kept = file->failed() ? -1 : file->stepsWritten();

@@ -11,6 +11,7 @@ sail = open(os.path.join(SOURCE, "runs", "sail.yaml")).read()
 sail = sail.replace("mesh: ../meshes/", "mesh: " + os.path.join(SOURCE, "meshes") + "/")
 cases = {
     "max_shape_change": sail.replace("  formfinding_tolerance: 1e-5", "  formfinding_tolerance: 1e-5\n  max_shape_change: 1e-3"),
+    "homotopy_curve": sail.replace("  formfinding_tolerance: 1e-5", "  formfinding_tolerance: 1e-5\n  homotopy_curve: [1]"),
 }
 for name, text in cases.items():
     check(text != sail, f"{name}: scene edit did not apply")

@@ -1,6 +1,7 @@
 // The scene as plain, validated data (design.md section 2). Node and element numbers are
 // stored 0-based here; the scene file and every message use SPACAR Light's 1-based numbers.
 #pragma once
+#include <algorithm>
 #include <array>
 #include <map>
 #include <optional>
@@ -77,6 +78,22 @@ struct DynamicsOptions {
   int output_every = 1;  ///< Sinew: write every k-th time step (and the last)
 };
 
+/// Sinew: opt.output_steps, the load / time steps at which results are written and the step
+/// analyses (frequencies, buckling, compliance, stress, sensors) run. The last step is always written.
+struct OutputSteps {
+  enum class Kind { All, Last, Every, List } kind = Kind::All;
+  int every = 1;           ///< Kind::Every: steps k with k % every == 0
+  std::vector<int> steps;  ///< Kind::List: step numbers (load steps from 1, time step 0 = initial state)
+  bool selects(int step, bool last) const {
+    switch (kind) {
+      case Kind::All: return true;
+      case Kind::Last: return last;
+      case Kind::Every: return last || step % every == 0;
+      default: return last || std::find(steps.begin(), steps.end(), step) != steps.end();
+    }
+  }
+};
+
 struct Options {
   int loadsteps = 10;
   bool calcbuck = false;
@@ -93,6 +110,7 @@ struct Options {
   std::optional<DynamicsOptions> dynamics;
   int nfreq = 6;   ///< Sinew: number of frequencies (also -eps_nev)
   int nbuck = 3;   ///< Sinew: number of buckling multipliers
+  OutputSteps output_steps;
 };
 
 struct FormFinding {

@@ -5,6 +5,7 @@
 
 #include <memory>
 #include <span>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -31,9 +32,21 @@ struct ResultLayout {
   std::string stepName = "load_factor";  ///< "load_factor" or "time"
 };
 
+/// A result file could not be created or written (full disk, file-size limit, unwritable path);
+/// the message names the file, the dataset and the cause. Thrown on every rank together.
+class ResultFileError : public std::runtime_error {
+ public:
+  explicit ResultFileError(const std::string& what);
+};
+
+/// Crash-safe: from construction on, `path` always names a complete HDF5 file holding every
+/// committed step (converged = 0 until close), so a run killed at any moment leaves a file that
+/// h5py opens. Writes go to `path.part` (a second copy) and become visible at commit()
+/// (src/output/result_file.cpp explains the scheme and its cost).
 class ResultFile {
  public:
-  /// Creates `path + ".part"`; renamed to `path` by close(). Also writes /mesh connectivity.
+  /// Creates the file (with /mesh connectivity and the root attributes) and publishes it under
+  /// `path` with no steps yet.
   ResultFile(MPI_Comm comm, const std::string& path, const ResultLayout& layout);
   ~ResultFile();
   ResultFile(const ResultFile&) = delete;
@@ -54,13 +67,19 @@ class ResultFile {
   void writeStepRow(const std::string& name, std::span<const double> values);
   /// A dataset written once (statespace/A, formfinding/residual): rank 0's values, given shape.
   void writeArray(const std::string& name, std::span<const double> values, std::vector<long> shape);
-  /// Sets root attribute `converged`, closes the file, renames it to its final name and writes
-  /// the XDMF (rank 0) listing the steps written. Idempotent.
+  /// Makes everything written so far the content of the file under the final name (atomically)
+  /// and rewrites the XDMF (rank 0) for those steps. Call after every step.
+  void commit();
+  /// Sets root attribute `converged`, closes the file, publishes it under its final name and writes
+  /// the XDMF (rank 0) listing the steps written. Idempotent. After a failed write (failed()), the
+  /// file under the final name keeps the last committed state.
   void close(bool converged);
 
   const std::string& path() const;
   std::string xdmfPath() const;
   int stepsWritten() const;
+  /// A write or commit threw ResultFileError; later writes throw too.
+  bool failed() const;
 
  private:
   struct Impl;

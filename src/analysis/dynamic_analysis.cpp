@@ -253,6 +253,7 @@ PetscErrorCode DynamicAnalysis::runArnoldBruls(Vec U, const StepCallback& onStep
     report_.reducedSteps += reduced;
     report_.time = t;
     if (onStep) PetscCall(onStep(k, t, Un_, Vn_, Qn_));
+    if (stop_ && *stop_) break;
   }
   PetscCall(VecCopy(Un_, U));
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -282,6 +283,7 @@ PetscErrorCode DynamicAnalysis::tsI2Jacobian(TS, PetscReal t, Vec U, Vec V, Vec,
 namespace {
 struct TSMonitorCtx {
   const DynamicAnalysis::StepCallback* onStep;
+  const bool* stop;
   Vec A;
   DynamicsReport* report;
 };
@@ -294,6 +296,7 @@ PetscErrorCode tsMonitor(TS ts, PetscInt step, PetscReal t, Vec U, void* ctx) {
   m->report->steps = static_cast<int>(step);
   m->report->time = t;
   if (*m->onStep) PetscCall((*m->onStep)(static_cast<int>(step), t, U, V, m->A));
+  if (m->stop && *m->stop) PetscCall(TSSetMaxSteps(ts, step));  // TSSolve ends after the step in progress
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 }  // namespace
@@ -326,7 +329,7 @@ PetscErrorCode DynamicAnalysis::runTSAlpha2(Vec U, const StepCallback& onStep, b
   PetscCall(initialAccelerations(U, V, A, &ok));
   if (ok) {
     if (onStep) PetscCall(onStep(0, 0.0, U, V, A));
-    TSMonitorCtx mctx{&onStep, A, &report_};
+    TSMonitorCtx mctx{&onStep, stop_, A, &report_};
     PetscCall(VecSet(A, 0.0));  // TSALPHA2 does not expose its accelerations: sensors see qdd = 0
     PetscCall(TSMonitorSet(ts, tsMonitor, &mctx, nullptr));
     PetscCall(TS2SetSolution(ts, U, V));

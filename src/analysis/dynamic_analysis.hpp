@@ -42,6 +42,10 @@ class DynamicAnalysis {
   using StepCallback = std::function<PetscErrorCode(int step, double t, Vec U, Vec V, Vec Qdd)>;
   /// Integrates from U (in: initial state, at rest; out: state at the last converged time).
   PetscErrorCode run(Vec U, const StepCallback& onStep, bool* converged);
+  /// The loop ends after the step whose onStep set *stop (an interrupt or a failed result file);
+  /// the run is then neither converged nor failed here: the caller knows why it stopped.
+  void setStopFlag(const bool* stop) { stop_ = stop; }
+
   const DynamicsReport& report() const { return report_; }
   const std::string& failureMessage() const { return failure_; }
   double alphaM() const { return alphaM_; }
@@ -63,6 +67,7 @@ class DynamicAnalysis {
   PetscErrorCode runTSAlpha2(Vec U, const StepCallback& onStep, bool* converged);
 
   Assembler& asm_;
+  const bool* stop_ = nullptr;
   DynamicsOptions opts_;
   double alphaM_, alphaF_, gamma_, beta_;
   double h_ = 0;

@@ -413,6 +413,7 @@ PetscErrorCode FormFindingAnalysis::run(Vec U, const StepCallback& onStep, bool*
     }
     reports_.push_back(rep);
     if (onStep) PetscCall(onStep(rep, U));
+    if (stop_ && *stop_) break;
     // stop on the normal change, from step 2 on and while the total change does not grow (an
     // in-plane collapse of a flat membrane has zero normal change but a growing total change)
     if (k >= 2 && rep.shapeChangeNormal < ff_.formfinding_tolerance &&

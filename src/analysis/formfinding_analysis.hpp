@@ -78,6 +78,10 @@ class FormFindingAnalysis {
   using StepCallback = std::function<PetscErrorCode(const FormFindingStepReport&, Vec U)>;
   /// Runs the form-finding steps from U (displacements from the initial geometry). Collective.
   PetscErrorCode run(Vec U, const StepCallback& onStep, bool* ok);
+  /// The loop ends after the step whose onStep set *stop (an interrupt or a failed result file);
+  /// the run is then neither converged nor failed here: the caller knows why it stopped.
+  void setStopFlag(const bool* stop) { stop_ = stop; }
+
   /// Switches every form-found kernel to elastic as elastic_restart_method says (see file comment).
   PetscErrorCode restart(Vec U);
 
@@ -103,6 +107,7 @@ class FormFindingAnalysis {
   std::string setNames() const;
 
   Assembler& asm_;
+  const bool* stop_ = nullptr;
   FormFinding ff_;
   std::vector<ElementSet> eprops_;
   std::vector<int> ffSets_;

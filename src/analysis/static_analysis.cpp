@@ -327,6 +327,7 @@ PetscErrorCode StaticAnalysis::run(Vec U, const StepCallback& onStep, bool* conv
     rep.loadFactor = lambda;
     reports_.push_back(rep);
     if (onStep) PetscCall(onStep(rep, U));
+    if (stop_ && *stop_) break;
   }
   PetscCall(VecDestroy(&Usave));
   PetscCall(VecDestroy(&dU));

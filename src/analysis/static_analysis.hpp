@@ -43,6 +43,10 @@ class StaticAnalysis {
   /// The model has no external load at all: a start residual at the round-off floor
   /// (8 eps ||J||_inf max|X|) is equilibrium without a Newton step (a free-free body has a singular J).
   void setUnloaded(bool u) { unloaded_ = u; }
+  /// The loop ends after the step whose onStep set *stop (an interrupt or a failed result file);
+  /// the run is then neither converged nor failed here: the caller knows why it stopped.
+  void setStopFlag(const bool* stop) { stop_ = stop; }
+
   SNES snes() const { return snes_; }
   /// The cable coarse space in use (nullptr when none).
   const CableCoarseSpace* coarseSpace() const { return coarse_.get(); }
@@ -58,6 +62,7 @@ class StaticAnalysis {
   PetscErrorCode setUpElementwiseOperator();
 
   Assembler& asm_;
+  const bool* stop_ = nullptr;
   int loadsteps_;
   SNES snes_ = nullptr;
   Mat J_ = nullptr;

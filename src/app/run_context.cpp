@@ -1,5 +1,7 @@
 #include "app/run_context.hpp"
 
+#include "app/interrupt.hpp"
+
 namespace sinew {
 
 PetscErrorCode RunContext::writeStep(double stepValue, Vec Ustate, const LoadState& ls) {
@@ -18,6 +20,61 @@ PetscErrorCode RunContext::writeStep(double stepValue, Vec Ustate, const LoadSta
       failure = a->failure();
     }
   }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+bool RunContext::guardedWrite(const std::function<void()>& write) {
+  if (!ioError.empty()) return false;
+  try {
+    write();
+    return true;
+  } catch (const std::exception& e) {  // thrown on every rank together (ResultFile agrees on failures)
+    ioError = e.what();
+    stop = true;
+    return false;
+  }
+}
+
+PetscErrorCode RunContext::convergedStep(const Step& s, Vec Ustate, const LoadState& ls,
+                                         const std::function<PetscErrorCode()>& afterWrite) {
+  PetscFunctionBeginUser;
+  if (stop) PetscFunctionReturn(PETSC_SUCCESS);  // a step a solver finished after the stop: abandoned
+  if (const int sig = agreedInterrupt(comm)) {
+    interruptSignal = sig;
+    stop = true;
+  }
+  lastStepIndex = s.index;
+  const bool write = !s.selectable || s.last || stop || model.opt.output_steps.selects(s.index, s.last);
+  if (write) {
+    PetscErrorCode ierr = PETSC_SUCCESS;
+    guardedWrite([&] {
+      ierr = writeStep(s.value, Ustate, ls);
+      if (!ierr && afterWrite) ierr = afterWrite();
+      if (!ierr) {
+        const double t = MPI_Wtime();
+        file.commit();
+        times.output += MPI_Wtime() - t;
+      }
+    });
+    PetscCall(ierr);
+    skipped_.any = false;
+  } else {
+    skipped_ = {true, s.value, ls};
+  }
+  progress.step(s.index, s.detail);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode RunContext::writeSkippedLast(Vec Ustate) {
+  PetscFunctionBeginUser;
+  if (!skipped_.any || !ioError.empty()) PetscFunctionReturn(PETSC_SUCCESS);
+  skipped_.any = false;
+  PetscErrorCode ierr = PETSC_SUCCESS;
+  guardedWrite([&] {
+    ierr = writeStep(skipped_.value, Ustate, skipped_.ls);
+    if (!ierr) file.commit();
+  });
+  PetscCall(ierr);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -1,6 +1,7 @@
 // Everything an analysis of a run needs: the model, the plan, the assembler, the result file and
 // the step counter shared by form finding, statics and dynamics (their rows follow each other).
 #pragma once
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -9,6 +10,7 @@
 #include "analysis/step_analysis.hpp"
 #include "analysis/step_results.hpp"
 #include "app/plan.hpp"
+#include "app/progress.hpp"
 #include "app/summary.hpp"
 #include "assembly/assembler.hpp"
 #include "sinew/model.hpp"
@@ -31,13 +33,48 @@ struct RunContext {
   bool converged = true;
   std::string failure;
   std::string summaryLines;  ///< extra lines for the stdout summary (rank 0)
+  Progress progress;
+  /// The step loops end after the current step (equal on every rank): a signal arrived
+  /// (interruptSignal) or the result file failed (ioError).
+  bool stop = false;
+  int interruptSignal = 0;
+  std::string ioError;
+  int lastStepIndex = 0;       ///< index of the last converged step (in its phase)
+  std::string lastStepName;    ///< "load step", "time step", "form-finding step"
 
   RunContext(Model& m, const Plan& p, Assembler& a, StepResults& r, ResultFile& f)
-      : model(m), plan(p), assembler(a), results(r), file(f) {}
+      : model(m), plan(p), assembler(a), results(r), file(f), progress(MPI_COMM_WORLD, m.opt.silent) {}
+
+  /// A converged step of a step loop.
+  struct Step {
+    int index = 0;            ///< 1-based in its phase (time step 0: the initial state)
+    bool last = false;        ///< the final step of the phase
+    double value = 0;         ///< load factor or time (row of /load_factor or /time)
+    std::string detail;       ///< middle of the progress line
+    bool selectable = true;   ///< false: always written (form-finding steps)
+  };
+  /// Called by every step loop after a converged step: agrees on a pending interrupt (one
+  /// allreduce), writes the step when opt.output_steps selects it (always the last one, and the
+  /// one a run stops at), then `afterWrite` (extra rows of that step), commits the result file and
+  /// prints the progress line. A result file error sets ioError and stop instead of throwing.
+  PetscErrorCode convergedStep(const Step& s, Vec Ustate, const LoadState& ls,
+                               const std::function<PetscErrorCode()>& afterWrite = {});
+  /// Writes the last converged step from Ustate when output_steps skipped it and the phase ended
+  /// early (a failed step): the file always ends with the last converged state.
+  PetscErrorCode writeSkippedLast(Vec Ustate);
+  /// Runs `write` (result file calls); a ResultFileError or other exception sets ioError and stop.
+  bool guardedWrite(const std::function<void()>& write);
 
   /// Writes one step row: beginStep(stepValue), node/element/mesh results of U, then every step
   /// analysis (frequencies, buckling, ...). A failing step analysis sets converged = false.
   PetscErrorCode writeStep(double stepValue, Vec Ustate, const LoadState& ls);
+
+ private:
+  struct Skipped {
+    bool any = false;
+    double value = 0;
+    LoadState ls;
+  } skipped_;
 };
 
 /// Per-step analyses the plan asks for (frequencies, buckling, compliance, state-space).

@@ -3,6 +3,7 @@
 // of /time, with sensors seeing velocities and accelerations. -dynamics_energy adds /energy
 // [ns, 4] = kinetic, strain, gravity potential, total (ancf_cable2d scenes without user functions).
 #include <array>
+#include <cstdio>
 #include <cmath>
 #include <sstream>
 
@@ -113,17 +114,11 @@ PetscErrorCode runDynamics(RunContext& ctx) {
   double energy0 = 0, maxDrift = 0;
 
   DynamicAnalysis dyn(ctx.assembler, opts);
+  dyn.setStopFlag(&ctx.stop);
   const int nsteps = std::max(1, static_cast<int>(std::ceil(opts.tend / opts.dt - 1e-9)));
-  auto onStep = [&](int k, double t, Vec U, Vec V, Vec Qdd) -> PetscErrorCode {
+  ctx.progress.startPhase("time step", nsteps);
+  auto writeEnergy = [&](int k, Vec U, Vec V, const LoadState& ls) -> PetscErrorCode {
     PetscFunctionBeginUser;
-    if (k != 0 && k != nsteps && k % opts.output_every != 0) PetscFunctionReturn(PETSC_SUCCESS);
-    LoadState ls;
-    ls.loadFactor = 1.0;
-    ls.time = t;
-    ls.gravityRamped = false;
-    if (sensors) sensors->setRates(V, Qdd);
-    PetscCall(ctx.writeStep(t, U, ls));
-    if (sensors) sensors->setRates(nullptr, nullptr);
     if (energy && energyOk) {
       double T = 0, S = 0, G = 0;
       bool ok = true;
@@ -141,9 +136,26 @@ PetscErrorCode runDynamics(RunContext& ctx) {
     }
     PetscFunctionReturn(PETSC_SUCCESS);
   };
+  auto onStep = [&](int k, double t, Vec U, Vec V, Vec Qdd) -> PetscErrorCode {
+    PetscFunctionBeginUser;
+    const bool last = k == nsteps;
+    if (k != 0 && !last && k % opts.output_every != 0) PetscFunctionReturn(PETSC_SUCCESS);
+    LoadState ls;
+    ls.loadFactor = 1.0;
+    ls.time = t;
+    ls.gravityRamped = false;
+    if (sensors) sensors->setRates(V, Qdd);
+    char detail[64];
+    std::snprintf(detail, sizeof detail, "t = %.6g", t);
+    PetscCall(ctx.convergedStep({k, last, t, detail}, U, ls, [&]() { return writeEnergy(k, U, V, ls); }));
+    if (sensors) sensors->setRates(nullptr, nullptr);
+    PetscFunctionReturn(PETSC_SUCCESS);
+  };
   bool ok = false;
   PetscCall(dyn.run(ctx.U, onStep, &ok));
-  if (!ok && ctx.converged) {
+  ctx.lastStepName = "time step";
+  if (!ok && !ctx.stop) PetscCall(ctx.writeSkippedLast(ctx.U));
+  if (!ok && ctx.converged && !ctx.stop) {
     ctx.converged = false;
     ctx.failure = dyn.failureMessage();
   }

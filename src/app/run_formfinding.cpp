@@ -16,12 +16,19 @@ PetscErrorCode runFormFinding(RunContext& ctx) {
   const double outBefore = ctx.times.output, anaBefore = ctx.times.analyses;
   const FormFinding& ff = *ctx.model.formfinding;
   FormFindingAnalysis analysis(ctx.assembler, ff, ctx.model.eprops);
-  auto onStep = [&](const FormFindingStepReport&, Vec U) -> PetscErrorCode {
+  analysis.setStopFlag(&ctx.stop);
+  ctx.progress.startPhase("form-finding step", ff.formfinding_step);
+  auto onStep = [&](const FormFindingStepReport& r, Vec U) -> PetscErrorCode {
     LoadState ls;  // load factor 0
-    return ctx.writeStep(0.0, U, ls);
+    char detail[160];
+    std::snprintf(detail, sizeof detail, "Newton %d  residual %.3e  shape change %.3e", r.newtonIterations,
+                  r.residualNorm, r.shapeChange);
+    // every form-finding step is written (output_steps counts load and time steps)
+    return ctx.convergedStep({r.step, r.step == ff.formfinding_step, 0.0, detail, false}, U, ls);
   };
   bool ok = false;
   PetscCall(analysis.run(ctx.U, onStep, &ok));
+  ctx.lastStepName = "form-finding step";
   const auto& reps = analysis.reports();
   std::vector<double> res, change, normal;
   for (const auto& r : reps) {
@@ -29,9 +36,12 @@ PetscErrorCode runFormFinding(RunContext& ctx) {
     change.push_back(r.shapeChange);
     normal.push_back(r.shapeChangeNormal);
   }
-  ctx.file.writeArray("formfinding/residual", res, {static_cast<long>(res.size())});
-  ctx.file.writeArray("formfinding/shape_change", change, {static_cast<long>(change.size())});
-  ctx.file.writeArray("formfinding/shape_change_normal", normal, {static_cast<long>(normal.size())});
+  ctx.guardedWrite([&] {
+    ctx.file.writeArray("formfinding/residual", res, {static_cast<long>(res.size())});
+    ctx.file.writeArray("formfinding/shape_change", change, {static_cast<long>(change.size())});
+    ctx.file.writeArray("formfinding/shape_change_normal", normal, {static_cast<long>(normal.size())});
+    ctx.file.commit();
+  });
   std::string s = "\n form finding (URS): " + std::to_string(analysis.numFormFoundElements()) +
                   " form-found elements, model size " ;
   char line[256];
@@ -55,10 +65,10 @@ PetscErrorCode runFormFinding(RunContext& ctx) {
     s += line;
   }
   ctx.summaryLines += s;
-  if (!ok) {
+  if (!ok && !ctx.stop) {
     ctx.converged = false;
     ctx.failure = analysis.failureMessage();
-  } else {
+  } else if (ok && !ctx.stop) {
     PetscCall(analysis.restart(ctx.U));
   }
   PetscCall(PetscLogEventEnd(SinewEvents::get().formfinding, 0, 0, 0, 0));

@@ -14,6 +14,7 @@
 #include "analysis/step_analysis.hpp"
 #include "analysis/step_results.hpp"
 #include "app/command_line.hpp"
+#include "app/interrupt.hpp"
 #include "app/plan.hpp"
 #include "app/run_context.hpp"
 #include "app/summary.hpp"
@@ -23,6 +24,7 @@
 #include "elements/beam_section.hpp"
 #include "mesh/distributed_mesh.hpp"
 #include "mesh/fe_mesh.hpp"
+#include "output/output_target.hpp"
 #include "scene/scene_reader.hpp"
 #include "sinew/result_file.hpp"
 
@@ -40,6 +42,7 @@ OptionOverride petscOverrides() {
   };
 }
 
+/// The result file: -o, else <opt.filename or scene stem>.h5. An -o without a value gives "".
 std::string outputPath(const Model& model, const std::string& scenePath) {
   char buf[PETSC_MAX_PATH_LEN] = "";
   PetscBool set = PETSC_FALSE;
@@ -128,7 +131,20 @@ PetscErrorCode runFromCommandLine(int argc, char** argv, int* exitCode) {
   PetscCall(PetscLogEventEnd(SinewEvents::get().setup, 0, 0, 0, 0));
   if (!model.opt.silent) warnings(comm, model);
 
+  // The result file is checked and locked before any analysis (a directory, a device, the scene
+  // itself, a missing directory, another run writing it: exit 1; -o without a value: exit 2).
   const std::string h5 = outputPath(model, scenePath);
+  if (h5.empty()) {
+    PetscCall(PetscPrintf(comm, "error: -o needs a file name (-o result.h5)\n"));
+    *exitCode = 2;
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  OutputLock outputLock;
+  if (const std::string problem = claimOutput(comm, h5, scenePath, outputLock); !problem.empty()) {
+    PetscCall(PetscPrintf(comm, "error: result file: %s\n", problem.c_str()));
+    *exitCode = 1;
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
   Assembler assembler(*dmesh, model.opt.gravity);
   StepResults results(assembler, {plan.stress, plan.stressPerElement});
   ResultLayout layout;
@@ -218,19 +234,26 @@ PetscErrorCode runFromCommandLine(int argc, char** argv, int* exitCode) {
   }
   std::vector<double> p0;
   for (const Vec3& x : initialPositions) p0.insert(p0.end(), x.begin(), x.end());
-  file->writeArray("node/p0", p0, {static_cast<long>(initialPositions.size()), 3});
 
   RunContext ctx(model, plan, assembler, results, *file);
   bool modelError = false;  // a singular tangent found when Newton's linear solve failed
   ctx.comm = comm;
   ctx.times = times;
+  ctx.progress.setStart(t0);
+  ctx.guardedWrite([&] { file->writeArray("node/p0", p0, {static_cast<long>(initialPositions.size()), 3}); });
   PetscCall(assembler.createVector(&ctx.U));
   PetscCall(VecSet(ctx.U, 0.0));
   PetscCall(addStepAnalyses(ctx));
-  if (model.opt.showinputonly) {
+  if (!ctx.ioError.empty()) {
+    // nothing to do: the file error is reported below
+  } else if (model.opt.showinputonly) {
     LoadState ls;
-    file->beginStep(ctx.nextStep++, 0.0);
-    PetscCall(results.write(*file, ctx.U, ls));
+    PetscErrorCode ierr = PETSC_SUCCESS;
+    ctx.guardedWrite([&] {
+      file->beginStep(ctx.nextStep++, 0.0);
+      ierr = results.write(*file, ctx.U, ls);
+    });
+    PetscCall(ierr);
   } else {
     if (plan.formfinding) PetscCall(runFormFinding(ctx));
     if (ctx.converged && plan.dynamics) {
@@ -240,14 +263,21 @@ PetscErrorCode runFromCommandLine(int argc, char** argv, int* exitCode) {
       const double outBefore = ctx.times.output, anaBefore = ctx.times.analyses;
       StaticAnalysis statics(assembler, model.opt.loadsteps);
       statics.setUnloaded(unloaded(model, *dmesh, assembler));
+      statics.setStopFlag(&ctx.stop);
+      ctx.progress.startPhase("load step", model.opt.loadsteps);
       auto onStep = [&](const StepReport& rep, Vec Ustep) -> PetscErrorCode {
         LoadState ls;
         ls.loadFactor = rep.loadFactor;
         ls.time = rep.loadFactor;
-        return ctx.writeStep(rep.loadFactor, Ustep, ls);
+        char detail[160];
+        std::snprintf(detail, sizeof detail, "load factor %.4g  Newton %d  increments %d  residual %.3e", rep.loadFactor,
+                      rep.newtonIterations, rep.increments, rep.residualNorm);
+        return ctx.convergedStep({rep.step, rep.step == model.opt.loadsteps, rep.loadFactor, detail}, Ustep, ls);
       };
       bool ok = false;
       PetscCall(statics.run(ctx.U, onStep, &ok));
+      ctx.lastStepName = "load step";
+      if (!ok) PetscCall(ctx.writeSkippedLast(ctx.U));  // ctx.U holds the last converged state
       ctx.reports = statics.reports();
       if (const CableCoarseSpace* cs = statics.coarseSpace())
         ctx.summaryLines += "  cable coarse space: " + std::to_string(cs->coarseNodes()) + " coarse nodes, " +
@@ -273,8 +303,31 @@ PetscErrorCode runFromCommandLine(int argc, char** argv, int* exitCode) {
   }
 
   const double tClose = MPI_Wtime();
-  file->close(ctx.converged);
+  const bool completed = ctx.converged && ctx.interruptSignal == 0 && ctx.ioError.empty();
+  if (ctx.ioError.empty()) ctx.guardedWrite([&] { file->close(completed); });
+  else {
+    try {
+      file->close(false);  // cleans up; the published file keeps the steps committed before the failure
+    } catch (const std::exception&) {
+      // the first failure is the one reported
+    }
+  }
   ctx.times.output += MPI_Wtime() - tClose;
+  if (!ctx.ioError.empty() || ctx.interruptSignal) {
+    const int kept = file->failed() ? -1 : file->stepsWritten();
+    std::string msg;
+    if (!ctx.ioError.empty()) msg = "error: writing the results failed: " + ctx.ioError + "\n";
+    else
+      msg = std::string("interrupted by ") + signalName(ctx.interruptSignal) + " after " +
+            (ctx.lastStepName.empty() ? std::string("set-up") : ctx.lastStepName + " " + std::to_string(ctx.lastStepIndex)) + "\n";
+    msg += "  results: " + h5 +
+           (kept >= 0 ? " (" + std::to_string(kept) + " steps, converged = 0)"
+                      : " holds the steps written before the failure (converged = 0)") + "\n";
+    PetscCall(PetscPrintf(comm, "%s", msg.c_str()));
+    PetscCall(VecDestroy(&ctx.U));
+    *exitCode = ctx.ioError.empty() ? 5 : 1;
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
   SummaryBody body;
   body.reports = ctx.reports;
   body.nodes = results.summaryRows();

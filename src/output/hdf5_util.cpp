@@ -13,11 +13,13 @@ herr_t innermost(unsigned /*n*/, const H5E_error2_t* err, void* data) {
 }
 }  // namespace
 
-void fail(const std::string& what) {
+std::string failureText(const std::string& what) {
   std::string detail;
   H5Ewalk2(H5E_DEFAULT, H5E_WALK_DOWNWARD, innermost, &detail);
-  throw std::runtime_error("HDF5 error: " + what + (detail.empty() ? "" : " (" + detail + ")"));
+  return "HDF5 error: " + what + (detail.empty() ? "" : " (" + detail + ")");
 }
+
+void fail(const std::string& what) { throw std::runtime_error(failureText(what)); }
 
 Handle& Handle::operator=(Handle&& o) noexcept {
   if (this != &o) {
@@ -56,7 +58,7 @@ Handle collectiveDxpl() {
   return dxpl;
 }
 
-void writeBox(hid_t dset, hid_t memType, const std::vector<hsize_t>& start, const std::vector<hsize_t>& count,
+herr_t writeBox(hid_t dset, hid_t memType, const std::vector<hsize_t>& start, const std::vector<hsize_t>& count,
               const void* data, hid_t dxpl, const std::string& what) {
   Handle fileSpace(H5Dget_space(dset), H5Sclose, what + ": file dataspace");
   hsize_t n = 1;
@@ -66,14 +68,15 @@ void writeBox(hid_t dset, hid_t memType, const std::vector<hsize_t>& start, cons
       check(H5Sselect_hyperslab(fileSpace, H5S_SELECT_SET, start.data(), nullptr, count.data(), nullptr),
             what + ": select rows");
     Handle memSpace = dataspace(count, what);
-    check(H5Dwrite(dset, memType, memSpace, fileSpace, dxpl, data), what + ": write");
-  } else {
+    return H5Dwrite(dset, memType, memSpace, fileSpace, dxpl, data);
+  }
+  {
     // Nothing here, but H5Dwrite is collective: take part with empty selections.
     check(H5Sselect_none(fileSpace), what + ": select none");
     Handle memSpace = dataspace({1}, what);
     check(H5Sselect_none(memSpace), what + ": select none");
     const double dummy = 0;
-    check(H5Dwrite(dset, memType, memSpace, fileSpace, dxpl, &dummy), what + ": write");
+    return H5Dwrite(dset, memType, memSpace, fileSpace, dxpl, &dummy);
   }
 }
 

@@ -7,7 +7,9 @@
 
 namespace sinew::h5 {
 
-/// Throws std::runtime_error naming `what` and the innermost HDF5 error description.
+/// "HDF5 error: <what> (<innermost HDF5 error description>)" from the current error stack.
+std::string failureText(const std::string& what);
+/// Throws std::runtime_error with failureText(what).
 [[noreturn]] void fail(const std::string& what);
 
 /// Returns `r` when the HDF5 call succeeded (r >= 0), otherwise throws via fail(what).
@@ -48,8 +50,9 @@ Handle collectiveDxpl();
 
 /// Collective write of the box [start, start + count) of `dset` from the dense buffer `data`. A rank
 /// with nothing to write passes data == nullptr or a count containing 0 and still takes part
-/// (H5Sselect_none). Empty start and count address a scalar dataset.
-void writeBox(hid_t dset, hid_t memType, const std::vector<hsize_t>& start, const std::vector<hsize_t>& count,
+/// (H5Sselect_none). Empty start and count address a scalar dataset. Returns the status of the
+/// H5Dwrite (the caller agrees on it across ranks); selection errors throw.
+herr_t writeBox(hid_t dset, hid_t memType, const std::vector<hsize_t>& start, const std::vector<hsize_t>& count,
               const void* data, hid_t dxpl, const std::string& what);
 
 // Root/object attributes. In parallel HDF5 these are collective: every rank passes equal values.

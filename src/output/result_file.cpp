@@ -1,8 +1,22 @@
 // Parallel HDF5 result file (design.md section 3).
 //
+// Crash safety (docs/results.md, "Crash safety"): the file under the final name `path` is, from
+// the first commit() on, always a complete HDF5 file holding every committed step, so a run killed
+// at any moment (even by SIGKILL) leaves a file that h5py opens. HDF5 1.10 has no SWMR for
+// parallel files, and a file being written is not consistent on disk between two H5Fflush calls,
+// so the scheme keeps two copies and never writes into the one under the final name:
+// - two HDF5 files are open, the "lead" (named `path.part`) and the "published" one (`path`);
+// - every write goes to the lead at once (errors surface where they happen) and is recorded;
+// - commit() flushes the lead (H5Fflush: metadata, superblock end-of-address), then rank 0 makes
+//   it the published file by renames: link(path, path.part2), rename(path.part, path),
+//   rename(path.part2, path.part). rename(2) is atomic, so `path` names one complete file at every
+//   instant; the former published file replays the recorded writes since the last commit and
+//   becomes the lead.
+// Cost per commit: the step's writes a second time, one flush and three renames, independent of
+// how many steps the file already holds; the disk holds two copies until close() deletes one.
+// close() sets `converged`, closes the lead and publishes it the same way.
+//
 // Layout decisions that readers may rely on:
-// - The file is written as `path.part` and renamed to `path` by rank 0 after H5Fclose, so an
-//   interrupted run never leaves a file under the final name; a stale `path.part` is truncated.
 // - Step-indexed datasets are chunked, unlimited along the step axis, created at their first write
 //   and extended at every beginStep, so each has exactly stepsWritten() rows. A row that was never
 //   written (the field was created later, or skipped at a step) holds NaN, also the fill value.
@@ -13,7 +27,9 @@
 //   every owned row to the rank holding the contiguous block [n r / P, n (r + 1) / P) of that
 //   table, which then writes one hyperslab. The exchange plan is built once per table.
 // - Errors in arguments are detected on all ranks together (one allreduce per call) so that every
-//   rank throws and none is left waiting in a collective HDF5 call.
+//   rank throws and none is left waiting in a collective HDF5 call. HDF5 failures of collective
+//   calls (a full disk, a file-size limit) are agreed the same way and thrown as ResultFileError
+//   naming the file, the dataset and the cause.
 // Open MPI's deprecated C++ bindings warn under -Wcast-function-type when mpi.h is not a system
 // header (plain -I from pkg-config); Sinew uses the C API only.
 #ifndef OMPI_SKIP_MPICXX
@@ -29,9 +45,11 @@
 #include <iostream>
 #include <limits>
 #include <map>
+#include <utility>
 #include <stdexcept>
 
 #include "output/hdf5_util.hpp"
+#include "output/io_diagnosis.hpp"
 #include "output/xdmf_writer.hpp"
 
 namespace sinew {
@@ -178,6 +196,7 @@ struct StepDataset {
   h5::Handle dset;
   std::vector<long> inner;    // dims after the step axis (rows of a table, then field shape)
   std::vector<char> written;  // per step
+  std::vector<char> filled;   // per step: NaN written into a row never written
   long rowLength = 1;         // Kind::Row: k
 };
 
@@ -189,29 +208,82 @@ struct CellKind {
   const std::vector<long>* element;  // 1-based scene element per cell
 };
 
-}  // namespace
+// Every rank learns whether an HDF5 call failed on any rank (a full disk may fail the write of
+// one aggregator only); all throw the message of the first failing rank, so none is left waiting
+// in the next collective call.
+void agreeStatus(MPI_Comm comm, long status, const std::string& what, const std::string& file) {
+  int rank = 0;
+  MPI_Comm_rank(comm, &rank);
+  std::string msg;
+  if (status < 0) {
+    msg = h5::failureText(what);
+    const std::string cause = ioFailureCause(file);
+    if (!cause.empty()) msg += ": " + cause;
+  }
+  int first = status < 0 ? rank : INT_MAX;
+  MPI_Allreduce(MPI_IN_PLACE, &first, 1, MPI_INT, MPI_MIN, comm);
+  if (first == INT_MAX) return;
+  long n = static_cast<long>(msg.size());
+  MPI_Bcast(&n, 1, MPI_LONG, first, comm);
+  msg.resize(static_cast<std::size_t>(n));
+  MPI_Bcast(msg.data(), static_cast<int>(n), MPI_CHAR, first, comm);
+  throw ResultFileError("file " + file + ": " + msg);
+}
 
-struct ResultFile::Impl {
-  MPI_Comm comm = MPI_COMM_NULL;
-  int rank = 0, size = 1;
-  std::string path, partPath;
-  ResultLayout layout;
-  RowPlan nodePlan, elementPlan, meshPlan;
-  h5::Handle file;
-  h5::Handle dxpl;
+// One of the two HDF5 files of the crash-safe scheme (file comment) and what it holds.
+struct Sink {
+  std::string name;  // current name on disk (rank 0 keeps it; every rank knows it)
+  h5::Handle file, dxpl;
   std::map<std::string, StepDataset> steps;  // std::map: every rank iterates in the same order
   std::vector<double> stepValues;
-  long cellTotals[3] = {0, 0, 0};
-  bool closed = false;
-
-  ~Impl() {
-    steps.clear();
+  int numSteps() const { return static_cast<int>(stepValues.size()); }
+  void closeHandles() noexcept {
+    for (auto& [name, sd] : steps) sd.dset.reset();
     dxpl.reset();
     file.reset();
+  }
+};
+
+}  // namespace
+
+ResultFileError::ResultFileError(const std::string& what) : std::runtime_error(what) {}
+
+struct ResultFile::Impl {
+  using Op = std::function<void(Sink&)>;
+  MPI_Comm comm = MPI_COMM_NULL;
+  int rank = 0, size = 1;
+  std::string path, partPath, sparePath;
+  ResultLayout layout;
+  RowPlan nodePlan, elementPlan, meshPlan;
+  Sink sinks[2];
+  int lead = 0;              // index of the sink receiving writes (named partPath)
+  bool published = false;    // the other sink is under the final name (after the first commit)
+  std::vector<Op> log;       // writes since the last commit, replayed into the other sink
+  long cellTotals[3] = {0, 0, 0}, cellOffsets[3] = {0, 0, 0};
+  bool closed = false, failed = false;
+  double xdmfWritten = 0, xdmfSeconds = 0;  // rank 0: when the XDMF was last written, and how long it took
+
+  ~Impl() {
+    sinks[0].closeHandles();
+    sinks[1].closeHandles();
     if (comm != MPI_COMM_NULL) MPI_Comm_free(&comm);
   }
 
-  int numSteps() const { return static_cast<int>(stepValues.size()); }
+  Sink& leadSink() { return sinks[lead]; }
+  const Sink& leadSink() const { return sinks[lead]; }
+  int numSteps() const { return leadSink().numSteps(); }
+
+  // Runs a write on the lead and records it for the other sink. A failure (agreed on all ranks)
+  // stops every later write: the published file keeps the last committed state.
+  void apply(Op op) {
+    try {
+      op(leadSink());
+    } catch (...) {
+      failed = true;
+      throw;
+    }
+    log.push_back(std::move(op));
+  }
 
   std::array<CellKind, 3> cellKinds() const {
     return {{{"lines", "Polyline", 2, &layout.lines, &layout.lineElement},
@@ -229,10 +301,28 @@ struct ResultFile::Impl {
     return k == Kind::Node ? layout.ownedNodes : k == Kind::Element ? layout.ownedElements : layout.ownedMeshNodes;
   }
 
+  void writeBox(Sink& s, hid_t dset, hid_t memType, const std::vector<hsize_t>& start, const std::vector<hsize_t>& count,
+                const void* data, const std::string& what) {
+    agreeStatus(comm, h5::writeBox(dset, memType, start, count, data, s.dxpl, what), what + ": write", s.name);
+  }
+
+  void createFile(Sink& s, const std::string& name) {
+    const std::string what = "file " + name;
+    h5::Handle fapl(H5Pcreate(H5P_FILE_ACCESS), H5Pclose, what + ": access list");
+    h5::check(H5Pset_fapl_mpio(fapl, comm, MPI_INFO_NULL), what + ": MPI-IO driver");
+    h5::check(H5Pset_all_coll_metadata_ops(fapl, 1), what + ": collective metadata reads");
+    h5::check(H5Pset_coll_metadata_write(fapl, 1), what + ": collective metadata writes");
+    const hid_t id = H5Fcreate(name.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, fapl);
+    agreeStatus(comm, id, "create", name);
+    s.name = name;
+    s.file = h5::Handle(id, H5Fclose, what + ": create");
+    s.dxpl = h5::collectiveDxpl();
+  }
+
   // [steps, inner...] dataset, chunked and unlimited along the step axis.
-  StepDataset& createStepDataset(const std::string& name, Kind kind, std::vector<long> inner, long rowLength) {
+  StepDataset& createStepDataset(Sink& s, const std::string& name, Kind kind, std::vector<long> inner, long rowLength) {
     const std::string what = "dataset /" + name;
-    std::vector<hsize_t> dims{hsize_t(numSteps())}, maxdims{H5S_UNLIMITED}, chunk;
+    std::vector<hsize_t> dims{hsize_t(s.numSteps())}, maxdims{H5S_UNLIMITED}, chunk;
     for (long d : inner) {
       dims.push_back(hsize_t(d));
       maxdims.push_back(d > 0 ? hsize_t(d) : H5S_UNLIMITED);
@@ -253,22 +343,25 @@ struct ResultFile::Impl {
     h5::Handle dcpl(H5Pcreate(H5P_DATASET_CREATE), H5Pclose, what + ": creation list");
     h5::check(H5Pset_chunk(dcpl, static_cast<int>(chunk.size()), chunk.data()), what + ": chunk");
     h5::check(H5Pset_fill_value(dcpl, H5T_NATIVE_DOUBLE, &kNaN), what + ": fill value");
-    // Rows never written are set to NaN explicitly at close; skip filling every new chunk first.
+    // Rows never written are set to NaN explicitly at each commit; skip filling every new chunk first.
     h5::check(H5Pset_fill_time(dcpl, H5D_FILL_TIME_NEVER), what + ": fill time");
     h5::Handle lcpl = h5::intermediateGroupLcpl(what);
+    const hid_t id = H5Dcreate2(s.file, name.c_str(), H5T_IEEE_F64LE, space, lcpl, dcpl, H5P_DEFAULT);
+    agreeStatus(comm, id, what + ": create", s.name);
     StepDataset sd;
     sd.kind = kind;
-    sd.dset = h5::Handle(H5Dcreate2(file, name.c_str(), H5T_IEEE_F64LE, space, lcpl, dcpl, H5P_DEFAULT), H5Dclose,
-                         what + ": create");
+    sd.dset = h5::Handle(id, H5Dclose, what + ": create");
     sd.inner = std::move(inner);
-    sd.written.assign(numSteps(), 0);
+    sd.written.assign(s.numSteps(), 0);
+    sd.filled.assign(s.numSteps(), 0);
     sd.rowLength = rowLength;
-    return steps.emplace(name, std::move(sd)).first->second;
+    return s.steps.emplace(name, std::move(sd)).first->second;
   }
 
   // Why a write cannot go ahead now, or "".
   std::string stateError(bool needsStep) const {
     if (closed) return "file already closed";
+    if (failed) return "an earlier write failed";
     if (needsStep && numSteps() == 0) return "written before the first beginStep";
     return "";
   }
@@ -283,9 +376,27 @@ struct ResultFile::Impl {
     for (std::size_t pos = 0;;) {
       pos = name.find('/', pos + 1);
       const std::string prefix = name.substr(0, pos);
-      if (h5::check(H5Lexists(file, prefix.c_str(), H5P_DEFAULT), "dataset /" + name + ": lookup") <= 0) return "";
+      if (h5::check(H5Lexists(leadSink().file, prefix.c_str(), H5P_DEFAULT), "dataset /" + name + ": lookup") <= 0)
+        return "";
       if (pos == std::string::npos) return "dataset /" + name + " already exists";
     }
+  }
+
+  void beginStepIn(Sink& s, int step, double stepValue) {
+    const std::string what = "dataset /" + layout.stepName;
+    if (step == 0) createStepDataset(s, layout.stepName, Kind::Row, {}, 1);
+    s.stepValues.push_back(stepValue);
+    for (auto& [name, sd] : s.steps) {
+      std::vector<hsize_t> dims{hsize_t(s.numSteps())};
+      for (long d : sd.inner) dims.push_back(hsize_t(d));
+      agreeStatus(comm, H5Dset_extent(sd.dset, dims.data()), "dataset /" + name + ": extend to step " + std::to_string(step),
+                  s.name);
+      sd.written.push_back(0);
+      sd.filled.push_back(0);
+    }
+    StepDataset& sv = s.steps.at(layout.stepName);
+    writeBox(s, sv.dset, H5T_NATIVE_DOUBLE, {hsize_t(step)}, {1}, rank == 0 ? &stepValue : nullptr, what);
+    sv.written[step] = 1;
   }
 
   void writeTable(Kind kind, const std::string& rawName, std::span<const double> values, std::vector<long> inner) {
@@ -302,8 +413,9 @@ struct ResultFile::Impl {
       error = "mesh/p must have inner shape {3}";
     std::vector<long> dims{tableRows(kind)};
     dims.insert(dims.end(), inner.begin(), inner.end());
+    const auto& steps = leadSink().steps;
     auto it = steps.find(name);
-    if (it == steps.end() && !closed) {
+    if (it == steps.end() && !closed && !failed) {
       const std::string e = nameError(name);  // on every rank: collective lookup
       if (error.empty()) error = e;
     } else if (error.empty() && it != steps.end() && (it->second.kind != kind || it->second.inner != dims)) {
@@ -311,30 +423,33 @@ struct ResultFile::Impl {
     }
     agree(comm, error, signatureOf(name, dims, static_cast<int>(kind)), what);
 
-    StepDataset& sd = it != steps.end() ? it->second : createStepDataset(name, kind, dims, 1);
     const RowPlan& p = plan(kind);
-    const std::vector<double> block = p.exchange(comm, values, m);
-    const int step = numSteps() - 1;
-    std::vector<hsize_t> start{hsize_t(step), hsize_t(p.begin)}, count{1, hsize_t(p.count)};
-    for (long d : inner) {
-      start.push_back(0);
-      count.push_back(hsize_t(d));
-    }
-    h5::writeBox(sd.dset, H5T_NATIVE_DOUBLE, start, count, block.data(), dxpl, what);
-    sd.written[step] = 1;
+    apply([this, kind, name, dims, inner, block = p.exchange(comm, values, m)](Sink& s) {
+      auto found = s.steps.find(name);
+      StepDataset& sd = found != s.steps.end() ? found->second : createStepDataset(s, name, kind, dims, 1);
+      const RowPlan& pl = plan(kind);
+      const int step = s.numSteps() - 1;
+      std::vector<hsize_t> start{hsize_t(step), hsize_t(pl.begin)}, count{1, hsize_t(pl.count)};
+      for (long d : inner) {
+        start.push_back(0);
+        count.push_back(hsize_t(d));
+      }
+      writeBox(s, sd.dset, H5T_NATIVE_DOUBLE, start, count, block.data(), "dataset /" + name);
+      sd.written[step] = 1;
+    });
   }
 
   // Sets every row never written to NaN, one hyperslab per run of consecutive such steps.
-  void fillUnwritten(const std::string& name, StepDataset& sd) {
+  void fillUnwritten(Sink& s, const std::string& name, StepDataset& sd) {
     const std::string what = "dataset /" + name + ": NaN rows";
-    for (int s = 0; s < numSteps();) {
-      if (sd.written[s]) {
-        ++s;
+    for (int st = 0; st < s.numSteps();) {
+      if (sd.written[st] || sd.filled[st]) {
+        ++st;
         continue;
       }
-      int e = s;
-      while (e < numSteps() && !sd.written[e]) ++e;
-      std::vector<hsize_t> start{hsize_t(s)}, count{hsize_t(e - s)};
+      int e = st;
+      while (e < s.numSteps() && !sd.written[e] && !sd.filled[e]) ++e;
+      std::vector<hsize_t> start{hsize_t(st)}, count{hsize_t(e - st)};
       bool mine = rank == 0;
       if (sd.kind != Kind::Row) {
         const RowPlan& p = plan(sd.kind);
@@ -349,35 +464,46 @@ struct ResultFile::Impl {
       hsize_t n = 1;
       for (hsize_t c : count) n *= c;
       const std::vector<double> nan(mine ? n : 0, kNaN);
-      h5::writeBox(sd.dset, H5T_NATIVE_DOUBLE, start, count, mine ? nan.data() : nullptr, dxpl, what);
-      s = e;
+      writeBox(s, sd.dset, H5T_NATIVE_DOUBLE, start, count, mine ? nan.data() : nullptr, what);
+      std::fill(sd.filled.begin() + st, sd.filled.begin() + e, 1);
+      st = e;
     }
   }
 
-  void writeCells() {
+  void fillAll(Sink& s) {
+    for (auto& [name, sd] : s.steps) fillUnwritten(s, name, sd);
+  }
+
+  void computeCellOffsets() {
     const std::array<CellKind, 3> kinds = cellKinds();
-    long local[3], offset[3] = {0, 0, 0};
+    long local[3];
     for (int k = 0; k < 3; ++k) local[k] = static_cast<long>(kinds[k].conn->size()) / kinds[k].nodes;
     MPI_Allreduce(local, cellTotals, 3, MPI_LONG, MPI_SUM, comm);
-    MPI_Exscan(local, offset, 3, MPI_LONG, MPI_SUM, comm);
-    if (rank == 0) std::fill(offset, offset + 3, 0L);
+    MPI_Exscan(local, cellOffsets, 3, MPI_LONG, MPI_SUM, comm);
+    if (rank == 0) std::fill(cellOffsets, cellOffsets + 3, 0L);
+  }
+
+  void writeCells(Sink& s) {
+    const std::array<CellKind, 3> kinds = cellKinds();
     h5::Handle lcpl = h5::intermediateGroupLcpl("/mesh");
     for (int k = 0; k < 3; ++k) {
       if (cellTotals[k] == 0) continue;
+      const long local = static_cast<long>(kinds[k].conn->size()) / kinds[k].nodes;
       for (int part = 0; part < 2; ++part) {
         const std::string name = std::string("mesh/") + kinds[k].name + (part ? "_element" : "");
         const std::string what = "dataset /" + name;
-        std::vector<hsize_t> dims{hsize_t(cellTotals[k])}, start{hsize_t(offset[k])}, count{hsize_t(local[k])};
+        std::vector<hsize_t> dims{hsize_t(cellTotals[k])}, start{hsize_t(cellOffsets[k])}, count{hsize_t(local)};
         if (!part) {
           dims.push_back(hsize_t(kinds[k].nodes));
           start.push_back(0);
           count.push_back(hsize_t(kinds[k].nodes));
         }
         h5::Handle space = h5::dataspace(dims, what);
-        h5::Handle dset(H5Dcreate2(file, name.c_str(), H5T_STD_I64LE, space, lcpl, H5P_DEFAULT, H5P_DEFAULT),
-                        H5Dclose, what + ": create");
+        const hid_t id = H5Dcreate2(s.file, name.c_str(), H5T_STD_I64LE, space, lcpl, H5P_DEFAULT, H5P_DEFAULT);
+        agreeStatus(comm, id, what + ": create", s.name);
+        h5::Handle dset(id, H5Dclose, what + ": create");
         const std::vector<long>& data = part ? *kinds[k].element : *kinds[k].conn;
-        h5::writeBox(dset, H5T_NATIVE_LONG, start, count, data.data(), dxpl, what);
+        writeBox(s, dset, H5T_NATIVE_LONG, start, count, data.data(), what);
         h5::check(dset.reset(), what + ": close");
       }
     }
@@ -402,19 +528,19 @@ struct ResultFile::Impl {
           "result file " + path + ": layout");
   }
 
-  XdmfDescription xdmfDescription() const {
+  XdmfDescription xdmfDescription(const Sink& s) const {
     XdmfDescription d;
     d.h5Name = std::filesystem::path(path).filename().string();
     d.numMeshNodes = layout.numMeshNodes;
-    d.stepValues = stepValues;
+    d.stepValues = s.stepValues;
     d.geometryDataset = "/mesh/p";
-    if (auto it = steps.find("mesh/p"); it != steps.end()) d.geometryWritten = it->second.written;
+    if (auto it = s.steps.find("mesh/p"); it != s.steps.end()) d.geometryWritten = it->second.written;
     const std::array<CellKind, 3> kinds = cellKinds();
     for (int k = 0; k < 3; ++k)
       if (cellTotals[k] > 0)
         d.cells.push_back({kinds[k].name, kinds[k].topology, kinds[k].nodes, cellTotals[k],
                            std::string("/mesh/") + kinds[k].name});
-    for (const auto& [name, sd] : steps) {
+    for (const auto& [name, sd] : s.steps) {
       if (sd.kind != Kind::Mesh || name == "mesh/p") continue;
       XdmfPointField f;
       f.name = name.substr(5);
@@ -425,39 +551,94 @@ struct ResultFile::Impl {
     }
     return d;
   }
+
+  // Rank 0 puts the lead under the final name (atomically replacing the published file, which
+  // stays reachable as partPath) and rewrites the XDMF for the steps it holds; every rank learns
+  // the outcome. keepOther = false at close: the former published file is dropped.
+  void publishLead(bool keepOther) {
+    std::string error;
+    if (rank == 0) {
+      try {
+        namespace fs = std::filesystem;
+        std::error_code ec;
+        if (keepOther && published) {
+          fs::remove(sparePath, ec);
+          fs::create_hard_link(path, sparePath, ec);
+          if (ec) throw std::runtime_error("cannot link " + path + " as " + sparePath + ": " + ec.message());
+        }
+        fs::rename(partPath, path, ec);
+        if (ec) throw std::runtime_error("cannot rename " + partPath + " to " + path + ": " + ec.message());
+        if (keepOther) {
+          fs::rename(sparePath, partPath, ec);
+          if (ec) throw std::runtime_error("cannot rename " + sparePath + " to " + partPath + ": " + ec.message());
+        } else {
+          fs::remove(sparePath, ec);
+        }
+        // The XDMF text grows with the steps: rewriting it at every commit would cost O(steps^2)
+        // over a long run. It is rewritten when at least 10 times its last write time has passed
+        // (at most ~10 % of the run), and always at close; between two rewrites it lists a prefix
+        // of the steps of the file, which stays valid.
+        const double now = MPI_Wtime();
+        if (!keepOther || now - xdmfWritten >= 10 * xdmfSeconds) {
+          const std::string xdmf = std::filesystem::path(path).replace_extension(".xdmf").string();
+          try {
+            writeXdmfFile(xdmf, xdmfDescription(leadSink()));
+          } catch (const std::exception& e) {
+            fs::remove(xdmf + ".part", ec);
+            const std::string cause = ioFailureCause(xdmf);
+            throw std::runtime_error(std::string(e.what()) + (cause.empty() ? "" : ": " + cause));
+          }
+          xdmfWritten = MPI_Wtime();
+          xdmfSeconds = xdmfWritten - now;
+        }
+      } catch (const std::exception& e) {
+        error = e.what();
+      }
+    }
+    error = broadcastString(comm, error);
+    if (!error.empty()) {
+      failed = true;
+      throw ResultFileError("result file " + path + ": " + error);
+    }
+    Sink& other = sinks[1 - lead];
+    leadSink().name = path;
+    other.name = partPath;
+    published = true;
+  }
 };
 
 ResultFile::ResultFile(MPI_Comm comm, const std::string& path, const ResultLayout& layout)
     : impl_(std::make_unique<Impl>()) {
   Impl& m = *impl_;
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);  // failures become ResultFileError, not stack dumps
   MPI_Comm_dup(comm, &m.comm);
   MPI_Comm_rank(m.comm, &m.rank);
   MPI_Comm_size(m.comm, &m.size);
   m.path = path;
   m.partPath = path + ".part";
+  m.sparePath = path + ".part2";
   m.layout = layout;
   m.validateLayout();
   m.nodePlan = RowPlan::build(m.comm, layout.numNodes, layout.ownedNodes, "result file: owned nodes");
   m.elementPlan = RowPlan::build(m.comm, layout.numElements, layout.ownedElements, "result file: owned elements");
   m.meshPlan = RowPlan::build(m.comm, layout.numMeshNodes, layout.ownedMeshNodes, "result file: owned mesh nodes");
+  m.computeCellOffsets();
 
-  const std::string what = "file " + m.partPath;
-  h5::Handle fapl(H5Pcreate(H5P_FILE_ACCESS), H5Pclose, what + ": access list");
-  h5::check(H5Pset_fapl_mpio(fapl, m.comm, MPI_INFO_NULL), what + ": MPI-IO driver");
-  h5::check(H5Pset_all_coll_metadata_ops(fapl, 1), what + ": collective metadata reads");
-  h5::check(H5Pset_coll_metadata_write(fapl, 1), what + ": collective metadata writes");
-  m.file = h5::Handle(H5Fcreate(m.partPath.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, fapl), H5Fclose, what + ": create");
-  m.dxpl = h5::collectiveDxpl();
-
+  m.createFile(m.sinks[0], m.partPath);
+  m.createFile(m.sinks[1], m.sparePath);
   // Attributes are collective: every rank writes rank 0's values.
   long numbers[2] = {layout.ndof, layout.nranks};
   MPI_Bcast(numbers, 2, MPI_LONG, 0, m.comm);
-  h5::writeAttribute(m.file, "version", broadcastString(m.comm, layout.version));
-  h5::writeAttribute(m.file, "ndof", numbers[0]);
-  h5::writeAttribute(m.file, "nranks", static_cast<int>(numbers[1]));
-  h5::writeAttribute(m.file, "scene", broadcastString(m.comm, layout.scene));
-  h5::writeAttribute(m.file, "converged", 0);
-  m.writeCells();
+  const std::string version = broadcastString(m.comm, layout.version), scene = broadcastString(m.comm, layout.scene);
+  m.apply([&m, numbers, version, scene](Sink& s) {
+    h5::writeAttribute(s.file, "version", version);
+    h5::writeAttribute(s.file, "ndof", numbers[0]);
+    h5::writeAttribute(s.file, "nranks", static_cast<int>(numbers[1]));
+    h5::writeAttribute(s.file, "scene", scene);
+    h5::writeAttribute(s.file, "converged", 0);
+    m.writeCells(s);
+  });
+  commit();
 }
 
 ResultFile::~ResultFile() {
@@ -476,18 +657,7 @@ void ResultFile::beginStep(int step, double stepValue) {
   if (error.empty() && step != m.numSteps())
     error = "step " + std::to_string(step) + " does not follow step " + std::to_string(m.numSteps() - 1);
   agree(m.comm, error, signatureOf(m.layout.stepName, {step}, 10), what);
-
-  if (step == 0) m.createStepDataset(m.layout.stepName, Kind::Row, {}, 1);
-  m.stepValues.push_back(stepValue);
-  for (auto& [name, sd] : m.steps) {
-    std::vector<hsize_t> dims{hsize_t(m.numSteps())};
-    for (long d : sd.inner) dims.push_back(hsize_t(d));
-    h5::check(H5Dset_extent(sd.dset, dims.data()), "dataset /" + name + ": extend to step " + std::to_string(step));
-    sd.written.push_back(0);
-  }
-  StepDataset& sv = m.steps.at(m.layout.stepName);
-  h5::writeBox(sv.dset, H5T_NATIVE_DOUBLE, {hsize_t(step)}, {1}, m.rank == 0 ? &stepValue : nullptr, m.dxpl, what);
-  sv.written[step] = 1;
+  m.apply([&m, step, stepValue](Sink& s) { m.beginStepIn(s, step, stepValue); });
 }
 
 void ResultFile::writeNodeField(const std::string& name, std::span<const double> values, std::vector<long> inner) {
@@ -509,9 +679,10 @@ void ResultFile::writeStepRow(const std::string& rawName, std::span<const double
   long k = static_cast<long>(values.size());
   MPI_Bcast(&k, 1, MPI_LONG, 0, m.comm);
   std::string error = m.stateError(true);
-  auto it = m.steps.find(name);
+  const auto& steps = m.leadSink().steps;
+  auto it = steps.find(name);
   if (error.empty()) {
-    if (it != m.steps.end()) {
+    if (it != steps.end()) {
       if (it->second.kind != Kind::Row || name == m.layout.stepName)
         error = std::string("exists as a ") + kindName(it->second.kind);
       else if (k > it->second.rowLength)
@@ -522,21 +693,25 @@ void ResultFile::writeStepRow(const std::string& rawName, std::span<const double
     }
   }
   agree(m.comm, error, signatureOf(name, {}, 3), what);
-  if (it == m.steps.end() && k == 0) return;  // nothing fixes the row length yet; rows stay NaN
+  if (it == steps.end() && k == 0) return;  // nothing fixes the row length yet; rows stay NaN
 
-  StepDataset& sd = it != m.steps.end()
-                        ? it->second
-                        : m.createStepDataset(name, Kind::Row, k == 1 ? std::vector<long>{} : std::vector<long>{k}, k);
-  const int step = m.numSteps() - 1;
-  std::vector<double> row(sd.rowLength, 0.0);  // shorter rows are padded with 0
-  if (m.rank == 0) std::copy(values.begin(), values.end(), row.begin());
-  std::vector<hsize_t> start{hsize_t(step)}, count{1};
-  if (!sd.inner.empty()) {
-    start.push_back(0);
-    count.push_back(hsize_t(sd.rowLength));
-  }
-  h5::writeBox(sd.dset, H5T_NATIVE_DOUBLE, start, count, m.rank == 0 ? row.data() : nullptr, m.dxpl, what);
-  sd.written[step] = 1;
+  std::vector<double> row(m.rank == 0 ? values.begin() : values.end(), values.end());
+  m.apply([&m, name, k, row = std::move(row)](Sink& s) {
+    auto found = s.steps.find(name);
+    StepDataset& sd = found != s.steps.end()
+                          ? found->second
+                          : m.createStepDataset(s, name, Kind::Row, k == 1 ? std::vector<long>{} : std::vector<long>{k}, k);
+    const int step = s.numSteps() - 1;
+    std::vector<double> padded(sd.rowLength, 0.0);  // shorter rows are padded with 0
+    std::copy(row.begin(), row.end(), padded.begin());
+    std::vector<hsize_t> start{hsize_t(step)}, count{1};
+    if (!sd.inner.empty()) {
+      start.push_back(0);
+      count.push_back(hsize_t(sd.rowLength));
+    }
+    m.writeBox(s, sd.dset, H5T_NATIVE_DOUBLE, start, count, m.rank == 0 ? padded.data() : nullptr, "dataset /" + name);
+    sd.written[step] = 1;
+  });
 }
 
 void ResultFile::writeArray(const std::string& rawName, std::span<const double> values, std::vector<long> shape) {
@@ -555,13 +730,37 @@ void ResultFile::writeArray(const std::string& rawName, std::span<const double> 
   if (error.empty()) error = m.nameError(name);
   agree(m.comm, error, signatureOf(name, shape, 4), what);
 
-  std::vector<hsize_t> dims(shape.begin(), shape.end()), start(dims.size(), 0);
-  h5::Handle space = h5::dataspace(dims, what);
-  h5::Handle lcpl = h5::intermediateGroupLcpl(what);
-  h5::Handle dset(H5Dcreate2(m.file, name.c_str(), H5T_IEEE_F64LE, space, lcpl, H5P_DEFAULT, H5P_DEFAULT), H5Dclose,
-                  what + ": create");
-  h5::writeBox(dset, H5T_NATIVE_DOUBLE, start, dims, m.rank == 0 ? values.data() : nullptr, m.dxpl, what);
-  h5::check(dset.reset(), what + ": close");
+  std::vector<double> data(m.rank == 0 ? values.begin() : values.end(), values.end());
+  m.apply([&m, name, shape, data = std::move(data)](Sink& s) {
+    const std::string w = "dataset /" + name;
+    std::vector<hsize_t> dims(shape.begin(), shape.end()), start(dims.size(), 0);
+    h5::Handle space = h5::dataspace(dims, w);
+    h5::Handle lcpl = h5::intermediateGroupLcpl(w);
+    const hid_t id = H5Dcreate2(s.file, name.c_str(), H5T_IEEE_F64LE, space, lcpl, H5P_DEFAULT, H5P_DEFAULT);
+    agreeStatus(m.comm, id, w + ": create", s.name);
+    h5::Handle dset(id, H5Dclose, w + ": create");
+    // an empty array (no form-finding step converged) has no storage to write
+    if (product(shape) > 0) m.writeBox(s, dset, H5T_NATIVE_DOUBLE, start, dims, m.rank == 0 ? data.data() : nullptr, w);
+    h5::check(dset.reset(), w + ": close");
+  });
+}
+
+void ResultFile::commit() {
+  Impl& m = *impl_;
+  agree(m.comm, m.stateError(false), signatureOf("commit", {}, 11), "result file " + m.path + ": commit");
+  try {
+    Sink& lead = m.leadSink();
+    m.fillAll(lead);
+    agreeStatus(m.comm, H5Fflush(lead.file, H5F_SCOPE_GLOBAL), "flush", lead.name);
+    m.publishLead(true);
+    // the former published file catches up and takes the next writes
+    m.lead = 1 - m.lead;
+    for (const Impl::Op& op : m.log) op(m.leadSink());
+    m.log.clear();
+  } catch (...) {
+    m.failed = true;
+    throw;
+  }
 }
 
 void ResultFile::close(bool converged) {
@@ -570,26 +769,36 @@ void ResultFile::close(bool converged) {
   m.closed = true;
   int ok = converged ? 1 : 0;
   MPI_Allreduce(MPI_IN_PLACE, &ok, 1, MPI_INT, MPI_LAND, m.comm);
-  for (auto& [name, sd] : m.steps) m.fillUnwritten(name, sd);
-  h5::writeAttribute(m.file, "converged", ok);
-  for (auto& [name, sd] : m.steps) h5::check(sd.dset.reset(), "dataset /" + name + ": close");
-  h5::check(m.dxpl.reset(), "file " + m.partPath + ": transfer list");
-  h5::check(m.file.reset(), "file " + m.partPath + ": close");
-
-  // Rank 0 publishes the file under its final name, then the XDMF; every rank learns the outcome.
-  std::string error;
-  if (m.rank == 0) {
-    try {
+  if (m.failed) {  // the published file keeps the last committed state (converged = 0)
+    m.sinks[0].closeHandles();
+    m.sinks[1].closeHandles();
+    if (m.rank == 0) {
       std::error_code ec;
-      std::filesystem::rename(m.partPath, m.path, ec);
-      if (ec) throw std::runtime_error("cannot rename " + m.partPath + " to " + m.path + ": " + ec.message());
-      writeXdmfFile(xdmfPath(), m.xdmfDescription());
-    } catch (const std::exception& e) {
-      error = e.what();
+      std::filesystem::remove(m.partPath, ec);
+      std::filesystem::remove(m.sparePath, ec);
     }
+    return;
   }
-  error = broadcastString(m.comm, error);
-  if (!error.empty()) throw std::runtime_error("result file " + m.path + ": " + error);
+  try {
+    Sink& lead = m.leadSink();
+    m.fillAll(lead);
+    h5::writeAttribute(lead.file, "converged", ok);
+    for (auto& [name, sd] : lead.steps) agreeStatus(m.comm, sd.dset.reset(), "dataset /" + name + ": close", lead.name);
+    h5::check(lead.dxpl.reset(), "file " + lead.name + ": transfer list");
+    agreeStatus(m.comm, lead.file.reset(), "close", lead.name);
+    m.publishLead(false);
+  } catch (...) {
+    m.failed = true;
+    m.sinks[0].closeHandles();
+    m.sinks[1].closeHandles();
+    if (m.rank == 0) {
+      std::error_code ec;
+      std::filesystem::remove(m.partPath, ec);
+      std::filesystem::remove(m.sparePath, ec);
+    }
+    throw;
+  }
+  m.sinks[1 - m.lead].closeHandles();  // no longer under any name
 }
 
 const std::string& ResultFile::path() const { return impl_->path; }
@@ -599,5 +808,7 @@ std::string ResultFile::xdmfPath() const {
 }
 
 int ResultFile::stepsWritten() const { return impl_->numSteps(); }
+
+bool ResultFile::failed() const { return impl_->failed; }
 
 }  // namespace sinew

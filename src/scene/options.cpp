@@ -30,6 +30,9 @@ const std::vector<OptionDoc>& sceneOptionDocs() {
        "output_every k writes every k-th step (default 1)"},
       {"nfreq", "integer >= 1", "6", "number of natural frequencies"},
       {"nbuck", "integer >= 1", "3", "number of buckling load multipliers"},
+      {"output_steps", "all | last | every:k | [steps]", "all",
+       "load / time steps at which results are written and step analyses run (the last step always), "
+       "e.g. -output_steps last, -output_steps every:10, -output_steps 1,50,100"},
   };
   return docs;
 }
@@ -111,6 +114,47 @@ void parseDynamics(const YAML::Node& v, const std::string& path, Options& opt) {
 
 }  // namespace
 
+namespace {
+
+OutputSteps parseOutputSteps(const YAML::Node& v, const std::string& p) {
+  OutputSteps out;
+  const std::string expected = "expected all, last, every:k or a list of step numbers, got ";
+  if (v.IsSequence()) {
+    out.kind = OutputSteps::Kind::List;
+    for (std::size_t i = 0; i < v.size(); ++i) out.steps.push_back(getIntAtLeast(v[i], indexPath(p, i), 0));
+    return out;
+  }
+  if (!v.IsScalar()) fail(p, expected + describe(v));
+  const std::string s = v.Scalar();
+  if (s == "all") return out;
+  if (s == "last") {
+    out.kind = OutputSteps::Kind::Last;
+    return out;
+  }
+  if (s.rfind("every:", 0) == 0) {
+    const std::string k = s.substr(6);
+    std::size_t used = 0;
+    int every = 0;
+    try {
+      every = std::stoi(k, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (used == 0 || used != k.size() || every < 1) fail(p, "every:k needs an integer k >= 1, got " + describe(v));
+    out.kind = OutputSteps::Kind::Every;
+    out.every = every;
+    return out;
+  }
+  if (isNumber(v)) {  // a single step number
+    out.kind = OutputSteps::Kind::List;
+    out.steps.push_back(getIntAtLeast(v, p, 0));
+    return out;
+  }
+  fail(p, expected + describe(v));
+}
+
+}  // namespace
+
 void parseOptions(const YAML::Node& opt, SceneContext& ctx) {
   Model& m = ctx.model;
   Options& o = m.opt;
@@ -157,6 +201,7 @@ void parseOptions(const YAML::Node& opt, SceneContext& ctx) {
     } else if (k == "dynamics") parseDynamics(v, p, o);
     else if (k == "nfreq") o.nfreq = getIntAtLeast(v, p, 1);
     else if (k == "nbuck") o.nbuck = getIntAtLeast(v, p, 1);
+    else if (k == "output_steps") o.output_steps = parseOutputSteps(v, p);
   }
 }
 

@@ -368,7 +368,8 @@ int main(int argc, char** argv) {
         std::ifstream old(path);
         std::string content;
         std::getline(old, content);
-        expect(content == "an older result", "old file untouched while writing");
+        // crash safety: the final name holds this run's file (no steps yet) from construction on
+        expect(content != "an older result" && H5Fis_hdf5(path.c_str()) > 0, "old file replaced by this run's at construction");
         expect(fs::exists(path + ".part"), "writing goes to .part");
       }
       rf.writeNodeField("node/p", rowsOf(1, s, L.ownedNodes, 3), {3});

@@ -1,0 +1,36 @@
+"""Progress lines (issue 9, item 1): one line per converged load step, printed and flushed while
+the run goes (read here line by line with arrival times), with the elapsed wall time; -silent
+silences them."""
+import re
+
+from batchrun import CROSSHINGE, Run, remove_outputs, work
+from sinewtest import check, done
+
+N = 10
+out = work("batch_progress.h5")
+remove_outputs(out)
+run = Run(CROSSHINGE, out, ["-loadsteps", str(N)])
+code = run.wait(timeout=600)
+end = run.lines[-1][0] if run.lines else 0.0
+steps = [(t, l) for t, l in run.lines if re.match(r"\s+load step \d+/%d\s" % N, l)]
+for t, l in steps:
+    print(f"  {t:7.3f} s  {l.strip()}")
+check(code == 0, f"exit {code}")
+check([int(re.search(r"load step (\d+)/", l).group(1)) for _, l in steps] == list(range(1, N + 1)),
+      "not one progress line per load step, in order")
+check(all("elapsed" in l and "load factor" in l and "Newton" in l for _, l in steps), "a line without elapsed time")
+if len(steps) == N:
+    times = [t for t, _ in steps]
+    spread = times[-1] - times[0]
+    # printed as the steps converge: the first line arrives well before the last (all at once at
+    # the end would give a spread of milliseconds), and arrival times follow the steps
+    print(f"  first line at {times[0]:.3f} s, last at {times[-1]:.3f} s, output ends at {end:.3f} s")
+    check(spread > 0.3, f"progress lines arrived together (spread {spread:.3f} s)")
+    check(len(set(round(t, 2) for t in times)) >= N - 2, "progress lines arrived in bursts")
+    check(times[0] < end - 0.3, "the first progress line arrived only at the end of the run")
+
+remove_outputs(out)
+quiet = Run(CROSSHINGE, out, ["-loadsteps", "3", "-silent", "true"])
+check(quiet.wait(timeout=300) == 0, "silent run failed")
+check(not any("load step" in l for _, l in quiet.lines), "-silent printed progress lines")
+done()

@@ -560,7 +560,8 @@ void ResultFile::writeArray(const std::string& rawName, std::span<const double> 
   h5::Handle lcpl = h5::intermediateGroupLcpl(what);
   h5::Handle dset(H5Dcreate2(m.file, name.c_str(), H5T_IEEE_F64LE, space, lcpl, H5P_DEFAULT, H5P_DEFAULT), H5Dclose,
                   what + ": create");
-  h5::writeBox(dset, H5T_NATIVE_DOUBLE, start, dims, m.rank == 0 ? values.data() : nullptr, m.dxpl, what);
+  if (header[1] > 0)  // an empty dataset (e.g. no critical points) is created, not written
+    h5::writeBox(dset, H5T_NATIVE_DOUBLE, start, dims, m.rank == 0 ? values.data() : nullptr, m.dxpl, what);
   h5::check(dset.reset(), what + ": close");
 }
 

@@ -1,0 +1,46 @@
+// Path following (opt.continuation): ContinuationAnalysis writes one result row per path point.
+#include <string>
+
+#include "analysis/continuation_analysis.hpp"
+#include "app/run_context.hpp"
+
+namespace sinew {
+
+PetscErrorCode runContinuation(RunContext& ctx) {
+  PetscFunctionBeginUser;
+  const double t0 = MPI_Wtime();
+  const double outBefore = ctx.times.output, anaBefore = ctx.times.analyses;
+  ContinuationAnalysis path(ctx.assembler, *ctx.model.opt.continuation);
+  std::vector<double> negative;
+  auto onPoint = [&](const PathPoint& p, Vec U) -> PetscErrorCode {
+    PetscFunctionBeginUser;
+    LoadState ls;
+    ls.loadFactor = ls.time = p.loadFactor;
+    PetscCall(ctx.writeStep(p.loadFactor, U, ls));
+    ctx.file.writeStepRow("path/negative_eigenvalues", std::vector<double>{static_cast<double>(p.negativeEigenvalues)});
+    ctx.file.writeStepRow("path/control_displacement", std::vector<double>{p.controlValue});
+    StepReport rep;
+    rep.step = p.step;
+    rep.loadFactor = p.loadFactor;
+    rep.newtonIterations = p.iterations;
+    rep.increments = p.cuts + 1;
+    ctx.reports.push_back(rep);
+    PetscFunctionReturn(PETSC_SUCCESS);
+  };
+  bool ok = false;
+  PetscCall(path.run(ctx.U, onPoint, &ok));
+  // critical points: rows [kind (1 limit, 2 bifurcation), after path point, load factor, control displacement]
+  std::vector<double> rows;
+  for (const CriticalPoint& c : path.criticalPoints())
+    rows.insert(rows.end(), {static_cast<double>(c.kind), static_cast<double>(c.afterStep), c.loadFactor, c.controlValue});
+  ctx.file.writeArray("path/critical_points", rows, {static_cast<long>(path.criticalPoints().size()), 4});
+  ctx.summaryLines += path.summary();
+  if (!ok && ctx.converged) {
+    ctx.converged = false;
+    ctx.failure = path.failureMessage();
+  }
+  ctx.times.statics = MPI_Wtime() - t0 - (ctx.times.output - outBefore) - (ctx.times.analyses - anaBefore);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+}  // namespace sinew

@@ -26,6 +26,10 @@ struct KernelInput {
   /// Optional: translations x - X0 of the kernel's Point3/Frame6 nodes (3 each), taken from the
   /// unknowns without the round-off of x = X0 + u; stiff kernels use it for accurate elongations.
   const double* disp = nullptr;
+  /// Optional (Newton with mixed stresses, numMixedStresses() > 0): independent generalized stresses
+  /// used in the stress (geometric) part of the tangent instead of the stresses of q. The internal
+  /// force f always uses the stresses of q.
+  const double* sigmaMixed = nullptr;
 };
 
 struct KernelNeeds {
@@ -59,6 +63,13 @@ class ElementKernel {
   virtual void bodyForce(const double* q, const Vec3& a, std::vector<double>& f) const;
   /// Largest Von Mises stress in the element at state q (0 when the element has no stress measure).
   virtual double vonMisesMax(const double* /*q*/, const double* /*lambda*/) const { return 0.0; }
+  /// Mixed-stress Newton (Magisano, Leonetti & Garcea 2017, "MIP"): number of generalized stresses
+  /// the kernel can take as independent variables in its tangent (0: none).
+  virtual int numMixedStresses() const { return 0; }
+  /// The linearized stresses sigma = S (eps(q0) + grad eps(q0) . d), d the step from state q0 to
+  /// state q1 (translations x1 - x0, spatial rotation vectors log(R1 R0^T)); with q0 == nullptr the
+  /// stresses S eps(q1). Writes numMixedStresses() values. Only called when numMixedStresses() > 0.
+  virtual void linearizedStresses(const double* /*q0*/, const double* /*q1*/, double* /*sigma*/) const {}
   /// Element force output (cable axial force, membrane resultants n11 n22 n12); empty when none.
   virtual void elementForce(const double* /*q*/, std::vector<double>& out) const { out.clear(); }
 

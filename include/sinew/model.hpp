@@ -94,6 +94,20 @@ struct OutputSteps {
   }
 };
 
+/// Path following (opt.continuation) instead of load stepping; the applied loads are the reference load.
+struct ContinuationOptions {
+  std::string method = "arclength";       ///< arclength | displacement
+  std::string constraint = "cylindrical"; ///< arclength: cylindrical | spherical
+  double psi = 1.0;                       ///< spherical: scale of the load term (psi^2 |q|^2 dlambda^2)
+  double ds = 0.0;                        ///< arc length (arclength) or displacement increment (displacement)
+  double ds_max = 0.0;                    ///< largest arc length (default |ds|: steps shrink on failure, grow back to it)
+  int max_steps = 100;
+  std::optional<double> stop_load_factor;
+  int node = -1;                          ///< 0-based scene node of the control DOF (displacement control, output)
+  int direction = 0;                      ///< 0..2: x, y, z
+  std::optional<double> stop_displacement;  ///< of the control DOF
+};
+
 struct Options {
   int loadsteps = 10;
   bool calcbuck = false;
@@ -108,6 +122,7 @@ struct Options {
   bool showinputonly = false, silent = false;
   std::vector<int> compliance_nodes;  ///< 0-based; empty = all nodes
   std::optional<DynamicsOptions> dynamics;
+  std::optional<ContinuationOptions> continuation;
   int nfreq = 6;   ///< Sinew: number of frequencies (also -eps_nev)
   int nbuck = 3;   ///< Sinew: number of buckling multipliers
   OutputSteps output_steps;

@@ -39,9 +39,7 @@ StaticAnalysis::StaticAnalysis(Assembler& assembler, int loadsteps) : asm_(assem
   PetscCallAbort(comm, PetscOptionsGetReal(nullptr, nullptr, "-force_rtol", &rtol, &set));
   PetscCallAbort(comm, PetscOptionsGetInt(nullptr, nullptr, "-max_cuts", &cuts, &set));
   forceRtol_ = rtol;
-  PetscBool predictor = PETSC_TRUE;
-  PetscCallAbort(comm, PetscOptionsGetBool(nullptr, nullptr, "-predictor", &predictor, &set));
-  predictor_ = predictor;
+
   PetscBool adaptive = PETSC_TRUE;
   PetscInt growIts = growIts_;
   PetscCallAbort(comm, PetscOptionsGetBool(nullptr, nullptr, "-adaptive_increments", &adaptive, &set));
@@ -50,6 +48,24 @@ StaticAnalysis::StaticAnalysis(Assembler& assembler, int loadsteps) : asm_(assem
   growIts_ = static_cast<int>(growIts);
   maxCuts_ = static_cast<int>(cuts);
   coordMax_ = asm_.coordinateScale();
+  // Newton with mixed stresses (beams): see Assembler::setMixedStressNewton; -newton_mixed_stresses false
+  // restores the displacement-based tangent
+  PetscBool mixed = PETSC_TRUE;
+  PetscCallAbort(comm, PetscOptionsGetBool(nullptr, nullptr, "-newton_mixed_stresses", &mixed, &set));
+  asm_.setMixedStressNewton(mixed);
+  // The secant predictor extrapolates positions and rotation vectors additively: for beams that
+  // stretches the elements (the spurious axial force the mixed-stress tangent keeps out of the
+  // tangent, but not out of the residual), and every roll-up measured converged in fewer
+  // iterations without it (docs/beam.md). Default: off for models with beams under the
+  // mixed-stress Newton, on otherwise.
+  const bool beamsMixed = mixed && asm_.hasMixedStressKernels();
+  PetscBool predictor = beamsMixed ? PETSC_FALSE : PETSC_TRUE;
+  PetscCallAbort(comm, PetscOptionsGetBool(nullptr, nullptr, "-predictor", &predictor, &set));
+  predictor_ = predictor;
+  divergedIts_ = beamsMixed ? 6 : 0;
+  PetscInt divergedIts = divergedIts_;
+  PetscCallAbort(comm, PetscOptionsGetInt(nullptr, nullptr, "-newton_diverged_its", &divergedIts, &set));
+  divergedIts_ = static_cast<int>(divergedIts);
 }
 
 // -tangent_operator elementwise|assembled (default: elementwise for models with ANCF cables).
@@ -190,9 +206,18 @@ PetscErrorCode StaticAnalysis::convergenceTest(SNES snes, PetscInt it, PetscReal
   // (with the element-wise operator, i.e. ANCF cables, the floor estimate is dominated by the bending
   // stiffness EI/h^3 and overstates the noise of a straight start state, whose lateral coordinates are
   // exact: a fine cable's whole gravity load can lie below it. There a Newton update decides, rule 4.)
-  else if (it > 0 && !self->Jop_ && fnorm <= floor && fnorm > 0.1 * self->fnormPrev_ &&
+  else if (it > 0 && !self->Jop_ && fnorm <= floor &&
+           (fnorm > 0.1 * self->fnormPrev_ || fnorm <= 1e-3 * self->fnormPrev_ || self->fnormPrev_ <= 1e2 * floor) &&
            (fnorm <= 1e-3 * self->fnorm0_ || self->fnorm0_ <= floor))
-    *reason = SNES_CONVERGED_FNORM_ABS;  // stalled (less than 10x per iteration) below the floor estimate
+    *reason = SNES_CONVERGED_FNORM_ABS;  // below the floor estimate and stalled (less than 10x per iteration),
+                                         // fallen into it by a quadratic step (1000x and more), or come from
+                                         // just above it (a further iteration can only move it within the noise)
+  // A Newton that converges does so within a few iterations (mixed-stress tangent: 3-6 on the roll-ups);
+  // one still above its start residual after -newton_diverged_its iterations is wandering (a too large
+  // increment): give up early so the increment is halved instead of spending -snes_max_it iterations.
+  if (*reason == SNES_CONVERGED_ITERATING && !self->Jop_ && self->divergedIts_ > 0 && it >= self->divergedIts_ &&
+      fnorm > self->fnorm0_)
+    *reason = SNES_DIVERGED_DTOL;
   if (it == 0) self->onUpdate_ = false;
   if (it > 0) {  // the full Newton update: a line search may have taken only a fraction lambda of it
     SNESLineSearch lsearch;
@@ -249,6 +274,10 @@ PetscErrorCode StaticAnalysis::run(Vec U, const StepCallback& onStep, bool* conv
   double dlAdapt = dlMax;
   *converged = true;
   double lambda = 0.0;
+  {
+    LoadState start;
+    PetscCall(asm_.setMixedReference(U, start));
+  }
   for (int step = 1; step <= loadsteps_; ++step) {
     const double target = static_cast<double>(step) / loadsteps_;
     StepReport rep;
@@ -285,6 +314,7 @@ PetscErrorCode StaticAnalysis::run(Vec U, const StepCallback& onStep, bool* conv
         PetscCall(VecWAXPY(dU, -1.0, Usave, U));
         PetscCall(asm_.residual(U, ls_, F_));  // line searches may end on a trial evaluation
         fintConverged_ = asm_.internalForceNorm();
+        PetscCall(asm_.setMixedReference(U, ls_));  // the next increment's stresses start from this state
         dlPrev = next - lambda;
         PetscCall(asm_.absorbRotations(U));
         lambda = next;
@@ -296,6 +326,11 @@ PetscErrorCode StaticAnalysis::run(Vec U, const StepCallback& onStep, bool* conv
       }
       PetscCall(VecCopy(Usave, U));
       asm_.setReferenceRotations(Rsave);
+      {
+        LoadState last = ls_;
+        last.loadFactor = last.time = lambda;
+        PetscCall(asm_.setMixedReference(U, last));
+      }
       {  // a failed LU factorization (MUMPS) must not be reused by the retry: refactor from scratch
         KSP ksp;
         PC pc;

@@ -85,6 +85,8 @@ class StaticAnalysis {
   bool predictor_ = true;  ///< secant predictor from the last converged increment
   bool adaptive_ = true;   ///< -adaptive_increments: halved increments grow back (x2) after quick convergence
   int growIts_ = 5;        ///< -increment_grow_its: "quick" = at most this many Newton iterations
+  int divergedIts_ = 0;    ///< -newton_diverged_its: an increment still above its start residual after this many
+                           ///< iterations fails (0: off; default 6 for beams under the mixed-stress Newton)
   std::vector<StepReport> reports_;
   std::string failure_;
   bool linearFailed_ = false;

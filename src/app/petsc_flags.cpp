@@ -54,8 +54,8 @@ bool containsWord(const std::string& name, const std::string& word) {
 
 const std::vector<std::string>& sinewSolverPrefixes() {
   // longest first: coarse_snes_ before coarse_
-  static const std::vector<std::string> prefixes = {"constraint_check_", "coarse_snes_", "coarse_", "compl_",
-                                                    "fine_", "buck_", "init_", "ff_"};
+  static const std::vector<std::string> prefixes = {"constraint_check_", "continuation_", "coarse_snes_", "coarse_",
+                                                    "compl_", "fine_", "buck_", "init_", "ff_"};
   return prefixes;
 }
 

@@ -11,6 +11,9 @@ Plan makePlan(const Model& model) {
   p.dynamics = model.opt.dynamics.has_value();
   p.statics = !p.dynamics;
   p.formfinding = model.formfinding.has_value();
+  p.continuation = p.statics && model.opt.continuation.has_value();
+  if (model.opt.continuation && p.dynamics)
+    throw SceneError("opt.continuation", "path following is a static analysis; remove opt.dynamics or opt.continuation");
   bool beams = false, sections = false;
   for (size_t e = 0; e < model.elements.size(); ++e) {
     const int set = model.elementSet[e];
@@ -80,7 +83,10 @@ std::string Plan::describe(const Model& model) const {
     sep = ", ";
   };
   if (formfinding) add("form finding");
-  if (statics) add("statics (" + std::to_string(model.opt.loadsteps) + " load steps)");
+  if (continuation)
+    add("statics, path following (" + model.opt.continuation->method + ", up to " +
+        std::to_string(model.opt.continuation->max_steps) + " points)");
+  else if (statics) add("statics (" + std::to_string(model.opt.loadsteps) + " load steps)");
   if (dynamics) add("dynamics");
   if (frequencies) add("natural frequencies");
   if (buckling) add("buckling");

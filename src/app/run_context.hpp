@@ -83,5 +83,8 @@ PetscErrorCode addStepAnalyses(RunContext& ctx);
 PetscErrorCode runFormFinding(RunContext& ctx);
 /// Time integration (opt.dynamics) instead of statics.
 PetscErrorCode runDynamics(RunContext& ctx);
+/// Path following (opt.continuation) instead of load steps: one result row per path point, and
+/// /path/negative_eigenvalues, /path/critical_points.
+PetscErrorCode runContinuation(RunContext& ctx);
 
 }  // namespace sinew

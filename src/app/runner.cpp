@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "analysis/constraint_check.hpp"
+#include "analysis/continuation_analysis.hpp"
 #include "analysis/static_analysis.hpp"
 #include "analysis/step_analysis.hpp"
 #include "analysis/step_results.hpp"
@@ -258,6 +259,8 @@ PetscErrorCode runFromCommandLine(int argc, char** argv, int* exitCode) {
     if (plan.formfinding) PetscCall(runFormFinding(ctx));
     if (ctx.converged && plan.dynamics) {
       PetscCall(runDynamics(ctx));
+    } else if (ctx.converged && plan.continuation) {
+      PetscCall(runContinuation(ctx));
     } else if (ctx.converged && plan.statics) {
       const double tStatics = MPI_Wtime();
       const double outBefore = ctx.times.output, anaBefore = ctx.times.analyses;

@@ -306,6 +306,32 @@ void Assembler::gatherElement(const LocalElement& el, double* q, const double* /
   for (int j = 0; j < el.kernel->numConstraints(); ++j) idx[d + j] = el.firstMultiplier + j;
 }
 
+void Assembler::gatherStates(const LocalElement& el, const double* states, double* q) const {
+  const auto kinds = el.kernel->nodeKinds();
+  int qs = 0;
+  for (size_t i = 0; i < kinds.size(); ++i) {
+    const double* s = states + 12 * static_cast<size_t>(el.node[i]);
+    for (int k = 0; k < stateSize(kinds[i]); ++k) q[qs++] = s[k];
+  }
+}
+
+bool Assembler::hasMixedStressKernels() const {
+  int any = 0;
+  for (const LocalElement& el : mesh_.elements) any |= el.kernel->numMixedStresses() > 0;
+  MPI_Allreduce(MPI_IN_PLACE, &any, 1, MPI_INT, MPI_LOR, mesh_.comm);
+  return any != 0;
+}
+
+PetscErrorCode Assembler::setMixedReference(Vec U, const LoadState& ls) {
+  PetscFunctionBeginUser;
+  if (mixedNewton_) {
+    PetscCall(updateStates(U, ls));
+    mixedRef_ = state_;
+    mixedRefValid_ = true;
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 void Assembler::rotationColumns(const LocalElement& el, int n, double* K) const {
   const auto kinds = el.kernel->nodeKinds();
   int c0 = 0;
@@ -480,10 +506,17 @@ PetscErrorCode Assembler::jacobian(Vec U, const LoadState& ls, Mat J) {
   PetscCall(PetscLogEventBegin(SinewEvents::get().jacobianElements, 0, 0, 0, 0));
   size_t offset = 0, kept = 0;
   if (keepBlocks_) torqueBlocks_.clear();
+  std::array<double, 48> q0;
+  std::array<double, 6> sigmaMixed;
   for (const LocalElement& el : mesh_.elements) {
     gatherElement(el, q.data(), u, idx.data(), nullptr);
     KernelInput in{q.data(), nullptr, el.firstMultiplier >= 0 ? u + el.firstMultiplier : nullptr, ls.time};
     in.disp = elemDisp_.data();
+    if (mixedNewton_ && el.kernel->numMixedStresses() > 0) {
+      if (mixedRefValid_) gatherStates(el, mixedRef_.data(), q0.data());
+      el.kernel->linearizedStresses(mixedRefValid_ ? q0.data() : nullptr, q.data(), sigmaMixed.data());
+      in.sigmaMixed = sigmaMixed.data();
+    }
     el.kernel->evaluate(in, needs, out_);
     const int n = el.kernel->numDofs() + el.kernel->numConstraints();
     rotationColumns(el, n, out_.K.data());
@@ -500,6 +533,10 @@ PetscErrorCode Assembler::jacobian(Vec U, const LoadState& ls, Mat J) {
     }
   }
   PetscCall(PetscLogEventEnd(SinewEvents::get().jacobianElements, 0, 0, 0, 0));
+  if (mixedNewton_) {  // the next Newton iterate linearizes its stresses about this state
+    mixedRef_ = state_;
+    mixedRefValid_ = true;
+  }
   if (coo) {  // the matrix is assembled by MatSetValuesCOO (repeated entries are summed)
     PetscCall(MatSetValuesCOO(J, cooValues_.data(), INSERT_VALUES));
   } else {
@@ -587,10 +624,17 @@ PetscErrorCode Assembler::splitTangent(Vec U, const LoadState& ls, Mat Km, Mat K
   KernelNeeds needs;
   needs.tangent = true;
   needs.splitGeometric = true;
+  std::array<double, 48> q0;
+  std::array<double, 6> sigmaMixed;
   for (const LocalElement& el : mesh_.elements) {
     gatherElement(el, q.data(), u, idx.data(), nullptr);
     KernelInput in{q.data(), nullptr, el.firstMultiplier >= 0 ? u + el.firstMultiplier : nullptr, ls.time};
     in.disp = elemDisp_.data();
+    if (mixedNewton_ && el.kernel->numMixedStresses() > 0) {
+      if (mixedRefValid_) gatherStates(el, mixedRef_.data(), q0.data());
+      el.kernel->linearizedStresses(mixedRefValid_ ? q0.data() : nullptr, q.data(), sigmaMixed.data());
+      in.sigmaMixed = sigmaMixed.data();
+    }
     el.kernel->evaluate(in, needs, out_);
     const int n = el.kernel->numDofs() + el.kernel->numConstraints();
     rotationColumns(el, n, out_.K.data());

@@ -83,6 +83,20 @@ class Assembler {
   std::vector<Mat3> referenceRotations() const { return Rref_; }
   void setReferenceRotations(const std::vector<Mat3>& r) { Rref_ = r; }
 
+  // ---- Newton with mixed stresses (statics; Magisano, Leonetti & Garcea 2017)
+  /// From now on jacobian() builds the stress part of the tangent of kernels with
+  /// numMixedStresses() > 0 from the linearized stresses sigma = S (eps(q_ref) + grad eps(q_ref) . d)
+  /// (d: the step from the reference state to the current one) instead of S eps(q): Newton on the
+  /// Hellinger-Reissner form, whose residual is the ordinary one, so its solution is unchanged; the
+  /// tangent no longer carries the spurious axial forces a large rotation step creates in a stiff
+  /// beam. The reference is the state of the previous jacobian(), or the one set below.
+  void setMixedStressNewton(bool on) { mixedNewton_ = on; }
+  bool mixedStressNewton() const { return mixedNewton_; }
+  /// Some rank has an element kernel with mixed stresses (beams). Collective.
+  bool hasMixedStressKernels() const;
+  /// The reference state for the next jacobian(): the node states of U under ls (a converged state).
+  PetscErrorCode setMixedReference(Vec U, const LoadState& ls);
+
   // ---- building blocks for analyses that run their own element loops (dynamics, form finding)
   /// Ghost-updated local form of U (owned entries, then ghosts) with the node states evaluated;
   /// pair with endLocal(). Indices from gather() address this array.
@@ -151,6 +165,8 @@ class Assembler {
   void computeStates(const double* u, const LoadState& ls);
   void gatherElement(const LocalElement& el, double* q, const double* u, int* idx, int* fullIdx) const;
   void rotationColumns(const LocalElement& el, int n, double* K) const;
+  /// Element state (kernel layout) from a node-state array laid out like state_.
+  void gatherStates(const LocalElement& el, const double* states, double* q) const;
   PetscErrorCode assembleForces(const double* u, const LoadState& ls, Target target, double* out);
   // assembler_pressure.cpp: surface pressure (follower) and slack-cable regularization
   void initLoads();
@@ -169,6 +185,9 @@ class Assembler {
   mutable bool countsReady_ = false;
   mutable std::vector<PetscInt> dnnz_, onnz_;  // nonzeros per owned row (diagonal / off-diagonal block)
   std::vector<double> state_;  // 12 per local node
+  bool mixedNewton_ = false;
+  bool mixedRefValid_ = false;
+  std::vector<double> mixedRef_;  // node states (12 per local node) of the mixed-stress reference
   std::vector<double> disp_;   // 3 per local node: translations x - X0 exactly as in the unknowns
   mutable std::array<double, 12> elemDisp_{};  // disp_ of the element being evaluated (kernel order)
   std::vector<Mat3> Rref_, T_;

@@ -6,6 +6,8 @@
 // d(a.b) = J_a^T b + J_b^T a;  Hess(a.b) = J_a^T J_b + J_b^T J_a + H_a[b] + H_b[a].
 #include "elements/beam_corotational.hpp"
 
+#include "sinew/rotation.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -239,6 +241,11 @@ void BeamCorotational::evaluate(const KernelInput& in, const KernelNeeds& needs,
       K[(kDofs + r) * n + a] = scale_ * gi[a];
     }
   }
+  // Newton with mixed stresses: the stress part uses the independent (linearized) stresses of the
+  // flexible modes; rigid modes keep their multipliers.
+  if (in.sigmaMixed)
+    for (int i = 0; i < 6; ++i)
+      if (modes_[i] == BeamMode::Flexible) sig[i] = in.sigmaMixed[i];
   // Stress part: sum_i we_i Hess e_i + sigma_1/(30 l0) sum Qh_ij grad e_i grad e_j^T,
   // we_1 = sigma_1, we_2 = sigma_2, we_i = sigma_i + sigma_1 Qe_i / (30 l0) (chain rule through eps1).
   const double l0 = l0_, inv30 = 1.0 / (30.0 * l0);
@@ -292,6 +299,37 @@ void BeamCorotational::evaluate(const KernelInput& in, const KernelNeeds& needs,
     addBlock(G, n, WQ, WP, transpose(Bpq), -c2);
     addBlock(G, n, WP, WP, transpose(Bpq), c2);   // H_a[b] = skew(b) skew(a)
     addBlock(G, n, WQ, WQ, Bpq, c2);
+  }
+}
+
+// sigma = S (eps(q0) + grad eps(q0) . d): the stress update of the mixed (Hellinger-Reissner) Newton
+// iteration, d in the tangent's DOF layout [x_p, w_p, x_q, w_q] (spatial rotation vectors).
+void BeamCorotational::linearizedStresses(const double* q0, const double* q1, double* sigma) const {
+  Kinematics k;
+  double eps[6];
+  if (!q0) {
+    kinematics(q1, k);
+    std::copy(k.eps, k.eps + 6, eps);
+  } else {
+    kinematics(q0, k);
+    double d[kDofs];
+    for (int node = 0; node < 2; ++node) {
+      const double* a = q0 + 12 * node;
+      const double* b = q1 + 12 * node;
+      for (int i = 0; i < 3; ++i) d[6 * node + i] = b[i] - a[i];
+      const Vec3 w = logSO3(load9(b + 3) * transpose(load9(a + 3)));
+      for (int i = 0; i < 3; ++i) d[6 * node + 3 + i] = w[i];
+    }
+    for (int i = 0; i < 6; ++i) {
+      double v = k.eps[i];
+      for (int a = 0; a < kDofs; ++a) v += k.ge[i][a] * d[a];
+      eps[i] = v;
+    }
+  }
+  for (int i = 0; i < 6; ++i) {
+    double s = 0.0;
+    for (int j = 0; j < 6; ++j) s += S_[6 * i + j] * eps[j];
+    sigma[i] = s;
   }
 }
 

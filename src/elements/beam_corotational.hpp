@@ -43,6 +43,9 @@ class BeamCorotational : public ElementKernel {
   void bodyForce(const double* q, const Vec3& a, std::vector<double>& f) const override;
   /// Max Von Mises stress over both end sections (normal stress from N, My, Mz; shear from torsion).
   double vonMisesMax(const double* q, const double* lambda) const override;
+  /// The six generalized stresses (rigid and released ones come out 0: rigid modes carry multipliers).
+  int numMixedStresses() const override { return 6; }
+  void linearizedStresses(const double* q0, const double* q1, double* sigma) const override;
 
   /// eps_1..eps_6 at state q.
   std::array<double, 6> generalizedStrains(const double* q) const;

@@ -29,6 +29,11 @@ const std::vector<OptionDoc>& sceneOptionDocs() {
        "time integration (generalized-alpha) to tend with step dt; spectral_radius in [0,1] defaults to 0.9; "
        "output_every k writes every k-th step (default 1)"},
       {"nfreq", "integer >= 1", "6", "number of natural frequencies"},
+      {"continuation", "{method, ds, max_steps, stop_load_factor, node, direction, stop_displacement, constraint, psi, ds_max}",
+       "none",
+       "path following instead of load steps: arclength (Crisfield, cylindrical or spherical) or displacement control "
+       "of node/direction (x|y|z); the applied loads are the reference load; stops at max_steps (100), "
+       "stop_load_factor or stop_displacement"},
       {"nbuck", "integer >= 1", "3", "number of buckling load multipliers"},
       {"output_steps", "all | last | every:k | [steps]", "all",
        "load / time steps at which results are written and step analyses run (the last step always), "
@@ -110,6 +115,42 @@ void parseDynamics(const YAML::Node& v, const std::string& path, Options& opt) {
   if (v["spectral_radius"].IsDefined()) d.spectral_radius = getInRange(v["spectral_radius"], childPath(path, "spectral_radius"), 0.0, 1.0);
   if (v["output_every"].IsDefined()) d.output_every = getIntAtLeast(v["output_every"], childPath(path, "output_every"), 1);
   opt.dynamics = d;
+}
+
+void parseContinuation(const YAML::Node& v, const std::string& path, SceneContext& ctx) {
+  Options& opt = ctx.model.opt;
+  checkKeys(v, path, {"method", "ds", "max_steps", "stop_load_factor", "node", "direction", "stop_displacement",
+                      "constraint", "psi", "ds_max"});
+  ContinuationOptions c;
+  if (v["method"].IsDefined()) {
+    c.method = getString(v["method"], childPath(path, "method"));
+    if (c.method != "arclength" && c.method != "displacement")
+      fail(childPath(path, "method"), "expected arclength or displacement, got '" + c.method + "'");
+  }
+  if (v["constraint"].IsDefined()) {
+    c.constraint = getString(v["constraint"], childPath(path, "constraint"));
+    if (c.constraint != "cylindrical" && c.constraint != "spherical")
+      fail(childPath(path, "constraint"), "expected cylindrical or spherical, got '" + c.constraint + "'");
+  }
+  if (v["psi"].IsDefined()) c.psi = getPositive(v["psi"], childPath(path, "psi"));
+  if (!v["ds"].IsDefined()) fail(childPath(path, "ds"), "missing: continuation needs ds (arc length or displacement increment)");
+  c.ds = getNumber(v["ds"], childPath(path, "ds"));
+  if (!(std::abs(c.ds) > 0.0) || !std::isfinite(c.ds)) fail(childPath(path, "ds"), "expected a nonzero number, got " + fmt(c.ds));
+  if (c.method == "arclength" && c.ds < 0) fail(childPath(path, "ds"), "an arc length is positive, got " + fmt(c.ds));
+  c.ds_max = v["ds_max"].IsDefined() ? getPositive(v["ds_max"], childPath(path, "ds_max")) : std::abs(c.ds);
+  if (v["max_steps"].IsDefined()) c.max_steps = getIntAtLeast(v["max_steps"], childPath(path, "max_steps"), 1);
+  if (v["stop_load_factor"].IsDefined()) c.stop_load_factor = getNumber(v["stop_load_factor"], childPath(path, "stop_load_factor"));
+  if (v["node"].IsDefined())
+    c.node = checkedIndex(v["node"], childPath(path, "node"), "node", ctx.model.nodes.size());
+  if (v["direction"].IsDefined()) {
+    const std::string d = getString(v["direction"], childPath(path, "direction"));
+    if (d != "x" && d != "y" && d != "z") fail(childPath(path, "direction"), "expected x, y or z, got '" + d + "'");
+    c.direction = d[0] - 'x';
+  }
+  if (v["stop_displacement"].IsDefined()) c.stop_displacement = getNumber(v["stop_displacement"], childPath(path, "stop_displacement"));
+  if ((c.method == "displacement" || c.stop_displacement) && c.node < 0)
+    fail(childPath(path, "node"), "missing: displacement control and stop_displacement need the control node");
+  opt.continuation = c;
 }
 
 }  // namespace
@@ -199,6 +240,7 @@ void parseOptions(const YAML::Node& opt, SceneContext& ctx) {
         o.compliance_nodes.push_back(n);
       }
     } else if (k == "dynamics") parseDynamics(v, p, o);
+    else if (k == "continuation") parseContinuation(v, p, ctx);
     else if (k == "nfreq") o.nfreq = getIntAtLeast(v, p, 1);
     else if (k == "nbuck") o.nbuck = getIntAtLeast(v, p, 1);
     else if (k == "output_steps") o.output_steps = parseOutputSteps(v, p);

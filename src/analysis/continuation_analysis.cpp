@@ -1,0 +1,392 @@
+#include "analysis/continuation_analysis.hpp"
+
+#include <algorithm>
+#include <cfloat>
+#include <cmath>
+#include <sstream>
+
+#include <petscmat.h>
+
+#include "analysis/solver_defaults.hpp"
+
+namespace sinew {
+
+ContinuationAnalysis::ContinuationAnalysis(Assembler& assembler, const ContinuationOptions& opt)
+    : asm_(assembler), opt_(opt) {
+  MPI_Comm comm = asm_.mesh().comm;
+  PetscCallAbort(comm, asm_.createMatrix(&K_));
+  for (Vec* v : {&R_, &q_, &duR_, &duq_, &dU_, &e_, &work_}) PetscCallAbort(comm, asm_.createVector(v));
+  PetscCallAbort(comm, KSPCreate(comm, &ksp_));
+  PetscCallAbort(comm, KSPSetOptionsPrefix(ksp_, "continuation_"));
+  PetscCallAbort(comm, useDirectSolver(ksp_));
+  PetscCallAbort(comm, KSPSetFromOptions(ksp_));
+  PetscCallAbort(comm, PetscOptionsGetReal(nullptr, nullptr, "-continuation_rtol", &rtol_, nullptr));
+  PetscInt v = maxIts_;
+  PetscCallAbort(comm, PetscOptionsGetInt(nullptr, nullptr, "-continuation_max_it", &v, nullptr));
+  maxIts_ = static_cast<int>(v);
+  v = maxCuts_;
+  PetscCallAbort(comm, PetscOptionsGetInt(nullptr, nullptr, "-max_cuts", &v, nullptr));
+  maxCuts_ = static_cast<int>(v);
+  v = desiredIts_;
+  PetscCallAbort(comm, PetscOptionsGetInt(nullptr, nullptr, "-continuation_desired_its", &v, nullptr));
+  desiredIts_ = static_cast<int>(std::max<PetscInt>(v, 1));
+  PetscBool inertia = PETSC_TRUE;
+  PetscCallAbort(comm, PetscOptionsGetBool(nullptr, nullptr, "-continuation_inertia", &inertia, nullptr));
+  inertia_ = inertia;
+  // the control DOF: a unit vector over the unknowns (the node's owner sets its entry)
+  long local = 0;
+  for (const LocalElement& el : asm_.mesh().elements) local += el.kernel->numConstraints();
+  MPI_Allreduce(&local, &multipliers_, 1, MPI_LONG, MPI_SUM, comm);
+  PetscCallAbort(comm, VecSet(e_, 0.0));
+  if (opt_.node >= 0) {
+    const DistributedMesh& m = asm_.mesh();
+    int found = 0;
+    for (int i = 0; i < m.numOwnedNodes; ++i) {
+      const LocalNode& n = m.nodes[i];
+      if (n.sceneNode != opt_.node) continue;
+      const int d = n.dof[opt_.direction];
+      if (d >= 0) {
+        PetscCallAbort(comm, VecSetValue(e_, m.localToGlobalUnknown(d), 1.0, INSERT_VALUES));
+        found = 1;
+      } else {
+        found = -1;
+      }
+    }
+    PetscCallAbort(comm, VecAssemblyBegin(e_));
+    PetscCallAbort(comm, VecAssemblyEnd(e_));
+    int any[2] = {found > 0, found < 0};
+    MPI_Allreduce(MPI_IN_PLACE, any, 2, MPI_INT, MPI_MAX, comm);
+    if (any[1] && !any[0])
+      throw SceneError("opt.continuation.node", "the control DOF of node " + std::to_string(opt_.node + 1) +
+                                                    " is supported or prescribed; choose a free translation");
+    haveControl_ = any[0] != 0;
+  }
+}
+
+ContinuationAnalysis::~ContinuationAnalysis() {
+  KSPDestroy(&ksp_);
+  MatDestroy(&K_);
+  for (Vec* v : {&R_, &q_, &duR_, &duq_, &dU_, &e_, &work_}) VecDestroy(v);
+}
+
+// q = -dR/dlambda by a central difference: exact (to round-off) for loads, gravity and pressure that
+// scale with the load factor, second order for prescribed motions.
+PetscErrorCode ContinuationAnalysis::loadDerivative(Vec U, double lambda, Vec q) {
+  PetscFunctionBeginUser;
+  const double h = 1e-4 * std::max(1.0, std::abs(lambda));
+  LoadState ls;
+  ls.loadFactor = ls.time = lambda + h;
+  PetscCall(asm_.residual(U, ls, work_));
+  ls.loadFactor = ls.time = lambda - h;
+  PetscCall(asm_.residual(U, ls, q));
+  PetscCall(VecAXPY(q, -1.0, work_));
+  PetscCall(VecScale(q, 0.5 / h));  // q = (R(-h) - R(+h)) / 2h = -dR/dlambda
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode ContinuationAnalysis::factor(Vec U, double lambda) {
+  PetscFunctionBeginUser;
+  LoadState ls;
+  ls.loadFactor = ls.time = lambda;
+  PetscCall(asm_.jacobian(U, ls, K_));
+  PetscCall(KSPSetOperators(ksp_, K_, K_));
+  PetscCall(KSPSetUp(ksp_));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+// Negative eigenvalues of the tangent at a converged point: the inertia of a symmetric (LDL^T)
+// MUMPS factorization. The tangent with rigid-mode multipliers is a saddle-point matrix whose
+// inertia is that of the constrained stiffness plus one negative eigenvalue per multiplier.
+PetscErrorCode ContinuationAnalysis::negativeEigenvalues(Vec U, double lambda, int* count) {
+  PetscFunctionBeginUser;
+  LoadState ls;
+  ls.loadFactor = ls.time = lambda;
+  const bool mixed = asm_.mixedStressNewton();
+  asm_.setMixedStressNewton(false);  // the true tangent of the converged state
+  PetscCall(asm_.jacobian(U, ls, K_));
+  asm_.setMixedStressNewton(mixed);
+  Mat F;
+  MatFactorInfo info;
+  PetscCall(MatFactorInfoInitialize(&info));
+  PetscCall(MatSetOption(K_, MAT_SYMMETRIC, PETSC_TRUE));
+  PetscCall(MatGetFactor(K_, MATSOLVERMUMPS, MAT_FACTOR_CHOLESKY, &F));
+  PetscCall(MatMumpsSetIcntl(F, 13, 1));  // root front factored sequentially: the global inertia is exact
+  PetscCall(MatMumpsSetIcntl(F, 24, 1));  // null pivots detected (a critical point itself is singular)
+  PetscCall(MatCholeskyFactorSymbolic(F, K_, nullptr, &info));
+  PetscCall(MatCholeskyFactorNumeric(F, K_, &info));
+  PetscInt neg = 0, zero = 0, pos = 0;
+  PetscCall(MatGetInertia(F, &neg, &zero, &pos));
+  PetscCall(MatDestroy(&F));
+  PetscCall(MatSetOption(K_, MAT_SYMMETRIC, PETSC_FALSE));
+  *count = static_cast<int>(neg - multipliers_);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode ContinuationAnalysis::controlDisplacement(Vec U, double, double* value) {
+  PetscFunctionBeginUser;
+  *value = 0.0;
+  if (haveControl_) PetscCall(VecDot(U, e_, value));  // translations: the unknowns are x - X0
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode ContinuationAnalysis::pathSlopes(Vec U, double lambda, Vec dUlast, double dlLast, PathPoint* p) {
+  PetscFunctionBeginUser;
+  const double psi2 = opt_.method == "arclength" && opt_.constraint == "spherical" ? opt_.psi * opt_.psi : 0.0;
+  PetscCall(loadDerivative(U, lambda, q_));
+  PetscCall(factor(U, lambda));
+  PetscCall(KSPSolve(ksp_, q_, duq_));  // tangent (du_q, 1) d lambda
+  PetscReal a, qq, c, ec = 0;
+  PetscCall(VecDot(duq_, duq_, &a));
+  PetscCall(VecDot(q_, q_, &qq));
+  PetscCall(VecDot(duq_, dUlast, &c));
+  if (haveControl_) PetscCall(VecDot(duq_, e_, &ec));
+  const double sign = (c + psi2 * qq * dlLast) >= 0 ? 1.0 : -1.0;
+  if (opt_.method == "displacement") {  // s = u_control
+    p->slopeLoad = ec != 0.0 ? 1.0 / ec : 0.0;
+    p->slopeControl = 1.0;
+  } else {
+    const double n = std::sqrt(a + psi2 * qq);
+    p->slopeLoad = sign / n;
+    p->slopeControl = sign * ec / n;
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+// One path step from (U, lambda) with arc length (or displacement increment) ds. On success U and
+// lambda hold the new point; on failure they are unchanged.
+PetscErrorCode ContinuationAnalysis::step(Vec U, double* lambda, double ds, Vec dUprev, double dlPrev, bool first,
+                                          bool* ok, int* its) {
+  PetscFunctionBeginUser;
+  MPI_Comm comm = asm_.mesh().comm;
+  const bool displacement = opt_.method == "displacement";
+  const double psi2 = opt_.constraint == "spherical" ? opt_.psi * opt_.psi : 0.0;
+  Vec U0;
+  PetscCall(VecDuplicate(U, &U0));
+  PetscCall(VecCopy(U, U0));
+  const double lambda0 = *lambda;
+  // predictor along the tangent K du_q = q
+  PetscCall(loadDerivative(U, lambda0, q_));
+  PetscReal qnorm;
+  PetscCall(VecNorm(q_, NORM_2, &qnorm));
+  PetscCall(factor(U, lambda0));
+  PetscCall(KSPSolve(ksp_, q_, duq_));
+  KSPConvergedReason kr;
+  PetscCall(KSPGetConvergedReason(ksp_, &kr));
+  PetscReal jnorm;
+  PetscCall(MatNorm(K_, NORM_INFINITY, &jnorm));
+  double dl = 0.0;
+  *ok = false;
+  *its = 0;
+  if (kr >= 0) {
+    PetscReal a;
+    PetscCall(VecDot(duq_, duq_, &a));
+    if (displacement) {
+      PetscReal ec;
+      PetscCall(VecDot(duq_, e_, &ec));
+      dl = ec != 0.0 ? ds / ec : 0.0;
+    } else {
+      dl = ds / std::sqrt(a + psi2 * qnorm * qnorm);
+      // direction: continue the previous step (Feng et al.: the sign of du_q . dU_prev), loads up at first
+      if (!first) {
+        PetscReal c;
+        PetscCall(VecDot(duq_, dUprev, &c));
+        if (c + psi2 * qnorm * qnorm * dlPrev < 0) dl = -dl;
+      }
+    }
+    PetscCall(VecAXPY(U, dl, duq_));
+    *lambda = lambda0 + dl;
+  }
+  // corrector
+  const double floor = 8.0 * DBL_EPSILON * jnorm * std::max(asm_.coordinateScale(), 1.0);
+  for (int k = 0; k < maxIts_ && kr >= 0 && std::isfinite(*lambda); ++k) {
+    LoadState ls;
+    ls.loadFactor = ls.time = *lambda;
+    PetscCall(asm_.residual(U, ls, R_));
+    PetscReal rnorm;
+    PetscCall(VecNorm(R_, NORM_2, &rnorm));
+    if (!std::isfinite(rnorm)) break;
+    const double tol = std::max(rtol_ * qnorm * std::max(1.0, std::abs(*lambda)), floor);
+    if (k > 0 && rnorm <= tol) {
+      *ok = true;
+      break;
+    }
+    ++*its;
+    PetscCall(loadDerivative(U, *lambda, q_));
+    PetscCall(factor(U, *lambda));
+    PetscCall(VecScale(R_, -1.0));
+    PetscCall(KSPSolve(ksp_, R_, duR_));
+    PetscCall(KSPGetConvergedReason(ksp_, &kr));
+    if (kr < 0) break;
+    PetscCall(KSPSolve(ksp_, q_, duq_));
+    PetscCall(VecWAXPY(dU_, -1.0, U0, U));  // increment so far
+    double dll = 0.0;
+    if (displacement) {
+      PetscReal er, eq, eu;
+      PetscCall(VecDot(duR_, e_, &er));
+      PetscCall(VecDot(duq_, e_, &eq));
+      PetscCall(VecDot(dU_, e_, &eu));
+      if (eq == 0.0) break;
+      dll = (ds - eu - er) / eq;
+    } else {
+      // |dU + du_R + dll du_q|^2 + psi^2 |q|^2 (dl + dll)^2 = ds^2
+      PetscCall(VecAXPY(dU_, 1.0, duR_));  // dU + du_R
+      PetscReal aa, bb, cc;
+      PetscCall(VecDot(duq_, duq_, &aa));
+      PetscCall(VecDot(duq_, dU_, &bb));
+      PetscCall(VecDot(dU_, dU_, &cc));
+      const double dlt = *lambda - lambda0, w = psi2 * qnorm * qnorm;
+      const double A = aa + w, B = 2.0 * (bb + w * dlt), C = cc + w * dlt * dlt - ds * ds;
+      const double disc = B * B - 4.0 * A * C;
+      if (!(disc >= 0.0) || A <= 0.0) break;  // no real root: the step is cut
+      const double sq = std::sqrt(disc);
+      const double r1 = (-B + sq) / (2.0 * A), r2 = (-B - sq) / (2.0 * A);
+      // the root whose increment makes the smaller angle with the increment so far (Crisfield 1981)
+      PetscReal d0;
+      PetscCall(VecWAXPY(work_, -1.0, U0, U));
+      PetscCall(VecDot(work_, dU_, &d0));
+      PetscReal dq;
+      PetscCall(VecDot(work_, duq_, &dq));
+      const double c1 = d0 + r1 * dq + w * dlt * (dlt + r1), c2 = d0 + r2 * dq + w * dlt * (dlt + r2);
+      dll = c1 >= c2 ? r1 : r2;
+    }
+    PetscCall(VecAXPY(U, 1.0, duR_));
+    PetscCall(VecAXPY(U, dll, duq_));
+    *lambda += dll;
+  }
+  if (!*ok) {
+    PetscCall(VecCopy(U0, U));
+    *lambda = lambda0;
+  }
+  PetscCall(VecDestroy(&U0));
+  (void)comm;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode ContinuationAnalysis::run(Vec U, const PointCallback& onPoint, bool* converged) {
+  PetscFunctionBeginUser;
+  MPI_Comm comm = asm_.mesh().comm;
+  double lambda = 0.0, arc = 0.0;
+  Vec dUprev, Uprev;
+  PetscCall(VecDuplicate(U, &dUprev));
+  PetscCall(VecDuplicate(U, &Uprev));
+  PetscCall(VecSet(dUprev, 0.0));
+  double ds = opt_.ds, dlPrev = 0.0;
+  *converged = true;
+  {
+    LoadState start;
+    PetscCall(asm_.setMixedReference(U, start));
+  }
+  int prevNeg = -1;
+  if (inertia_) PetscCall(negativeEigenvalues(U, 0.0, &prevNeg));
+  for (int n = 1; n <= opt_.max_steps; ++n) {
+    PathPoint p;
+    p.step = n;
+    const auto Rsave = asm_.referenceRotations();
+    PetscCall(VecCopy(U, Uprev));
+    bool ok = false;
+    int its = 0;
+    while (true) {
+      PetscCall(step(U, &lambda, ds, dUprev, dlPrev, n == 1, &ok, &its));
+      if (ok) break;
+      asm_.setReferenceRotations(Rsave);
+      if (++p.cuts > maxCuts_) break;
+      ds *= 0.5;
+      PetscCall(PetscPrintf(comm, "  path step %d: corrector failed; retrying with %s %.4g\n", n,
+                            opt_.method == "displacement" ? "displacement increment" : "arc length", ds));
+    }
+    if (!ok) {
+      std::ostringstream msg;
+      msg << "path step " << n << " did not converge after " << maxCuts_ << " halvings of the "
+          << (opt_.method == "displacement" ? "displacement increment" : "arc length") << " (last converged load factor "
+          << lambda << "). Try a smaller ds, -continuation_max_it, or check supports for a mechanism.";
+      failure_ = msg.str();
+      *converged = false;
+      break;
+    }
+    PetscCall(VecWAXPY(dUprev, -1.0, Uprev, U));
+    dlPrev = lambda - (points_.empty() ? 0.0 : points_.back().loadFactor);
+    LoadState ls;
+    ls.loadFactor = ls.time = lambda;
+    PetscCall(asm_.setMixedReference(U, ls));
+    PetscCall(asm_.absorbRotations(U));
+    arc += ds;
+    p.loadFactor = lambda;
+    p.arcLength = ds;
+    p.iterations = its;
+    PetscCall(controlDisplacement(U, lambda, &p.controlValue));
+    if (inertia_) PetscCall(pathSlopes(U, lambda, dUprev, dlPrev, &p));
+    if (inertia_) PetscCall(negativeEigenvalues(U, lambda, &p.negativeEigenvalues));
+    points_.push_back(p);
+    if (inertia_ && prevNeg >= 0 && p.negativeEigenvalues != prevNeg) classify();
+    prevNeg = p.negativeEigenvalues;
+    if (onPoint) PetscCall(onPoint(p, U));
+    if (stop_ && *stop_) break;
+    // adaptive arc length: aim at desiredIts corrector iterations
+    ds *= std::clamp(std::sqrt(static_cast<double>(desiredIts_) / std::max(its, 1)), 0.5, 2.0);
+    if (opt_.ds_max > 0) ds = std::copysign(std::min(std::abs(ds), opt_.ds_max), ds);
+    if (opt_.stop_load_factor && lambda >= *opt_.stop_load_factor) break;
+    if (opt_.stop_displacement && std::abs(p.controlValue) >= std::abs(*opt_.stop_displacement)) break;
+  }
+  PetscCall(VecDestroy(&dUprev));
+  PetscCall(VecDestroy(&Uprev));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+// The last two points differ in their negative-eigenvalue count: a limit point when the load factor
+// turned back between them (located by the cubic Hermite interpolant of the load factor over the step),
+// a bifurcation otherwise (between the two points: midpoint).
+void ContinuationAnalysis::classify() {
+  const size_t n = points_.size();
+  const PathPoint& b = points_[n - 1];
+  const PathPoint a = n >= 2 ? points_[n - 2] : PathPoint{};
+  // a limit point when the load factor turned back between the two points (path slopes of opposite
+  // sign), a bifurcation otherwise
+  const bool turned = n >= 2 && a.slopeLoad * b.slopeLoad < 0;
+  CriticalPoint c;
+  c.afterStep = static_cast<int>(n) - 1;
+  c.kind = turned ? CriticalPoint::Limit : CriticalPoint::Bifurcation;
+  if (turned) {
+    // cubic Hermite lambda(t), t in [0, 1] over the step's arc length h, from the values and the path
+    // slopes at both ends; the limit point is where d lambda / dt = 0
+    const double h = b.arcLength, la = a.loadFactor, lb = b.loadFactor, ma = h * a.slopeLoad, mb = h * b.slopeLoad;
+    const double A2 = 6 * la + 3 * ma - 6 * lb + 3 * mb, A1 = -6 * la - 4 * ma + 6 * lb - 2 * mb, A0 = ma;
+    double t = 0.5;
+    if (std::abs(A2) > 1e-300) {
+      const double disc = std::max(A1 * A1 - 4 * A2 * A0, 0.0);
+      const double t1 = (-A1 + std::sqrt(disc)) / (2 * A2), t2 = (-A1 - std::sqrt(disc)) / (2 * A2);
+      t = (t1 >= 0 && t1 <= 1) ? t1 : std::clamp(t2, 0.0, 1.0);
+    } else if (A1 != 0.0) {
+      t = std::clamp(-A0 / A1, 0.0, 1.0);
+    }
+    auto hermite = [t](double ya, double yb, double sa, double sb) {
+      const double t2 = t * t, t3 = t2 * t;
+      return (2 * t3 - 3 * t2 + 1) * ya + (t3 - 2 * t2 + t) * sa + (-2 * t3 + 3 * t2) * yb + (t3 - t2) * sb;
+    };
+    c.loadFactor = hermite(la, lb, ma, mb);
+    c.controlValue = hermite(a.controlValue, b.controlValue, h * a.slopeControl, h * b.slopeControl);
+  } else {
+    c.loadFactor = 0.5 * (a.loadFactor + b.loadFactor);
+    c.controlValue = 0.5 * (a.controlValue + b.controlValue);
+  }
+  critical_.push_back(c);
+}
+
+std::string ContinuationAnalysis::summary() const {
+  std::ostringstream s;
+  s << "  path: " << points_.size() << " points, load factor " << (points_.empty() ? 0.0 : points_.back().loadFactor);
+  int its = 0, cuts = 0;
+  for (const PathPoint& p : points_) {
+    its += p.iterations;
+    cuts += p.cuts;
+  }
+  s << ", " << its << " corrector iterations, " << cuts << " cut steps\n";
+  for (const CriticalPoint& c : critical_) {
+    s << "  " << (c.kind == CriticalPoint::Limit ? "limit point" : "bifurcation point") << " between path points "
+      << c.afterStep << " and " << c.afterStep + 1 << ": load factor " << c.loadFactor;
+    if (haveControl_) s << ", control displacement " << c.controlValue;
+    s << "\n";
+  }
+  return s.str();
+}
+
+}  // namespace sinew

@@ -1,0 +1,80 @@
+// Path following past limit points (opt.continuation): arc-length (Crisfield's cylindrical
+// constraint, or spherical with a load scale) or displacement control at one node DOF, on the
+// assembler's residual R(U, lambda) = f_int(U) - f_ext(lambda). Each corrector iteration solves the
+// tangent twice with one factorization (bordering: K du_R = -R, K du_q = q, q = -dR/dlambda) and
+// closes the constraint for the load-factor correction. At every converged point the inertia of the
+// tangent (negative pivots of a symmetric MUMPS factorization, less one per rigid-mode multiplier)
+// says how many unstable directions the state has; a change between two points is a critical point:
+// a limit point where the load factor turns back, a bifurcation otherwise.
+#pragma once
+#include <petscksp.h>
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "assembly/assembler.hpp"
+#include "sinew/model.hpp"
+
+namespace sinew {
+
+struct PathPoint {
+  int step = 0;
+  double loadFactor = 0;
+  double arcLength = 0;        ///< the arc length (or displacement increment) of the step
+  int iterations = 0;          ///< corrector iterations of the last (successful) attempt
+  int cuts = 0;                ///< failed attempts before it (step halved)
+  int negativeEigenvalues = -1;  ///< of the tangent, rigid-mode multipliers discounted; -1 when not computed
+  double controlValue = 0;     ///< the displacement of the control DOF (when a node is given)
+  double slopeLoad = 0, slopeControl = 0;  ///< d lambda / ds and d u_control / ds along the path there
+};
+
+struct CriticalPoint {
+  enum Kind { Limit = 1, Bifurcation = 2 };
+  Kind kind = Limit;
+  int afterStep = 0;    ///< between path points afterStep and afterStep + 1
+  double loadFactor = 0;  ///< located load factor (parabola through three points for a limit point)
+  double controlValue = 0;
+};
+
+class ContinuationAnalysis {
+ public:
+  ContinuationAnalysis(Assembler& assembler, const ContinuationOptions& opt);
+  ~ContinuationAnalysis();
+  using PointCallback = std::function<PetscErrorCode(const PathPoint&, Vec U)>;
+  /// Follows the path from U (load factor 0) until a stop criterion; onPoint after each converged point.
+  PetscErrorCode run(Vec U, const PointCallback& onPoint, bool* converged);
+  const std::vector<PathPoint>& points() const { return points_; }
+  const std::vector<CriticalPoint>& criticalPoints() const { return critical_; }
+  const std::string& failureMessage() const { return failure_; }
+  std::string summary() const;
+  /// The path ends after the current point when *stop is set (an interrupt; equal on every rank).
+  void setStopFlag(const bool* stop) { stop_ = stop; }
+
+ private:
+  PetscErrorCode loadDerivative(Vec U, double lambda, Vec q);
+  PetscErrorCode factor(Vec U, double lambda);
+  PetscErrorCode negativeEigenvalues(Vec U, double lambda, int* count);
+  PetscErrorCode controlDisplacement(Vec U, double lambda, double* value);
+  /// Path tangent at a converged point, oriented along dUlast: d lambda / ds and d u_control / ds.
+  PetscErrorCode pathSlopes(Vec U, double lambda, Vec dUlast, double dlLast, PathPoint* p);
+  PetscErrorCode step(Vec U, double* lambda, double ds, Vec dUprev, double dlPrev, bool first, bool* ok, int* its);
+  void classify();
+
+  Assembler& asm_;
+  ContinuationOptions opt_;
+  Mat K_ = nullptr;
+  KSP ksp_ = nullptr;
+  Vec R_ = nullptr, q_ = nullptr, duR_ = nullptr, duq_ = nullptr, dU_ = nullptr, e_ = nullptr, work_ = nullptr;
+  long multipliers_ = 0;      ///< global number of rigid-mode multipliers (each adds one negative pivot)
+  bool haveControl_ = false;  ///< e_ selects the control DOF among the unknowns
+  double rtol_ = 1e-9;
+  int maxIts_ = 15, maxCuts_ = 10, desiredIts_ = 5;
+  bool inertia_ = true;
+  std::vector<PathPoint> points_;
+  std::vector<CriticalPoint> critical_;
+  std::string failure_;
+  const bool* stop_ = nullptr;
+};
+
+}  // namespace sinew

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <filesystem>
 #include <fstream>
 #include <istream>
 #include <map>
@@ -344,6 +345,8 @@ GmshMesh parseGmsh(std::istream& in, const std::string& file) {
 }
 
 GmshMesh readGmsh(const std::string& path) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) throw SceneError("mesh", "'" + path + "' is a directory, not a Gmsh mesh file");
   std::ifstream in(path);
   if (!in) throw SceneError("mesh", "cannot open mesh file '" + path + "'");
   return parseGmsh(in, path);

@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include <yaml-cpp/depthguard.h>
+#include <yaml-cpp/eventhandler.h>
 
 #include "scene/nearest_name.hpp"
 #include "scene/scene_detail.hpp"
@@ -335,26 +336,63 @@ void checkText(const std::string& text, const std::string& prefix) {
   }
 }
 
-/// The one YAML document of the scene (null when the text holds none).
-YAML::Node loadOneDocument(const std::string& text, const std::string& prefix) {
-  std::vector<YAML::Node> docs;
+/// Records where a YAML document starts (Parser events; the content is not kept).
+class DocumentStart : public YAML::EventHandler {
+ public:
+  YAML::Mark mark;
+  void OnDocumentStart(const YAML::Mark& m) override { mark = m; }
+  void OnDocumentEnd() override {}
+  void OnNull(const YAML::Mark&, YAML::anchor_t) override {}
+  void OnAlias(const YAML::Mark&, YAML::anchor_t) override {}
+  void OnScalar(const YAML::Mark&, const std::string&, YAML::anchor_t, const std::string&) override {}
+  void OnSequenceStart(const YAML::Mark&, const std::string&, YAML::anchor_t, YAML::EmitterStyle::value) override {}
+  void OnSequenceEnd() override {}
+  void OnMapStart(const YAML::Mark&, const std::string&, YAML::anchor_t, YAML::EmitterStyle::value) override {}
+  void OnMapEnd() override {}
+};
+
+std::string at(const YAML::Mark& m) {
+  return "line " + std::to_string(m.line + 1) + ", column " + std::to_string(m.column + 1);
+}
+
+/// Runs a yaml-cpp call; its exceptions become SceneErrors with the position.
+template <class F>
+auto yamlCall(const std::string& prefix, F&& f) {
   try {
-    docs = YAML::LoadAll(text);
+    return f();
   } catch (const YAML::DeepRecursion& e) {
     throw SceneError("", prefix + "the nesting is too deep: more than " + std::to_string(e.depth()) +
-                             " levels of lists or maps at line " + std::to_string(e.mark.line + 1) + ", column " +
-                             std::to_string(e.mark.column + 1) + " (a scene nests a few levels)");
+                             " levels of lists or maps at " + at(e.mark) + " (a scene nests a few levels)");
   } catch (const YAML::Exception& e) {
-    throw SceneError("", prefix + "YAML syntax error at line " + std::to_string(e.mark.line + 1) + ", column " +
-                             std::to_string(e.mark.column + 1) + ": " + e.msg);
+    throw SceneError("", prefix + "YAML syntax error at " + at(e.mark) + ": " + e.msg);
   }
-  if (docs.size() > 1) {
-    const int line = docs[1].Mark().line;
-    throw SceneError("", prefix + "the file holds " + std::to_string(docs.size()) + " YAML documents (the second " +
-                             (line >= 0 ? "at line " + std::to_string(line + 1) : std::string("after a '---' line")) +
-                             "); Sinew reads one");
+}
+
+/// Counts the documents of the text with the event parser (yaml-cpp's LoadAll loops forever on
+/// some malformed input: a document that does not advance the parser is reported as an error).
+void checkOneDocument(const std::string& text, const std::string& prefix) {
+  std::istringstream in(text);
+  YAML::Parser parser(in);
+  int count = 0, previous = -1;
+  YAML::Mark second;
+  for (;;) {
+    DocumentStart doc;
+    if (!yamlCall(prefix, [&] { return parser.HandleNextDocument(doc); })) break;
+    if (doc.mark.pos <= previous)
+      throw SceneError("", prefix + "YAML syntax error at " + at(doc.mark) +
+                               ": unexpected text after the end of a complete value (a stray ']', '}' or ',')");
+    previous = doc.mark.pos;
+    if (++count == 2) second = doc.mark;
   }
-  return docs.empty() ? YAML::Node() : docs[0];
+  if (count > 1)
+    throw SceneError("", prefix + "the file holds " + std::to_string(count) + " YAML documents (the second starts at line " +
+                             std::to_string(second.line + 1) + "); Sinew reads one");
+}
+
+/// The one YAML document of the scene (null when the text holds none).
+YAML::Node loadOneDocument(const std::string& text, const std::string& prefix) {
+  checkOneDocument(text, prefix);
+  return yamlCall(prefix, [&] { return YAML::Load(text); });
 }
 
 Model parseSceneImpl(const std::string& text, const std::string& baseDir, const OptionOverride& overrides,

@@ -77,27 +77,41 @@ void checkMagnitude(double v, const std::string& path, const Magnitude& mag, con
     fail(path, label + "expected 0 or " + mag.what + " of magnitude in " + bounds(mag) + ", got " + fmt(v));
 }
 
-double getNumber(const YAML::Node& n, const std::string& path, const Magnitude& mag) {
+namespace {
+
+double finiteNumber(const YAML::Node& n, const std::string& path) {
   if (!isNumber(n)) {
     const std::string why = nonFiniteReason(n);
     fail(path, "expected " + (why.empty() ? std::string("a number") : why) + ", got " + describe(n));
   }
   const double v = n.as<double>();
+  if (v == 0) {  // a nonzero literal that underflows to 0 (1e-999)
+    const std::string why = nonFiniteReason(n);
+    if (!why.empty()) fail(path, "expected " + why + ", got " + describe(n));
+  }
+  return v;
+}
+
+}  // namespace
+
+double getNumber(const YAML::Node& n, const std::string& path, const Magnitude& mag) {
+  const double v = finiteNumber(n, path);
   checkMagnitude(v, path, mag);
   return v;
 }
 
 double getPositive(const YAML::Node& n, const std::string& path, const Magnitude& mag) {
-  const double v = getNumber(n, path, {0.0, mag.max, mag.what});
+  const double v = finiteNumber(n, path);
   if (!(v > 0)) fail(path, "expected a number > 0, got " + fmt(v));
-  if (v < mag.min) fail(path, "expected " + std::string(mag.what) + " in " + bounds(mag) + ", got " + fmt(v));
+  if (v < mag.min || v > mag.max) fail(path, "expected " + std::string(mag.what) + " in " + bounds(mag) + ", got " + fmt(v));
   return v;
 }
 
 double getNonNegative(const YAML::Node& n, const std::string& path, const Magnitude& mag) {
-  const double v = getNumber(n, path, {0.0, mag.max, mag.what});
+  const double v = finiteNumber(n, path);
   if (v < 0) fail(path, "expected a number >= 0, got " + fmt(v));
-  if (v != 0 && v < mag.min) fail(path, "expected 0 or " + std::string(mag.what) + " in " + bounds(mag) + ", got " + fmt(v));
+  if (v != 0 && (v < mag.min || v > mag.max))
+    fail(path, "expected 0 or " + std::string(mag.what) + " in " + bounds(mag) + ", got " + fmt(v));
   return v;
 }
 

@@ -212,21 +212,29 @@ std::string nodeList(const std::vector<int>& nodes) {
   return s;
 }
 
-/// Two elements of the same type on the same node set (in any order) are one element given twice.
+/// "a beam element (eprops[0])", "a rigid beam (in no eprops set)".
+std::string elementKind(const Model& m, int e) {
+  const int set = m.elementSet[static_cast<std::size_t>(e)];
+  if (set < 0) return "a rigid beam (in no eprops set)";
+  return std::string("a ") + typeName(m.eprops[static_cast<std::size_t>(set)].type) + " element (eprops[" + std::to_string(set) + "])";
+}
+
+/// Two elements of the same type on the same node set (in any order) are one element given twice;
+/// an element in no set is a (rigid) beam, so it duplicates a beam on the same nodes too.
 void checkDuplicateElements(const SceneContext& ctx) {
   const Model& m = ctx.model;
-  std::map<std::pair<int, std::vector<int>>, int> seen;  // (type or -1 for rigid, sorted nodes) -> element
+  std::map<std::pair<int, std::vector<int>>, int> seen;  // (type, sorted nodes) -> element
   for (std::size_t e = 0; e < m.elements.size(); ++e) {
     const int set = m.elementSet[e];
-    const int type = set < 0 ? -1 : static_cast<int>(m.eprops[static_cast<std::size_t>(set)].type);
+    const ElementType type = set < 0 ? ElementType::Beam : m.eprops[static_cast<std::size_t>(set)].type;
     std::vector<int> nodes = m.elements[e];
     std::sort(nodes.begin(), nodes.end());
     const int ei = static_cast<int>(e);
-    const auto [it, fresh] = seen.emplace(std::make_pair(type, nodes), ei);
+    const auto [it, fresh] = seen.emplace(std::make_pair(static_cast<int>(type), nodes), ei);
     if (fresh) continue;
-    const std::string kind = set < 0 ? "rigid beam" : typeName(static_cast<ElementType>(type));
-    fail(ctx.elementPath(ei), ctx.elementLabel(ei) + " duplicates " + ctx.elementLabel(it->second) + ": both are " + kind +
-                                  " elements on nodes " + nodeList(nodes) + " (remove one, or merge their properties into one set)");
+    fail(ctx.elementPath(ei), ctx.elementLabel(ei) + " duplicates " + ctx.elementLabel(it->second) + " on nodes " + nodeList(nodes) +
+                                  ": " + elementKind(m, ei) + " and " + elementKind(m, it->second) +
+                                  " (remove one, or merge their properties into one set)");
   }
 }
 

@@ -55,7 +55,7 @@ void checkSetKeys(const YAML::Node& n, const std::string& path, ElementType type
 
 /// A direction vector: 3 numbers, not all zero.
 Vec3 getDirection(const YAML::Node& n, const std::string& path, bool allow2 = false) {
-  const Vec3 v = getVec3(n, path, allow2);
+  const Vec3 v = getVec3(n, path, allow2, kLoad);
   if (norm(v) == 0) fail(path, "expected a nonzero direction, got [0, 0, 0]");
   return v;
 }
@@ -82,9 +82,9 @@ void parseBeam(const YAML::Node& n, const std::string& path, ElementSet& s) {
   if (const YAML::Node v = n["nbeams"]; v.IsDefined()) s.nbeams = getIntAtLeast(v, childPath(path, "nbeams"), 1);
   if (const YAML::Node v = n["cw"]; v.IsDefined()) s.cw = getBool(v, childPath(path, "cw"));
   const bool hasE = n["emod"].IsDefined(), hasG = n["smod"].IsDefined(), hasRho = n["dens"].IsDefined();
-  if (hasE) s.emod = getNonNegative(n["emod"], childPath(path, "emod"));
-  if (hasG) s.smod = getNonNegative(n["smod"], childPath(path, "smod"));
-  if (hasRho) s.dens = getNonNegative(n["dens"], childPath(path, "dens"));
+  if (hasE) s.emod = getNonNegative(n["emod"], childPath(path, "emod"), kMaterial);
+  if (hasG) s.smod = getNonNegative(n["smod"], childPath(path, "smod"), kMaterial);
+  if (hasRho) s.dens = getNonNegative(n["dens"], childPath(path, "dens"), kMaterial);
   if (const YAML::Node v = n["cshape"]; v.IsDefined())
     s.cshape = getChoice(v, childPath(path, "cshape"), {"rect", "circ"}) == "rect" ? CrossSection::Rect : CrossSection::Circ;
   if (const YAML::Node v = n["dim"]; v.IsDefined()) {
@@ -98,7 +98,7 @@ void parseBeam(const YAML::Node& n, const std::string& path, ElementSet& s) {
     if (v.size() != want)
       fail(p, "expected " + std::to_string(want) + (want == 1 ? " number" : " numbers") + " for cshape " + shape + " (" +
                   (want == 2 ? "[width, height]" : "[diameter]") + "), got " + std::to_string(v.size()));
-    for (std::size_t i = 0; i < want; ++i) s.dim.push_back(getPositive(v[i], indexPath(p, i)));
+    for (std::size_t i = 0; i < want; ++i) s.dim.push_back(getPositive(v[i], indexPath(p, i), kSectionLength));
   }
   if (const YAML::Node v = n["orien"]; v.IsDefined()) s.orien = getDirection(v, childPath(path, "orien"));
 
@@ -121,31 +121,31 @@ void parseBeam(const YAML::Node& n, const std::string& path, ElementSet& s) {
 
 void parseCable(const YAML::Node& n, const std::string& path, ElementSet& s) {
   if (!n["area"].IsDefined()) fail(childPath(path, "area"), "missing: a cable needs area (cross-section area)");
-  s.area = getPositive(n["area"], childPath(path, "area"));
+  s.area = getPositive(n["area"], childPath(path, "area"), kArea);
   if (!n["emod"].IsDefined()) fail(childPath(path, "emod"), "missing: a cable needs emod (Young's modulus)");
-  s.emod = getNonNegative(n["emod"], childPath(path, "emod"));
-  if (const YAML::Node v = n["dens"]; v.IsDefined()) s.dens = getNonNegative(v, childPath(path, "dens"));
-  if (const YAML::Node v = n["prestress"]; v.IsDefined()) s.prestress = getNonNegative(v, childPath(path, "prestress"));
+  s.emod = getNonNegative(n["emod"], childPath(path, "emod"), kMaterial);
+  if (const YAML::Node v = n["dens"]; v.IsDefined()) s.dens = getNonNegative(v, childPath(path, "dens"), kMaterial);
+  if (const YAML::Node v = n["prestress"]; v.IsDefined()) s.prestress = getNonNegative(v, childPath(path, "prestress"), kLoad);
   if (const YAML::Node v = n["prestress_stress"]; v.IsDefined()) {
     if (s.prestress)
       fail(childPath(path, "prestress_stress"), "give either prestress (a force) or prestress_stress (a stress), not both");
-    s.prestress_stress = getNonNegative(v, childPath(path, "prestress_stress"));
+    s.prestress_stress = getNonNegative(v, childPath(path, "prestress_stress"), kLoad);
   }
 }
 
 void parseMembrane(const YAML::Node& n, const std::string& path, ElementSet& s) {
   if (!n["thickness"].IsDefined()) fail(childPath(path, "thickness"), "missing: a membrane needs thickness");
-  s.thickness = getPositive(n["thickness"], childPath(path, "thickness"));
+  s.thickness = getPositive(n["thickness"], childPath(path, "thickness"), kSectionLength);
   if (!n["emod"].IsDefined()) fail(childPath(path, "emod"), "missing: a membrane needs emod (Young's modulus)");
-  s.emod = getPositive(n["emod"], childPath(path, "emod"));
+  s.emod = getPositive(n["emod"], childPath(path, "emod"), kMaterial);
   if (!n["nu"].IsDefined()) fail(childPath(path, "nu"), "missing: a membrane needs nu (Poisson's ratio, in [0, 0.5))");
   s.nu = getInRange(n["nu"], childPath(path, "nu"), 0.0, 0.5, true);
-  if (const YAML::Node v = n["dens"]; v.IsDefined()) s.dens = getNonNegative(v, childPath(path, "dens"));
+  if (const YAML::Node v = n["dens"]; v.IsDefined()) s.dens = getNonNegative(v, childPath(path, "dens"), kMaterial);
   if (const YAML::Node v = n["prestress"]; v.IsDefined()) {
     const std::string p = childPath(path, "prestress");
     if (!v.IsSequence() || v.size() != 3)
       fail(p, "expected 3 numbers [s11, s22, s12], got " + (v.IsSequence() ? std::to_string(v.size()) : describe(v)));
-    const auto x = getNumbers(v, p, 3);
+    const auto x = getNumbers(v, p, 3, kLoad);
     s.membrane_prestress = {x[0], x[1], x[2]};
   }
   if (const YAML::Node v = n["prestress_dir"]; v.IsDefined()) s.prestress_dir = getDirection(v, childPath(path, "prestress_dir"));
@@ -154,26 +154,26 @@ void parseMembrane(const YAML::Node& n, const std::string& path, ElementSet& s) 
       fail(childPath(path, "prestress_radial_axis"), "give either prestress_dir or prestress_radial_axis, not both");
     s.prestress_radial_axis = getDirection(v, childPath(path, "prestress_radial_axis"));
   }
-  if (const YAML::Node v = n["pressure"]; v.IsDefined()) s.pressure = getNumber(v, childPath(path, "pressure"));
+  if (const YAML::Node v = n["pressure"]; v.IsDefined()) s.pressure = getNumber(v, childPath(path, "pressure"), kLoad);
   if (const YAML::Node v = n["pressure_initial"]; v.IsDefined())
-    s.pressure_initial = getNumber(v, childPath(path, "pressure_initial"));
+    s.pressure_initial = getNumber(v, childPath(path, "pressure_initial"), kLoad);
 }
 
 void parseAncf(const YAML::Node& n, const std::string& path, ElementSet& s) {
   auto p = [&](const char* k) { return childPath(path, k); };
-  if (const YAML::Node v = n["physicsMassPerLength"]; v.IsDefined()) s.physicsMassPerLength = getNonNegative(v, p("physicsMassPerLength"));
+  if (const YAML::Node v = n["physicsMassPerLength"]; v.IsDefined()) s.physicsMassPerLength = getNonNegative(v, p("physicsMassPerLength"), kMaterial);
   if (!n["physicsBendingStiffness"].IsDefined())
     fail(p("physicsBendingStiffness"), "missing: ancf_cable2d needs physicsBendingStiffness (EI) > 0");
-  s.physicsBendingStiffness = getPositive(n["physicsBendingStiffness"], p("physicsBendingStiffness"));
+  s.physicsBendingStiffness = getPositive(n["physicsBendingStiffness"], p("physicsBendingStiffness"), kMaterial);
   if (!n["physicsAxialStiffness"].IsDefined())
     fail(p("physicsAxialStiffness"), "missing: ancf_cable2d needs physicsAxialStiffness (EA) > 0");
-  s.physicsAxialStiffness = getPositive(n["physicsAxialStiffness"], p("physicsAxialStiffness"));
-  if (const YAML::Node v = n["physicsBendingDamping"]; v.IsDefined()) s.physicsBendingDamping = getNonNegative(v, p("physicsBendingDamping"));
-  if (const YAML::Node v = n["physicsAxialDamping"]; v.IsDefined()) s.physicsAxialDamping = getNonNegative(v, p("physicsAxialDamping"));
+  s.physicsAxialStiffness = getPositive(n["physicsAxialStiffness"], p("physicsAxialStiffness"), kMaterial);
+  if (const YAML::Node v = n["physicsBendingDamping"]; v.IsDefined()) s.physicsBendingDamping = getNonNegative(v, p("physicsBendingDamping"), kMaterial);
+  if (const YAML::Node v = n["physicsAxialDamping"]; v.IsDefined()) s.physicsAxialDamping = getNonNegative(v, p("physicsAxialDamping"), kMaterial);
   if (const YAML::Node v = n["physicsReferenceAxialStrain"]; v.IsDefined())
-    s.physicsReferenceAxialStrain = getNumber(v, p("physicsReferenceAxialStrain"));
+    s.physicsReferenceAxialStrain = getNumber(v, p("physicsReferenceAxialStrain"), kRatio);
   if (const YAML::Node v = n["physicsReferenceCurvature"]; v.IsDefined())
-    s.physicsReferenceCurvature = getNumber(v, p("physicsReferenceCurvature"));
+    s.physicsReferenceCurvature = getNumber(v, p("physicsReferenceCurvature"), kCurvature);
   if (const YAML::Node v = n["strainIsRelativeToReference"]; v.IsDefined())
     s.strainIsRelativeToReference = getInRange(v, p("strainIsRelativeToReference"), 0.0, 1.0);
   if (const YAML::Node v = n["useReducedOrderIntegration"]; v.IsDefined()) {
@@ -189,7 +189,7 @@ void parseAncf(const YAML::Node& n, const std::string& path, ElementSet& s) {
     (std::string(k) == "axialForceUserFunction" ? s.axialForceUserFunction : s.bendingMomentUserFunction) = f;
   }
   if (const YAML::Node v = n["nbeams"]; v.IsDefined()) s.nbeams = getIntAtLeast(v, p("nbeams"), 1);
-  if (const YAML::Node v = n["massProportionalLoad"]; v.IsDefined()) s.massProportionalLoad = getVec3(v, p("massProportionalLoad"), true);
+  if (const YAML::Node v = n["massProportionalLoad"]; v.IsDefined()) s.massProportionalLoad = getVec3(v, p("massProportionalLoad"), true, kLoad);
 }
 
 void parseLook(const YAML::Node& n, const std::string& path, ElementSet& s) {
@@ -203,6 +203,56 @@ void parseLook(const YAML::Node& n, const std::string& path, ElementSet& s) {
   }
   if (const YAML::Node v = n["opacity"]; v.IsDefined()) s.opacity = getInRange(v, childPath(path, "opacity"), 0.0, 1.0);
   if (const YAML::Node v = n["hide"]; v.IsDefined()) s.hide = getBool(v, childPath(path, "hide"));
+}
+
+std::string nodeList(const std::vector<int>& nodes) {
+  std::string s;
+  for (std::size_t i = 0; i < nodes.size(); ++i)
+    s += (i == 0 ? "" : i + 1 == nodes.size() ? " and " : ", ") + std::to_string(nodes[i] + 1);
+  return s;
+}
+
+/// "a beam element (eprops[0])", "a rigid beam (in no eprops set)".
+std::string elementKind(const Model& m, int e) {
+  const int set = m.elementSet[static_cast<std::size_t>(e)];
+  if (set < 0) return "a rigid beam (in no eprops set)";
+  return std::string("a ") + typeName(m.eprops[static_cast<std::size_t>(set)].type) + " element (eprops[" + std::to_string(set) + "])";
+}
+
+/// Two elements of the same type on the same node set (in any order) are one element given twice;
+/// an element in no set is a (rigid) beam, so it duplicates a beam on the same nodes too.
+void checkDuplicateElements(const SceneContext& ctx) {
+  const Model& m = ctx.model;
+  std::map<std::pair<int, std::vector<int>>, int> seen;  // (type, sorted nodes) -> element
+  for (std::size_t e = 0; e < m.elements.size(); ++e) {
+    const int set = m.elementSet[e];
+    const ElementType type = set < 0 ? ElementType::Beam : m.eprops[static_cast<std::size_t>(set)].type;
+    std::vector<int> nodes = m.elements[e];
+    std::sort(nodes.begin(), nodes.end());
+    const int ei = static_cast<int>(e);
+    const auto [it, fresh] = seen.emplace(std::make_pair(static_cast<int>(type), nodes), ei);
+    if (fresh) continue;
+    fail(ctx.elementPath(ei), ctx.elementLabel(ei) + " duplicates " + ctx.elementLabel(it->second) + " on nodes " + nodeList(nodes) +
+                                  ": " + elementKind(m, ei) + " and " + elementKind(m, it->second) +
+                                  " (remove one, or merge their properties into one set)");
+  }
+}
+
+/// Elements after nbeams splitting stay within kMaxSplitElements.
+void checkSplitCount(const SceneContext& ctx) {
+  const Model& m = ctx.model;
+  double total = 0;
+  for (std::size_t e = 0; e < m.elements.size(); ++e) {
+    const int set = m.elementSet[e];
+    total += (set >= 0 && m.elements[e].size() == 2) ? m.eprops[static_cast<std::size_t>(set)].nbeams : 1;
+  }
+  if (total <= kMaxSplitElements) return;
+  if (m.eprops.empty()) fail("elements", "the model has " + fmt(total) + " elements; Sinew takes at most " + fmt(kMaxSplitElements));
+  int biggest = 0;
+  for (std::size_t i = 1; i < m.eprops.size(); ++i)
+    if (m.eprops[i].nbeams > m.eprops[static_cast<std::size_t>(biggest)].nbeams) biggest = static_cast<int>(i);
+  fail(childPath(indexPath("eprops", static_cast<std::size_t>(biggest)), "nbeams"),
+       "nbeams splits the model into " + fmt(total) + " elements; Sinew takes at most " + fmt(kMaxSplitElements));
 }
 
 }  // namespace
@@ -353,6 +403,8 @@ void checkElementTypes(SceneContext& ctx) {
       if (flat) fail(ctx.elementPath(ei), ctx.elementLabel(ei) + " has zero area: its nodes are collinear");
     }
   }
+  checkDuplicateElements(ctx);
+  checkSplitCount(ctx);
 }
 
 }  // namespace sinew::scene

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <filesystem>
 #include <fstream>
 #include <istream>
 #include <map>
@@ -344,6 +345,10 @@ GmshMesh parseGmsh(std::istream& in, const std::string& file) {
 }
 
 GmshMesh readGmsh(const std::string& path) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) throw SceneError("mesh", "'" + path + "' is a directory, not a Gmsh mesh file");
+  if (std::filesystem::exists(path, ec) && !std::filesystem::is_regular_file(path, ec))
+    throw SceneError("mesh", "'" + path + "' is not a regular file (a device or a pipe), not a Gmsh mesh file");
   std::ifstream in(path);
   if (!in) throw SceneError("mesh", "cannot open mesh file '" + path + "'");
   return parseGmsh(in, path);

@@ -37,14 +37,14 @@ std::array<double, 6> getMominertia(const YAML::Node& v, const std::string& p) {
   if (!v.IsSequence()) fail(p, what + ", got " + describe(v));
   std::array<double, 6> I{};
   if (v.size() == 6) {
-    const auto x = getNumbers(v, p, 6);
+    const auto x = getNumbers(v, p, 6, kInertia);
     std::copy(x.begin(), x.end(), I.begin());
   } else if (v.size() == 3) {
     double a[3][3];
     double scale = 0;
     for (std::size_t i = 0; i < 3; ++i) {
       if (!v[i].IsSequence()) fail(indexPath(p, i), what + ": expected a row of 3 numbers, got " + describe(v[i]));
-      const auto row = getNumbers(v[i], indexPath(p, i), 3);
+      const auto row = getNumbers(v[i], indexPath(p, i), 3, kInertia);
       for (std::size_t j = 0; j < 3; ++j) {
         a[i][j] = row[j];
         scale = std::max(scale, std::abs(row[j]));
@@ -67,11 +67,11 @@ std::array<double, 6> getMominertia(const YAML::Node& v, const std::string& p) {
 /// Moment: 3 numbers; a 2D model also takes one number (about z).
 Vec3 getMoment(const YAML::Node& v, const std::string& p, bool twoD) {
   if (twoD && (isNumber(v) || (v.IsSequence() && v.size() == 1))) {
-    return {0, 0, getNumber(v.IsSequence() ? v[0] : v, v.IsSequence() ? indexPath(p, 0) : p)};
+    return {0, 0, getNumber(v.IsSequence() ? v[0] : v, v.IsSequence() ? indexPath(p, 0) : p, kLoad)};
   }
   if (twoD && (!v.IsSequence() || v.size() != 3))
     fail(p, "expected 3 numbers (or 1, about z, in a 2D model), got " + (v.IsSequence() ? std::to_string(v.size()) : describe(v)));
-  return getVec3(v, p);
+  return getVec3(v, p, false, kLoad);
 }
 
 std::vector<std::string> getTransfer(const YAML::Node& v, const std::string& p, const std::vector<std::string>& valid) {
@@ -115,18 +115,18 @@ void applyProps(NodeProps& np, LoadSources& src, const YAML::Node& n, const std:
       }
       np.fix_coords = fc;
     } else if (k == "slope") {
-      const auto sv = getNumbers(v, p, 2);
+      const auto sv = getNumbers(v, p, 2, kLoad);
       if (!std::isfinite(sv[0]) || !std::isfinite(sv[1]) || std::hypot(sv[0], sv[1]) == 0.0)
         fail(p, "expected a nonzero reference slope [slope_x, slope_y], got [" + fmt(sv[0]) + ", " + fmt(sv[1]) + "]");
       np.slope = std::array<double, 2>{sv[0], sv[1]};
-    } else if (k == "mass") np.mass = getNonNegative(v, p);
+    } else if (k == "mass") np.mass = getNonNegative(v, p, kMaterial);
     else if (k == "mominertia") np.mominertia = getMominertia(v, p);
-    else if (k.rfind("displ_initial_", 0) == 0) np.displ_initial[static_cast<std::size_t>(k.back() - 'x')] = getNumber(v, p);
-    else if (k.rfind("displ_", 0) == 0) np.displ[static_cast<std::size_t>(k.back() - 'x')] = getNumber(v, p);
-    else if (k == "rot") np.rot = getVec3(v, p);
-    else if (k == "rot_initial") np.rot_initial = getVec3(v, p);
-    else if (k == "force") { np.force = getVec3(v, p, twoD); src.force = p; }
-    else if (k == "force_initial") { np.force_initial = getVec3(v, p, twoD); src.force_initial = p; }
+    else if (k.rfind("displ_initial_", 0) == 0) np.displ_initial[static_cast<std::size_t>(k.back() - 'x')] = getNumber(v, p, kCoordinate);
+    else if (k.rfind("displ_", 0) == 0) np.displ[static_cast<std::size_t>(k.back() - 'x')] = getNumber(v, p, kCoordinate);
+    else if (k == "rot") np.rot = getVec3(v, p, false, kRotation);
+    else if (k == "rot_initial") np.rot_initial = getVec3(v, p, false, kRotation);
+    else if (k == "force") { np.force = getVec3(v, p, twoD, kLoad); src.force = p; }
+    else if (k == "force_initial") { np.force_initial = getVec3(v, p, twoD, kLoad); src.force_initial = p; }
     else if (k == "moment") { np.moment = getMoment(v, p, twoD); src.moment = p; }
     else if (k == "moment_initial") { np.moment_initial = getMoment(v, p, twoD); src.moment_initial = p; }
     else if (k == "transfer_in") { np.transfer_in = getTransfer(v, p, kTransferIn); src.transfer_in = p; }

@@ -108,10 +108,12 @@ void parseDynamics(const YAML::Node& v, const std::string& path, Options& opt) {
   checkKeys(v, path, {"tend", "dt", "spectral_radius", "output_every"});
   DynamicsOptions d;
   if (!v["tend"].IsDefined()) fail(childPath(path, "tend"), "missing: dynamics needs tend (end time) > 0");
-  d.tend = getPositive(v["tend"], childPath(path, "tend"));
+  d.tend = getPositive(v["tend"], childPath(path, "tend"), kTime);
   if (!v["dt"].IsDefined()) fail(childPath(path, "dt"), "missing: dynamics needs dt (time step) > 0");
-  d.dt = getPositive(v["dt"], childPath(path, "dt"));
+  d.dt = getPositive(v["dt"], childPath(path, "dt"), kTime);
   if (d.dt > d.tend) fail(childPath(path, "dt"), "expected dt <= tend (" + fmt(d.tend) + "), got " + fmt(d.dt));
+  if (d.tend / d.dt > kMaxTimeSteps)
+    fail(childPath(path, "dt"), "tend / dt = " + fmt(d.tend / d.dt) + " time steps; Sinew takes at most " + fmt(kMaxTimeSteps));
   if (v["spectral_radius"].IsDefined()) d.spectral_radius = getInRange(v["spectral_radius"], childPath(path, "spectral_radius"), 0.0, 1.0);
   if (v["output_every"].IsDefined()) d.output_every = getIntAtLeast(v["output_every"], childPath(path, "output_every"), 1);
   opt.dynamics = d;
@@ -209,13 +211,13 @@ void parseOptions(const YAML::Node& opt, SceneContext& ctx) {
     else if (k == "calcbuck") o.calcbuck = getBool(v, p);
     else if (k == "calccompl") o.calccompl = getBool(v, p);
     else if (k == "calcfreq") o.calcfreq = getBool(v, p);
-    else if (k == "gravity") o.gravity = getVec3(v, p, m.dimension == 2);
+    else if (k == "gravity") o.gravity = getVec3(v, p, m.dimension == 2, kLoad);
     else if (k == "rls") parseRls(v, p, ctx);
     else if (k == "transfer") {
       if (v.IsSequence()) {
         if (v.size() != 2) fail(p, "expected true, false or [true, zeta], got a list of " + std::to_string(v.size()));
         o.transfer = getBool(v[0], indexPath(p, 0));
-        o.transfer_zeta = getNonNegative(v[1], indexPath(p, 1));
+        o.transfer_zeta = getNonNegative(v[1], indexPath(p, 1), kRatio);
       } else if (v.IsScalar()) {
         if (isNumber(v) && v.Scalar() != "0" && v.Scalar() != "1")
           fail(p, "expected true, false or [true, zeta], got " + describe(v));
@@ -271,23 +273,23 @@ void parseFormfinding(const YAML::Node& ff, SceneContext& ctx) {
   if (ff["formfinding_step"].IsDefined()) f.formfinding_step = getIntAtLeast(ff["formfinding_step"], p("formfinding_step"), 1);
   if (ff["max_iter_equilibrium"].IsDefined())
     f.max_iter_equilibrium = getIntAtLeast(ff["max_iter_equilibrium"], p("max_iter_equilibrium"), 1);
-  if (ff["equilibrium_accuracy"].IsDefined()) f.equilibrium_accuracy = getPositive(ff["equilibrium_accuracy"], p("equilibrium_accuracy"));
+  if (ff["equilibrium_accuracy"].IsDefined()) f.equilibrium_accuracy = getPositive(ff["equilibrium_accuracy"], p("equilibrium_accuracy"), kRatio);
   if (ff["formfinding_elements"].IsDefined()) f.formfinding_elements = sets("formfinding_elements");
   if (const YAML::Node v = ff["homotopy_curve"]; v.IsDefined()) {
     if (!v.IsSequence()) fail(p("homotopy_curve"), "expected a list of numbers in [0, 1] (one per step), got " + describe(v));
     for (std::size_t i = 0; i < v.size(); ++i) f.homotopy_curve.push_back(getInRange(v[i], indexPath(p("homotopy_curve"), i), 0.0, 1.0));
   }
   if (ff["stress_adaption"].IsDefined()) f.stress_adaption = sets("stress_adaption");
-  if (ff["lambda_max"].IsDefined()) f.lambda_max = getPositive(ff["lambda_max"], p("lambda_max"));
-  if (ff["mue_relax"].IsDefined()) f.mue_relax = getNonNegative(ff["mue_relax"], p("mue_relax"));
-  if (ff["distortion_max"].IsDefined()) f.distortion_max = getNonNegative(ff["distortion_max"], p("distortion_max"));
+  if (ff["lambda_max"].IsDefined()) f.lambda_max = getPositive(ff["lambda_max"], p("lambda_max"), kRatio);
+  if (ff["mue_relax"].IsDefined()) f.mue_relax = getNonNegative(ff["mue_relax"], p("mue_relax"), kRatio);
+  if (ff["distortion_max"].IsDefined()) f.distortion_max = getNonNegative(ff["distortion_max"], p("distortion_max"), kRatio);
   if (ff["x_urs"].IsDefined()) f.x_urs = getBool(ff["x_urs"], p("x_urs"));
   if (ff["x_urs_step"].IsDefined()) f.x_urs_step = getIntAtLeast(ff["x_urs_step"], p("x_urs_step"), 1);
   if (ff["elastic_restart_method"].IsDefined())
     f.elastic_restart_method = getChoice(ff["elastic_restart_method"], p("elastic_restart_method"), {"NONE", "FORCE", "DISPLACEMENT"});
   if (ff["formfinding_tolerance"].IsDefined())
-    f.formfinding_tolerance = getNonNegative(ff["formfinding_tolerance"], p("formfinding_tolerance"));
-  if (ff["max_shape_change"].IsDefined()) f.max_shape_change = getPositive(ff["max_shape_change"], p("max_shape_change"));
+    f.formfinding_tolerance = getNonNegative(ff["formfinding_tolerance"], p("formfinding_tolerance"), kRatio);
+  if (ff["max_shape_change"].IsDefined()) f.max_shape_change = getPositive(ff["max_shape_change"], p("max_shape_change"), kRatio);
   for (int s : f.formfinding_elements)
     if (m.eprops[static_cast<std::size_t>(s)].type != ElementType::Cable && m.eprops[static_cast<std::size_t>(s)].type != ElementType::Membrane)
       fail(p("formfinding_elements"), "eprops set " + std::to_string(s + 1) + " is not a cable or membrane set (only those can be form-found)");
@@ -315,7 +317,7 @@ void parseSensors(const YAML::Node& sensors, SceneContext& ctx) {
                                            std::to_string(m.elements[static_cast<std::size_t>(s.element)].size()) + " nodes");
     if (n["x"].IsDefined()) {
       const double L = elementLength(m, s.element);
-      s.x = getNumber(n["x"], childPath(path, "x"));
+      s.x = getNumber(n["x"], childPath(path, "x"), kCoordinate);
       if (s.x < -1e-12 * L || s.x > L * (1 + 1e-12))
         fail(childPath(path, "x"), "expected a position in [0, " + fmt(L) + "] along element " + std::to_string(s.element + 1) +
                                        " (its length), got " + fmt(s.x));

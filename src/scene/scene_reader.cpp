@@ -4,10 +4,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <set>
 #include <sstream>
+
+#include <yaml-cpp/depthguard.h>
+#include <yaml-cpp/eventhandler.h>
 
 #include "scene/nearest_name.hpp"
 #include "scene/scene_detail.hpp"
@@ -70,7 +74,7 @@ int parseNodes(const YAML::Node& nodes, Model& m) {
     if (dim == 0) dim = n;
     if (n != dim)
       fail(path, "expected " + std::to_string(dim) + " numbers like nodes[0] (all nodes have the same dimension), got " + std::to_string(n));
-    const auto x = getNumbers(row, path);
+    const auto x = getNumbers(row, path, kCoordinate);
     m.nodes.push_back({x[0], x[1], n == 3 ? x[2] : 0.0});
   }
   return dim;
@@ -108,6 +112,8 @@ void mergeMesh(const YAML::Node& root, int sceneDim, SceneContext& ctx) {
 
   for (std::size_t i = 0; i < mesh.nodes.size(); ++i) {
     const Vec3& x = mesh.nodes[i];
+    const std::string where = mesh.file + ":" + std::to_string(mesh.nodeLines[i]) + ": node tag " + std::to_string(mesh.nodeTags[i]) + ": ";
+    for (double c : x) checkMagnitude(c, "mesh", kCoordinate, where);
     if (sceneDim == 2 && x[2] != 0.0)
       fail("mesh", mesh.file + ":" + std::to_string(mesh.nodeLines[i]) + ": node tag " + std::to_string(mesh.nodeTags[i]) +
                        " has z = " + fmt(x[2]) + ", but the scene's nodes are 2D (x, y)");
@@ -156,11 +162,13 @@ void checkElementNodes(const std::vector<std::vector<YAML::Node>>& rows, SceneCo
   }
   Vec3 lo = m.nodes[0], hi = m.nodes[0];
   for (const auto& x : m.nodes)
-    for (int k = 0; k < 3; ++k) {
-      lo[static_cast<std::size_t>(k)] = std::min(lo[static_cast<std::size_t>(k)], x[static_cast<std::size_t>(k)]);
-      hi[static_cast<std::size_t>(k)] = std::max(hi[static_cast<std::size_t>(k)], x[static_cast<std::size_t>(k)]);
+    for (std::size_t k = 0; k < 3; ++k) {
+      lo[k] = std::min(lo[k], x[k]);
+      hi[k] = std::max(hi[k], x[k]);
     }
-  const double tol = 1e-12 * norm(hi - lo);
+  // Coordinates are bounded (kCoordinate), so the size and lengths below are finite.
+  const double size = norm(hi - lo);
+  const double minLength = std::max(kMinElementLength, kMinElementLengthRelative * size);
   for (std::size_t e = 0; e < m.elements.size(); ++e) {
     const auto& el = m.elements[e];
     const int ei = static_cast<int>(e);
@@ -168,9 +176,15 @@ void checkElementNodes(const std::vector<std::vector<YAML::Node>>& rows, SceneCo
       for (std::size_t b = a + 1; b < el.size(); ++b) {
         if (el[a] == el[b])
           fail(ctx.elementPath(ei), ctx.elementLabel(ei) + " lists node " + std::to_string(el[a] + 1) + " twice");
-        if (norm(m.nodes[static_cast<std::size_t>(el[a])] - m.nodes[static_cast<std::size_t>(el[b])]) <= tol)
+        const double d = norm(m.nodes[static_cast<std::size_t>(el[a])] - m.nodes[static_cast<std::size_t>(el[b])]);
+        if (d == 0)
           fail(ctx.elementPath(ei), ctx.elementLabel(ei) + " has zero length: nodes " + std::to_string(el[a] + 1) + " and " +
                                         std::to_string(el[b] + 1) + " coincide");
+        if (d < minLength)
+          fail(ctx.elementPath(ei), ctx.elementLabel(ei) + " is too short: nodes " + std::to_string(el[a] + 1) + " and " +
+                                        std::to_string(el[b] + 1) + " are " + fmt(d) + " apart, below " + fmt(minLength) +
+                                        " (the larger of " + fmt(kMinElementLength) + " and " + fmt(kMinElementLengthRelative) +
+                                        " times the model size " + fmt(size) + ")");
       }
   }
 }
@@ -302,17 +316,94 @@ SceneError locate(const SceneError& e, const YAML::Node& root,
   return SceneError(path, message);
 }
 
+/// "line L, column C" of a byte offset (1-based).
+std::string positionOf(const std::string& text, std::size_t offset) {
+  const std::size_t line = 1 + static_cast<std::size_t>(std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(offset), '\n'));
+  const std::size_t lineStart = text.rfind('\n', offset == 0 ? 0 : offset - 1);
+  const std::size_t column = offset - (lineStart == std::string::npos || offset == 0 ? 0 : lineStart + 1) + 1;
+  return "line " + std::to_string(line) + ", column " + std::to_string(column);
+}
+
+/// A scene is UTF-8 text: no NUL or other control bytes (tab, newline and carriage return aside).
+void checkText(const std::string& text, const std::string& prefix) {
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const auto c = static_cast<unsigned char>(text[i]);
+    if (c >= 0x20 || c == '\t' || c == '\n' || c == '\r') continue;
+    char hex[8];
+    std::snprintf(hex, sizeof hex, "0x%02x", static_cast<unsigned>(c));
+    throw SceneError("", prefix + "not a text file: control byte " + hex + " at " + positionOf(text, i) +
+                             " (a scene is a YAML text file in UTF-8)");
+  }
+}
+
+/// Records where a YAML document starts (Parser events; the content is not kept).
+class DocumentStart : public YAML::EventHandler {
+ public:
+  YAML::Mark mark;
+  void OnDocumentStart(const YAML::Mark& m) override { mark = m; }
+  void OnDocumentEnd() override {}
+  void OnNull(const YAML::Mark&, YAML::anchor_t) override {}
+  void OnAlias(const YAML::Mark&, YAML::anchor_t) override {}
+  void OnScalar(const YAML::Mark&, const std::string&, YAML::anchor_t, const std::string&) override {}
+  void OnSequenceStart(const YAML::Mark&, const std::string&, YAML::anchor_t, YAML::EmitterStyle::value) override {}
+  void OnSequenceEnd() override {}
+  void OnMapStart(const YAML::Mark&, const std::string&, YAML::anchor_t, YAML::EmitterStyle::value) override {}
+  void OnMapEnd() override {}
+};
+
+std::string at(const YAML::Mark& m) {
+  return "line " + std::to_string(m.line + 1) + ", column " + std::to_string(m.column + 1);
+}
+
+/// Runs a yaml-cpp call; its exceptions become SceneErrors with the position.
+template <class F>
+auto yamlCall(const std::string& prefix, F&& f) {
+  try {
+    return f();
+  } catch (const YAML::DeepRecursion& e) {
+    throw SceneError("", prefix + "the nesting is too deep: more than " + std::to_string(e.depth()) +
+                             " levels of lists or maps at " + at(e.mark) + " (a scene nests a few levels)");
+  } catch (const YAML::Exception& e) {
+    throw SceneError("", prefix + "YAML syntax error at " + at(e.mark) + ": " + e.msg);
+  }
+}
+
+/// Counts the documents of the text with the event parser (yaml-cpp's LoadAll loops forever on
+/// some malformed input: a document that does not advance the parser is reported as an error).
+void checkOneDocument(const std::string& text, const std::string& prefix) {
+  std::istringstream in(text);
+  YAML::Parser parser(in);
+  int count = 0, previous = -1;
+  YAML::Mark second;
+  for (;;) {
+    DocumentStart doc;
+    if (!yamlCall(prefix, [&] { return parser.HandleNextDocument(doc); })) break;
+    if (doc.mark.pos <= previous)
+      throw SceneError("", prefix + "YAML syntax error at " + at(doc.mark) +
+                               ": unexpected text after the end of a complete value (a stray ']', '}' or ',')");
+    previous = doc.mark.pos;
+    if (++count == 2) second = doc.mark;
+  }
+  if (count > 1)
+    throw SceneError("", prefix + "the file holds " + std::to_string(count) + " YAML documents (the second starts at line " +
+                             std::to_string(second.line + 1) + "); Sinew reads one");
+}
+
+/// The one YAML document of the scene (null when the text holds none).
+YAML::Node loadOneDocument(const std::string& text, const std::string& prefix) {
+  checkOneDocument(text, prefix);
+  return yamlCall(prefix, [&] { return YAML::Load(text); });
+}
+
 Model parseSceneImpl(const std::string& text, const std::string& baseDir, const OptionOverride& overrides,
                      const std::string& fileLabel) {
   Model m;
   m.sceneText = text;
-  YAML::Node root;
-  try {
-    root = YAML::Load(text);
-  } catch (const YAML::Exception& e) {
-    throw SceneError("", (fileLabel.empty() ? std::string() : fileLabel + ": ") + "YAML syntax error at line " +
-                             std::to_string(e.mark.line + 1) + ", column " + std::to_string(e.mark.column + 1) + ": " + e.msg);
-  }
+  const std::string prefix = fileLabel.empty() ? std::string() : fileLabel + ": ";
+  checkText(text, prefix);
+  YAML::Node root = loadOneDocument(text, prefix);
+  if (!root.IsDefined() || root.IsNull())
+    throw SceneError("", prefix + "the scene is empty: expected a map with at least nodes and elements");
   std::vector<std::pair<std::string, std::string>> overridden;
   try {
     applyOverrides(root, overrides, overridden);
@@ -320,7 +411,7 @@ Model parseSceneImpl(const std::string& text, const std::string& baseDir, const 
   } catch (const SceneError& e) {
     throw locate(e, root, overridden, fileLabel);
   } catch (const YAML::Exception& e) {
-    throw SceneError("", (fileLabel.empty() ? std::string() : fileLabel + ": ") + "cannot read the scene: " + e.what());
+    throw SceneError("", prefix + "cannot read the scene: " + e.what());
   }
   return m;
 }
@@ -333,10 +424,14 @@ Model parseScene(const std::string& text, const std::string& baseDir, const Opti
 }
 
 Model readScene(const std::string& path, const OptionOverride& overrides) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) throw SceneError("", "'" + path + "' is a directory, not a scene file");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw SceneError("", "cannot open scene file '" + path + "'");
   std::ostringstream ss;
   ss << in.rdbuf();
+  if (in.bad()) throw SceneError("", "cannot read scene file '" + path + "'");
+  if (ss.str().empty()) throw SceneError("", "scene file '" + path + "' is empty: expected a map with at least nodes and elements");
   const std::filesystem::path p(path);
   Model m = scene::parseSceneImpl(ss.str(), p.parent_path().string(), overrides, p.filename().string());
   if (m.opt.filename.empty()) m.opt.filename = p.stem().string();

@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cerrno>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
 #include <set>
 
@@ -44,20 +46,72 @@ bool isNumber(const YAML::Node& n) {
   return YAML::convert<double>::decode(n, v) && std::isfinite(v);
 }
 
-double getNumber(const YAML::Node& n, const std::string& path) {
-  if (!isNumber(n)) fail(path, "expected a number, got " + describe(n));
-  return n.as<double>();
+namespace {
+
+/// Why a scalar that is not a finite number was refused ("" when it is no number at all).
+std::string nonFiniteReason(const YAML::Node& n) {
+  if (!n.IsDefined() || !n.IsScalar() || n.Tag() == "!") return "";
+  double v = 0;
+  if (YAML::convert<double>::decode(n, v) && !std::isfinite(v)) return "a finite number";
+  const std::string& s = n.Scalar();
+  if (s.empty() || s.size() > 400) return "";
+  errno = 0;
+  char* end = nullptr;
+  const double x = std::strtod(s.c_str(), &end);
+  if (end != s.c_str() + s.size() || errno != ERANGE || s.find_first_of("xXnN") != std::string::npos) return "";
+  return x == 0 ? "a number (" + s + " underflows a double)" : "a number (" + s + " is beyond the range of a double)";
 }
 
-double getPositive(const YAML::Node& n, const std::string& path) {
-  const double v = getNumber(n, path);
-  if (!(v > 0)) fail(path, "expected a number > 0, got " + fmt(v));
+std::string bounds(const Magnitude& mag) {
+  std::string s(1, '[');
+  s.append(fmt(mag.min)).append(", ").append(fmt(mag.max)).push_back(']');
+  return s;
+}
+
+}  // namespace
+
+void checkMagnitude(double v, const std::string& path, const Magnitude& mag, const std::string& label) {
+  if (!std::isfinite(v)) fail(path, label + "expected a finite number, got " + fmt(v));
+  const double a = std::abs(v);
+  if (v != 0 && (a < mag.min || a > mag.max))
+    fail(path, label + "expected 0 or " + mag.what + " of magnitude in " + bounds(mag) + ", got " + fmt(v));
+}
+
+namespace {
+
+double finiteNumber(const YAML::Node& n, const std::string& path) {
+  if (!isNumber(n)) {
+    const std::string why = nonFiniteReason(n);
+    fail(path, "expected " + (why.empty() ? std::string("a number") : why) + ", got " + describe(n));
+  }
+  const double v = n.as<double>();
+  if (v == 0) {  // a nonzero literal that underflows to 0 (1e-999)
+    const std::string why = nonFiniteReason(n);
+    if (!why.empty()) fail(path, "expected " + why + ", got " + describe(n));
+  }
   return v;
 }
 
-double getNonNegative(const YAML::Node& n, const std::string& path) {
-  const double v = getNumber(n, path);
+}  // namespace
+
+double getNumber(const YAML::Node& n, const std::string& path, const Magnitude& mag) {
+  const double v = finiteNumber(n, path);
+  checkMagnitude(v, path, mag);
+  return v;
+}
+
+double getPositive(const YAML::Node& n, const std::string& path, const Magnitude& mag) {
+  const double v = finiteNumber(n, path);
+  if (!(v > 0)) fail(path, "expected a number > 0, got " + fmt(v));
+  if (v < mag.min || v > mag.max) fail(path, "expected " + std::string(mag.what) + " in " + bounds(mag) + ", got " + fmt(v));
+  return v;
+}
+
+double getNonNegative(const YAML::Node& n, const std::string& path, const Magnitude& mag) {
+  const double v = finiteNumber(n, path);
   if (v < 0) fail(path, "expected a number >= 0, got " + fmt(v));
+  if (v != 0 && (v < mag.min || v > mag.max))
+    fail(path, "expected 0 or " + std::string(mag.what) + " in " + bounds(mag) + ", got " + fmt(v));
   return v;
 }
 
@@ -71,8 +125,9 @@ double getInRange(const YAML::Node& n, const std::string& path, double lo, doubl
 int getInt(const YAML::Node& n, const std::string& path) {
   if (!isNumber(n)) fail(path, "expected an integer, got " + describe(n));
   const double v = n.as<double>();
-  if (v != std::floor(v) || std::abs(v) > std::numeric_limits<int>::max())
-    fail(path, "expected an integer, got " + n.Scalar());
+  if (v != std::floor(v)) fail(path, "expected an integer, got " + n.Scalar());
+  if (std::abs(v) > std::numeric_limits<int>::max())
+    fail(path, "expected an integer of magnitude at most " + std::to_string(std::numeric_limits<int>::max()) + ", got " + n.Scalar());
   return static_cast<int>(v);
 }
 
@@ -115,26 +170,26 @@ void requireList(const YAML::Node& n, const std::string& path) {
   if (!n.IsDefined() || !n.IsSequence()) fail(path, "expected a list, got " + describe(n));
 }
 
-std::vector<double> getNumbers(const YAML::Node& n, const std::string& path) {
+std::vector<double> getNumbers(const YAML::Node& n, const std::string& path, const Magnitude& mag) {
   if (!n.IsDefined() || !n.IsSequence()) fail(path, "expected a list of numbers, got " + describe(n));
   std::vector<double> v;
   v.reserve(n.size());
-  for (std::size_t i = 0; i < n.size(); ++i) v.push_back(getNumber(n[i], indexPath(path, i)));
+  for (std::size_t i = 0; i < n.size(); ++i) v.push_back(getNumber(n[i], indexPath(path, i), mag));
   return v;
 }
 
-std::vector<double> getNumbers(const YAML::Node& n, const std::string& path, std::size_t count) {
+std::vector<double> getNumbers(const YAML::Node& n, const std::string& path, std::size_t count, const Magnitude& mag) {
   const std::string what = "expected " + std::to_string(count) + (count == 1 ? " number" : " numbers");
   if (!n.IsDefined() || !n.IsSequence()) fail(path, what + ", got " + describe(n));
   if (n.size() != count) fail(path, what + ", got " + std::to_string(n.size()));
-  return getNumbers(n, path);
+  return getNumbers(n, path, mag);
 }
 
-Vec3 getVec3(const YAML::Node& n, const std::string& path, bool allow2) {
+Vec3 getVec3(const YAML::Node& n, const std::string& path, bool allow2, const Magnitude& mag) {
   const std::string what = allow2 ? "expected 3 numbers (or 2 in a 2D model)" : "expected 3 numbers";
   if (!n.IsDefined() || !n.IsSequence()) fail(path, what + ", got " + describe(n));
   if (n.size() != 3 && !(allow2 && n.size() == 2)) fail(path, what + ", got " + std::to_string(n.size()));
-  const auto v = getNumbers(n, path);
+  const auto v = getNumbers(n, path, mag);
   return {v[0], v[1], v.size() == 3 ? v[2] : 0.0};
 }
 

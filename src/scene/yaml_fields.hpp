@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "scene/value_bounds.hpp"
 #include "sinew/model.hpp"
 
 namespace sinew::scene {
@@ -25,9 +26,10 @@ std::string fmt(double v);
 bool isNumber(const YAML::Node& n);  ///< plain scalar holding a finite number
 bool isPresent(const YAML::Node& n);  ///< defined (a key given with an empty value counts as present)
 
-double getNumber(const YAML::Node& n, const std::string& path);
-double getPositive(const YAML::Node& n, const std::string& path);     ///< > 0
-double getNonNegative(const YAML::Node& n, const std::string& path);  ///< >= 0
+/// A finite number that is 0 or has |v| in [mag.min, mag.max] (value_bounds.hpp).
+double getNumber(const YAML::Node& n, const std::string& path, const Magnitude& mag = kAnyNumber);
+double getPositive(const YAML::Node& n, const std::string& path, const Magnitude& mag = kAnyNumber);     ///< in [min, max]
+double getNonNegative(const YAML::Node& n, const std::string& path, const Magnitude& mag = kAnyNumber);  ///< 0 or in [min, max]
 /// Number in [lo, hi] (or [lo, hi) with hiOpen).
 double getInRange(const YAML::Node& n, const std::string& path, double lo, double hi, bool hiOpen = false);
 int getInt(const YAML::Node& n, const std::string& path);
@@ -42,11 +44,13 @@ void requireMap(const YAML::Node& n, const std::string& path);
 void requireList(const YAML::Node& n, const std::string& path);
 
 /// A list of numbers of any length.
-std::vector<double> getNumbers(const YAML::Node& n, const std::string& path);
+std::vector<double> getNumbers(const YAML::Node& n, const std::string& path, const Magnitude& mag = kAnyNumber);
 /// A list of exactly `count` numbers.
-std::vector<double> getNumbers(const YAML::Node& n, const std::string& path, std::size_t count);
+std::vector<double> getNumbers(const YAML::Node& n, const std::string& path, std::size_t count, const Magnitude& mag = kAnyNumber);
 /// [x, y, z]; with allow2, also [x, y] (z = 0) for 2D models.
-Vec3 getVec3(const YAML::Node& n, const std::string& path, bool allow2 = false);
+Vec3 getVec3(const YAML::Node& n, const std::string& path, bool allow2 = false, const Magnitude& mag = kAnyNumber);
+/// A value computed from scene numbers (e.g. a coordinate from the Gmsh file) checked like getNumber.
+void checkMagnitude(double v, const std::string& path, const Magnitude& mag, const std::string& label = "");
 /// A list of integers; a single integer is accepted as a list of one when scalarOk.
 std::vector<int> getInts(const YAML::Node& n, const std::string& path, bool scalarOk = false);
 /// A list of strings; a single string is accepted as a list of one.

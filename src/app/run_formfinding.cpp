@@ -29,9 +29,11 @@ PetscErrorCode runFormFinding(RunContext& ctx) {
     change.push_back(r.shapeChange);
     normal.push_back(r.shapeChangeNormal);
   }
-  ctx.file.writeArray("formfinding/residual", res, {static_cast<long>(res.size())});
-  ctx.file.writeArray("formfinding/shape_change", change, {static_cast<long>(change.size())});
-  ctx.file.writeArray("formfinding/shape_change_normal", normal, {static_cast<long>(normal.size())});
+  if (!reps.empty()) {  // (a step failing before any converged one leaves no history to write)
+    ctx.file.writeArray("formfinding/residual", res, {static_cast<long>(res.size())});
+    ctx.file.writeArray("formfinding/shape_change", change, {static_cast<long>(change.size())});
+    ctx.file.writeArray("formfinding/shape_change_normal", normal, {static_cast<long>(normal.size())});
+  }
   std::string s = "\n form finding (URS): " + std::to_string(analysis.numFormFoundElements()) +
                   " form-found elements, model size " ;
   char line[256];

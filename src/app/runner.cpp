@@ -69,11 +69,11 @@ void warnings(MPI_Comm comm, const Model& model) {
   }
 }
 
-/// No external load of any kind: no gravity, massProportionalLoad or pressure, and zero nodal loads and
-/// prescribed motions on every node (collective).
+/// No external load of any kind: no gravity, massProportionalLoad or pressure (a zero vector, gravity
+/// [0, 0], is none), and zero nodal loads and prescribed motions on every node (collective).
 bool unloaded(const Model& model, const DistributedMesh& mesh, const Assembler& assembler) {
-  int loaded = model.opt.gravity.has_value() || assembler.hasPressure();
-  for (const ElementSet& s : model.eprops) loaded |= s.massProportionalLoad.has_value();
+  int loaded = (model.opt.gravity.has_value() && norm(*model.opt.gravity) > 0.0) || assembler.hasPressure();
+  for (const ElementSet& s : model.eprops) loaded |= s.massProportionalLoad.has_value() && norm(*s.massProportionalLoad) > 0.0;
   for (const LocalNode& n : mesh.nodes) {
     for (int k = 0; k < 6; ++k)
       loaded |= n.load[k] != 0.0 || n.loadInitial[k] != 0.0 || n.prescribed[k] != 0.0 || n.prescribedInitial[k] != 0.0;
@@ -102,6 +102,31 @@ PetscErrorCode reportSingularModel(MPI_Comm comm, int rank, const std::string& m
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/// Residual and tangent at the reference state (load factor 0) are finite (collective; the tangent's
+/// Frobenius norm, so entries above ~1e154, whose products overflow in a factorization, count as
+/// non-finite). A non-finite one (a user function dividing by zero, a property overflowing) is no mechanism: the analysis fails
+/// on it (exit 3) with its own message on every rank count, where the constraint check would call the
+/// model singular on some (MUMPS refuses to factor a tangent with Inf/NaN, PETSc's serial LU does not).
+PetscErrorCode finiteAtReference(Assembler& assembler, bool* finite) {
+  PetscFunctionBeginUser;
+  Vec U0, F;
+  Mat J;
+  PetscCall(assembler.createVector(&U0));
+  PetscCall(VecDuplicate(U0, &F));
+  PetscCall(VecSet(U0, 0.0));
+  PetscCall(assembler.residual(U0, LoadState{}, F));
+  PetscReal fn = 0, jn = 0;
+  PetscCall(VecNorm(F, NORM_2, &fn));
+  PetscCall(assembler.createMatrix(&J));
+  PetscCall(assembler.jacobian(U0, LoadState{}, J));
+  PetscCall(MatNorm(J, NORM_FROBENIUS, &jn));
+  *finite = std::isfinite(fn) && std::isfinite(jn);
+  PetscCall(MatDestroy(&J));
+  PetscCall(VecDestroy(&F));
+  PetscCall(VecDestroy(&U0));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /// Mechanisms and redundant constraints before any analysis (and before the result file exists):
 /// with form finding the form-finding problem (its kernels in the mode of step 1, prestress-only
 /// stiffness of the form-found elements), otherwise the statics tangent at the reference state.
@@ -127,8 +152,16 @@ PetscErrorCode checkModelBeforeRun(const Model& model, const Plan& plan, Assembl
   setting->enabled = checkModel;
   const bool formfinding = plan.formfinding && model.formfinding.has_value();
   if (!checkModel || model.opt.showinputonly || !(plan.statics || formfinding)) PetscFunctionReturn(PETSC_SUCCESS);
-  ConstraintReport check;
   const double tCheck = MPI_Wtime();
+  bool finite = true;
+  PetscCall(finiteAtReference(assembler, &finite));
+  if (!finite) {
+    times->check = MPI_Wtime() - tCheck;
+    if (!model.opt.silent)
+      PetscCall(PetscPrintf(comm, "  note: constraint check skipped: the residual or tangent at the reference state is not finite (Inf/NaN, or tangent entries above 1e154)\n"));
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  ConstraintReport check;
   PetscCall(PetscLogEventBegin(SinewEvents::get().constraintCheck, 0, 0, 0, 0));
   if (formfinding) {
     PetscCall(checkFormFindingConstraints(assembler, model, &check));

@@ -5,7 +5,8 @@ no signal, no hang) on 1, 2 and 3 ranks:
   - runs/hypar_net.yaml without supports: the net translates in x and y (it aborted with SIGABRT);
   - a flat membrane form-found, restarted without prestress (DISPLACEMENT) and loaded by pressure:
     the loaded model has no stiffness across the surface (found after form finding, before statics).
-Controls on 2 ranks: the intact hypar net and the flat membrane without pressure solve (exit 0)."""
+Controls on 2 ranks: the intact hypar net and the flat membrane without pressure solve (exit 0); the
+free net with -constraint_check false fails in form finding step 1 with exit 3 (no SIGABRT)."""
 import os
 import re
 import subprocess
@@ -68,6 +69,15 @@ st.check(not os.path.exists(os.path.join(st.WORK, "cons_masts_foot_2.h5")), "mas
 # 2. hypar cable net, every support removed (displ_initial_z still holds z)
 net = scene_from_run("cons_net_free", "hypar_net.yaml", lambda t: t.replace("fix: true, ", ""))
 expect_mechanism("cons_net_free", net, (1, 2, 3), [r"node \d+ translation [xy]"], "form-finding problem")
+# without the check form finding fails at step 1 (the net collapses): exit 3, no abort writing an empty history
+rc, log, out = run("cons_net_nocheck", net, 2, ["-constraint_check", "false"])
+st.check(rc == 3 and "formfinding step 1" in log, f"net without supports, -constraint_check false: exit {rc}, expected 3")
+st.check(not re.search(r"Signal|Aborted|terminate called", log), "net without the check: no signal/abort")
+if os.path.exists(out):
+    with st.h5(out) as f:
+        st.check(int(f.attrs["converged"]) == 0 and "formfinding" not in f, "net without the check: converged = 0, no history")
+else:
+    st.fail("net without the check: no result file")
 rc, log, out = run("cons_net_ok", os.path.join(RUNS, "hypar_net.yaml"), 2)
 st.check(rc == 0, f"intact hypar net: exit {rc}, expected 0 (no false mechanism with form finding)")
 

@@ -3,8 +3,6 @@ items 4 and 5), every run under a timeout:
   - membrane_5node: /formfinding/shape_change_normal (the stopping criterion) on 1, 2, 3, 5, 6 ranks
     agrees to 1e-12 relative (it differed in the 4th digit on 5-6 ranks: ghost entries of the nodal
     normal sums were never zeroed, so interface nodes carried the previous steps' normals);
-  - crosshinge with a 20 N m moment (nprops 5 moment [0, 0, 20]): exit 3 on 1, 2, 3 ranks at the same
-    load step, the same failing and last converged load factors, the same /load_factor rows;
   - ANCF cantilever with axialForceUserFunction "1/0" and with physicsBendingStiffness 1e308: exit 3
     with the non-finite cause named on 1, 2, 3 ranks (exit 3 on 1 rank and 2 on 2 before: the
     constraint check called the Inf/NaN tangent singular where MUMPS factored it);
@@ -13,43 +11,13 @@ items 4 and 5), every run under a timeout:
 The measured differences between rank counts are printed."""
 import os
 import re
-import subprocess
 import sys
 
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(__file__))
 import sinewtest as st  # noqa: E402
-
-RUNS = os.path.join(st.SOURCE, "runs")
-os.makedirs(st.WORK, exist_ok=True)
-
-
-def run(name, path, np_, args=(), timeout=400):
-    """Runs sinew under a timeout; returns (exit code, log, result path). A hang fails the test."""
-    out = os.path.join(st.WORK, f"{name}_{np_}.h5")
-    for stale in (out, out + ".part"):
-        if os.path.exists(stale):
-            os.remove(stale)
-    cmd = [st.MPIEXEC, "-n", str(np_), st.BIN, path, "-o", out] + list(args)
-    try:
-        p = subprocess.run(cmd, env=st.ENV, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, timeout=timeout)
-    except subprocess.TimeoutExpired:
-        st.fail(f"{name} on {np_} ranks: no exit within {timeout} s (hang)")
-        return None, "", out
-    return p.returncode, p.stdout, out
-
-
-def edited(name, fname, old, new):
-    with open(os.path.join(RUNS, fname)) as f:
-        text = f.read()
-    st.check(old in text, f"{name}: {old!r} in runs/{fname}")
-    return st.scene_file(name, text.replace(old, new))
-
-
-def no_signal(name, n, log):
-    st.check(not re.search(r"Signal|Aborted|MPI_ABORT|terminate called", log), f"{name} on {n} ranks: no signal/abort")
-
+from consistency_util import RUNS, run, edited, no_signal  # noqa: E402
 
 # --- 1. membrane_5node: the stopping criterion on 1..6 ranks
 normals = {}
@@ -66,34 +34,6 @@ if 1 in normals:
         d = np.max(np.abs(v - normals[1]) / np.abs(normals[1]))
         print(f"  shape_change_normal, {n} vs 1 rank: max relative difference {d:.3e}")
         st.check(v.shape == normals[1].shape and d <= 1e-12, f"membrane_5node: {n} ranks differ from 1 rank by {d:.3e}")
-
-# --- 2. crosshinge with a 20 N m moment: fails at the same step everywhere
-ch = edited("cons_ch20", "crosshinge.yaml", "moment: [0, 0, 0.5]", "moment: [0, 0, 20]")
-fast = ["-calcbuck", "false", "-calccompl", "false", "-calcfreq", "false", "-max_cuts", "3"]
-res = {}
-for n in (1, 2, 3):
-    rc, log, out = run("cons_ch20", ch, n, fast, timeout=500)
-    no_signal("crosshinge", n, log)
-    m = re.search(r"load step (\d+) of 10 did not converge: Newton stopped at load factor ([0-9.e+-]+) \((\w+), "
-                  r"residual norm ([0-9.e+-]+)\).*last converged load factor ([0-9.e+-]+)", log)
-    st.check(rc == 3 and m is not None, f"crosshinge on {n} ranks: exit {rc} (expected 3) with the failing step named")
-    if m and os.path.exists(out):
-        with st.h5(out) as f:
-            lf = np.array(f["load_factor"][:])
-        res[n] = dict(step=int(m.group(1)), failed=float(m.group(2)), reason=m.group(3), residual=float(m.group(4)),
-                      last=float(m.group(5)), lf=lf)
-        print(f"  crosshinge {n} ranks: exit {rc}, load step {res[n]['step']}, failed at {res[n]['failed']} "
-              f"({res[n]['reason']}, residual {res[n]['residual']:.4g}), last converged {res[n]['last']}, "
-              f"load factors {np.array2string(lf, precision=10)}")
-if 1 in res:
-    for n, r in res.items():
-        st.check(r["step"] == res[1]["step"], f"crosshinge: step {r['step']} on {n} ranks, {res[1]['step']} on 1")
-        st.check(r["failed"] == res[1]["failed"] and r["last"] == res[1]["last"],
-                 f"crosshinge: load factors on {n} ranks {r['failed']}/{r['last']} vs {res[1]['failed']}/{res[1]['last']}")
-        st.check(r["lf"].shape == res[1]["lf"].shape and np.allclose(r["lf"], res[1]["lf"], rtol=1e-12, atol=0),
-                 f"crosshinge: /load_factor rows on {n} ranks")
-        print(f"  crosshinge {n} vs 1 rank: diverged residual norm {r['residual']:.4g} vs {res[1]['residual']:.4g} "
-              f"(a diverged Newton iterate: round-off, not compared)")
 
 # --- 3. non-finite ANCF statics: exit 3 on every rank count, the cause named
 cases = {"cons_uf_div0": edited("cons_uf_div0", "ancf_cantilever.yaml", "    useReducedOrderIntegration: 0\n",

@@ -133,7 +133,10 @@ PetscErrorCode checkConstraints(Assembler& assembler, const Model& model, Vec U,
     const double mean = sum[1] > 0 ? sum[0] / sum[1] : 1.0;
     for (int i = 0; i < nloc; ++i) {
       if (isNode[i]) {
-        d[i] = std::abs(d[i]) > 0 ? std::abs(d[i]) : mean;
+        // a diagonal at round-off level (below 1e-13 of the mean: an unstressed flat membrane's normal
+        // stiffness is E t eps) is scaled like a zero one; else that row's D is noise and whether its
+        // null direction is found depends on the partition
+        d[i] = std::abs(d[i]) > 1e-13 * mean ? std::abs(d[i]) : mean;
       } else {
         PetscInt ncols;
         const PetscScalar* vals;

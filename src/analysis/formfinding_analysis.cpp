@@ -4,6 +4,7 @@
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
+#include <tuple>
 
 #include "elements/cable3d.hpp"
 #include "elements/membrane.hpp"
@@ -23,14 +24,56 @@ double elementArea(int nn, const double* q) {
 }
 }  // namespace
 
+namespace {
+/// The form-found eprops sets: formfinding_elements, or every cable and membrane set when it is empty.
+std::vector<int> formFoundSets(const FormFinding& ff, const std::vector<ElementSet>& eprops) {
+  std::vector<int> sets = ff.formfinding_elements;
+  if (sets.empty())
+    for (size_t s = 0; s < eprops.size(); ++s)
+      if (eprops[s].type == ElementType::Cable || eprops[s].type == ElementType::Membrane) sets.push_back(static_cast<int>(s));
+  return sets;
+}
+
+/// Homotopy factor and xURS of form-finding step k (1-based).
+std::pair<double, bool> stepMode(const FormFinding& ff, int k) {
+  const auto& hc = ff.homotopy_curve;
+  const double lambda = hc.empty() ? 0.0 : hc[static_cast<size_t>(std::min<int>(k, static_cast<int>(hc.size())) - 1)];
+  return {lambda, ff.x_urs && k >= ff.x_urs_step};
+}
+
+/// Switches the kernels of the form-found sets to form finding (on) or back to elastic.
+void setFormFindingMode(DistributedMesh& m, const std::vector<int>& sets, bool on, double lambda, bool xurs) {
+  for (const LocalElement& el : m.elements) {
+    if (el.set < 0 || std::find(sets.begin(), sets.end(), el.set) == sets.end()) continue;
+    if (auto* c = dynamic_cast<Cable3D*>(el.kernel.get())) c->setFormFinding(on, lambda);
+    if (auto* mem = dynamic_cast<Membrane*>(el.kernel.get())) {
+      mem->setFormFinding(on, lambda);
+      mem->setXurs(on && xurs);
+    }
+  }
+}
+}  // namespace
+
+PetscErrorCode checkFormFindingConstraints(Assembler& assembler, const Model& model, ConstraintReport* report) {
+  PetscFunctionBeginUser;
+  DistributedMesh& m = assembler.mesh();
+  const std::vector<int> sets = formFoundSets(*model.formfinding, model.eprops);
+  const auto [lambda, xurs] = stepMode(*model.formfinding, 1);
+  setFormFindingMode(m, sets, true, lambda, xurs);
+  Vec U0;
+  PetscCall(assembler.createVector(&U0));
+  PetscCall(VecSet(U0, 0.0));
+  PetscCall(checkConstraints(assembler, model, U0, LoadState{}, report));
+  PetscCall(VecDestroy(&U0));
+  setFormFindingMode(m, sets, false, 0.0, false);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 FormFindingAnalysis::FormFindingAnalysis(Assembler& assembler, const FormFinding& ff, const std::vector<ElementSet>& eprops)
     : asm_(assembler), ff_(ff), eprops_(eprops) {
   DistributedMesh& m = asm_.mesh();
   MPI_Comm comm = m.comm;
-  ffSets_ = ff_.formfinding_elements;
-  if (ffSets_.empty())
-    for (size_t s = 0; s < eprops_.size(); ++s)
-      if (eprops_[s].type == ElementType::Cable || eprops_[s].type == ElementType::Membrane) ffSets_.push_back(static_cast<int>(s));
+  ffSets_ = formFoundSets(ff_, eprops_);
   auto inList = [](const std::vector<int>& v, int s) { return std::find(v.begin(), v.end(), s) != v.end(); };
   // initial states (load factor 0): the reference of a NONE restart, initial areas, model size
   Vec U0;
@@ -222,13 +265,15 @@ PetscErrorCode FormFindingAnalysis::normalShapeChange(Vec U, Vec Uprev, double* 
   DistributedMesh& m = asm_.mesh();
   // nodal sums over the form-found elements at the current shape (ghost contributions added):
   // nrm_ = sum of membrane area vectors, mdiag_/moff_ = sum of e e^T of cables (xx yy zz / xy yz zx)
+  // (zeroed in the local forms: VecSet on a ghosted vector leaves the ghost entries, which would
+  // carry the previous step's sums into this one at partition interfaces)
   Vec nl, dl, ol;
-  PetscCall(VecSet(nrm_, 0.0));
-  PetscCall(VecSet(mdiag_, 0.0));
-  PetscCall(VecSet(moff_, 0.0));
   PetscCall(VecGhostGetLocalForm(nrm_, &nl));
   PetscCall(VecGhostGetLocalForm(mdiag_, &dl));
   PetscCall(VecGhostGetLocalForm(moff_, &ol));
+  PetscCall(VecSet(nl, 0.0));
+  PetscCall(VecSet(dl, 0.0));
+  PetscCall(VecSet(ol, 0.0));
   PetscScalar *na, *da, *oa;
   PetscCall(VecGetArray(nl, &na));
   PetscCall(VecGetArray(dl, &da));
@@ -361,9 +406,7 @@ PetscErrorCode FormFindingAnalysis::run(Vec U, const StepCallback& onStep, bool*
   for (int k = 1; k <= nsteps; ++k) {
     FormFindingStepReport rep;
     rep.step = k;
-    const auto& hc = ff_.homotopy_curve;
-    rep.lambda = hc.empty() ? 0.0 : hc[static_cast<size_t>(std::min<int>(k, static_cast<int>(hc.size())) - 1)];
-    rep.xurs = ff_.x_urs && k >= ff_.x_urs_step;
+    std::tie(rep.lambda, rep.xurs) = stepMode(ff_, k);
     setMode(rep.lambda, rep.xurs);
     PetscCall(VecCopy(U, Uprev));
     PetscCall(SNESSolve(snes_, nullptr, U));

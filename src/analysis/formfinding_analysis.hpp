@@ -50,6 +50,7 @@
 #include <string>
 #include <vector>
 
+#include "analysis/constraint_check.hpp"
 #include "assembly/assembler.hpp"
 #include "sinew/model.hpp"
 
@@ -124,5 +125,15 @@ class FormFindingAnalysis {
   std::vector<FormFindingStepReport> reports_;
   std::string failure_;
 };
+
+/// Mechanisms and redundant constraints of the form-finding problem (collective): the tangent at the
+/// initial geometry (load factor 0) with the form-found kernels in the mode of step 1 (homotopy
+/// factor, xURS), i.e. the stiffness form finding itself solves with: prestress-only (geometric)
+/// stiffness of the form-found cables and membranes (in the reference problem, lambda = 0, a cable
+/// acts as its force density N0/L in every direction and a membrane as sigma grad u . grad v),
+/// elastic stiffness of every other element. A node no element holds in some direction, a net
+/// without supports (rigid translation), a mast free to swing about the corner it carries, are
+/// null directions of this tangent. The kernels are elastic again afterwards.
+PetscErrorCode checkFormFindingConstraints(Assembler& assembler, const Model& model, ConstraintReport* report);
 
 }  // namespace sinew

@@ -151,7 +151,12 @@ PetscErrorCode StaticAnalysis::formJacobian(SNES snes, Vec U, Mat, Mat P, void* 
   PetscCall(self->asm_.jacobian(U, self->ls_, P));
   PetscInt it = 0;
   PetscCall(SNESGetIterationNumber(snes, &it));
-  if (it == 0) PetscCall(MatNorm(P, NORM_INFINITY, &self->jacobianNorm_));  // at the start state
+  PetscReal norm = 0, frobenius = 0;
+  PetscCall(MatNorm(P, NORM_INFINITY, &norm));
+  if (it == 0) self->jacobianNorm_ = norm;  // at the start state
+  // Inf/NaN entries, or entries whose squares overflow (above ~1e154: no factorization handles them)
+  PetscCall(MatNorm(P, NORM_FROBENIUS, &frobenius));
+  self->tangentFinite_ = std::isfinite(frobenius);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -349,8 +354,13 @@ PetscErrorCode StaticAnalysis::run(Vec U, const StepCallback& onStep, bool* conv
             << " halvings of the increment (last converged load factor " << lambda
             << "). Try more load steps (-loadsteps), a line search (-snes_linesearch_type bt|l2), "
                "-snes_monitor to watch the residual, or check supports and rigid modes for a mechanism.";
+        // a tangent with Inf/NaN entries is no singular model: MUMPS refuses it, PETSc's LU may not, so
+        // the constraint check it would trigger could name a mechanism on some rank counts only
+        linearFailed_ = why == SNES_DIVERGED_LINEAR_SOLVE && tangentFinite_;
+        if (!tangentFinite_ || why == SNES_DIVERGED_FNORM_NAN)
+          msg << (tangentFinite_ ? " The residual is not finite (Inf/NaN)."
+                                 : " The tangent stiffness is not finite (Inf/NaN, or entries above 1e154).");
         failure_ = msg.str();
-        linearFailed_ = why == SNES_DIVERGED_LINEAR_SOLVE;
         *converged = false;
         break;
       }

@@ -38,7 +38,8 @@ class StaticAnalysis {
   PetscErrorCode run(Vec U, const StepCallback& onStep, bool* converged);
   const std::vector<StepReport>& reports() const { return reports_; }
   const std::string& failureMessage() const { return failure_; }
-  /// True when the last failed increment ended with SNES_DIVERGED_LINEAR_SOLVE (singular tangent).
+  /// True when the last failed increment ended with SNES_DIVERGED_LINEAR_SOLVE on a finite tangent
+  /// (a singular one; a tangent with Inf/NaN entries is no model error).
   bool linearSolveFailed() const { return linearFailed_; }
   /// The model has no external load at all: a start residual at the round-off floor
   /// (8 eps ||J||_inf max|X|) is equilibrium without a Newton step (a free-free body has a singular J).
@@ -90,6 +91,7 @@ class StaticAnalysis {
   std::vector<StepReport> reports_;
   std::string failure_;
   bool linearFailed_ = false;
+  bool tangentFinite_ = true;  ///< the last assembled tangent's Frobenius norm is finite
 };
 
 }  // namespace sinew

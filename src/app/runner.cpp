@@ -11,6 +11,7 @@
 
 #include "analysis/constraint_check.hpp"
 #include "analysis/continuation_analysis.hpp"
+#include "analysis/formfinding_analysis.hpp"
 #include "analysis/static_analysis.hpp"
 #include "analysis/step_analysis.hpp"
 #include "analysis/step_results.hpp"
@@ -71,11 +72,11 @@ void warnings(MPI_Comm comm, const Model& model) {
   }
 }
 
-/// No external load of any kind: no gravity, massProportionalLoad or pressure, and zero nodal loads and
-/// prescribed motions on every node (collective).
+/// No external load of any kind: no gravity, massProportionalLoad or pressure (a zero vector, gravity
+/// [0, 0], is none), and zero nodal loads and prescribed motions on every node (collective).
 bool unloaded(const Model& model, const DistributedMesh& mesh, const Assembler& assembler) {
-  int loaded = model.opt.gravity.has_value() || assembler.hasPressure();
-  for (const ElementSet& s : model.eprops) loaded |= s.massProportionalLoad.has_value();
+  int loaded = (model.opt.gravity.has_value() && norm(*model.opt.gravity) > 0.0) || assembler.hasPressure();
+  for (const ElementSet& s : model.eprops) loaded |= s.massProportionalLoad.has_value() && norm(*s.massProportionalLoad) > 0.0;
   for (const LocalNode& n : mesh.nodes) {
     for (int k = 0; k < 6; ++k)
       loaded |= n.load[k] != 0.0 || n.loadInitial[k] != 0.0 || n.prescribed[k] != 0.0 || n.prescribedInitial[k] != 0.0;
@@ -83,6 +84,137 @@ bool unloaded(const Model& model, const DistributedMesh& mesh, const Assembler& 
   }
   MPI_Allreduce(MPI_IN_PLACE, &loaded, 1, MPI_INT, MPI_LOR, mesh.comm);
   return !loaded;
+}
+
+/// -constraint_check (default true) and -constraint_check_max_unknowns: whether the model is checked.
+struct ConstraintCheckSetting {
+  bool enabled = true;
+};
+
+/// Prints a singular model's message, removes a stale result file under this name (it does not belong
+/// to this scene) and sets exit code 2.
+PetscErrorCode reportSingularModel(MPI_Comm comm, int rank, const std::string& message, const std::string& h5, int* exitCode) {
+  PetscFunctionBeginUser;
+  PetscCall(PetscPrintf(comm, "%s", message.c_str()));
+  if (rank == 0) {
+    std::error_code ec;
+    std::filesystem::remove(h5, ec);
+    std::filesystem::remove(h5 + ".part", ec);
+  }
+  *exitCode = 2;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/// Residual and tangent at the reference state (load factor 0) are finite (collective; the tangent's
+/// Frobenius norm, so entries above ~1e154, whose products overflow in a factorization, count as
+/// non-finite). A non-finite one (a user function dividing by zero, a property overflowing) is no mechanism: the analysis fails
+/// on it (exit 3) with its own message on every rank count, where the constraint check would call the
+/// model singular on some (MUMPS refuses to factor a tangent with Inf/NaN, PETSc's serial LU does not).
+PetscErrorCode finiteAtReference(Assembler& assembler, bool* finite) {
+  PetscFunctionBeginUser;
+  Vec U0, F;
+  Mat J;
+  PetscCall(assembler.createVector(&U0));
+  PetscCall(VecDuplicate(U0, &F));
+  PetscCall(VecSet(U0, 0.0));
+  PetscCall(assembler.residual(U0, LoadState{}, F));
+  PetscReal fn = 0, jn = 0;
+  PetscCall(VecNorm(F, NORM_2, &fn));
+  PetscCall(assembler.createMatrix(&J));
+  PetscCall(assembler.jacobian(U0, LoadState{}, J));
+  PetscCall(MatNorm(J, NORM_FROBENIUS, &jn));
+  *finite = std::isfinite(fn) && std::isfinite(jn);
+  PetscCall(MatDestroy(&J));
+  PetscCall(VecDestroy(&F));
+  PetscCall(VecDestroy(&U0));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/// Mechanisms and redundant constraints before any analysis (and before the result file exists):
+/// with form finding the form-finding problem (its kernels in the mode of step 1, prestress-only
+/// stiffness of the form-found elements), otherwise the statics tangent at the reference state.
+/// A singular model prints its message and sets *exitCode = 2.
+PetscErrorCode checkModelBeforeRun(const Model& model, const Plan& plan, Assembler& assembler, const std::string& h5,
+                                   ConstraintCheckSetting* setting, Timings* times, int* exitCode) {
+  PetscFunctionBeginUser;
+  const DistributedMesh& dmesh = assembler.mesh();
+  MPI_Comm comm = dmesh.comm;
+  PetscBool checkModel = PETSC_TRUE;
+  PetscCall(PetscOptionsGetBool(nullptr, nullptr, "-constraint_check", &checkModel, nullptr));
+  // The check factors the tangent once (MUMPS): above this size it would cost as much memory as a
+  // direct solve, so large models (often solved iteratively) skip it up front; a failing linear
+  // solve still triggers it as a diagnostic.
+  PetscInt checkMax = 200000;
+  PetscCall(PetscOptionsGetInt(nullptr, nullptr, "-constraint_check_max_unknowns", &checkMax, nullptr));
+  if (checkModel && dmesh.numGlobalUnknowns > checkMax) {
+    checkModel = PETSC_FALSE;
+    if (!model.opt.silent)
+      PetscCall(PetscPrintf(comm, "  note: constraint check skipped (%ld unknowns > -constraint_check_max_unknowns %ld)\n",
+                            dmesh.numGlobalUnknowns, static_cast<long>(checkMax)));
+  }
+  setting->enabled = checkModel;
+  const bool formfinding = plan.formfinding && model.formfinding.has_value();
+  if (!checkModel || model.opt.showinputonly || !(plan.statics || formfinding)) PetscFunctionReturn(PETSC_SUCCESS);
+  const double tCheck = MPI_Wtime();
+  bool finite = true;
+  PetscCall(finiteAtReference(assembler, &finite));
+  if (!finite) {
+    times->check = MPI_Wtime() - tCheck;
+    if (!model.opt.silent)
+      PetscCall(PetscPrintf(comm, "  note: constraint check skipped: the residual or tangent at the reference state is not finite (Inf/NaN, or tangent entries above 1e154)\n"));
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  ConstraintReport check;
+  PetscCall(PetscLogEventBegin(SinewEvents::get().constraintCheck, 0, 0, 0, 0));
+  if (formfinding) {
+    PetscCall(checkFormFindingConstraints(assembler, model, &check));
+    if (check.singular)
+      check.message += "  (found in the form-finding problem: the form-found cables and membranes carry their prestress "
+                       "only, as geometric stiffness; every other element is elastic)\n";
+  } else {
+    Vec U0;
+    PetscCall(assembler.createVector(&U0));
+    PetscCall(VecSet(U0, 0.0));
+    PetscCall(checkConstraints(assembler, model, U0, LoadState{}, &check));
+    PetscCall(VecDestroy(&U0));
+  }
+  PetscCall(PetscLogEventEnd(SinewEvents::get().constraintCheck, 0, 0, 0, 0));
+  times->check = MPI_Wtime() - tCheck;
+  // Rigid-body modes without any load are legitimate for a frequency analysis (a free-free body:
+  // the unloaded reference state is the equilibrium; the modal shift handles the singular K).
+  if (!formfinding && check.singular && check.redundant == 0 && plan.frequencies && unloaded(model, dmesh, assembler)) {
+    check.singular = false;
+    if (!model.opt.silent)
+      PetscCall(PetscPrintf(comm, "  note: free motions with zero stiffness (rigid-body modes) and no loads: the frequency "
+                                  "analysis runs about the unloaded reference state\n"));
+  }
+  if (check.singular) PetscCall(reportSingularModel(comm, dmesh.rank, check.message, h5, exitCode));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/// After form finding and the elastic restart, before a load analysis with loads: the loaded model's
+/// tangent at the restart state (elastic kernels, the found shape, load factor 0; e.g. a flat membrane
+/// without prestress after a DISPLACEMENT restart has no stiffness across its surface). A singular one
+/// sets ctx.failure and *modelError (exit 2; the result file keeps the form-finding steps). Without any
+/// load the found shape is the equilibrium and the load analysis ends at once, mechanism or not.
+PetscErrorCode checkLoadedModelAfterFormFinding(RunContext& ctx, const ConstraintCheckSetting& setting, bool* modelError) {
+  PetscFunctionBeginUser;
+  if (!setting.enabled || !ctx.plan.statics || !ctx.converged) PetscFunctionReturn(PETSC_SUCCESS);
+  if (unloaded(ctx.model, ctx.assembler.mesh(), ctx.assembler)) PetscFunctionReturn(PETSC_SUCCESS);
+  ConstraintReport check;
+  const double tCheck = MPI_Wtime();
+  PetscCall(PetscLogEventBegin(SinewEvents::get().constraintCheck, 0, 0, 0, 0));
+  PetscCall(checkConstraints(ctx.assembler, ctx.model, ctx.U, LoadState{}, &check));
+  PetscCall(PetscLogEventEnd(SinewEvents::get().constraintCheck, 0, 0, 0, 0));
+  ctx.times.check += MPI_Wtime() - tCheck;
+  if (!check.singular) PetscFunctionReturn(PETSC_SUCCESS);
+  ctx.converged = false;
+  ctx.failure = "the load analysis after form finding cannot start (elastic_restart_method " +
+                ctx.model.formfinding->elastic_restart_method + ", found shape):\n" + check.message +
+                "  (a restart without prestress leaves flat or straight parts of the found shape without stiffness "
+                "across them; elastic_restart_method FORCE keeps the prestress)\n";
+  *modelError = true;
+  PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 }  // namespace
@@ -180,50 +312,9 @@ PetscErrorCode runFromCommandLine(int argc, char** argv, int* exitCode) {
   }
 
   // Mechanisms and redundant constraints are model errors (exit 2), found before any file exists.
-  PetscBool checkModel = PETSC_TRUE;
-  PetscCall(PetscOptionsGetBool(nullptr, nullptr, "-constraint_check", &checkModel, nullptr));
-  // The check factors the tangent once (MUMPS): above this size it would cost as much memory as a
-  // direct solve, so large models (often solved iteratively) skip it up front; a failing linear
-  // solve still triggers it as a diagnostic.
-  PetscInt checkMax = 200000;
-  PetscCall(PetscOptionsGetInt(nullptr, nullptr, "-constraint_check_max_unknowns", &checkMax, nullptr));
-  if (checkModel && dmesh->numGlobalUnknowns > checkMax) {
-    checkModel = PETSC_FALSE;
-    if (!model.opt.silent)
-      PetscCall(PetscPrintf(comm, "  note: constraint check skipped (%ld unknowns > -constraint_check_max_unknowns %ld)\n",
-                            dmesh->numGlobalUnknowns, static_cast<long>(checkMax)));
-  }
-  if (checkModel && plan.statics && !plan.formfinding && !model.opt.showinputonly) {
-    Vec U0;
-    PetscCall(assembler.createVector(&U0));
-    PetscCall(VecSet(U0, 0.0));
-    ConstraintReport check;
-    const double tCheck = MPI_Wtime();
-    PetscCall(PetscLogEventBegin(SinewEvents::get().constraintCheck, 0, 0, 0, 0));
-    PetscCall(checkConstraints(assembler, model, U0, LoadState{}, &check));
-    PetscCall(PetscLogEventEnd(SinewEvents::get().constraintCheck, 0, 0, 0, 0));
-    times.check = MPI_Wtime() - tCheck;
-    PetscCall(VecDestroy(&U0));
-    // Rigid-body modes without any load are legitimate for a frequency analysis (a free-free body:
-    // the unloaded reference state is the equilibrium; the modal shift handles the singular K).
-    if (check.singular && check.redundant == 0 && plan.frequencies && unloaded(model, *dmesh, assembler)) {
-      check.singular = false;
-      if (!model.opt.silent)
-        PetscCall(PetscPrintf(comm, "  note: free motions with zero stiffness (rigid-body modes) and no loads: the frequency "
-                                    "analysis runs about the unloaded reference state\n"));
-    }
-    if (check.singular) {
-      PetscCall(PetscPrintf(comm, "%s", check.message.c_str()));
-      // a result file of an earlier run under this name does not belong to this scene
-      if (dmesh->rank == 0) {
-        std::error_code ec;
-        std::filesystem::remove(h5, ec);
-        std::filesystem::remove(h5 + ".part", ec);
-      }
-      *exitCode = 2;
-      PetscFunctionReturn(PETSC_SUCCESS);
-    }
-  }
+  ConstraintCheckSetting check;
+  PetscCall(checkModelBeforeRun(model, plan, assembler, h5, &check, &times, exitCode));
+  if (*exitCode) PetscFunctionReturn(PETSC_SUCCESS);
 
   std::unique_ptr<ResultFile> file;
   try {
@@ -256,7 +347,10 @@ PetscErrorCode runFromCommandLine(int argc, char** argv, int* exitCode) {
     });
     PetscCall(ierr);
   } else {
-    if (plan.formfinding) PetscCall(runFormFinding(ctx));
+    if (plan.formfinding) {
+      PetscCall(runFormFinding(ctx));
+      PetscCall(checkLoadedModelAfterFormFinding(ctx, check, &modelError));
+    }
     if (ctx.converged && plan.dynamics) {
       PetscCall(runDynamics(ctx));
     } else if (ctx.converged && plan.continuation) {
@@ -290,13 +384,13 @@ PetscErrorCode runFromCommandLine(int argc, char** argv, int* exitCode) {
       if (!ok && ctx.converged) {
         ctx.converged = false;
         ctx.failure = statics.failureMessage();
-        if (statics.linearSolveFailed() && checkModel) {  // name the mechanism / redundancy if there is one
+        if (statics.linearSolveFailed() && check.enabled) {  // name the mechanism / redundancy if there is one
           LoadState ls;
           ls.loadFactor = ls.time = ctx.reports.empty() ? 0.0 : ctx.reports.back().loadFactor;
-          ConstraintReport check;
-          PetscCall(checkConstraints(assembler, model, ctx.U, ls, &check));
-          if (check.singular) {
-            ctx.failure += "\n" + check.message;
+          ConstraintReport report;
+          PetscCall(checkConstraints(assembler, model, ctx.U, ls, &report));
+          if (report.singular) {
+            ctx.failure += "\n" + report.message;
             modelError = true;
           }
         }

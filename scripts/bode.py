@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """Bode plot of every input/output pair of the state-space model in a Sinew result file
 (/statespace/A, B, C, D written with opt.transfer):  H(i w) = C (i w I - A)^-1 B + D.
 

@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """Plot the load path of one node from a Sinew result file: load factor (or time) against the
 displacement of node N, u = p[step] - p0, with p from /node/p and p0 from /node/p0 (the initial
 positions; the first row of /node/p when /node/p0 is missing).

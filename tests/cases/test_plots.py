@@ -4,7 +4,9 @@ last step and of step 2 (PNG), mode 1 (PNG) and animated GIFs of mode 2 and of t
 Checks: the files are real images (size, more than one colour, GIF frame counts: 24 per mode period,
 one per load step), the titles (printed, and the PNG's "Title" metadata) carry the frequency read
 from /freq, the load factor of the step and the scene title; axis labels in m; node numbers drawn for
-a few nodes and not for 300 (a synthetic 3D result file); a missing mode is an error naming it."""
+a few nodes and not for 300 (a synthetic 3D result file); a missing mode is an error naming it.
+Also: plot_input.py --step K counts from 1 like the summary; plot_sensors.py names each sensor's
+components and units (a 2D ANCF cantilever with a Displacement and a ForceLocal sensor)."""
 import os
 import subprocess
 
@@ -111,11 +113,50 @@ with h5py.File(big, "w") as f:
     f["mesh/lines"] = np.stack([np.arange(n - 1), np.arange(1, n)], axis=1)
     f["load_factor"] = [0.5, 1.0]
     f.attrs["scene"] = "title: Helix\n"
-h5 = big
+h5_cantilever, h5 = h5, big
 out = plot("-o", os.path.join(work, "plots_synthetic.png"))
 image_ok(os.path.join(work, "plots_synthetic.png"))
 st.check("node numbers: not drawn (300 nodes)" in out, "no node numbers above 200 nodes")
 st.check("axes: x [m], y [m], z [m]" in out, "3D view, axis labels in m")
 t = title_of(out)
 st.check("Helix" in t and "load factor 1" in t, f"synthetic title {t!r}")
+
+# plot_input.py --step: 1-based
+PLOT_INPUT = os.path.join(st.SOURCE, "scripts", "plot_input.py")
+p = subprocess.run(["/usr/bin/python3", PLOT_INPUT, h5_cantilever, "--step", "1", "-o", os.path.join(work, "plots_in1.png")],
+                   capture_output=True, text=True, timeout=300)
+print("  plot_input.py --step 1: " + p.stdout.strip().replace("\n", " | "))
+st.check(p.returncode == 0 and f"step 1 of 4, load factor {lam[0]:.6g}" in p.stdout, "plot_input --step 1 is the first row")
+p = subprocess.run(["/usr/bin/python3", PLOT_INPUT, h5_cantilever, "--step", "5", "-o", os.path.join(work, "plots_in5.png")],
+                   capture_output=True, text=True, timeout=300)
+st.check(p.returncode != 0 and "outside 1..4" in p.stderr, f"plot_input --step 5 of 4 is an error: {p.stderr.strip()}")
+
+# plot_sensors.py: components and units
+sensors_scene = """title: ANCF sensors
+nodes: [[0, 0], [2, 0]]
+elements: [[1, 2]]
+nprops:
+  1: {fix_coords: [1, 1, 0, 1]}
+  2: {force: [0, -1000]}
+eprops:
+  - {elems: [1], type: ancf_cable2d, physicsMassPerLength: 78, physicsBendingStiffness: 1.725e6,
+     physicsAxialStiffness: 2.07e9, nbeams: 4}
+opt: {loadsteps: 2, calcfreq: false}
+sensors:
+  - {element: 1, x: 2.0, variable: Displacement, name: tip}
+  - {element: 1, x: 0.0, variable: ForceLocal, name: root}
+"""
+h5s, _ = st.run("plots_sensors", sensors_scene, np_=2)
+png = os.path.join(work, "plots_sensors.png")
+p = subprocess.run(["/usr/bin/python3", os.path.join(st.SOURCE, "scripts", "plot_sensors.py"), h5s, "-o", png],
+                   capture_output=True, text=True, timeout=300)
+print("  plot_sensors.py: " + p.stdout.strip().replace("\n", " | "))
+st.check(p.returncode == 0, f"plot_sensors exit {p.returncode} {p.stderr}")
+st.check("panel: tip: Displacement [m]; components: tip: ux [m], tip: uy [m]" in p.stdout, "tip sensor: ux, uy in m")
+st.check("panel: root: ForceLocal [N]; components: root: axial force [N]" in p.stdout, "root sensor: axial force in N")
+st.check("x axis: load factor [-]" in p.stdout, "x axis named")
+image_ok(png)
+p = subprocess.run(["/usr/bin/python3", SCRIPT, h5s, "-o", os.path.join(work, "plots_ancf.png")], capture_output=True,
+                   text=True, timeout=300)
+st.check(p.returncode == 0 and "axes: x [m], y [m]" in p.stdout, "2D ANCF model drawn in the xy plane")
 st.done()

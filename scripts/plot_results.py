@@ -7,8 +7,9 @@ usage: scripts/plot_results.py result.h5 [-o out.png] [--step K] [--mode N | --m
                                [--scale auto|S] [--view auto|3d|xy|xz|yz] [--labels auto|on|off]
 
 - default: the deformed shape of step K (1-based like the run summary; default the last written
-  step) over the undeformed one (/node/p0, /mesh/p - /mesh/u), the load factor or time and the
-  scene title in the title;
+  step) over the undeformed one (/mesh/p0 when present, else /mesh/p - /mesh/u, /node/p0 without
+  a mesh; for the load steps after form finding: the found shape, the last form-finding row), the
+  load factor or time and the scene title in the title;
 - --mode N: natural mode N (/mesh/mode_freq_N) of step K with its frequency (/freq) in Hz;
   --mode buck:N the buckling mode (/mesh/mode_buck_N) with its load multiplier (/buck);
 - --animate path: a GIF of the deformed shape over all written steps (the load path or the time
@@ -49,11 +50,14 @@ class Result:
             self.node_p0 = f["node/p0"][()] if "node/p0" in f else self.node_p[0]
             self.mesh_p = f["mesh/p"][()] if "mesh/p" in f else self.node_p
             if "mesh/p0" in f:
-                self.mesh_p0 = np.broadcast_to(f["mesh/p0"][()], self.mesh_p.shape)
+                self.mesh_p0 = np.array(np.broadcast_to(f["mesh/p0"][()], self.mesh_p.shape))
             elif "mesh/u" in f:
                 self.mesh_p0 = self.mesh_p - f["mesh/u"][()]
             else:
-                self.mesh_p0 = np.broadcast_to(self.node_p0 if "mesh/p" not in f else self.mesh_p[0], self.mesh_p.shape)
+                self.mesh_p0 = np.array(np.broadcast_to(self.node_p0 if "mesh/p" not in f else self.mesh_p[0],
+                                                        self.mesh_p.shape))
+            # rows after form finding deform the found shape (the last form-finding row, design.md)
+            self.nff = len(f["formfinding/residual"]) if "formfinding/residual" in f else 0
             self.cells = []
             for kind in ("lines", "triangles", "quads"):
                 if f"mesh/{kind}" in f and "mesh/p" in f:
@@ -80,6 +84,11 @@ class Result:
         nn = len(self.node_p0)
         # scene nodes are the first rows of the FE mesh (nbeams splits append nodes): modes can move them
         self.scene_rows = nn <= self.mesh_p.shape[1] and np.allclose(self.mesh_p0[0][:nn], self.node_p0, atol=1e-12)
+        self.node_ref = np.array([self.mesh_p0[k][:nn] if self.scene_rows else self.node_p0
+                                  for k in range(len(self.mesh_p0))])
+        if 0 < self.nff < len(self.mesh_p):
+            self.mesh_p0[self.nff:] = self.mesh_p[self.nff - 1]
+            self.node_ref[self.nff:] = self.node_p[self.nff - 1]
         written = np.all(np.isfinite(self.node_p.reshape(len(self.node_p), -1)), axis=1)
         self.steps = [k + 1 for k in range(len(self.node_p)) if written[k]]  # 1-based, as in the summary
         if not self.steps:
@@ -99,6 +108,13 @@ class Result:
             return f"step {k + 1}"
         v = self.stepvalue[k]
         return f"step {k + 1} of {len(self.node_p)}, " + (f"time {v:.6g} s" if self.stepname == "time" else f"load factor {v:.6g}")
+
+    def ref_nodes(self, k):
+        """Scene-node positions of the undeformed shape of row k (the found shape after form finding)."""
+        return self.node_ref[k]
+
+    def ref_name(self, k):
+        return "found shape" if 0 < self.nff <= k else "undeformed"
 
     def mode_nodes(self, k, shape):
         """Scene-node positions displaced by a mode shape (mesh rows), or the step's positions."""
@@ -259,7 +275,7 @@ def main():
         rows = [s - 1 for s in res.steps]
         s = magnification(a.scale, np.stack([res.mesh_p[r] - res.mesh_p0[r] for r in rows]), size, False)
         frames = [(res.mesh_p0[r] + s * (res.mesh_p[r] - res.mesh_p0[r]),
-                   res.node_p0 + s * (res.node_p[r] - res.node_p0), r) for r in rows]
+                   res.ref_nodes(r) + s * (res.node_p[r] - res.ref_nodes(r)), r) for r in rows]
         canvas = Canvas(choose_view(a.view, [res.mesh_p0[rows[-1]]] + [f[0] for f in frames]),
                         [res.mesh_p0[rows[-1]]] + [f[0] for f in frames])
         out = a.output or base + "_path.gif"
@@ -296,13 +312,13 @@ def main():
         return 0
     s = magnification(a.scale, res.mesh_p[k] - res.mesh_p0[k], size, False)
     deformed = res.mesh_p0[k] + s * (res.mesh_p[k] - res.mesh_p0[k])
-    deformed_nodes = res.node_p0 + s * (res.node_p[k] - res.node_p0)
-    canvas = Canvas(choose_view(a.view, [res.mesh_p0[k], deformed]), [res.mesh_p0[k], deformed, res.node_p0])
-    canvas.shape(res.mesh_p0[k], res.cells, res.node_p0, **grey)
+    deformed_nodes = res.ref_nodes(k) + s * (res.node_p[k] - res.ref_nodes(k))
+    canvas = Canvas(choose_view(a.view, [res.mesh_p0[k], deformed]), [res.mesh_p0[k], deformed])
+    canvas.shape(res.mesh_p0[k], res.cells, res.ref_nodes(k), **grey)
     canvas.shape(deformed, res.cells, deformed_nodes, **blue)
     if labels:
         canvas.labels(deformed_nodes)
-    title = f"{res.title}\ndeformed (blue) and undeformed (grey), {res.state(k)}{scaled(s)}"
+    title = f"{res.title}\ndeformed (blue) and {res.ref_name(k)} (grey), {res.state(k)}{scaled(s)}"
     canvas.title(title)
     save_png(canvas, a.output or base + f"_step{k + 1}.png", title)
     return 0
@@ -310,7 +326,7 @@ def main():
 
 def write_gif(canvas, out, fps, frames, res, grey, blue, labels, titles, k_ref, ref=None):
     """frames: (mesh positions, node positions, row); the undeformed (or reference) shape stays in grey."""
-    base_mesh, base_nodes = ref if ref is not None else (res.mesh_p0[k_ref], res.node_p0)
+    base_mesh, base_nodes = ref if ref is not None else (res.mesh_p0[k_ref], res.ref_nodes(k_ref))
     canvas.shape(base_mesh, res.cells, base_nodes, **grey)
     fixed = canvas.artists
     canvas.artists = []

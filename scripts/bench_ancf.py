@@ -1,8 +1,8 @@
 #!/usr/bin/python3
 """ANCF cable benchmark: A1 (cantilever under gravity, L = 2, EA = 1e6, EI = 833.33) refined to n
 elements, static, 1 load step (loadsteps: 1; Sinew cuts the increment by itself when Newton fails).
-Two measurements, written to the section "ANCF cable" of docs/performance.md (replaced; the rest of
-the file is kept):
+Two measurements, written to the generated block "bench_ancf" of docs/performance.md (section
+"ANCF cable"; scripts/doc_tables.py: the rest of the file is kept):
   --converge n ...  full solves on 1 and 2 ranks: converged (exit 0)?, Newton iterations, increments,
                     GMRES iterations, statics time and the sum of Sinew's phases (run summary), wall
                     time of mpirun, peak memory (/usr/bin/time -v, largest resident set of the ranks);
@@ -21,6 +21,7 @@ import time
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(ROOT, "tests", "cases"))
 from ancf_scenes import cantilever, text  # noqa: E402
+import doc_tables  # noqa: E402
 
 ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1", OMPI_MCA_rmaps_base_oversubscribe="1")
 WORK = "/tmp/sinew_bench_ancf"
@@ -65,8 +66,7 @@ def main():
         for np_ in (1, 2):
             iters.append(run(args.bin, n, np_, ["-tangent_operator", "assembled", "-snes_max_it", "1", "-max_cuts", "0"]))
             print(iters[-1], flush=True)
-    sec = ["## ANCF cable", "",
-           "A1 refined (`scripts/bench_ancf.py`): static cantilever under gravity, `loadsteps: 1`, `calcfreq: false`; "
+    sec = ["A1 refined (`scripts/bench_ancf.py`): static cantilever under gravity, `loadsteps: 1`, `calcfreq: false`; "
            "4 n + 1 unknowns. Solver (default for ANCF statics, docs/ancf_cable2d.md): Newton, each linear system solved "
            "by GMRES on the element-wise tangent operator, right-preconditioned by the LU factorization of the "
            "assembled tangent (1 rank: PETSc LU in nested-dissection order; 2 ranks: MUMPS), from 1024 elements per "
@@ -90,13 +90,7 @@ def main():
     for r in iters:
         sec.append(f"| {r['n']} | {4 * r['n'] + 1} | {r['np']} | {r['gmres']} | {r['statics']:.3f} | {r['wall']:.2f} | "
                    f"{r['rss']:.0f} |")
-    path = os.path.join(ROOT, "docs", "performance.md")
-    old = open(path).read() if os.path.exists(path) else "# Performance\n"
-    m = re.search(r"## ANCF cable\n.*?(?=\n## |\Z)", old, flags=re.S)
-    new = "\n".join(sec) + "\n"
-    old = old[:m.start()] + new + old[m.end():] if m else old.rstrip() + "\n\n" + new
-    open(path, "w").write(old)
-    print("wrote", path)
+    doc_tables.write_block("performance.md", "bench_ancf", "\n".join(sec))
 
 
 if __name__ == "__main__":

@@ -1,5 +1,6 @@
 #!/usr/bin/python3
-"""Beam performance benchmarks -> the "Beams" section of docs/performance.md (other sections kept).
+"""Beam performance benchmarks -> the generated block "bench_beam" of docs/performance.md (section
+"Beams"; the rest of the file is kept, scripts/doc_tables.py).
 (a) element residual + tangent throughput on one core (tests/unit/bench_beam_kernel.cpp, g++ -O2);
 (b) a lattice of >= 1e6 unknowns (scripts/gen_lattice.py 56), one nonlinear load step on 2 ranks:
     wall time, peak RSS per rank (/usr/bin/time -v around each rank), linear solver;
@@ -19,6 +20,7 @@ import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from gen_lattice import lattice  # noqa: E402
+import doc_tables  # noqa: E402
 
 SRC = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
@@ -76,17 +78,6 @@ def run_lattice(n, np_, solver=(), work="/tmp/sinew_bench_beam", extra=()):
     return r
 
 
-def write_section(text):
-    path = os.path.join(SRC, "docs", "performance.md")
-    old = open(path).read() if os.path.exists(path) else "# Performance\n"
-    i = old.find("\n## Beams")
-    if i >= 0:
-        j = old.find("\n## ", i + 5)
-        old = old[:i] + (old[j:] if j >= 0 else "\n")
-    with open(path, "w") as f:
-        f.write(old.rstrip("\n") + "\n\n" + text)
-
-
 def main():
     global BUILD
     ap = argparse.ArgumentParser()
@@ -103,8 +94,7 @@ def main():
     for n in sizes:
         runs[(n, 2)] = run_lattice(n, 2, a.solver.split())
     steady = {np_: run_lattice(26, np_, a.solver.split(), extra=["-loadsteps", "4"]) for np_ in (1, 2)}
-    s = ["## Beams", "",
-         "`scripts/bench_beam.py` (run under `flock /tmp/sinew_bench.lock`), Release build, on the shared 2-core "
+    s = ["`scripts/bench_beam.py` (run under `flock /tmp/sinew_bench.lock`), Release build, on the shared 2-core "
          "machine; load average (1/5/15 min) noted per measurement. Lattice scenes: `scripts/gen_lattice.py n` "
          "(n^3 nodes on a cubic grid, beams along all grid lines, bottom layer clamped, top layer loaded), one "
          "load step.", "",
@@ -137,11 +127,8 @@ def main():
           f"{a1:.3f} | {g1:.3f} | {r1['load']} |",
           f"| 2 | {r2['jac'][1]:.3f} ({r2['jac'][0]}) | {r2['coo'][1]:.3f} ({r2['coo'][0]}) | {r2['res'][1]:.3f} ({r2['res'][0]}) | "
           f"{a2:.3f} | {g2:.3f} | {r2['load']} |",
-          "", f"Speedup of assembly {a1 / a2:.2f}x ({g1 / g2:.2f}x with the one-time set-up).", "",
-          "Jacobians are assembled with COO (MatSetPreallocationCOO once per matrix, then MatSetValuesCOO per "
-          "assembly); `-assembly_coo false` gives the MatSetValuesLocal path. Linear solver of (b): the one in the "
-          "table (MUMPS LU does not fit the 3D lattice of 1e6 unknowns in memory).", ""]
-    write_section("\n".join(s) + "\n")
+          "", f"Speedup of assembly {a1 / a2:.2f}x ({g1 / g2:.2f}x with the one-time set-up)."]
+    doc_tables.write_block("performance.md", "bench_beam", "\n".join(s))
     print("\n".join(s))
 
 

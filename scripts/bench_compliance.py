@@ -4,7 +4,7 @@ plane (6 (n^2 - 4) unknowns, corners clamped), compliance of every node, one loa
 `--np` ranks. Reports the factorization time, the time of the compliance blocks and their ratio,
 and the load average; --method picks -compliance_method (selinv: MUMPS selected inverse entries,
 sparse / dense: unit loads as sparse or dense right-hand-side blocks of --batch columns). With
---doc it prints the result as a Markdown table for docs/performance.md.
+--doc it writes the result table into docs/performance.md (generated block bench_compliance).
 
 usage: scripts/bench_compliance.py [--n 129] [--np 2] [--method selinv] [--batch 96] [--doc]"""
 import argparse
@@ -12,6 +12,8 @@ import os
 import re
 import subprocess
 import time
+
+import doc_tables
 
 SOURCE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..")
 
@@ -38,7 +40,7 @@ def main():
     ap.add_argument("--method", choices=["selinv", "sparse", "dense"], default="selinv")
     ap.add_argument("--batch", type=int, default=96)
     ap.add_argument("--bin", default=os.path.join(SOURCE, "build", "sinew"))
-    ap.add_argument("--doc", action="store_true", help="print the result as a Markdown table")
+    ap.add_argument("--doc", action="store_true", help="write the result table into docs/performance.md")
     a = ap.parse_args()
     text, ne = scene(a.n)
     # element list as a range is not YAML: write the explicit list
@@ -74,9 +76,8 @@ def main():
     for k, v in rows:
         print(f"{k:45s} {v}")
     if a.doc:
-        print("\n| quantity | value |\n|---|---|")
-        for k, v in rows:
-            print(f"| {k} | {v} |")
+        doc_tables.write_block("performance.md", "bench_compliance",
+                               "\n".join(["| quantity | value |", "|---|---|"] + [f"| {k} | {v} |" for k, v in rows]))
 
 
 if __name__ == "__main__":

@@ -1,12 +1,14 @@
 #!/usr/bin/python3
 """Form-finding benchmark: four-point sail (meshes/sail.geo with a small lc, >= 1e5 triangles) plus
-edge cables, 3 URS steps, on 1 and 2 ranks. Writes the "Form finding" section of docs/performance.md
-(replacing an older one). Usage: scripts/bench_formfinding.py [build dir] [lc]"""
+edge cables, 3 URS steps, on 1 and 2 ranks. Writes the generated block "bench_formfinding" of
+docs/performance.md (section "Form finding"; the rest is kept, scripts/doc_tables.py). Usage: scripts/bench_formfinding.py [build dir] [lc]"""
 import os
 import re
 import subprocess
 import sys
 import time
+
+import doc_tables
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 BUILD = os.path.abspath(sys.argv[1]) if len(sys.argv) > 1 else os.path.join(ROOT, "build")
@@ -45,16 +47,11 @@ for n in (1, 2):
                      elements=int(ntri.group(1)), rss=int(rss.group(1)) / 1024 if rss else float("nan")))
     print(rows[-1])
 speed = rows[0]["step"] / rows[1]["step"]
-sec = ["## Form finding", "",
-       f"`scripts/bench_formfinding.py` (lc = {LC:.5g}): four-point sail `meshes/sail.geo` meshed with gmsh, "
+sec = [f"`scripts/bench_formfinding.py` (lc = {LC:.5g}): four-point sail `meshes/sail.geo` meshed with gmsh, "
        f"{rows[0]['elements']} form-found elements (membrane triangles + edge cables), {rows[0]['unknowns']} "
        "unknowns, 3 URS steps (homotopy 0, one Newton iteration each: assemble, linear solve, update references), "
        "then one elastic load step. Time per step excludes result output. Memory: the largest resident set "
        "of the processes started by mpirun as reported by /usr/bin/time (mpirun's children; per process).", "",
-       "The form-finding solver is Sinew's default for models above 50000 unknowns: GMRES with hypre BoomerAMG "
-       "(relative tolerance 1e-12). Measured on the same sail on a quiet machine: MUMPS LU with the SCOTCH ordering "
-       "(the default below 50000 unknowns, `-ff_ksp_type preonly -ff_pc_type lu`) takes 2.20 s per step on 1 rank "
-       "and 1.60 s on 2 ranks (1.38x); CG + BoomerAMG 3.36 s and 1.47 s.", "",
        "| ranks | time per form-finding step (s) | form finding total (s) | run wall time (s) | max RSS (MB) | "
        "load average before / after the run (1 min) |",
        "|---|---|---|---|---|---|"]
@@ -62,9 +59,6 @@ for r in rows:
     sec.append(f"| {r['n']} | {r['step']:.3f} | {r['total']:.3f} | {r['wall']:.2f} | {r['rss']:.0f} | {r['load']} |")
 sec += ["", f"2-rank speedup of the form-finding step: {speed:.2f}x (target 1.6x; the machine has 2 cores shared "
         "with other jobs: a load average above 2 means the ranks did not have a core each, so the speedup is a lower "
-        "bound).", ""]
-path = os.path.join(ROOT, "docs", "performance.md")
-text = open(path).read() if os.path.exists(path) else "# Performance\n\n"
-text = re.sub(r"## Form finding\n.*?(?=\n## |\Z)", "", text, flags=re.S).rstrip() + "\n\n"
-open(path, "w").write(text + "\n".join(sec))
+        "bound)."]
+doc_tables.write_block("performance.md", "bench_formfinding", "\n".join(sec))
 print("\n".join(sec))

@@ -10,7 +10,7 @@ summary), the SinewEigen event time from -log_view and the peak resident memory 
 outside the summary phases is mostly the start-up constraint check (a MUMPS factorization and
 subspace iteration; `-- -constraint_check false` skips it). Extra arguments after `--` go to sinew, e.g.
   scripts/bench_modal.py -- -st_ksp_type cg -st_pc_type gamg      (iterative shift-and-invert)
-With --doc it prints a Markdown table row for docs/performance.md.
+With --doc it writes the result table into docs/performance.md (generated block bench_modal).
 
 usage: scripts/bench_modal.py [--n 20] [--nbeams 8] [--np 2] [--nfreq 10] [--doc] [-- sinew flags]"""
 import argparse
@@ -18,6 +18,8 @@ import os
 import re
 import subprocess
 import time
+
+import doc_tables
 
 SOURCE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..")
 
@@ -62,7 +64,7 @@ def main():
     ap.add_argument("--np", type=int, default=2)
     ap.add_argument("--nfreq", type=int, default=10)
     ap.add_argument("--bin", default=os.path.join(SOURCE, "build", "sinew"))
-    ap.add_argument("--doc", action="store_true", help="print a Markdown table row")
+    ap.add_argument("--doc", action="store_true", help="write the result table into docs/performance.md")
     ap.add_argument("extra", nargs="*", help="flags passed to sinew (after --)")
     a = ap.parse_args()
     text, nn, ne = scene(a.n, a.nbeams, nfreq=a.nfreq)
@@ -114,9 +116,8 @@ def main():
     for k, v in rows:
         print(f"{k:48s} {v}")
     if a.doc:
-        print("\n| quantity | value |\n|---|---|")
-        for k, v in rows:
-            print(f"| {k} | {v} |")
+        doc_tables.write_block("performance.md", "bench_modal",
+                               "\n".join(["| quantity | value |", "|---|---|"] + [f"| {k} | {v} |" for k, v in rows]))
 
 
 if __name__ == "__main__":

@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """Bode plot of every input/output pair of the state-space model in a Sinew result file
 (/statespace/A, B, C, D written with opt.transfer):  H(i w) = C (i w I - A)^-1 B + D.
 
@@ -14,6 +14,8 @@ import numpy as np  # noqa: E402
 
 IN_NAMES = ["force_x", "force_y", "force_z", "moment_x", "moment_y", "moment_z"]
 OUT_NAMES = ["displ_x", "displ_y", "displ_z", "veloc_x", "veloc_y", "veloc_z"]
+IN_UNITS = ["N", "N", "N", "(N m)", "(N m)", "(N m)"]
+OUT_UNITS = ["m", "m", "m", "m/s", "m/s", "m/s"]
 
 
 def frequency_response(A, B, C, D, w):
@@ -46,12 +48,13 @@ def main():
     fig, ax = plt.subplots(2, 1, sharex=True, figsize=(8, 7))
     for o, (on, oc) in enumerate(outs):
         for i, (inn, ic) in enumerate(ins):
-            label = f"{OUT_NAMES[oc - 1]}({on}) / {IN_NAMES[ic - 1]}({inn})"
+            label = (f"{OUT_NAMES[oc - 1]}({on}) / {IN_NAMES[ic - 1]}({inn}) "
+                     f"[{OUT_UNITS[oc - 1]}/{IN_UNITS[ic - 1]}]")
             ax[0].loglog(w / (2 * np.pi), np.abs(H[:, o, i]), label=label)
             ax[1].semilogx(w / (2 * np.pi), np.degrees(np.unwrap(np.angle(H[:, o, i]))), label=label)
-    ax[0].set_ylabel("magnitude")
-    ax[1].set_ylabel("phase (deg)")
-    ax[1].set_xlabel("frequency (Hz)")
+    ax[0].set_ylabel("magnitude |H| [output unit / input unit]")
+    ax[1].set_ylabel("phase [deg]")
+    ax[1].set_xlabel("frequency [Hz]")
     ax[0].legend(fontsize=8)
     for x in ax:
         x.grid(True, which="both", alpha=0.3)

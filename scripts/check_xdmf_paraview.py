@@ -1,5 +1,7 @@
+#!/usr/bin/python3
 """Opens a Sinew XDMF file with ParaView's XDMF reader and prints what it sees.
-Run with ParaView's Python (Debian: paraview + python3-paraview):  pvbatch3.11 scripts/check_xdmf_paraview.py out/crosshinge.xdmf
+Run with ParaView's Python (Debian: paraview + python3-paraview): scripts/check_xdmf_paraview.py out/crosshinge.xdmf
+(Debian's python3 imports paraview.simple from python3-paraview), or pvbatch3.11 scripts/check_xdmf_paraview.py ...
 """
 import sys
 

@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """List every group, dataset (shape, dtype) and attribute of a Sinew result file.
 
     h5check.py result.h5 [--values] [--max-attr-chars N]

@@ -4,7 +4,8 @@ and elements with their 1-based numbers, as in SPACAR Light's input check.
 
 usage: scripts/plot_input.py result.h5 [-o input.png] [--step K] [--view 3d|xy|xz|yz]
 Elements come from /mesh/lines (+ triangles, quads) labelled by /mesh/<kind>_element; positions
-from /node/p0 and /mesh/p - /mesh/u (the input geometry), or /node/p and /mesh/p of step K."""
+from /node/p0 and /mesh/p - /mesh/u (the input geometry), or /node/p and /mesh/p of step K (1-based,
+as in the run summary: --step 1 is the first written step)."""
 import argparse
 import os
 
@@ -20,7 +21,8 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("h5")
     ap.add_argument("-o", "--output", help="PNG file (default: <result>_input.png)")
-    ap.add_argument("--step", type=int, default=None, help="draw the state of step K instead of the input")
+    ap.add_argument("--step", type=int, default=None,
+                    help="draw the state of step K (1-based, as in the run summary) instead of the input")
     ap.add_argument("--view", default=None, choices=["3d", "xy", "xz", "yz"],
                     help="projection (default: xy for 2D models and flat models, else 3d)")
     a = ap.parse_args()
@@ -30,8 +32,15 @@ def main():
             nodes = f["node/p0"][()] if "node/p0" in f else f["node/p"][0]
             mp = f["mesh/p"][0] - f["mesh/u"][0] if "mesh/u" in f else nodes
         else:
-            nodes = f["node/p"][a.step]
-            mp = f["mesh/p"][a.step] if "mesh/p" in f else nodes
+            ns = f["node/p"].shape[0]
+            if not 1 <= a.step <= ns:
+                raise SystemExit(f"{a.h5}: --step {a.step} outside 1..{ns} (steps count from 1, as in the summary)")
+            nodes = f["node/p"][a.step - 1]
+            mp = f["mesh/p"][a.step - 1] if "mesh/p" in f else nodes
+            lam = f["time"] if "time" in f else f["load_factor"] if "load_factor" in f else None
+            state = f"step {a.step} of {ns}" + (f", {'time' if 'time' in f else 'load factor'} {lam[a.step - 1]:.6g}"
+                                                   if lam is not None else "")
+            print(f"positions of {state}")
         cells = []
         for kind in ("lines", "triangles", "quads"):
             if f"mesh/{kind}" in f:
@@ -64,9 +73,9 @@ def main():
     for n, p in enumerate(nodes, start=1):
         ax.text(*proj(p), f" {n}", color="black", fontsize=9, ha="left", va="top")
     if view == "3d":
-        ax.set_xlabel("x"), ax.set_ylabel("y"), ax.set_zlabel("z")
+        ax.set_xlabel("x [m]"), ax.set_ylabel("y [m]"), ax.set_zlabel("z [m]")
     else:
-        ax.set_xlabel("xyz"[axes[view][0]]), ax.set_ylabel("xyz"[axes[view][1]])
+        ax.set_xlabel("xyz"[axes[view][0]] + " [m]"), ax.set_ylabel("xyz"[axes[view][1]] + " [m]")
     first = title.splitlines()[0] if isinstance(title, str) and title else ""
     ax.set_title(f"{os.path.basename(a.h5)}: {len(nodes)} nodes (black), {len(centres)} elements (blue)"
                  + (f"\n{first}" if first.startswith("title") else ""))

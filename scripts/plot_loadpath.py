@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """Plot the load path of one node from a Sinew result file: load factor (or time) against the
 displacement of node N, u = p[step] - p0, with p from /node/p and p0 from /node/p0 (the initial
 positions; the first row of /node/p when /node/p0 is missing).
@@ -63,7 +63,7 @@ def main():
     ax.plot(xs, ys, "o-", ms=3)
     label = "|u|" if a.dir == "abs" else f"u_{a.dir}"
     ax.set_xlabel(f"{label} of node {a.node} [m]")
-    ax.set_ylabel("load factor" if step_name == "load_factor" else "time [s]")
+    ax.set_ylabel("load factor [-]" if step_name == "load_factor" else "time [s]")
     ax.set_title(scene_title or os.path.basename(a.file))
     ax.grid(True, alpha=0.3)
     fig.tight_layout()

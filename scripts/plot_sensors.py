@@ -1,34 +1,80 @@
 #!/usr/bin/python3
-"""Time (or load-factor) plots of every /sensors/<name> dataset of a Sinew result file.
+"""Time (or load-factor) plots of every /sensors/<name> dataset of a Sinew result file, one panel per
+sensor, its components and units named (the sensor's Exudyn output variable comes from the scene
+stored in the file).
 usage: scripts/plot_sensors.py result.h5 [-o sensors.png]"""
 import argparse
 
 import h5py
 import matplotlib
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt
+import yaml
 
-ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-ap.add_argument("h5")
-ap.add_argument("-o", "--output", default="sensors.png")
-a = ap.parse_args()
-with h5py.File(a.h5, "r") as f:
-    if "sensors" not in f:
-        raise SystemExit(f"{a.h5}: no /sensors group (the scene has no sensors)")
-    xname = "time" if "time" in f else "load_factor"
-    x = f[xname][:]
-    names = sorted(f["sensors"].keys())
-    fig, axes = plt.subplots(len(names), 1, figsize=(7, 2.6 * len(names)), squeeze=False, sharex=True)
-    for ax, name in zip(axes[:, 0], names):
-        v = f["sensors/" + name][:]
-        v = v.reshape(len(x), -1)
-        for k in range(v.shape[1]):
-            if v.shape[1] == 1 or abs(v[:, k]).max() > 0:
-                ax.plot(x, v[:, k], label=f"{name}[{k}]")
-        ax.set_ylabel(name)
-        ax.legend(loc="best", fontsize=8)
-        ax.grid(True, alpha=0.3)
-    axes[-1, 0].set_xlabel(xname)
-    fig.tight_layout()
-    fig.savefig(a.output, dpi=120)
-print("wrote", a.output)
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+# Exudyn output variable -> (component names, unit); vectors are global x, y, z unless "Local"
+VARIABLES = {
+    "Position": (("x", "y", "z"), "m"),
+    "Displacement": (("ux", "uy", "uz"), "m"),
+    "Velocity": (("vx", "vy", "vz"), "m/s"),
+    "VelocityLocal": (("v_axial", "v_normal", "v_z"), "m/s"),
+    "Acceleration": (("ax", "ay", "az"), "m/s^2"),
+    "Director1": (("r'_x", "r'_y", "r'_z"), "-"),
+    "AngularVelocity": (("omega_x", "omega_y", "omega_z"), "rad/s"),
+    "AngularAcceleration": (("alpha_x", "alpha_y", "alpha_z"), "rad/s^2"),
+    "Rotation": (("phi",), "rad"),
+    "StrainLocal": (("axial strain",), "-"),
+    "CurvatureLocal": (("curvature",), "1/m"),
+    "ForceLocal": (("axial force",), "N"),
+    "TorqueLocal": (("bending moment",), "N m"),
+}
+
+
+def sensor_variables(f):
+    """Sensor name -> Exudyn variable, from the scene text stored in the result file."""
+    scene = f.attrs.get("scene", "")
+    scene = scene.decode("utf-8", "replace") if isinstance(scene, bytes) else str(scene)
+    try:
+        sensors = (yaml.safe_load(scene) or {}).get("sensors") or []
+    except yaml.YAMLError:
+        return {}
+    return {str(s.get("name")): str(s.get("variable")) for s in sensors if isinstance(s, dict)}
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("h5")
+    ap.add_argument("-o", "--output", default="sensors.png")
+    a = ap.parse_args()
+    with h5py.File(a.h5, "r") as f:
+        if "sensors" not in f:
+            raise SystemExit(f"{a.h5}: no /sensors group (the scene has no sensors)")
+        xname = "time" if "time" in f else "load_factor"
+        x = f[xname][:]
+        variables = sensor_variables(f)
+        names = sorted(f["sensors"].keys())
+        fig, axes = plt.subplots(len(names), 1, figsize=(7, 2.6 * len(names)), squeeze=False, sharex=True)
+        for ax, name in zip(axes[:, 0], names):
+            v = f["sensors/" + name][:]
+            v = v.reshape(len(x), -1)
+            var = variables.get(name, "")
+            comps, unit = VARIABLES.get(var, (tuple(f"[{k}]" for k in range(v.shape[1])), "?"))
+            for k in range(v.shape[1]):
+                if v.shape[1] == 1 or abs(v[:, k]).max() > 0:
+                    comp = comps[k] if k < len(comps) else f"[{k}]"
+                    ax.plot(x, v[:, k], label=f"{name}: {comp} [{unit}]")
+            ylabel = f"{name}: {var or 'value'} [{unit}]"
+            ax.set_ylabel(ylabel)
+            print(f"panel: {ylabel}; components: {', '.join(l.get_label() for l in ax.get_lines())}")
+            ax.legend(loc="best", fontsize=8)
+            ax.grid(True, alpha=0.3)
+        xlabel = "time [s]" if xname == "time" else "load factor [-]"
+        axes[-1, 0].set_xlabel(xlabel)
+        print(f"x axis: {xlabel}")
+        fig.tight_layout()
+        fig.savefig(a.output, dpi=120)
+    print("wrote", a.output)
+
+
+if __name__ == "__main__":
+    main()

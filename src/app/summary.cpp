@@ -19,7 +19,7 @@ PetscErrorCode printSummary(MPI_Comm comm, const SummaryBody& b) {
   std::ostringstream s;
   char line[256];
   if (!b.reports.empty()) {
-    s << "\n step  load factor  Newton its  increments  residual\n";
+    s << "\n step  load factor  Newton its  increments  |residual| [N, N m]\n";
     bool onUpdate = false;
     for (const auto& r : b.reports) {
       std::snprintf(line, sizeof line, " %4d  %11.4g  %10d  %10d  %.3e%s\n", r.step, r.loadFactor, r.newtonIterations,
@@ -38,14 +38,14 @@ PetscErrorCode printSummary(MPI_Comm comm, const SummaryBody& b) {
   }
   if (!b.nodes.empty()) {
     s << "\n loaded and supported nodes, and the node that moves most (last step)\n"
-         " node          ux          uy          uz      rot_x      rot_y      rot_z\n";
+         " node      ux [m]      uy [m]      uz [m]   rx [rad]   ry [rad]   rz [rad]\n";
     for (const auto& n : b.nodes) {
       std::snprintf(line, sizeof line, " %4d %11.4e %11.4e %11.4e %10.4g %10.4g %10.4g\n", n.node, n.v[0], n.v[1], n.v[2],
                     n.v[3], n.v[4], n.v[5]);
       s << line;
     }
     s << "\n reactions (last step)\n"
-         " node          Fx          Fy          Fz          Mx          My          Mz\n";
+         " node      Fx [N]      Fy [N]      Fz [N]    Mx [N m]    My [N m]    Mz [N m]\n";
     for (const auto& n : b.nodes) {
       bool any = false;
       for (int k = 6; k < 12; ++k) any |= n.v[k] != 0.0;

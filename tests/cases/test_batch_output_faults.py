@@ -26,7 +26,7 @@ os.makedirs(adir, exist_ok=True)
 faults = [
     ("a directory", ["-o", adir], 1, "is a directory"),
     ("a directory with /", ["-o", adir + "/"], 1, "is a directory"),
-    ("no value", ["-o"], 2, "-o needs a file name"),
+    ("no value", ["-o"], 2, "-o: expected a file name, got no value"),
     ("the scene", ["-o", scene], 1, "is the scene file itself"),
     ("a missing directory", ["-o", work("no_such_dir/x.h5")], 1, "does not exist"),
 ]
@@ -75,7 +75,7 @@ finally:
 # Two runs on one output path at once.
 out = work("batch_mix.h5")
 remove_outputs(out)
-first = Run(scene, out, ["-loadsteps", "12", "-calcbuck", "false"])
+first = Run(scene, out, ["-loadsteps", "80", "-calcbuck", "false"])  # long enough to be running
 check(first.wait_for_steps(1, timeout=300), "first run: no progress")
 c, log = sinew([scene, "-o", out, "-loadsteps", "5", "-calcbuck", "false", "-calccompl", "false"])
 errors = [l for l in log.splitlines() if l.startswith("error")]
@@ -86,6 +86,6 @@ code = first.wait(timeout=600)
 check(code == 0, f"first run: exit {code}\n{first.text()[-1500:]}")
 converged, steps = read_result(out)
 print(f"  first run: exit {code}, file holds {steps} steps, converged = {converged}")
-check(converged == 1 and steps == 12, "the first run's file does not hold its own 12 steps")
+check(converged == 1 and steps == 80, "the first run's file does not hold its own 80 steps")
 check(not os.path.exists(out + ".lock"), "lock file left after a normal end")
 done()

@@ -624,17 +624,10 @@ PetscErrorCode Assembler::splitTangent(Vec U, const LoadState& ls, Mat Km, Mat K
   KernelNeeds needs;
   needs.tangent = true;
   needs.splitGeometric = true;
-  std::array<double, 48> q0;
-  std::array<double, 6> sigmaMixed;
   for (const LocalElement& el : mesh_.elements) {
     gatherElement(el, q.data(), u, idx.data(), nullptr);
     KernelInput in{q.data(), nullptr, el.firstMultiplier >= 0 ? u + el.firstMultiplier : nullptr, ls.time};
     in.disp = elemDisp_.data();
-    if (mixedNewton_ && el.kernel->numMixedStresses() > 0) {
-      if (mixedRefValid_) gatherStates(el, mixedRef_.data(), q0.data());
-      el.kernel->linearizedStresses(mixedRefValid_ ? q0.data() : nullptr, q.data(), sigmaMixed.data());
-      in.sigmaMixed = sigmaMixed.data();
-    }
     el.kernel->evaluate(in, needs, out_);
     const int n = el.kernel->numDofs() + el.kernel->numConstraints();
     rotationColumns(el, n, out_.K.data());

@@ -9,30 +9,12 @@ Controls on 2 ranks: the intact hypar net and the flat membrane without pressure
 free net with -constraint_check false fails in form finding step 1 with exit 3 (no SIGABRT)."""
 import os
 import re
-import subprocess
 import sys
 
 sys.path.insert(0, os.path.dirname(__file__))
 import sinewtest as st  # noqa: E402
+from consistency_util import RUNS, run  # noqa: E402
 from ffscenes import sail_scene, to_yaml  # noqa: E402
-
-RUNS = os.path.join(st.SOURCE, "runs")
-os.makedirs(st.WORK, exist_ok=True)
-
-
-def run(name, path, np_, args=(), timeout=300):
-    """Runs sinew under a timeout; returns (exit code, log, result path). A hang fails the test."""
-    out = os.path.join(st.WORK, f"{name}_{np_}.h5")
-    for stale in (out, out + ".part"):
-        if os.path.exists(stale):
-            os.remove(stale)
-    cmd = [st.MPIEXEC, "-n", str(np_), st.BIN, path, "-o", out] + list(args)
-    try:
-        p = subprocess.run(cmd, env=st.ENV, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, timeout=timeout)
-    except subprocess.TimeoutExpired:
-        st.fail(f"{name} on {np_} ranks: no exit within {timeout} s (hang)")
-        return None, "", out
-    return p.returncode, p.stdout, out
 
 
 def scene_from_run(name, fname, edit):

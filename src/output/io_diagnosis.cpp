@@ -10,8 +10,8 @@ namespace sinew {
 
 std::string ioFailureCause(const std::string& path) {
   constexpr unsigned long long kNearlyFull = 1ULL << 20;  // less than one HDF5 chunk can still fit
-  std::string dir = std::filesystem::path(path).parent_path().string();
-  if (dir.empty()) dir = ".";
+  const std::filesystem::path parent = std::filesystem::path(path).parent_path();
+  const std::string dir = parent.empty() ? std::string(1, '.') : parent.string();  // (GCC 12 -Wrestrict false positive on dir = ".")
   struct statvfs fs {};
   if (statvfs(dir.c_str(), &fs) == 0) {
     const unsigned long long freeBytes = static_cast<unsigned long long>(fs.f_bavail) * fs.f_frsize;

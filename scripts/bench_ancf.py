@@ -37,7 +37,7 @@ def run(binary, n, np_, extra=()):
     t0 = time.time()
     p = subprocess.run(cmd + list(extra), env=ENV, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
     wall = time.time() - t0
-    m = re.search(r"wall time: setup ([0-9.]+) s, constraint check ([0-9.]+) s, statics ([0-9.]+) s, "
+    m = re.search(r"wall time: setup ([0-9.]+) s, constraint check ([0-9.]+) s, statics ([0-9.]+) s(?: \(\d+ Newton iterations\))?, "
                   r"step analyses ([0-9.]+) s, output ([0-9.]+) s", p.stdout)
     its = re.search(r"^\s+1\s+1\s+(\d+)\s+(\d+)\s", p.stdout, re.M)
     rss = max(int(x) for x in re.findall(r"Maximum resident set size \(kbytes\): (\d+)", p.stdout)) / 1024

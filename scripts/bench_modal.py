@@ -88,7 +88,7 @@ def main():
         raise SystemExit(f"sinew failed ({p.returncode})")
     unknowns = int(re.search(r"(\d+) unknowns", out).group(1))
     hz = [float(v) for v in re.search(r"natural frequencies \(Hz, last step\):([^\n]*)", out).group(1).split()]
-    phases = re.search(r"wall time: setup ([\d.]+) s, (?:constraint check [\d.]+ s, )?statics ([\d.]+) s, "
+    phases = re.search(r"wall time: setup ([\d.]+) s, (?:constraint check [\d.]+ s, )?statics ([\d.]+) s(?: \(\d+ Newton iterations\))?, "
                        r"step analyses ([\d.]+) s, output ([\d.]+) s", out)
     with open(path.replace(".yaml", ".log"), "w") as f:
         f.write(out)

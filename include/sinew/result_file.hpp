@@ -70,6 +70,13 @@ class ResultFile {
   /// Makes everything written so far the content of the file under the final name (atomically)
   /// and rewrites the XDMF (rank 0) for those steps. Call after every step.
   void commit();
+  /// A commit forces the file to the disk (fsync) only when `seconds` have passed since the last
+  /// one that did (0: every commit); the published file survives a killed run either way
+  /// (src/output/file_sync.hpp). Default 10 s. Same value on every rank.
+  void setSyncInterval(double seconds);
+  /// Commits so far, and how many of them were forced to the disk.
+  long commits() const;
+  long syncedCommits() const;
   /// Sets root attribute `converged`, closes the file, publishes it under its final name and writes
   /// the XDMF (rank 0) listing the steps written. Idempotent. After a failed write (failed()), the
   /// file under the final name keeps the last committed state.

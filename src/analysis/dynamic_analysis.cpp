@@ -35,6 +35,9 @@ DynamicAnalysis::DynamicAnalysis(Assembler& assembler, const DynamicsOptions& op
   PetscReal rtol = forceRtol_;
   PetscCallAbort(comm, PetscOptionsGetReal(nullptr, nullptr, "-force_rtol", &rtol, &set));
   forceRtol_ = rtol;
+  PetscBool modified = PETSC_TRUE;
+  PetscCallAbort(comm, PetscOptionsGetBool(nullptr, nullptr, "-dynamics_modified_newton", &modified, &set));
+  modifiedNewton_ = modified;
   coordMax_ = asm_.coordinateScale();
 }
 
@@ -45,6 +48,36 @@ DynamicAnalysis::~DynamicAnalysis() {
 }
 
 // ---------------------------------------------------------------- Arnold-Brüls, own step loop
+
+// The effective matrix K + gamma/(beta h) C + (1 - alpha_m)/((1 - alpha_f) beta h^2) M is dominated
+// by the mass term at the step sizes dynamics uses, so on one process a model without multipliers
+// (no rigid modes or releases as constraints) is factored by PETSc's own LU (no pivoting needed;
+// nested-dissection order) instead of MUMPS, whose fixed cost per factorization (about 0.1 ms)
+// exceeds a whole time step of a small model. Anything else: MUMPS, as everywhere.
+PetscErrorCode DynamicAnalysis::useDynamicsSolver(KSP ksp) {
+  PetscFunctionBeginUser;
+  PetscCall(useDirectSolver(ksp));
+  const DistributedMesh& mesh = asm_.mesh();
+  int size = 1;
+  MPI_Comm_size(mesh.comm, &size);
+  bool plain = size == 1;
+  for (const LocalElement& e : mesh.elements) plain = plain && e.firstMultiplier < 0;
+  if (!plain) {
+    // MUMPS: the off-diagonal pivoting a wild Newton iterate needs (a step load on a fine cable)
+    // overflows the default workspace estimate (INFOG(1) = -9, a failed linear solve); reserve 100 %
+    // more (ICNTL(14)) unless the user set it
+    PetscBool set = PETSC_FALSE;
+    PetscCall(PetscOptionsHasName(nullptr, nullptr, "-mat_mumps_icntl_14", &set));
+    if (!set) PetscCall(PetscOptionsSetValue(nullptr, "-mat_mumps_icntl_14", "100"));
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  PC pc;
+  PetscCall(KSPGetPC(ksp, &pc));
+  PetscCall(PCFactorSetMatSolverType(pc, MATSOLVERPETSC));
+  PetscCall(PCFactorSetMatOrderingType(pc, MATORDERINGND));
+  PetscCall(PCFactorSetShiftType(pc, MAT_SHIFT_NONZERO));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
 
 PetscErrorCode DynamicAnalysis::rates(Vec U) {
   PetscFunctionBeginUser;
@@ -74,14 +107,34 @@ PetscErrorCode DynamicAnalysis::formJacobian(SNES snes, Vec U, Mat, Mat P, void*
   PetscFunctionBeginUser;
   auto* self = static_cast<DynamicAnalysis*>(ctx);
   const double h = self->h_;
+  PetscInt it = 0;
+  PetscReal fnorm = 0;
+  if (snes) {
+    PetscCall(SNESGetIterationNumber(snes, &it));
+    PetscCall(SNESGetFunctionNorm(snes, &fnorm));
+  }
+  if (self->modifiedNewton_ && snes) {
+    // Keep the factored Jacobian (P untouched: PCSetUp sees the same matrix state and does not
+    // refactor) while it still makes Newton contract fast enough.
+    constexpr double kContractivity = 0.5;
+    constexpr int kMaxReuse = 8;
+    const bool slow = it > 0 && fnorm > kContractivity * self->prevFnorm_;
+    self->prevFnorm_ = fnorm;
+    if (self->jacobianValid_ && self->jacobianH_ == h && !slow && self->reuseCount_ < kMaxReuse) {
+      ++self->reuseCount_;
+      PetscFunctionReturn(PETSC_SUCCESS);
+    }
+  }
   // dqd/dq = gamma/(beta h), dqdd/dq = (1 - alpha_m)/((1 - alpha_f) beta h^2)
   const double shiftV = self->gamma_ / (self->beta_ * h);
   const double shiftA = (1.0 - self->alphaM_) / ((1.0 - self->alphaF_) * self->beta_ * h * h);
   PetscCall(self->rates(U));
   PetscCall(self->asm_.dynamicJacobian(U, self->V1_, self->ls_, shiftV, shiftA, P));
-  PetscInt it = 0;
-  if (snes) PetscCall(SNESGetIterationNumber(snes, &it));
-  if (it == 0) PetscCall(MatNorm(P, NORM_INFINITY, &self->jacobianNorm_));  // at the predictor
+  ++self->report_.jacobians;
+  self->jacobianValid_ = true;
+  self->jacobianH_ = h;
+  self->reuseCount_ = 0;
+  if (it == 0 || self->jacobianNorm_ == 0) PetscCall(MatNorm(P, NORM_INFINITY, &self->jacobianNorm_));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -146,7 +199,10 @@ PetscErrorCode DynamicAnalysis::step(double t1, bool* ok, int* its, double* fnor
   PetscCall(VecAXPBYPCZ(Cu_, h, h * h * (0.5 - beta_), 1.0, Vn_, An_));
   Vec U;
   PetscCall(SNESGetSolution(snes_, &U));
-  PetscCall(VecWAXPY(U, h * h * beta_, An_, Cu_));
+  // guarded: start Newton at q_n (an extrapolation by the accelerations of a step load on a fine
+  // mesh lands far outside Newton's reach: stiff axial waves)
+  if (restPredictor_) PetscCall(VecCopy(Un_, U));
+  else PetscCall(VecWAXPY(U, h * h * beta_, An_, Cu_));
   PetscCall(SNESSolve(snes_, nullptr, U));
   PetscCall(SNESGetConvergedReason(snes_, why));
   PetscInt n;
@@ -156,6 +212,7 @@ PetscErrorCode DynamicAnalysis::step(double t1, bool* ok, int* its, double* fnor
   *its = static_cast<int>(n);
   *fnorm = f;
   *ok = *why > 0;
+  if (!*ok) jacobianValid_ = false;  // a failed solve starts the retry from a fresh Jacobian
   if (*ok) {
     PetscCall(rates(U));
     PetscCall(VecCopy(U, Un_));
@@ -174,14 +231,15 @@ PetscErrorCode DynamicAnalysis::runArnoldBruls(Vec U, const StepCallback& onStep
   PetscCall(SNESSetFunction(snes_, F_, formFunction, this));
   PetscCall(SNESSetJacobian(snes_, J_, J_, formJacobian, this));
   PetscCall(SNESSetTolerances(snes_, 1e-50, 1e-10, 1e-12, 50, 10000));
-  PetscCall(SNESSetDivergenceTolerance(snes_, -1.0));
+  // a residual 1e6 times its start is a diverged Newton solve: retried at once, not after 50 iterations
+  PetscCall(SNESSetDivergenceTolerance(snes_, 1e6));
   SNESLineSearch lsrch;
   PetscCall(SNESGetLineSearch(snes_, &lsrch));
   PetscCall(SNESLineSearchSetType(lsrch, SNESLINESEARCHBASIC));
   PetscCall(SNESSetConvergenceTest(snes_, convergenceTest, this, nullptr));
   KSP ksp;
   PetscCall(SNESGetKSP(snes_, &ksp));
-  PetscCall(useDirectSolver(ksp));
+  PetscCall(useDynamicsSolver(ksp));
   PetscCall(SNESSetFromOptions(snes_));
   Vec Usol;
   PetscCall(VecDuplicate(U, &Usol));
@@ -208,11 +266,24 @@ PetscErrorCode DynamicAnalysis::runArnoldBruls(Vec U, const StepCallback& onStep
   // growAfter_ = 0 is the former rule: every time step restarts at dt, no growth inside a step.
   double h = dt;
   int successes = 0;
+  // Guarded mode: a failed solve is first retried at the same step size with full Newton started
+  // at q_n instead of the extrapolated predictor, then by halving (still guarded); the next time
+  // step starts plain again (a diverging extrapolation is caught early: DIVERGED_DTOL).
+  const bool modifiedDefault = modifiedNewton_;
+  bool guarded = false;
+  auto setGuarded = [&](bool on) -> PetscErrorCode {
+    PetscFunctionBeginUser;
+    guarded = on;
+    restPredictor_ = on;
+    modifiedNewton_ = on ? false : modifiedDefault;
+    PetscFunctionReturn(PETSC_SUCCESS);
+  };
   for (int k = 1; k <= nsteps; ++k) {
     const double target = k == nsteps ? tend : k * dt;
     int cuts = 0;
     if (growAfter_ == 0) h = dt;
     bool reduced = h < dt;
+    PetscCall(setGuarded(false));
     while (t < target) {
       // a remainder below 1e-6 of the sub-step is round-off of the summed sub-steps: end on target
       h_ = target - t - h <= 1e-6 * h ? target - t : h;
@@ -232,6 +303,13 @@ PetscErrorCode DynamicAnalysis::runArnoldBruls(Vec U, const StepCallback& onStep
         continue;
       }
       successes = 0;
+      if (!guarded) {
+        PetscCall(setGuarded(true));
+        ++report_.guardedSteps;
+        PetscCall(PetscPrintf(comm, "  t = %.6g: Newton failed (%s); retrying with full Newton from the last state\n", t1,
+                              SNESConvergedReasons[why]));
+        continue;
+      }
       if (++cuts > maxCuts_) {
         std::ostringstream msg;
         msg << "time step " << k << " of " << nsteps << " did not converge: Newton stopped at t = " << t1 << " ("
@@ -314,6 +392,8 @@ PetscErrorCode DynamicAnalysis::runTSAlpha2(Vec U, const StepCallback& onStep, b
   PetscCall(TSSetMaxTime(ts, opts_.tend));
   PetscCall(TSSetExactFinalTime(ts, TS_EXACTFINALTIME_MATCHSTEP));
   PetscCall(TSSetMaxSNESFailures(ts, -1));  // a failed step is retried with a smaller step
+  PetscCall(TSSetMaxStepRejections(ts, maxCuts_));
+  PetscCall(TSSetErrorIfStepFails(ts, PETSC_FALSE));  // a failed step ends with Sinew's message (converged reason)
   SNES snes;
   KSP ksp;
   PetscCall(TSGetSNES(ts, &snes));
@@ -335,10 +415,25 @@ PetscErrorCode DynamicAnalysis::runTSAlpha2(Vec U, const StepCallback& onStep, b
     PetscCall(TS2SetSolution(ts, U, V));
     PetscCall(TSSetFromOptions(ts));
     PetscCall(TSSolve(ts, U));
+    PetscInt snesIts = 0, rejected = 0;
+    PetscCall(TSGetSNESIterations(ts, &snesIts));
+    PetscCall(TSGetStepRejections(ts, &rejected));
+    report_.newtonIterations = static_cast<int>(snesIts);
+    report_.jacobians = static_cast<int>(snesIts);  // TS assembles a Jacobian at every Newton iteration
+    report_.reducedSteps = static_cast<int>(rejected);
     TSConvergedReason why;
     PetscCall(TSGetConvergedReason(ts, &why));
     ok = why > 0;
-    if (!ok) failure_ = std::string("opt.dynamics: TSALPHA2 stopped (") + TSConvergedReasons[why] + ")";
+    if (!ok) {
+      PetscReal tfail = 0;
+      PetscCall(TSGetTime(ts, &tfail));
+      std::ostringstream msg;
+      msg << "opt.dynamics with -dynamics_scheme tsalpha2: PETSc's TSALPHA2 stopped at t = " << tfail << " ("
+          << TSConvergedReasons[why] << ", after " << report_.steps
+          << " time steps): its Newton solves failed even with reduced steps. The default scheme (arnold_bruls) "
+             "controls the step itself; else try a smaller opt.dynamics.dt or -snes_linesearch_type bt.";
+      failure_ = msg.str();
+    }
   }
   *converged = ok;
   PetscCall(VecDestroy(&V));

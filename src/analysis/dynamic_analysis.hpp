@@ -25,8 +25,10 @@ namespace sinew {
 struct DynamicsReport {
   int steps = 0;             ///< time steps of size dt completed
   int reducedSteps = 0;      ///< steps that needed halved sub-steps
+  int guardedSteps = 0;      ///< steps retried with full Newton from the last state (guarded)
   int substeps = 0;          ///< SNES solves (1 per step without cuts)
   int newtonIterations = 0;
+  int jacobians = 0;         ///< Jacobians assembled and factored (modified Newton keeps one for many iterations)
   double time = 0;           ///< last converged time
 };
 
@@ -59,6 +61,7 @@ class DynamicAnalysis {
   static PetscErrorCode tsI2Function(TS, PetscReal t, Vec U, Vec V, Vec A, Vec F, void* ctx);
   static PetscErrorCode tsI2Jacobian(TS, PetscReal t, Vec U, Vec V, Vec A, PetscReal shiftV, PetscReal shiftA, Mat J,
                                      Mat P, void* ctx);
+  PetscErrorCode useDynamicsSolver(KSP ksp);
   PetscErrorCode initialAccelerations(Vec U, Vec V, Vec Qdd, bool* ok);
   /// a_{n+1}, qd_{n+1}, qdd_{n+1} of the iterate U (step size h_).
   PetscErrorCode rates(Vec U);
@@ -82,6 +85,15 @@ class DynamicAnalysis {
   int growAfter_ = 3;  ///< after a halving, double the sub-step after this many successes (0: never)
   double jacobianNorm_ = 0, coordMax_ = 0, fnorm0_ = 0;  ///< round-off floor of the residual (convergenceTest)
   bool useTS_ = false;
+  // Modified Newton (as Exudyn's): the factored Jacobian is kept across iterations and time steps
+  // while each iteration reduces the residual by at least kContractivity; a slower iteration, a new
+  // step size or kMaxReuse iterations on one Jacobian make the next iteration assemble a fresh one.
+  bool modifiedNewton_ = true;
+  bool jacobianValid_ = false;
+  bool restPredictor_ = false;  ///< guarded retry: Newton starts at q_n
+  double jacobianH_ = 0;       ///< step size the kept Jacobian was built for
+  int reuseCount_ = 0;         ///< iterations on the kept Jacobian since it was built
+  double prevFnorm_ = 0;       ///< residual norm at the previous Jacobian call of this solve
   DynamicsReport report_;
   std::string failure_;
 };

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include <cmath>
+
 #include "sinew/rotation.hpp"
 
 namespace sinew {
@@ -72,6 +74,8 @@ PetscErrorCode StepResults::write(ResultFile& file, Vec U, const LoadState& ls) 
     if (n.sceneNode < 0) continue;
     Mat3 R = identity3();
     if (n.kind == NodeKind::Frame6) std::copy(s + 3, s + 12, R.begin());
+    if (n.kind == NodeKind::Ancf2D)  // the slope's turn from its reference direction, about z
+      R = expSO3({0.0, 0.0, std::remainder(std::atan2(s[3], s[2]) - std::atan2(n.slope0[1], n.slope0[0]), 2 * M_PI)});
     const auto q = quaternionOf(R);
     const auto aa = axisAngleOf(R);
     const Vec3 e = eulerZYXOf(R);
@@ -82,6 +86,14 @@ PetscErrorCode StepResults::write(ResultFile& file, Vec U, const LoadState& ls) 
     if (n.kind == NodeKind::Frame6)
       for (int k = 0; k < 3; ++k)
         if (n.status[3 + k] != DofStatus::Free) M[k] = fr[n.fullDof[3 + k]];
+    if (n.kind == NodeKind::Ancf2D) {
+      // generalized reactions Q on the constrained slope coordinates; a rotation dphi moves the slope
+      // by dphi ez x s, so their moment about z is s_x Q_y - s_y Q_x
+      double Q[2] = {0, 0};
+      for (int k = 0; k < 2; ++k)
+        if (n.status[2 + k] != DofStatus::Free) Q[k] = fr[n.fullDof[2 + k]];
+      M[2] = s[2] * Q[1] - s[3] * Q[0];
+    }
     p.insert(p.end(), x.begin(), x.end());
     quat.insert(quat.end(), q.begin(), q.end());
     axang.insert(axang.end(), aa.begin(), aa.end());

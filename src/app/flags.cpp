@@ -37,6 +37,7 @@ const std::vector<Flag>& sinewFlags() {
     // One line per flag: name, accepted values, -help group, default, meaning.
     std::vector<Flag> f = {
         {"o", text("a file name"), &output, "<filename>.h5", "result file (HDF5; the XDMF file for ParaView is written beside it)"},
+        {"output_fsync_interval", realIn(0, 1e9, false, true), &output, "10", "seconds between commits of the result file that are forced to the disk (fsync; 0: every commit). A killed run never loses committed steps; a machine crash loses at most this interval"},
         {"force_rtol", realIn(0, 1, true, true), &statics, "1e-11", "equilibrium tolerance: residual relative to the element forces (dynamics: default 1e-10)"},
         {"max_cuts", integerIn(0, 50), &statics, "10", "halvings of a failing load increment (dynamics: of a failing time step)"},
         {"predictor", boolean(), &statics, "true (false for beams under the mixed-stress Newton)", "secant predictor from the last converged increment"},
@@ -64,6 +65,7 @@ const std::vector<Flag>& sinewFlags() {
         {"compliance_batch", integerAtLeast(1), &compliance, "96", "unit-load columns per solve (sparse, dense)"},
         {"compl_mat_mumps_icntl_27", anyInteger(), &compliance, "2048", "(MUMPS) right-hand-side columns per block of the compliance solve"},
         {"dynamics_scheme", oneOf({"arnold_bruls", "tsalpha2"}), &dynamics, "arnold_bruls", "Exudyn's generalized-alpha loop or PETSc TS alpha2"},
+        {"dynamics_modified_newton", boolean(), &dynamics, "true", "keep the factored Jacobian across Newton iterations and time steps while each iteration halves the residual (false: a new Jacobian at every iteration)"},
         {"dt_grow_after", integerAtLeast(0), &dynamics, "3", "after a halving, double the time step after this many successes (0: never)"},
         {"dynamics_energy", boolean(), &dynamics, "false", "report the energy drift of the time integration"},
         {"ff_mat_mumps_icntl_7", integerIn(0, 7), &formfinding, "3", "(MUMPS) fill-reducing ordering of the form-finding factorization (3: SCOTCH)"},

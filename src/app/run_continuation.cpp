@@ -50,7 +50,9 @@ PetscErrorCode runContinuation(RunContext& ctx) {
     ctx.converged = false;
     ctx.failure = path.failureMessage();
   }
-  ctx.times.statics = MPI_Wtime() - t0 - (ctx.times.output - outBefore) - (ctx.times.analyses - anaBefore);
+  ctx.times.continuation = MPI_Wtime() - t0 - (ctx.times.output - outBefore) - (ctx.times.analyses - anaBefore);
+  ctx.times.continuationIts = 0;
+  for (const StepReport& r : ctx.reports) ctx.times.continuationIts += r.newtonIterations;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -163,13 +163,15 @@ PetscErrorCode runDynamics(RunContext& ctx) {
   std::ostringstream s;
   s << "  dynamics: " << r.steps << " of " << nsteps << " steps of dt = " << opts.dt << " to t = " << r.time
     << ", generalized-alpha rho = " << opts.spectral_radius << " (alpha_m = " << dyn.alphaM()
-    << ", alpha_f = " << dyn.alphaF() << "), " << r.newtonIterations << " Newton iterations, "
+    << ", alpha_f = " << dyn.alphaF() << "), " << r.newtonIterations << " Newton iterations on " << r.jacobians << " Jacobians, "
     << ctx.assembler.counters().dampingMatrices << " element damping matrices";
+  if (r.guardedSteps > 0) s << ", " << r.guardedSteps << " steps retried from the last state";
   if (r.reducedSteps > 0) s << ", " << r.reducedSteps << " steps with halved sub-steps (" << r.substeps << " solves)";
   s << "\n";
   if (energy && energyOk) s << "  energy: initial " << energy0 << ", largest change " << maxDrift << "\n";
   ctx.summaryLines += s.str();
-  ctx.times.statics += MPI_Wtime() - tStart - (ctx.times.output - outBefore) - (ctx.times.analyses - anaBefore);
+  ctx.times.dynamics += MPI_Wtime() - tStart - (ctx.times.output - outBefore) - (ctx.times.analyses - anaBefore);
+  ctx.times.dynamicsIts = r.newtonIterations;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

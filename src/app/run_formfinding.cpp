@@ -65,6 +65,9 @@ PetscErrorCode runFormFinding(RunContext& ctx) {
     s += line;
   }
   ctx.summaryLines += s;
+  ctx.times.formfinding = MPI_Wtime() - t0 - (ctx.times.output - outBefore) - (ctx.times.analyses - anaBefore);
+  ctx.times.formfindingIts = 0;
+  for (const auto& r : reps) ctx.times.formfindingIts += r.newtonIterations;
   if (!ok && !ctx.stop) {
     ctx.converged = false;
     ctx.failure = analysis.failureMessage();

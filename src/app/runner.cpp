@@ -319,6 +319,9 @@ PetscErrorCode runFromCommandLine(int argc, char** argv, int* exitCode) {
   std::unique_ptr<ResultFile> file;
   try {
     file = std::make_unique<ResultFile>(comm, h5, layout);
+    PetscReal syncInterval = 10;
+    PetscCall(PetscOptionsGetReal(nullptr, nullptr, "-output_fsync_interval", &syncInterval, nullptr));
+    file->setSyncInterval(syncInterval);
   } catch (const std::exception& ex) {
     PetscCall(PetscPrintf(comm, "error: cannot create %s: %s\n", h5.c_str(), ex.what()));
     *exitCode = 1;
@@ -396,6 +399,8 @@ PetscErrorCode runFromCommandLine(int argc, char** argv, int* exitCode) {
         }
       }
       ctx.times.statics = MPI_Wtime() - tStatics - (ctx.times.output - outBefore) - (ctx.times.analyses - anaBefore);
+      ctx.times.staticsIts = 0;
+      for (const StepReport& r : ctx.reports) ctx.times.staticsIts += r.newtonIterations;
     }
   }
 
@@ -428,6 +433,9 @@ PetscErrorCode runFromCommandLine(int argc, char** argv, int* exitCode) {
   SummaryBody body;
   body.reports = ctx.reports;
   body.nodes = results.summaryRows();
+  body.planar = model.dimension == 2;
+  body.commits = file->commits();
+  body.syncedCommits = file->syncedCommits();
   body.stress = plan.stress && ctx.nextStep > 0;
   body.stressMax = results.lastStressMax();
   body.stressElement = results.lastStressElement();

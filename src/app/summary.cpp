@@ -36,7 +36,21 @@ PetscErrorCode printSummary(MPI_Comm comm, const SummaryBody& b) {
       s << line;
     }
   }
-  if (!b.nodes.empty()) {
+  if (!b.nodes.empty() && b.planar) {
+    s << "\n loaded and supported nodes, and the node that moves most (last step)\n"
+         " node      ux [m]      uy [m]   rz [rad]\n";
+    for (const auto& n : b.nodes) {
+      std::snprintf(line, sizeof line, " %4d %11.4e %11.4e %10.4g\n", n.node, n.v[0], n.v[1], n.v[5]);
+      s << line;
+    }
+    s << "\n reactions (last step)\n"
+         " node      Fx [N]      Fy [N]    Mz [N m]\n";
+    for (const auto& n : b.nodes) {
+      if (n.v[6] == 0.0 && n.v[7] == 0.0 && n.v[11] == 0.0) continue;
+      std::snprintf(line, sizeof line, " %4d %11.4e %11.4e %11.4e\n", n.node, n.v[6], n.v[7], n.v[11]);
+      s << line;
+    }
+  } else if (!b.nodes.empty()) {
     s << "\n loaded and supported nodes, and the node that moves most (last step)\n"
          " node      ux [m]      uy [m]      uz [m]   rx [rad]   ry [rad]   rz [rad]\n";
     for (const auto& n : b.nodes) {
@@ -60,14 +74,31 @@ PetscErrorCode printSummary(MPI_Comm comm, const SummaryBody& b) {
     s << line;
   }
   s << b.analysisLines;
+  // one entry per phase that ran: its wall time and, for solver phases, its Newton iterations
+  std::snprintf(line, sizeof line, "\n wall time: setup %.3f s, constraint check %.3f s", b.times.setup, b.times.check);
+  s << line;
+  const struct {
+    const char* name;
+    double seconds;
+    long its;
+  } phases[] = {{"form finding", b.times.formfinding, b.times.formfindingIts},
+                {"statics", b.times.statics, b.times.staticsIts},
+                {"path following", b.times.continuation, b.times.continuationIts},
+                {"dynamics", b.times.dynamics, b.times.dynamicsIts}};
+  for (const auto& p : phases) {
+    if (p.its < 0) continue;
+    std::snprintf(line, sizeof line, ", %s %.3f s (%ld Newton iterations)", p.name, p.seconds, p.its);
+    s << line;
+  }
   std::snprintf(line, sizeof line,
-                "\n wall time: setup %.3f s, constraint check %.3f s, statics %.3f s, step analyses %.3f s, output %.3f s\n"
+                ", step analyses %.3f s, output %.3f s\n"
                 " assemblies: %ld residuals, %ld tangents, %ld mass, %ld split tangents, %ld stress\n",
-                b.times.setup, b.times.check, b.times.statics, b.times.analyses, b.times.output, b.counters.residuals,
-                b.counters.jacobians, b.counters.masses, b.counters.splitTangents, b.counters.stressRecoveries);
+                b.times.analyses, b.times.output, b.counters.residuals, b.counters.jacobians, b.counters.masses,
+                b.counters.splitTangents, b.counters.stressRecoveries);
   s << line;
   if (b.counters.pressureLoads > 0) s << " pressure: " << b.counters.pressureLoads << " follower element loads (rank 0)\n";
-  s << " results: " << b.h5 << " (ParaView: " << b.xdmf << ")\n";
+  s << " results: " << b.h5 << " (ParaView: " << b.xdmf << "); " << b.commits << " commits, " << b.syncedCommits
+    << " forced to the disk (-output_fsync_interval)\n";
   if (!b.converged) s << "\nerror: " << b.failure << "\n";
   PetscCall(PetscPrintf(comm, "%s", s.str().c_str()));
   PetscFunctionReturn(PETSC_SUCCESS);

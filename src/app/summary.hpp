@@ -10,8 +10,11 @@
 
 namespace sinew {
 
+/// Wall time per phase (output and step analyses excluded from the solver phases) and the
+/// Newton iterations each solver phase took (-1: the phase did not run).
 struct Timings {
-  double setup = 0, check = 0, statics = 0, analyses = 0, output = 0;
+  double setup = 0, check = 0, formfinding = 0, statics = 0, continuation = 0, dynamics = 0, analyses = 0, output = 0;
+  long formfindingIts = -1, staticsIts = -1, continuationIts = -1, dynamicsIts = -1;
 };
 
 struct SummaryHeader {
@@ -32,6 +35,8 @@ struct SummaryBody {
   Timings times;
   std::string h5, xdmf, failure;
   bool converged = true;
+  bool planar = false;
+  long commits = 0, syncedCommits = 0;  ///< result file commits, and those forced to the disk  ///< a 2D model (ANCF cables in the x-y plane): ux, uy, rz and Fx, Fy, Mz only
 };
 
 PetscErrorCode printHeader(MPI_Comm comm, const SummaryHeader& h);

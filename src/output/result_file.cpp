@@ -49,6 +49,7 @@
 #include <stdexcept>
 
 #include "output/hdf5_util.hpp"
+#include "output/file_sync.hpp"
 #include "output/io_diagnosis.hpp"
 #include "output/xdmf_writer.hpp"
 
@@ -261,6 +262,8 @@ struct ResultFile::Impl {
   std::vector<Op> log;       // writes since the last commit, replayed into the other sink
   long cellTotals[3] = {0, 0, 0}, cellOffsets[3] = {0, 0, 0};
   bool closed = false, failed = false;
+  double syncInterval = 10, lastSync = 0;  // seconds between commits forced to the disk (file_sync.hpp)
+  long commits = 0, syncedCommits = 0;
   double xdmfWritten = 0, xdmfSeconds = 0;  // rank 0: when the XDMF was last written, and how long it took
 
   ~Impl() {
@@ -751,7 +754,17 @@ void ResultFile::commit() {
   try {
     Sink& lead = m.leadSink();
     m.fillAll(lead);
-    agreeStatus(m.comm, H5Fflush(lead.file, H5F_SCOPE_GLOBAL), "flush", lead.name);
+    // fsync only every syncInterval seconds (rank 0's clock decides for all: the sync is collective)
+    const double now = MPI_Wtime();
+    int sync = m.syncInterval <= 0 || now - m.lastSync >= m.syncInterval;
+    MPI_Bcast(&sync, 1, MPI_INT, 0, m.comm);
+    {
+      FileSyncSkip skip(!sync);
+      agreeStatus(m.comm, H5Fflush(lead.file, H5F_SCOPE_GLOBAL), "flush", lead.name);
+    }
+    if (sync) m.lastSync = now;
+    ++m.commits;
+    m.syncedCommits += sync;
     m.publishLead(true);
     // the former published file catches up and takes the next writes
     m.lead = 1 - m.lead;
@@ -761,6 +774,14 @@ void ResultFile::commit() {
     m.failed = true;
     throw;
   }
+}
+
+long ResultFile::commits() const { return impl_->commits; }
+long ResultFile::syncedCommits() const { return impl_->syncedCommits; }
+
+void ResultFile::setSyncInterval(double seconds) {
+  impl_->syncInterval = seconds;
+  impl_->lastSync = MPI_Wtime();
 }
 
 void ResultFile::close(bool converged) {

@@ -123,3 +123,39 @@ def check_view(name, h5, view, points_required, cells_required, reader):
             x0 = min(float(np.min(np.asarray(b["points"])[:, 0])) for b in last)
             xw = min(float(np.min(np.asarray(b["warped"])[:, 0])) for b in last)
             print(f"  {tag}: min x reference {x0:.4f}, warped {xw:.4f}, /mesh/p {P[-1][:, 0].min():.4f}")
+
+
+def prefix_xdmf(xdmf, k):
+    """An XDMF as the writer leaves it between two rewrites (docs/results.md, "Crash safety"): the
+    first k steps of `xdmf`, with the step axis of the step-indexed datasets declared as k rows
+    while the HDF5 file holds more. Returns its path (beside `xdmf`)."""
+    import xml.etree.ElementTree as ET
+    tree = ET.parse(xdmf)
+    temporal = tree.getroot().find("Domain/Grid")
+    grids = temporal.findall("Grid")
+    ns = len(grids)
+    for g in grids[k:]:
+        temporal.remove(g)
+    for slab in tree.getroot().iter("DataItem"):
+        if slab.get("ItemType") == "HyperSlab":  # [selection, dataset]: the dataset's step axis
+            item = slab.findall("DataItem")[1]
+            dims = item.get("Dimensions").split()
+            assert dims[0] == str(ns), (dims, ns)
+            item.set("Dimensions", " ".join([str(k)] + dims[1:]))
+    path = os.path.splitext(xdmf)[0] + f"_prefix{k}.xdmf"
+    tree.write(path, xml_declaration=True, encoding="utf-8")
+    return path
+
+
+def check_prefix(h5, view, k, reader):
+    """The prefix XDMF of prefix_xdmf shows the first k rows, warped to /mesh/p."""
+    with st.h5(h5) as f:
+        P = f["mesh/p"][()]
+        times = f["load_factor"][:k]
+    werr = 0.0
+    for s, blocks in enumerate(view["steps"]):
+        for b in blocks:
+            werr = max(werr, float(np.max(np.abs(np.asarray(b["warped"]) - P[s]))))
+    print(f"  {reader} prefix of {k} steps: times {view['times']}, warped vs /mesh/p {werr:.3e}")
+    st.check(np.array_equal(view["times"], times) and len(view["steps"]) == k and werr <= 1e-12,
+             f"{reader}: an XDMF listing the first {k} steps of a longer file shows them")

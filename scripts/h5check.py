@@ -18,9 +18,9 @@ except ImportError as e:  # pragma: no cover
 
 ROOT_ATTRS = ("version", "ndof", "nranks", "scene", "converged")
 # Datasets of the contract whose first axis is the step axis.
-STEP_PREFIXES = ("node/", "element/", "mesh/", "sensors/")
-STEP_NAMES = ("freq", "buck", "stressmax")
-NOT_STEP = ("node/p0", "mesh/lines", "mesh/triangles", "mesh/quads",
+STEP_PREFIXES = ("node/", "element/", "mesh/", "cell/", "sensors/")
+STEP_NAMES = ("freq", "buck", "stressmax", "formfinding/step")
+NOT_STEP = ("node/p0", "mesh/p0", "mesh/lines", "mesh/triangles", "mesh/quads",
             "mesh/lines_element", "mesh/triangles_element", "mesh/quads_element")
 
 

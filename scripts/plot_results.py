@@ -69,7 +69,8 @@ class Result:
             self.modes = {}
             if "mesh" in f:
                 for name in f["mesh"]:
-                    if name.startswith("mode_freq_") or name.startswith("mode_buck_"):
+                    # mode_freq_N, mode_buck_N: translations (mode_*_N_rot: rotation vectors, not drawn)
+                    if (name.startswith("mode_freq_") or name.startswith("mode_buck_")) and name[10:].isdigit():
                         self.modes[(name[5:9], int(name[10:]))] = f["mesh/" + name]
                 self.modes = {k: v[()] for k, v in self.modes.items()}
             scene = f.attrs.get("scene", "")

@@ -19,6 +19,9 @@ struct ResultLayout {
   std::vector<long> ownedNodes;      ///< 0-based scene node rows this rank writes (each row by one rank)
   std::vector<long> ownedElements;   ///< 0-based scene element rows this rank writes
   std::vector<long> ownedMeshNodes;  ///< 0-based FE node rows this rank writes
+  /// Reference position (x, y, z) of each owned FE node, in the order of ownedMeshNodes: /mesh/p0,
+  /// the geometry of the XDMF (written at creation; empty on every rank: no /mesh/p0, no grids).
+  std::vector<double> meshReference;
   /// This rank's visualization cells, as global 0-based FE node ids. Cells of every rank are
   /// concatenated in rank order into /mesh/lines [*,2], /mesh/triangles [*,3], /mesh/quads [*,4],
   /// with /mesh/<kind>_element holding the 1-based scene element of each cell.
@@ -61,8 +64,15 @@ class ResultFile {
   /// [ns, ne, inner...] dataset ("element/stressmax" with inner {}): rows of layout.ownedElements.
   void writeElementField(const std::string& name, std::span<const double> values, std::vector<long> inner);
   /// [ns, nmesh, inner...] dataset ("mesh/p", "mesh/u", "mesh/mode_freq_1"): rows of ownedMeshNodes.
-  /// Fields named mesh/* other than mesh/p appear as point attributes in the XDMF.
+  /// Fields named mesh/* other than mesh/p appear as point attributes in the XDMF (mesh/u as
+  /// "displacement"); the XDMF geometry is mesh/p0 (docs/results.md, "Opening the XDMF in ParaView").
   void writeMeshField(const std::string& name, std::span<const double> values, std::vector<long> inner);
+  /// [ns, ncells, inner...] dataset "cell/<cells>/<quantity>" ("cell/lines/axial_force") over the
+  /// cells of one kind (`cells`: "lines", "triangles" or "quads"): this rank's cells of that kind in
+  /// the order of layout.lines (triangles, quads), so that row c belongs to /mesh/<cells>[c]. Shown
+  /// as a cell attribute in the XDMF.
+  void writeCellField(const std::string& cells, const std::string& quantity, std::span<const double> values,
+                      std::vector<long> inner);
   /// [ns] or [ns, k] dataset ("stressmax", "freq", "buck", "sensors/tip"): rank 0's values are written.
   void writeStepRow(const std::string& name, std::span<const double> values);
   /// A dataset written once (statespace/A, formfinding/residual): rank 0's values, given shape.

@@ -113,11 +113,17 @@ PetscErrorCode BucklingAnalysis::atStep(Vec U, const LoadState& ls, ResultFile& 
     }
   }
   file.writeStepRow("buck", mu_);
-  std::vector<double> rows;
+  std::vector<double> rows, rot;
+  std::vector<double>* withRot = mesh.anyRotations ? &rot : nullptr;
   for (int j = 0; j < nbuck_; ++j) {
-    if (j < static_cast<int>(shapes.size())) PetscCall(modeShapeRows(mesh, shapes[j], rows));
-    else rows.assign(3 * static_cast<size_t>(mesh.numOwnedNodes), 0.0);
+    if (j < static_cast<int>(shapes.size())) {
+      PetscCall(modeShapeRows(mesh, shapes[j], rows, withRot));
+    } else {
+      rows.assign(3 * static_cast<size_t>(mesh.numOwnedNodes), 0.0);
+      rot = rows;
+    }
     file.writeMeshField("mesh/mode_buck_" + std::to_string(j + 1), rows, {3});
+    if (withRot) file.writeMeshField("mesh/mode_buck_" + std::to_string(j + 1) + "_rot", rot, {3});
   }
   for (Vec& x : shapes) PetscCall(VecDestroy(&x));
   PetscFunctionReturn(PETSC_SUCCESS);

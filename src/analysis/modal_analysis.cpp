@@ -10,47 +10,68 @@
 
 namespace sinew {
 
-PetscErrorCode modeShapeRows(const DistributedMesh& m, Vec x, std::vector<double>& rows) {
-  PetscFunctionBeginUser;
-  rows.assign(3 * static_cast<size_t>(m.numOwnedNodes), 0.0);
-  const PetscScalar* a;
-  PetscCall(VecGetArrayRead(x, &a));
-  for (int i = 0; i < m.numOwnedNodes; ++i) {
-    const LocalNode& n = m.nodes[i];
-    const int nt = n.kind == NodeKind::Ancf2D ? 2 : 3;
-    for (int k = 0; k < nt; ++k) {
-      const int d = n.dof[k];
-      if (n.status[k] == DofStatus::Free && d >= 0 && d < m.numOwnedUnknowns) rows[3 * i + k] = a[d];
-    }
-  }
-  PetscCall(VecRestoreArrayRead(x, &a));
+namespace {
+
+// max |v| over all ranks
+double globalMaxAbs(MPI_Comm comm, const std::vector<double>& v) {
   double amax = 0.0;
-  for (double v : rows) amax = std::max(amax, std::abs(v));
-  MPI_Allreduce(MPI_IN_PLACE, &amax, 1, MPI_DOUBLE, MPI_MAX, m.comm);
-  PetscReal xmax;
-  PetscCall(VecNorm(x, NORM_INFINITY, &xmax));
-  if (!(amax > 1e-10 * xmax)) {  // no translation (torsion, pure rotation): round-off is not a shape
-    std::fill(rows.begin(), rows.end(), 0.0);
-    PetscFunctionReturn(PETSC_SUCCESS);
-  }
-  // sign: the largest component (lowest FE node and direction among near-ties) is positive
+  for (double a : v) amax = std::max(amax, std::abs(a));
+  MPI_Allreduce(MPI_IN_PLACE, &amax, 1, MPI_DOUBLE, MPI_MAX, comm);
+  return amax;
+}
+
+// +1 or -1: the sign that makes the largest component of v (lowest FE node and direction among
+// near-ties) positive; amax = globalMaxAbs(v) > 0.
+double signOfLargest(const DistributedMesh& m, const std::vector<double>& v, double amax) {
   long key = std::numeric_limits<long>::max();
   double sign = 0.0;
   for (int i = 0; i < m.numOwnedNodes; ++i)
     for (int k = 0; k < 3; ++k) {
-      const double v = rows[3 * i + k];
+      const double a = v[3 * i + k];
       const long kk = 3 * m.nodes[i].gid + k;
-      if (std::abs(v) >= (1.0 - 1e-8) * amax && kk < key) {
+      if (std::abs(a) >= (1.0 - 1e-8) * amax && kk < key) {
         key = kk;
-        sign = v > 0 ? 1.0 : -1.0;
+        sign = a > 0 ? 1.0 : -1.0;
       }
     }
   long gkey = key;
   MPI_Allreduce(MPI_IN_PLACE, &gkey, 1, MPI_LONG, MPI_MIN, m.comm);
   double s = key == gkey ? sign : 0.0;
   MPI_Allreduce(MPI_IN_PLACE, &s, 1, MPI_DOUBLE, MPI_SUM, m.comm);
-  const double scale = (s < 0 ? -1.0 : 1.0) / amax;
+  return s < 0 ? -1.0 : 1.0;
+}
+
+}  // namespace
+
+PetscErrorCode modeShapeRows(const DistributedMesh& m, Vec x, std::vector<double>& rows, std::vector<double>* rot) {
+  PetscFunctionBeginUser;
+  rows.assign(3 * static_cast<size_t>(m.numOwnedNodes), 0.0);
+  if (rot) rot->assign(3 * static_cast<size_t>(m.numOwnedNodes), 0.0);
+  const PetscScalar* a;
+  PetscCall(VecGetArrayRead(x, &a));
+  auto value = [&](const LocalNode& n, int k) {
+    const int d = n.dof[k];
+    return n.status[k] == DofStatus::Free && d >= 0 && d < m.numOwnedUnknowns ? a[d] : 0.0;
+  };
+  for (int i = 0; i < m.numOwnedNodes; ++i) {
+    const LocalNode& n = m.nodes[i];
+    const int nt = n.kind == NodeKind::Ancf2D ? 2 : 3;
+    for (int k = 0; k < nt; ++k) rows[3 * i + k] = value(n, k);
+    if (rot && n.kind == NodeKind::Frame6)
+      for (int k = 0; k < 3; ++k) (*rot)[3 * i + k] = value(n, 3 + k);  // spatial spin: a rotation vector
+  }
+  PetscCall(VecRestoreArrayRead(x, &a));
+  PetscReal xmax;
+  PetscCall(VecNorm(x, NORM_INFINITY, &xmax));
+  const double tmax = globalMaxAbs(m.comm, rows);
+  const double rmax = rot ? globalMaxAbs(m.comm, *rot) : 0.0;
+  double scale = 0.0;  // no translation and no rotation (round-off is not a shape): all 0
+  if (tmax > 1e-10 * xmax) scale = signOfLargest(m, rows, tmax) / tmax;
+  else if (rmax > 1e-10 * xmax) scale = signOfLargest(m, *rot, rmax) / rmax;  // torsion, pure rotation
+  if (!(tmax > 1e-10 * xmax)) std::fill(rows.begin(), rows.end(), 0.0);
   for (double& v : rows) v *= scale;
+  if (rot)
+    for (double& v : *rot) v *= scale;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -219,11 +240,17 @@ PetscErrorCode ModalAnalysis::atStep(Vec U, const LoadState& ls, ResultFile& fil
   }
   if (write_) {
     file.writeStepRow("freq", hz_);
-    std::vector<double> rows;
+    std::vector<double> rows, rot;
+    std::vector<double>* withRot = mesh.anyRotations ? &rot : nullptr;
     for (int j = 0; j < nev_; ++j) {
-      if (j < static_cast<int>(pairs.size())) PetscCall(modeShapeRows(mesh, modes_[j], rows));
-      else rows.assign(3 * static_cast<size_t>(mesh.numOwnedNodes), 0.0);
+      if (j < static_cast<int>(pairs.size())) {
+        PetscCall(modeShapeRows(mesh, modes_[j], rows, withRot));
+      } else {
+        rows.assign(3 * static_cast<size_t>(mesh.numOwnedNodes), 0.0);
+        rot = rows;
+      }
       file.writeMeshField("mesh/mode_freq_" + std::to_string(j + 1), rows, {3});
+      if (withRot) file.writeMeshField("mesh/mode_freq_" + std::to_string(j + 1) + "_rot", rot, {3});
     }
   }
   PetscFunctionReturn(PETSC_SUCCESS);

@@ -15,10 +15,14 @@
 namespace sinew {
 
 /// Translation part of x (unknowns layout, owned entries) on this rank's owned FE nodes, 3 values
-/// per node in the order of ResultLayout::ownedMeshNodes (constrained DOFs give 0). Scaled so
-/// that max |u| over all ranks is 1 and the largest component (lowest FE node, then x < y < z,
-/// among ties) is positive; all 0 when x has no translation (max |u| <= 1e-10 max |x|). Collective.
-PetscErrorCode modeShapeRows(const DistributedMesh& mesh, Vec x, std::vector<double>& rows);
+/// per node in the order of ResultLayout::ownedMeshNodes (constrained DOFs give 0), and with `rot`
+/// the rotation part (rotation vectors of Frame6 nodes, 0 on other nodes), scaled by the same
+/// factor. Scaled so that max |u| over all ranks is 1 and the largest component (lowest FE node,
+/// then x < y < z, among ties) is positive. When x has no translation (max |u| <= 1e-10 max |x|:
+/// torsion, rotation only) u is 0 and the rotations are scaled instead (max 1, largest positive);
+/// all 0 when x has neither. Collective.
+PetscErrorCode modeShapeRows(const DistributedMesh& mesh, Vec x, std::vector<double>& rows,
+                             std::vector<double>* rot = nullptr);
 
 /// Reported frequency (Hz) of an eigenvalue omega^2: 0 for round-off negatives above -zeroTol
 /// (rigid-body modes), -sqrt(-omega^2)/(2 pi) for a clearly negative one (unstable state).

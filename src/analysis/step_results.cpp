@@ -1,12 +1,22 @@
 #include "analysis/step_results.hpp"
 
 #include <algorithm>
+#include <limits>
 
 #include <cmath>
 
 #include "sinew/rotation.hpp"
 
 namespace sinew {
+
+namespace {
+
+constexpr const char* kCellKinds[3] = {"lines", "triangles", "quads"};
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+int cellKindOf(const LocalElement& el) { return el.numNodes == 2 ? 0 : (el.numNodes == 3 ? 1 : 2); }
+
+}  // namespace
 
 StepResults::StepResults(Assembler& assembler, const StepResultOptions& opts) : asm_(assembler), opts_(opts) {
   DistributedMesh& m = asm_.mesh();
@@ -26,6 +36,12 @@ StepResults::StepResults(Assembler& assembler, const StepResultOptions& opts) : 
     PetscCallAbort(m.comm, PetscSFSetUp(stressSF_));
   }
   PetscCallAbort(m.comm, PetscLayoutDestroy(&layout));
+  for (const LocalElement& el : m.elements) ++cellCounts_[cellKindOf(el)];
+  for (int i = 0; i < m.numOwnedNodes; ++i) {
+    const LocalNode& n = m.nodes[i];
+    reference_.push_back({n.X0[0], n.X0[1], n.kind == NodeKind::Ancf2D ? 0.0 : n.X0[2]});
+  }
+  MPI_Allreduce(MPI_IN_PLACE, cellCounts_, 3, MPI_LONG, MPI_SUM, m.comm);
 }
 
 StepResults::~StepResults() {
@@ -43,6 +59,7 @@ void StepResults::fillLayout(ResultLayout& layout) const {
     const LocalNode& n = m.nodes[i];
     if (n.sceneNode >= 0) layout.ownedNodes.push_back(n.sceneNode);
     layout.ownedMeshNodes.push_back(n.gid);
+    layout.meshReference.insert(layout.meshReference.end(), reference_[i].begin(), reference_[i].end());
   }
   for (PetscInt e = elemLo_; e < elemHi_; ++e) layout.ownedElements.push_back(e);
   for (const LocalElement& el : m.elements) {
@@ -70,7 +87,7 @@ PetscErrorCode StepResults::write(ResultFile& file, Vec U, const LoadState& ls) 
     const double* s = asm_.nodeState(i);
     Vec3 x{s[0], s[1], n.kind == NodeKind::Ancf2D ? 0.0 : s[2]};
     meshP.insert(meshP.end(), x.begin(), x.end());
-    for (int k = 0; k < 3; ++k) meshU.push_back(x[k] - n.X0[k]);
+    for (int k = 0; k < 3; ++k) meshU.push_back(x[k] - reference_[i][k]);
     if (n.sceneNode < 0) continue;
     Mat3 R = identity3();
     if (n.kind == NodeKind::Frame6) std::copy(s + 3, s + 12, R.begin());
@@ -133,8 +150,8 @@ PetscErrorCode StepResults::write(ResultFile& file, Vec U, const LoadState& ls) 
   file.writeMeshField("mesh/p", meshP, {3});
   file.writeMeshField("mesh/u", meshU, {3});
 
+  std::vector<double> local;  // Von Mises stress per local FE element
   if (opts_.stress) {
-    std::vector<double> local;
     PetscCall(asm_.elementStress(U, ls, local));
     std::vector<double> rows(static_cast<size_t>(elemHi_ - elemLo_), 0.0);
     PetscCall(PetscSFReduceBegin(stressSF_, MPIU_REAL, local.data(), rows.data(), MPI_MAX));
@@ -152,7 +169,52 @@ PetscErrorCode StepResults::write(ResultFile& file, Vec U, const LoadState& ls) 
     file.writeStepRow("stressmax", std::span<const double>(&stressMax_, 1));
     if (opts_.stressPerElement) file.writeElementField("element/stressmax", rows, {});
   }
+  PetscCall(writeCellFields(file, U, ls, local));
   PetscCall(PetscLogEventEnd(SinewEvents::get().output, 0, 0, 0, 0));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+// Cell fields of the visualization mesh, one value per FE element in the order of the /mesh cell
+// lists: Von Mises stress (when computed), the axial force of cables and ANCF cables (NaN on beams),
+// the membrane stress resultants n11 n22 n12 in the element's current prestress frame.
+PetscErrorCode StepResults::writeCellFields(ResultFile& file, Vec U, const LoadState& ls,
+                                            const std::vector<double>& stress) {
+  PetscFunctionBeginUser;
+  DistributedMesh& m = asm_.mesh();
+  std::vector<double> vm[3], axial, n[3][3];  // n[kind][component]: triangles and quads
+  int has[2] = {0, 0};                        // any axial force, any membrane resultant (local)
+  const double* u = nullptr;
+  PetscCall(asm_.beginLocal(U, ls, &u));
+  std::array<double, 48> q;
+  std::array<int, kMaxElementRows> idx;
+  std::vector<double> out;
+  for (size_t e = 0; e < m.elements.size(); ++e) {
+    const LocalElement& el = m.elements[e];
+    const int k = cellKindOf(el);
+    if (!stress.empty()) vm[k].push_back(stress[e]);
+    asm_.gather(el, q.data(), idx.data());
+    el.kernel->elementForce(q.data(), out);
+    if (k == 0) {
+      // cable: the axial force; ANCF cable: axial forces at x = 0, L/2, L (the middle one)
+      axial.push_back(out.size() == 1 ? out[0] : out.size() == 3 ? out[1] : kNaN);
+      has[0] |= !out.empty();
+    } else {
+      for (int c = 0; c < 3; ++c) n[k][c].push_back(out.size() == 3 ? out[c] : kNaN);
+      has[1] |= out.size() == 3;
+    }
+  }
+  PetscCall(asm_.endLocal(&u));
+  MPI_Allreduce(MPI_IN_PLACE, has, 2, MPI_INT, MPI_LOR, m.comm);
+  for (int k = 0; k < 3; ++k) {
+    if (cellCounts_[k] == 0) continue;
+    if (opts_.stress) file.writeCellField(kCellKinds[k], "stress", vm[k], {});
+    if (k == 0 && has[0]) file.writeCellField("lines", "axial_force", axial, {});
+    if (k > 0 && has[1]) {
+      file.writeCellField(kCellKinds[k], "membrane_n11", n[k][0], {});
+      file.writeCellField(kCellKinds[k], "membrane_n22", n[k][1], {});
+      file.writeCellField(kCellKinds[k], "membrane_n12", n[k][2], {});
+    }
+  }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -1,6 +1,7 @@
 // Per-step results of the node and element state: positions, rotations (quaternion, axis-angle,
-// Euler ZYX), ANCF slopes, reactions, Von Mises stress; written to the result file and kept for
-// the stdout summary.
+// Euler ZYX), ANCF slopes, reactions, Von Mises stress; the visualization mesh (its reference
+// geometry /mesh/p0 through the layout, positions and displacements per step) and its cell fields (stress, axial force,
+// membrane stress resultants); written to the result file and kept for the stdout summary.
 #pragma once
 #include <petscsf.h>
 #include <petscvec.h>
@@ -31,9 +32,10 @@ class StepResults {
   StepResults(const StepResults&) = delete;
   StepResults& operator=(const StepResults&) = delete;
 
-  /// Adds this rank's rows and cells to the result layout (call before creating the ResultFile).
+  /// Adds this rank's rows, cells and reference positions (/mesh/p0) to the result layout (call
+  /// before creating the ResultFile).
   void fillLayout(ResultLayout& layout) const;
-  /// Writes node/element/mesh fields of the state U for the current step (beginStep done). Collective.
+  /// Writes node/element/mesh/cell fields of the state U for the current step (beginStep done). Collective.
   PetscErrorCode write(ResultFile& file, Vec U, const LoadState& ls);
   /// Rows of the loaded or supported scene nodes at the last written step, gathered on rank 0.
   std::vector<NodeSummaryRow> summaryRows() const;
@@ -46,6 +48,12 @@ class StepResults {
   Vec full_ = nullptr;
   PetscSF stressSF_ = nullptr;  // FE element leaves -> scene element roots, MPI_MAX
   PetscInt elemLo_ = 0, elemHi_ = 0;
+  PetscErrorCode writeCellFields(ResultFile& file, Vec U, const LoadState& ls, const std::vector<double>& stress);
+
+  long cellCounts_[3] = {0, 0, 0};  ///< global lines, triangles, quads
+  /// Reference positions of the owned nodes at construction (/mesh/p0; /mesh/u = x - X0 from them,
+  /// also after a form finding whose FORCE restart moves the nodes' X0 to the found shape).
+  std::vector<Vec3> reference_;
   std::vector<NodeSummaryRow> rows_;
   struct MaxMove {
     double u = -1.0;

@@ -1,8 +1,9 @@
 // The form-finding phase of a run (analysis/formfinding_analysis.hpp): one result row per
-// form-finding step (load factor 0; the last row is the found shape), /formfinding/residual and
-// /formfinding/shape_change, a summary table, then the elastic restart so that the load analysis
-// continues in ctx.U.
+// form-finding step (load factor 0; the last row is the found shape; /formfinding/step numbers
+// these rows), /formfinding/residual and /formfinding/shape_change, a summary table, then the
+// elastic restart so that the load analysis continues in ctx.U.
 #include <cstdio>
+#include <span>
 
 #include "analysis/formfinding_analysis.hpp"
 #include "app/run_context.hpp"
@@ -23,8 +24,13 @@ PetscErrorCode runFormFinding(RunContext& ctx) {
     char detail[160];
     std::snprintf(detail, sizeof detail, "Newton %d  residual %.3e  shape change %.3e", r.newtonIterations,
                   r.residualNorm, r.shapeChange);
-    // every form-finding step is written (output_steps counts load and time steps)
-    return ctx.convergedStep({r.step, r.step == ff.formfinding_step, 0.0, detail, false}, U, ls);
+    // every form-finding step is written (output_steps counts load and time steps), with its
+    // number in /formfinding/step (NaN on the load or time steps): the XDMF times of these rows
+    const double step = r.step;
+    return ctx.convergedStep({r.step, r.step == ff.formfinding_step, 0.0, detail, false}, U, ls, [&] {
+      ctx.file.writeStepRow("formfinding/step", std::span<const double>(&step, 1));
+      return PETSC_SUCCESS;
+    });
   };
   bool ok = false;
   PetscCall(analysis.run(ctx.U, onStep, &ok));

@@ -26,6 +26,12 @@
 // - Distributed rows (node, element, mesh fields) are written in two phases: an all-to-all moves
 //   every owned row to the rank holding the contiguous block [n r / P, n (r + 1) / P) of that
 //   table, which then writes one hyperslab. The exchange plan is built once per table.
+// - /mesh/p0 (the reference geometry, layout.meshReference) is written at creation, so that every
+//   published file has the geometry its XDMF names. Cell fields (/cell/<kind>/<quantity>) are
+//   tables over the cells of one kind, rows in /mesh/<kind> order.
+// - The XDMF (xdmf_writer.hpp: reference geometry + "displacement" /mesh/u, distinct times) is
+//   written from the file just published, and only names datasets and rows that file holds; a later
+//   file only adds rows and datasets, so an XDMF that was not rewritten stays valid.
 // - Errors in arguments are detected on all ranks together (one allreduce per call) so that every
 //   rank throws and none is left waiting in a collective HDF5 call. HDF5 failures of collective
 //   calls (a full disk, a file-size limit) are agreed the same way and thrown as ResultFileError
@@ -181,16 +187,21 @@ struct RowPlan {
   }
 };
 
-enum class Kind { Node = 0, Element = 1, Mesh = 2, Row = 3 };
+// Lines, Triangles, Quads: tables over the cells of one kind (cell fields), in /mesh/<kind> order.
+enum class Kind { Node = 0, Element = 1, Mesh = 2, Row = 3, Lines = 4, Triangles = 5, Quads = 6 };
 
 const char* kindName(Kind k) {
   switch (k) {
     case Kind::Node: return "node field";
     case Kind::Element: return "element field";
     case Kind::Mesh: return "mesh field";
-    default: return "step row";
+    case Kind::Row: return "step row";
+    default: return "cell field";
   }
 }
+
+bool isCellKind(Kind k) { return k == Kind::Lines || k == Kind::Triangles || k == Kind::Quads; }
+int cellIndex(Kind k) { return static_cast<int>(k) - static_cast<int>(Kind::Lines); }
 
 struct StepDataset {
   Kind kind = Kind::Row;
@@ -256,6 +267,9 @@ struct ResultFile::Impl {
   std::string path, partPath, sparePath;
   ResultLayout layout;
   RowPlan nodePlan, elementPlan, meshPlan;
+  RowPlan cellPlans[3];             // lines, triangles, quads
+  std::vector<long> ownedCells[3];  // global rows of this rank's cells of each kind (contiguous)
+  bool hasReference = false;        // /mesh/p0 written (layout.meshReference given)
   Sink sinks[2];
   int lead = 0;              // index of the sink receiving writes (named partPath)
   bool published = false;    // the other sink is under the final name (after the first commit)
@@ -295,12 +309,15 @@ struct ResultFile::Impl {
   }
 
   const RowPlan& plan(Kind k) const {
+    if (isCellKind(k)) return cellPlans[cellIndex(k)];
     return k == Kind::Node ? nodePlan : k == Kind::Element ? elementPlan : meshPlan;
   }
   long tableRows(Kind k) const {
+    if (isCellKind(k)) return cellTotals[cellIndex(k)];
     return k == Kind::Node ? layout.numNodes : k == Kind::Element ? layout.numElements : layout.numMeshNodes;
   }
   const std::vector<long>& owned(Kind k) const {
+    if (isCellKind(k)) return ownedCells[cellIndex(k)];
     return k == Kind::Node ? layout.ownedNodes : k == Kind::Element ? layout.ownedElements : layout.ownedMeshNodes;
   }
 
@@ -477,6 +494,8 @@ struct ResultFile::Impl {
     for (auto& [name, sd] : s.steps) fillUnwritten(s, name, sd);
   }
 
+  // Global cell counts, this rank's first row of each kind (cells are concatenated in rank order)
+  // and the row plans of the cell fields.
   void computeCellOffsets() {
     const std::array<CellKind, 3> kinds = cellKinds();
     long local[3];
@@ -484,6 +503,25 @@ struct ResultFile::Impl {
     MPI_Allreduce(local, cellTotals, 3, MPI_LONG, MPI_SUM, comm);
     MPI_Exscan(local, cellOffsets, 3, MPI_LONG, MPI_SUM, comm);
     if (rank == 0) std::fill(cellOffsets, cellOffsets + 3, 0L);
+    for (int k = 0; k < 3; ++k) {
+      ownedCells[k].resize(static_cast<std::size_t>(local[k]));
+      for (long c = 0; c < local[k]; ++c) ownedCells[k][c] = cellOffsets[k] + c;
+      cellPlans[k] = RowPlan::build(comm, cellTotals[k], ownedCells[k], std::string("result file: ") + kinds[k].name);
+    }
+  }
+
+  // /mesh/p0 [nmesh, 3]: the reference geometry, written once at creation.
+  void writeReference(Sink& s, const std::vector<double>& block) {
+    const std::string what = "dataset /mesh/p0";
+    std::vector<hsize_t> dims{hsize_t(layout.numMeshNodes), 3}, start{hsize_t(meshPlan.begin), 0},
+        count{hsize_t(meshPlan.count), 3};
+    h5::Handle space = h5::dataspace(dims, what);
+    h5::Handle lcpl = h5::intermediateGroupLcpl(what);
+    const hid_t id = H5Dcreate2(s.file, "mesh/p0", H5T_IEEE_F64LE, space, lcpl, H5P_DEFAULT, H5P_DEFAULT);
+    agreeStatus(comm, id, what + ": create", s.name);
+    h5::Handle dset(id, H5Dclose, what + ": create");
+    writeBox(s, dset, H5T_NATIVE_DOUBLE, start, count, block.data(), what);
+    h5::check(dset.reset(), what + ": close");
   }
 
   void writeCells(Sink& s) {
@@ -527,6 +565,9 @@ struct ResultFile::Impl {
       for (long id : *c.conn)
         if (id < 0 || id >= layout.numMeshNodes) fail(std::string(c.name) + ": node " + std::to_string(id) + " outside the mesh");
     }
+    if (!layout.meshReference.empty() && layout.meshReference.size() != 3 * layout.ownedMeshNodes.size())
+      fail("meshReference: " + std::to_string(layout.meshReference.size()) + " values for " +
+           std::to_string(layout.ownedMeshNodes.size()) + " owned mesh nodes");
     agree(comm, error, signatureOf(layout.stepName, {layout.numNodes, layout.numElements, layout.numMeshNodes}, 9),
           "result file " + path + ": layout");
   }
@@ -536,21 +577,31 @@ struct ResultFile::Impl {
     d.h5Name = std::filesystem::path(path).filename().string();
     d.numMeshNodes = layout.numMeshNodes;
     d.stepValues = s.stepValues;
-    d.geometryDataset = "/mesh/p";
-    if (auto it = s.steps.find("mesh/p"); it != s.steps.end()) d.geometryWritten = it->second.written;
+    d.stepName = layout.stepName;
+    if (hasReference) d.geometryDataset = "/mesh/p0";
+    if (auto it = s.steps.find("formfinding/step"); it != s.steps.end()) d.formFindingRows = it->second.written;
     const std::array<CellKind, 3> kinds = cellKinds();
     for (int k = 0; k < 3; ++k)
       if (cellTotals[k] > 0)
         d.cells.push_back({kinds[k].name, kinds[k].topology, kinds[k].nodes, cellTotals[k],
-                           std::string("/mesh/") + kinds[k].name});
-    for (const auto& [name, sd] : s.steps) {
-      if (sd.kind != Kind::Mesh || name == "mesh/p") continue;
-      XdmfPointField f;
-      f.name = name.substr(5);
-      f.dataset = "/" + name;
+                           std::string("/mesh/") + kinds[k].name, {}});
+    auto field = [](const std::string& name, const std::string& dataset, const StepDataset& sd) {
+      XdmfField f;
+      f.name = name;
+      f.dataset = "/" + dataset;
       f.inner.assign(sd.inner.begin() + 1, sd.inner.end());
       f.written = sd.written;
-      d.pointFields.push_back(std::move(f));
+      return f;
+    };
+    for (const auto& [name, sd] : s.steps) {
+      if (sd.kind == Kind::Mesh && name != "mesh/p") {
+        // /mesh/u is the displacement from the reference geometry /mesh/p0
+        d.pointFields.push_back(field(name == "mesh/u" ? "displacement" : name.substr(5), name, sd));
+      } else if (isCellKind(sd.kind)) {
+        const std::string kind = kinds[cellIndex(sd.kind)].name;
+        for (XdmfCellBlock& c : d.cells)
+          if (c.name == kind) c.fields.push_back(field(name.substr(name.rfind('/') + 1), name, sd));
+      }
     }
     return d;
   }
@@ -626,6 +677,11 @@ ResultFile::ResultFile(MPI_Comm comm, const std::string& path, const ResultLayou
   m.elementPlan = RowPlan::build(m.comm, layout.numElements, layout.ownedElements, "result file: owned elements");
   m.meshPlan = RowPlan::build(m.comm, layout.numMeshNodes, layout.ownedMeshNodes, "result file: owned mesh nodes");
   m.computeCellOffsets();
+  int withReference = !layout.meshReference.empty() || layout.ownedMeshNodes.empty();
+  MPI_Allreduce(MPI_IN_PLACE, &withReference, 1, MPI_INT, MPI_LAND, m.comm);
+  m.hasReference = withReference && layout.numMeshNodes > 0;
+  const std::vector<double> reference =
+      m.hasReference ? m.meshPlan.exchange(m.comm, layout.meshReference, 3) : std::vector<double>();
 
   m.createFile(m.sinks[0], m.partPath);
   m.createFile(m.sinks[1], m.sparePath);
@@ -633,13 +689,14 @@ ResultFile::ResultFile(MPI_Comm comm, const std::string& path, const ResultLayou
   long numbers[2] = {layout.ndof, layout.nranks};
   MPI_Bcast(numbers, 2, MPI_LONG, 0, m.comm);
   const std::string version = broadcastString(m.comm, layout.version), scene = broadcastString(m.comm, layout.scene);
-  m.apply([&m, numbers, version, scene](Sink& s) {
+  m.apply([&m, numbers, version, scene, reference](Sink& s) {
     h5::writeAttribute(s.file, "version", version);
     h5::writeAttribute(s.file, "ndof", numbers[0]);
     h5::writeAttribute(s.file, "nranks", static_cast<int>(numbers[1]));
     h5::writeAttribute(s.file, "scene", scene);
     h5::writeAttribute(s.file, "converged", 0);
     m.writeCells(s);
+    if (m.hasReference) m.writeReference(s, reference);
   });
   commit();
 }
@@ -673,6 +730,15 @@ void ResultFile::writeElementField(const std::string& name, std::span<const doub
 
 void ResultFile::writeMeshField(const std::string& name, std::span<const double> values, std::vector<long> inner) {
   impl_->writeTable(Kind::Mesh, name, values, std::move(inner));
+}
+
+void ResultFile::writeCellField(const std::string& cells, const std::string& quantity, std::span<const double> values,
+                                std::vector<long> inner) {
+  Kind kind = Kind::Lines;
+  if (cells == "triangles") kind = Kind::Triangles;
+  else if (cells == "quads") kind = Kind::Quads;
+  else if (cells != "lines") throw std::invalid_argument("cell field " + quantity + ": unknown cell kind " + cells);
+  impl_->writeTable(kind, "cell/" + cells + "/" + quantity, values, std::move(inner));
 }
 
 void ResultFile::writeStepRow(const std::string& rawName, std::span<const double> values) {

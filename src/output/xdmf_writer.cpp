@@ -40,12 +40,11 @@ std::string joined(const std::vector<long>& v) {
   return s;
 }
 
-// Row `step` of a [ns, nmesh, inner...] dataset: a HyperSlab DataItem over the HDF5 dataset.
-std::string hyperslab(const XdmfDescription& d, const std::string& dataset, const std::vector<long>& inner, int step,
-                      const std::string& indent) {
+// Row `step` of a [ns, rows, inner...] dataset: a HyperSlab DataItem over the HDF5 dataset.
+std::string hyperslab(const XdmfDescription& d, const XdmfField& f, long rows, int step, const std::string& indent) {
   const long ns = static_cast<long>(d.stepValues.size());
-  std::vector<long> full{ns, d.numMeshNodes}, start{step, 0}, stride{1, 1}, count{1, d.numMeshNodes};
-  for (long n : inner) {
+  std::vector<long> full{ns, rows}, start{step, 0}, stride{1, 1}, count{1, rows};
+  for (long n : f.inner) {
     full.push_back(n);
     start.push_back(0);
     stride.push_back(1);
@@ -56,7 +55,7 @@ std::string hyperslab(const XdmfDescription& d, const std::string& dataset, cons
     << indent << "  <DataItem Dimensions=\"3 " << full.size() << "\" NumberType=\"Int\" Format=\"XML\">"
     << joined(start) << "  " << joined(stride) << "  " << joined(count) << "</DataItem>\n"
     << indent << "  <DataItem Dimensions=\"" << joined(full) << "\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">"
-    << escape(d.h5Name) << ":" << escape(dataset) << "</DataItem>\n"
+    << escape(d.h5Name) << ":" << escape(f.dataset) << "</DataItem>\n"
     << indent << "</DataItem>\n";
   return o.str();
 }
@@ -71,12 +70,31 @@ std::string attributeType(const std::vector<long>& inner) {
   return "Matrix";
 }
 
-// One uniform grid: topology of one cell kind, the geometry row and the point attributes of `step`.
+std::string attributes(const XdmfDescription& d, const std::vector<XdmfField>& fields, long rows, const char* center,
+                       int step, const std::string& indent) {
+  std::ostringstream o;
+  for (const auto& f : fields) {
+    if (step >= static_cast<int>(f.written.size()) || !f.written[step]) continue;
+    o << indent << "<Attribute Name=\"" << escape(f.name) << "\" AttributeType=\"" << attributeType(f.inner)
+      << "\" Center=\"" << center << "\">\n"
+      << hyperslab(d, f, rows, step, indent + "  ") << indent << "</Attribute>\n";
+  }
+  return o.str();
+}
+
+// A value for the whole grid (ParaView field data).
+std::string gridValue(const std::string& name, double v, const std::string& indent) {
+  return indent + "<Attribute Name=\"" + escape(name) + "\" AttributeType=\"Scalar\" Center=\"Grid\">\n" + indent +
+         "  <DataItem Dimensions=\"1\" NumberType=\"Float\" Precision=\"8\" Format=\"XML\">" + number(v) +
+         "</DataItem>\n" + indent + "</Attribute>\n";
+}
+
+// One uniform grid: topology of one cell kind, the reference geometry, the attributes of `step`.
 std::string uniformGrid(const XdmfDescription& d, const XdmfCellBlock* cells, const std::string& name, int step,
-                        int geometryStep, bool withTime, const std::string& indent) {
+                        const double* time, const std::string& indent) {
   std::ostringstream o;
   o << indent << "<Grid Name=\"" << escape(name) << "\" GridType=\"Uniform\">\n";
-  if (withTime) o << indent << "  <Time Value=\"" << number(d.stepValues[step]) << "\"/>\n";
+  if (time) o << indent << "  <Time Value=\"" << number(*time) << "\"/>\n";
   if (cells) {
     o << indent << "  <Topology TopologyType=\"" << cells->topologyType << "\" NumberOfElements=\"" << cells->count
       << "\" NodesPerElement=\"" << cells->nodesPerElement << "\">\n"
@@ -88,19 +106,44 @@ std::string uniformGrid(const XdmfDescription& d, const XdmfCellBlock* cells, co
     o << indent << "  <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"" << d.numMeshNodes
       << "\" NodesPerElement=\"1\"/>\n";
   }
+  // A plain HDF DataItem (no HyperSlab): ParaView's XDMF reader caches the geometry by its path.
   o << indent << "  <Geometry GeometryType=\"XYZ\">\n"
-    << hyperslab(d, d.geometryDataset, {3}, geometryStep, indent + "    ") << indent << "  </Geometry>\n";
-  for (const auto& f : d.pointFields) {
-    if (step >= static_cast<int>(f.written.size()) || !f.written[step]) continue;
-    o << indent << "  <Attribute Name=\"" << escape(f.name) << "\" AttributeType=\"" << attributeType(f.inner)
-      << "\" Center=\"Node\">\n"
-      << hyperslab(d, f.dataset, f.inner, step, indent + "    ") << indent << "  </Attribute>\n";
-  }
+    << indent << "    <DataItem Dimensions=\"" << d.numMeshNodes
+    << " 3\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">" << escape(d.h5Name) << ":"
+    << escape(d.geometryDataset) << "</DataItem>\n"
+    << indent << "  </Geometry>\n";
+  o << attributes(d, d.pointFields, d.numMeshNodes, "Node", step, indent + "  ");
+  if (cells) o << attributes(d, cells->fields, cells->count, "Cell", step, indent + "  ");
+  o << gridValue(d.stepName, d.stepValues[step], indent + "  ") << gridValue("hdf5_row", step, indent + "  ");
   o << indent << "</Grid>\n";
   return o.str();
 }
 
 }  // namespace
+
+std::vector<double> xdmfTimes(const std::vector<double>& stepValues, const std::vector<char>& formFindingRows) {
+  const int ns = static_cast<int>(stepValues.size());
+  auto isFormFinding = [&](int s) { return s < static_cast<int>(formFindingRows.size()) && formFindingRows[s]; };
+  int nff = 0;
+  for (int s = 0; s < ns; ++s) nff += isFormFinding(s);
+  bool increasing = true;
+  double last = -1.0;
+  bool first = true;
+  for (int s = 0; s < ns; ++s) {
+    if (isFormFinding(s)) continue;
+    const double v = stepValues[s];
+    if (!(v >= 0.0) || (!first && !(v > last))) increasing = false;
+    last = v;
+    first = false;
+  }
+  std::vector<double> t(ns);
+  int iff = 0, iload = 0;
+  for (int s = 0; s < ns; ++s) {
+    if (isFormFinding(s)) t[s] = static_cast<double>(iff++ - nff);
+    else t[s] = increasing ? stepValues[s] : static_cast<double>(++iload);
+  }
+  return t;
+}
 
 std::string xdmfText(const XdmfDescription& d) {
   std::ostringstream o;
@@ -108,19 +151,17 @@ std::string xdmfText(const XdmfDescription& d) {
     << "<Xdmf xmlns:xi=\"http://www.w3.org/2001/XInclude\" Version=\"3.0\">\n"
     << "  <Domain>\n"
     << "    <Grid Name=\"steps\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
-  int geometryStep = -1;
   const std::string indent = "      ";
-  for (int s = 0; s < static_cast<int>(d.stepValues.size()); ++s) {
-    if (s < static_cast<int>(d.geometryWritten.size()) && d.geometryWritten[s]) geometryStep = s;
-    if (geometryStep < 0) continue;
+  const std::vector<double> times = xdmfTimes(d.stepValues, d.formFindingRows);
+  for (int s = 0; s < static_cast<int>(d.stepValues.size()) && !d.geometryDataset.empty(); ++s) {
     const std::string name = "step_" + std::to_string(s);
     if (d.cells.size() <= 1) {
-      o << uniformGrid(d, d.cells.empty() ? nullptr : &d.cells[0], name, s, geometryStep, true, indent);
+      o << uniformGrid(d, d.cells.empty() ? nullptr : &d.cells[0], name, s, &times[s], indent);
       continue;
     }
     o << indent << "<Grid Name=\"" << name << "\" GridType=\"Collection\" CollectionType=\"Spatial\">\n"
-      << indent << "  <Time Value=\"" << number(d.stepValues[s]) << "\"/>\n";
-    for (const auto& c : d.cells) o << uniformGrid(d, &c, c.name, s, geometryStep, false, indent + "  ");
+      << indent << "  <Time Value=\"" << number(times[s]) << "\"/>\n";
+    for (const auto& c : d.cells) o << uniformGrid(d, &c, c.name, s, nullptr, indent + "  ");
     o << indent << "</Grid>\n";
   }
   o << "    </Grid>\n"

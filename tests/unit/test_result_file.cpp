@@ -15,11 +15,13 @@
 #include <fstream>
 #include <functional>
 #include <iostream>
+#include <iterator>
 #include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "output/xdmf_writer.hpp"
 #include "sinew/result_file.hpp"
 
 namespace {
@@ -75,6 +77,7 @@ sinew::ResultLayout makeLayout(const std::string& scene) {
     L.triangles = {0, 1, 2, 2, 3, 4};
     L.triangleElement = {4, 5};
   }
+  L.meshReference = rowsOf(9, 0, L.ownedMeshNodes, 3);  // /mesh/p0
   L.dimension = 3;
   L.version = "sinew-test 1.0";
   L.scene = scene;
@@ -228,6 +231,16 @@ void checkMainFile(const std::string& path, const std::string& xdmf, const std::
   checkTable(f, "mesh/p", 6, kMesh, {3}, {true, true, true});
   checkTable(f, "mesh/u", 7, kMesh, {3}, {true, true, true});
   checkTable(f, "mesh/mode_1", 8, kMesh, {}, {false, false, true});
+  const long numLines = long(nproc) * (nproc + 1) / 2;
+  checkTable(f, "cell/lines/stress", 10, numLines, {}, {true, true, true});
+  checkTable(f, "cell/triangles/membrane_n11", 11, 2, {}, {false, false, true});
+  const Data ffStep = read(f, "formfinding/step");
+  expectDims(ffStep, {3}, "formfinding/step");
+  expect(ffStep.v.size() == 3 && ffStep.v[0] == val(12, 0, 0, 0) && std::isnan(ffStep.v[1]) && std::isnan(ffStep.v[2]),
+         "formfinding/step values (NaN on load steps)");
+  const Data meshP0 = read(f, "mesh/p0");
+  expectDims(meshP0, {kMesh, 3}, "mesh/p0");
+  for (long k = 0; k < long(meshP0.v.size()); ++k) expect(meshP0.v[k] == val(9, 0, k / 3, k % 3), "mesh/p0 value");
 
   // Step rows.
   const Data freq = read(f, "freq");
@@ -288,7 +301,8 @@ void checkMainFile(const std::string& path, const std::string& xdmf, const std::
   expect(!fs::exists(xdmf + ".part"), "XDMF .part gone");
   const std::string h5 = fs::path(path).filename().string();
   expect(x.find("CollectionType=\"Temporal\"") != std::string::npos, "XDMF temporal collection");
-  for (const char* t : {"<Time Value=\"0.25\"/>", "<Time Value=\"0.5\"/>", "<Time Value=\"1\"/>"})
+  // Row 0 is a form-finding row (time -1), rows 1 and 2 load steps at their load factors.
+  for (const char* t : {"<Time Value=\"-1\"/>", "<Time Value=\"0.5\"/>", "<Time Value=\"1\"/>"})
     expect(countOf(x, t) == 1, std::string("XDMF has ") + t);
   expect(countOf(x, "ItemType=\"HyperSlab\"") > 0, "XDMF HyperSlab items");
   // Two cell kinds: each step is a spatial collection of a Polyline and a Triangle grid.
@@ -296,11 +310,23 @@ void checkMainFile(const std::string& path, const std::string& xdmf, const std::
   expect(countOf(x, "TopologyType=\"Polyline\"") == 3 && countOf(x, "NodesPerElement=\"2\"") == 3, "XDMF Polyline");
   expect(countOf(x, "TopologyType=\"Triangle\"") == 3, "XDMF Triangle");
   expect(countOf(x, "Quadrilateral") == 0, "XDMF without quads");
-  expect(countOf(x, h5 + ":/mesh/p</DataItem>") == 6, "XDMF geometry references " + h5 + ":/mesh/p");
-  expect(countOf(x, h5 + ":/mesh/u</DataItem>") == 6, "XDMF attribute mesh/u at every step");
+  // Reference geometry /mesh/p0 (a plain HDF item) + displacement /mesh/u; /mesh/p is not shown.
+  expect(countOf(x, "Format=\"HDF\">" + h5 + ":/mesh/p0</DataItem>") == 6, "XDMF geometry references " + h5 + ":/mesh/p0");
+  expect(countOf(x, h5 + ":/mesh/p</DataItem>") == 0, "XDMF does not show /mesh/p");
+  expect(countOf(x, h5 + ":/mesh/u</DataItem>") == 6 && countOf(x, "Name=\"displacement\"") == 6,
+         "XDMF attribute displacement (mesh/u) at every step");
   expect(countOf(x, h5 + ":/mesh/mode_1</DataItem>") == 2, "XDMF attribute mode_1 only at step 2");
-  expect(countOf(x, "2 0 0  1 1 1  1 9 3</DataItem>") == 4, "XDMF hyperslab of step 2");
+  expect(countOf(x, "2 0 0  1 1 1  1 9 3</DataItem>") == 2, "XDMF hyperslab of step 2");
   expect(countOf(x, "AttributeType=\"Vector\"") == 6, "XDMF vector attributes");
+  expect(countOf(x, "Name=\"stress\" AttributeType=\"Scalar\" Center=\"Cell\"") == 3 &&
+             countOf(x, h5 + ":/cell/lines/stress</DataItem>") == 3,
+         "XDMF cell attribute stress on the lines at every step");
+  expect(countOf(x, "Name=\"membrane_n11\" AttributeType=\"Scalar\" Center=\"Cell\"") == 1 &&
+             countOf(x, "2 0  1 1  1 2</DataItem>") == 1,
+         "XDMF cell attribute membrane_n11 on the triangles at step 2");
+  expect(countOf(x, "Name=\"load_factor\" AttributeType=\"Scalar\" Center=\"Grid\"") == 6 &&
+             countOf(x, "Name=\"hdf5_row\"") == 6,
+         "XDMF field data load_factor and hdf5_row");
   expect(x.find("/node/") == std::string::npos, "XDMF lists mesh fields only");
 }
 
@@ -317,7 +343,18 @@ void checkInterruptedFile(const std::string& path) {
   expectDims(t, {1}, "time");
   expect(t.v == std::vector<double>{0.125}, "time value");
   checkTable(f, "node/p", 1, kNodes, {3}, {true});
+  // /mesh/p0 is written at creation, whatever the steps write
+  const Data meshP0 = read(f, "mesh/p0");
+  expectDims(meshP0, {kMesh, 3}, "interrupted: mesh/p0");
+  for (long k = 0; k < long(meshP0.v.size()); ++k) expect(meshP0.v[k] == val(9, 0, k / 3, k % 3), "interrupted: mesh/p0 value");
   H5Fclose(f);
+  // its XDMF: one step on the reference geometry, no point attributes (no mesh field written)
+  const std::string xdmf = std::filesystem::path(path).replace_extension(".xdmf").string();
+  std::ifstream in(xdmf);
+  const std::string x((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  expect(countOf(x, "<Time Value=\"0.125\"/>") == 1 && countOf(x, ":/mesh/p0</DataItem>") == 2 &&
+             countOf(x, "Center=\"Node\"") == 0 && countOf(x, "Name=\"time\"") == 2,
+         "interrupted: XDMF of one step on /mesh/p0 with field data time");
 }
 
 int runScript(const std::string& command) {
@@ -360,6 +397,10 @@ int main(int argc, char** argv) {
     // Only rank 0's values and shape count.
     rf.writeArray("node/p0", rank == 0 ? std::span<const double>(p0) : std::span<const double>(), {kNodes, 3});
     rf.writeArray("statespace/A", std::vector<double>{1, 2, 3, 4}, {2, 2});
+    // this rank's cells: rank r holds lines r (r + 1) / 2 ... + r, rank 0 both triangles
+    std::vector<long> myLines, myTriangles;
+    for (long j = 0; j <= rank; ++j) myLines.push_back(long(rank) * (rank + 1) / 2 + j);
+    if (rank == 0) myTriangles = {0, 1};
 
     for (int s = 0; s < 3; ++s) {
       rf.beginStep(s, kStepValues[s]);
@@ -380,6 +421,9 @@ int main(int argc, char** argv) {
       rf.writeMeshField("mesh/p", rowsOf(6, s, L.ownedMeshNodes, 3), {3});
       rf.writeMeshField("mesh/u", rowsOf(7, s, L.ownedMeshNodes, 3), {3});
       if (s == 2) rf.writeMeshField("mesh/mode_1", rowsOf(8, s, L.ownedMeshNodes, 1), {});
+      rf.writeCellField("lines", "stress", rowsOf(10, s, myLines, 1), {});
+      if (s == 2) rf.writeCellField("triangles", "membrane_n11", rowsOf(11, s, myTriangles, 1), {});
+      if (s == 0) rf.writeStepRow("formfinding/step", std::vector<double>{val(12, 0, 0, 0)});
       const std::vector<double> fr = freqRow(s);
       rf.writeStepRow("freq", fr);
       rf.writeStepRow("stressmax", std::vector<double>{7.0 * (s + 1)});
@@ -422,6 +466,15 @@ int main(int argc, char** argv) {
   MPI_Barrier(MPI_COMM_WORLD);
   if (rank == 0) checkMainFile(path, xdmf, scene);
 
+  // XDMF times: form-finding rows at -nff .. -1, load steps at their load factor when increasing,
+  // otherwise (a continuation path turning back) at their number; dynamics from t = 0.
+  using V = std::vector<double>;
+  using F = std::vector<char>;
+  expect(sinew::xdmfTimes(V{0, 0, 0, 0.5, 1}, F{1, 1, 1}) == V{-3, -2, -1, 0.5, 1}, "xdmfTimes: form finding + statics");
+  expect(sinew::xdmfTimes(V{0, 0, 0.5, 0.4}, F{1, 1}) == V{-2, -1, 1, 2}, "xdmfTimes: a path turning back");
+  expect(sinew::xdmfTimes(V{0, 0.1, 0.2}, F{}) == V{0, 0.1, 0.2}, "xdmfTimes: dynamics");
+  expect(sinew::xdmfTimes(V{0, -0.1}, F{}) == V{1, 2}, "xdmfTimes: a negative load factor");
+
   // An interrupted run: the destructor closes with converged = 0, and the file is still published.
   const std::string path2 = fs::path(path).replace_filename(fs::path(path).stem().string() + "_interrupted.h5");
   try {
@@ -444,6 +497,13 @@ int main(int argc, char** argv) {
         sinew::ResultFile rf(MPI_COMM_WORLD, path + ".bad.h5", L);
       },
       "an owned row out of range");
+  expectThrowOnAllRanks(
+      [&] {
+        sinew::ResultLayout L = makeLayout("bad");
+        if (rank == nproc - 1) L.meshReference.pop_back();
+        sinew::ResultFile rf(MPI_COMM_WORLD, path + ".bad.h5", L);
+      },
+      "a mesh reference of the wrong size");
   if (nproc > 1)
     expectThrowOnAllRanks(
       [&] {

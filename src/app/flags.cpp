@@ -65,7 +65,7 @@ const std::vector<Flag>& sinewFlags() {
         {"compliance_batch", integerAtLeast(1), &compliance, "96", "unit-load columns per solve (sparse, dense)"},
         {"compl_mat_mumps_icntl_27", anyInteger(), &compliance, "2048", "(MUMPS) right-hand-side columns per block of the compliance solve"},
         {"dynamics_scheme", oneOf({"arnold_bruls", "tsalpha2"}), &dynamics, "arnold_bruls", "Exudyn's generalized-alpha loop or PETSc TS alpha2"},
-        {"dynamics_modified_newton", boolean(), &dynamics, "true", "keep the factored Jacobian across Newton iterations and time steps while each iteration halves the residual (false: a new Jacobian at every iteration)"},
+        {"dynamics_modified_newton", oneOf({"auto", "true", "false"}), &dynamics, "auto", "keep the factored Jacobian across Newton iterations and time steps while each iteration halves the residual (false: a new Jacobian at every iteration; auto: true from 200 unknowns)"},
         {"dt_grow_after", integerAtLeast(0), &dynamics, "3", "after a halving, double the time step after this many successes (0: never)"},
         {"dynamics_energy", boolean(), &dynamics, "false", "report the energy drift of the time integration"},
         {"ff_mat_mumps_icntl_7", integerIn(0, 7), &formfinding, "3", "(MUMPS) fill-reducing ordering of the form-finding factorization (3: SCOTCH)"},

@@ -848,6 +848,7 @@ long ResultFile::syncedCommits() const { return impl_->syncedCommits; }
 void ResultFile::setSyncInterval(double seconds) {
   impl_->syncInterval = seconds;
   impl_->lastSync = MPI_Wtime();
+  impl_->commits = impl_->syncedCommits = 0;  // counted from here (the creation's commit is not)
 }
 
 void ResultFile::close(bool converged) {

@@ -21,12 +21,15 @@ def jacobians(out):
 
 # A3 (1 element, h = 1e-4, 1000 steps): modified Newton against full Newton
 a3 = cantilever(1, force=F, dynamics={"tend": 0.1, "dt": 1e-4, "spectral_radius": 0.6, "output_every": 100})
-h5m, outm = st.run("dyncost_modified", text(a3))
+h5m, outm = st.run("dyncost_modified", text(a3), args=["-dynamics_modified_newton", "true"])
 h5f, outf = st.run("dyncost_full", text(a3), args=["-dynamics_modified_newton", "false"])
 itm, jm = jacobians(outm)
 itf, jf = jacobians(outf)
 print(f"  A3 modified Newton: {itm} iterations on {jm} Jacobians; full Newton: {itf} on {jf}")
 st.check(itf is not None and itf == jf, "full Newton: one Jacobian per iteration expected")
+_, outa = st.run("dyncost_auto", text(a3))
+st.check(jacobians(outa)[0] is not None and jacobians(outa)[0] == jacobians(outa)[1],
+         "-dynamics_modified_newton auto: full Newton for 5 unknowns")
 st.check(jm is not None and jm < 0.5 * itm, "modified Newton: fewer than half as many Jacobians as iterations expected")
 with st.h5(h5m) as f, st.h5(h5f) as g:
     st.close(tip_displacement(f), (-1.0611305415798655, -1.4396907464589017), rtol=1e-7,
@@ -35,12 +38,12 @@ with st.h5(h5m) as f, st.h5(h5f) as g:
 st.check(re.search(r"dynamics [0-9.]+ s \(\d+ Newton iterations\)", outm) is not None and
          not re.search(r"\bstatics [0-9.]+ s", outm), "summary: integration time labelled 'dynamics', no 'statics'")
 
-# commits forced to the disk: all with -output_fsync_interval 0, none within 10 s by default
+# commits forced to the disk: all with -output_fsync_interval 0, none with an interval longer than the run
 m0 = re.search(r"(\d+) commits, (\d+) forced to the disk", st.run("dyncost_sync0", text(a3), args=["-output_fsync_interval", "0"])[1])
-md = re.search(r"(\d+) commits, (\d+) forced to the disk", outm)
-print(f"  commits forced to the disk: interval 0 -> {m0.group(0) if m0 else None}; default -> {md.group(0) if md else None}")
+ml = re.search(r"(\d+) commits, (\d+) forced to the disk", st.run("dyncost_sync_long", text(a3), args=["-output_fsync_interval", "1e6"])[1])
+print(f"  commits forced to the disk: interval 0 -> {m0.group(0) if m0 else None}; 1e6 s -> {ml.group(0) if ml else None}")
 st.check(m0 is not None and int(m0.group(1)) >= 11 and m0.group(1) == m0.group(2), "-output_fsync_interval 0: every commit synced")
-st.check(md is not None and int(md.group(1)) >= 11 and int(md.group(2)) <= 1, "default interval 10 s: at most one synced commit")
+st.check(ml is not None and int(ml.group(1)) >= 11 and int(ml.group(2)) == 0, "-output_fsync_interval 1e6: no commit synced")
 
 # tsalpha2 failing on a step load at 512 elements: Sinew's message and exit 3, no PETSc trace
 a3_512 = cantilever(512, force=F, dynamics={"tend": 1e-3, "dt": 1e-4, "spectral_radius": 0.6})

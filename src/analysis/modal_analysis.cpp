@@ -1,5 +1,6 @@
 #include "analysis/solver_defaults.hpp"
 #include "analysis/modal_analysis.hpp"
+#include "mesh/collective_error.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -65,34 +66,34 @@ double frequencyHz(double omega2, double zeroTol) {
 ModalAnalysis::ModalAnalysis(Assembler& assembler, int nfreq, bool writeResults)
     : asm_(assembler), write_(writeResults), nev_(nfreq) {
   MPI_Comm comm = asm_.mesh().comm;
-  PetscCallAbort(comm, asm_.createMatrix(&K_));
-  PetscCallAbort(comm, asm_.createMatrix(&M_));
-  PetscCallAbort(comm, MatCreateVecs(K_, &dK_, &dM_));
-  PetscCallAbort(comm, EPSCreate(comm, &eps_));
-  PetscCallAbort(comm, EPSSetProblemType(eps_, EPS_GHEP));
-  PetscCallAbort(comm, EPSSetDimensions(eps_, nfreq, PETSC_DEFAULT, PETSC_DEFAULT));
-  PetscCallAbort(comm, EPSSetWhichEigenpairs(eps_, EPS_TARGET_MAGNITUDE));
-  PetscCallAbort(comm, EPSSetTarget(eps_, 0.0));
-  PetscCallAbort(comm, EPSSetPurify(eps_, PETSC_TRUE));  // keeps the multipliers' infinite eigenvalues out
+  SinewCallThrow(comm, asm_.createMatrix(&K_));
+  SinewCallThrow(comm, asm_.createMatrix(&M_));
+  SinewCallThrow(comm, MatCreateVecs(K_, &dK_, &dM_));
+  SinewCallThrow(comm, EPSCreate(comm, &eps_));
+  SinewCallThrow(comm, EPSSetProblemType(eps_, EPS_GHEP));
+  SinewCallThrow(comm, EPSSetDimensions(eps_, nfreq, PETSC_DEFAULT, PETSC_DEFAULT));
+  SinewCallThrow(comm, EPSSetWhichEigenpairs(eps_, EPS_TARGET_MAGNITUDE));
+  SinewCallThrow(comm, EPSSetTarget(eps_, 0.0));
+  SinewCallThrow(comm, EPSSetPurify(eps_, PETSC_TRUE));  // keeps the multipliers' infinite eigenvalues out
   ST st;
   KSP ksp;
-  PetscCallAbort(comm, EPSGetST(eps_, &st));
-  PetscCallAbort(comm, STSetType(st, STSINVERT));
-  PetscCallAbort(comm, STSetMatStructure(st, SUBSET_NONZERO_PATTERN));  // pattern(M) within pattern(K)
-  PetscCallAbort(comm, STGetKSP(st, &ksp));
-  PetscCallAbort(comm, useDirectSolver(ksp));
-  PetscCallAbort(comm, EPSSetFromOptions(eps_));  // last: -eps_* and -st_* flags win
+  SinewCallThrow(comm, EPSGetST(eps_, &st));
+  SinewCallThrow(comm, STSetType(st, STSINVERT));
+  SinewCallThrow(comm, STSetMatStructure(st, SUBSET_NONZERO_PATTERN));  // pattern(M) within pattern(K)
+  SinewCallThrow(comm, STGetKSP(st, &ksp));
+  SinewCallThrow(comm, useDirectSolver(ksp));
+  SinewCallThrow(comm, EPSSetFromOptions(eps_));  // last: -eps_* and -st_* flags win
   PetscInt nev, ncv, mpd;
-  PetscCallAbort(comm, EPSGetDimensions(eps_, &nev, &ncv, &mpd));
+  SinewCallThrow(comm, EPSGetDimensions(eps_, &nev, &ncv, &mpd));
   nev_ = static_cast<int>(nev);
   PetscBool set = PETSC_FALSE;
-  PetscCallAbort(comm, PetscOptionsHasName(nullptr, nullptr, "-eps_target", &set));
+  SinewCallThrow(comm, PetscOptionsHasName(nullptr, nullptr, "-eps_target", &set));
   userTarget_ = set;
   PetscReal rel = shiftRel_;
-  PetscCallAbort(comm, PetscOptionsGetReal(nullptr, nullptr, "-freq_shift_rel", &rel, &set));
+  SinewCallThrow(comm, PetscOptionsGetReal(nullptr, nullptr, "-freq_shift_rel", &rel, &set));
   shiftRel_ = rel;
   modes_.resize(nev_, nullptr);
-  for (Vec& v : modes_) PetscCallAbort(comm, MatCreateVecs(K_, &v, nullptr));
+  for (Vec& v : modes_) SinewCallThrow(comm, MatCreateVecs(K_, &v, nullptr));
 }
 
 ModalAnalysis::~ModalAnalysis() {

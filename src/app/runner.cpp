@@ -24,6 +24,7 @@
 #include "assembly/kernel_factory.hpp"
 #include "elements/ancf_cable2d.hpp"
 #include "elements/beam_section.hpp"
+#include "mesh/collective_error.hpp"
 #include "mesh/distributed_mesh.hpp"
 #include "mesh/fe_mesh.hpp"
 #include "output/output_target.hpp"
@@ -217,9 +218,7 @@ PetscErrorCode checkLoadedModelAfterFormFinding(RunContext& ctx, const Constrain
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-}  // namespace
-
-PetscErrorCode runFromCommandLine(int argc, char** argv, int* exitCode) {
+PetscErrorCode runScene(int argc, char** argv, int* exitCode) {
   PetscFunctionBeginUser;
   MPI_Comm comm = PETSC_COMM_WORLD;
   *exitCode = 0;
@@ -254,11 +253,10 @@ PetscErrorCode runFromCommandLine(int argc, char** argv, int* exitCode) {
     setupError = std::string("error: ") + ex.what();
     *exitCode = 1;
   }
-  int bad = *exitCode;
-  MPI_Allreduce(MPI_IN_PLACE, &bad, 1, MPI_INT, MPI_MAX, comm);
-  if (bad) {
-    PetscCall(PetscPrintf(comm, "%s\n", setupError.empty() ? "error: scene set-up failed on another rank" : setupError.c_str()));
-    *exitCode = bad;
+  // every rank ends with the message and exit code of the lowest failing rank
+  if (const RunFailure f = agreeOnFailure(comm, RunFailure{*exitCode, setupError})) {
+    PetscCall(PetscPrintf(comm, "%s\n", f.message.c_str()));
+    *exitCode = f.exitCode;
     PetscFunctionReturn(PETSC_SUCCESS);
   }
   PetscCall(PetscLogEventEnd(SinewEvents::get().setup, 0, 0, 0, 0));
@@ -313,6 +311,7 @@ PetscErrorCode runFromCommandLine(int argc, char** argv, int* exitCode) {
 
   // Mechanisms and redundant constraints are model errors (exit 2), found before any file exists.
   ConstraintCheckSetting check;
+  PhaseScope checkPhase("the constraint check");
   PetscCall(checkModelBeforeRun(model, plan, assembler, h5, &check, &times, exitCode));
   if (*exitCode) PetscFunctionReturn(PETSC_SUCCESS);
 
@@ -335,7 +334,10 @@ PetscErrorCode runFromCommandLine(int argc, char** argv, int* exitCode) {
   ctx.guardedWrite([&] { file->writeArray("node/p0", p0, {static_cast<long>(initialPositions.size()), 3}); });
   PetscCall(assembler.createVector(&ctx.U));
   PetscCall(VecSet(ctx.U, 0.0));
-  PetscCall(addStepAnalyses(ctx));
+  {
+    PhaseScope phase("the set-up of the analyses");
+    PetscCall(addStepAnalyses(ctx));
+  }
   if (!ctx.ioError.empty()) {
     // nothing to do: the file error is reported below
   } else if (model.opt.showinputonly) {
@@ -348,14 +350,19 @@ PetscErrorCode runFromCommandLine(int argc, char** argv, int* exitCode) {
     PetscCall(ierr);
   } else {
     if (plan.formfinding) {
+      PhaseScope phase("form finding");
       PetscCall(runFormFinding(ctx));
+      PhaseScope checkAfter("the constraint check after form finding");
       PetscCall(checkLoadedModelAfterFormFinding(ctx, check, &modelError));
     }
     if (ctx.converged && plan.dynamics) {
+      PhaseScope phase("dynamics");
       PetscCall(runDynamics(ctx));
     } else if (ctx.converged && plan.continuation) {
+      PhaseScope phase("path following");
       PetscCall(runContinuation(ctx));
     } else if (ctx.converged && plan.statics) {
+      PhaseScope phase("statics");
       const double tStatics = MPI_Wtime();
       const double outBefore = ctx.times.output, anaBefore = ctx.times.analyses;
       StaticAnalysis statics(assembler, model.opt.loadsteps);
@@ -388,6 +395,7 @@ PetscErrorCode runFromCommandLine(int argc, char** argv, int* exitCode) {
           LoadState ls;
           ls.loadFactor = ls.time = ctx.reports.empty() ? 0.0 : ctx.reports.back().loadFactor;
           ConstraintReport report;
+          PhaseScope checkAfter("the constraint check after the failed step");
           PetscCall(checkConstraints(assembler, model, ctx.U, ls, &report));
           if (report.singular) {
             ctx.failure += "\n" + report.message;
@@ -451,6 +459,35 @@ PetscErrorCode runFromCommandLine(int argc, char** argv, int* exitCode) {
   PetscCall(VecDestroy(&ctx.U));
   const bool converged = ctx.converged;
   *exitCode = converged ? 0 : (modelError ? 2 : 3);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/// A PETSc error that every rank returned (a rank that could not reach the others was ended by the
+/// solver error handler): rank 0 prints the recorded message; returns the run's exit code.
+int reportRunFailure(MPI_Comm comm, PetscErrorCode ierr) {
+  RunFailure f = recordedFailure();
+  if (!f)
+    f = {kExitSolverError, "error: internal solver error in " + std::string(currentPhase()) + " (PETSc error " +
+                               std::to_string(static_cast<int>(ierr)) + ")"};
+  PetscPrintf(comm, "%s\n", f.message.c_str());
+  return f.exitCode;
+}
+
+}  // namespace
+
+PetscErrorCode runFromCommandLine(int argc, char** argv, int* exitCode) {
+  PetscFunctionBeginUser;
+  // PETSc/SLEPc errors: recorded with the phase, returned on every rank together, reported once
+  // (exit 4; exit 3 for a non-finite element force law). 10 s: how long a failing rank waits for the
+  // others before it ends the job alone (they wait in a collective it will never join).
+  SolverErrorGuard guard(PETSC_COMM_WORLD, 10.0);
+  PetscErrorCode ierr = PETSC_SUCCESS;
+  try {
+    ierr = runScene(argc, argv, exitCode);
+  } catch (const SolverCallError& e) {  // a constructor's PETSc call failed (SinewCallThrow)
+    ierr = e.code();
+  }
+  if (ierr) *exitCode = reportRunFailure(PETSC_COMM_WORLD, ierr);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

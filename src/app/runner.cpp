@@ -311,8 +311,10 @@ PetscErrorCode runScene(int argc, char** argv, int* exitCode) {
 
   // Mechanisms and redundant constraints are model errors (exit 2), found before any file exists.
   ConstraintCheckSetting check;
-  PhaseScope checkPhase("the constraint check");
-  PetscCall(checkModelBeforeRun(model, plan, assembler, h5, &check, &times, exitCode));
+  {
+    PhaseScope checkPhase("the constraint check");
+    PetscCall(checkModelBeforeRun(model, plan, assembler, h5, &check, &times, exitCode));
+  }
   if (*exitCode) PetscFunctionReturn(PETSC_SUCCESS);
 
   std::unique_ptr<ResultFile> file;

@@ -111,8 +111,11 @@ PetscErrorCode reportSingularModel(MPI_Comm comm, int rank, const std::string& m
 /// non-finite). A non-finite one (a user function dividing by zero, a property overflowing) is no mechanism: the analysis fails
 /// on it (exit 3) with its own message on every rank count, where the constraint check would call the
 /// model singular on some (MUMPS refuses to factor a tangent with Inf/NaN, PETSc's serial LU does not).
-PetscErrorCode finiteAtReference(Assembler& assembler, bool* finite) {
+/// A force law that is not finite here (at t = 0) is named in *law (the analysis starts at t > 0 and
+/// fails on it there if it stays non-finite).
+PetscErrorCode finiteAtReference(Assembler& assembler, bool* finite, std::string* law) {
   PetscFunctionBeginUser;
+  assembler.setNonFiniteLawsFatal(false);
   Vec U0, F;
   Mat J;
   PetscCall(assembler.createVector(&U0));
@@ -124,7 +127,9 @@ PetscErrorCode finiteAtReference(Assembler& assembler, bool* finite) {
   PetscCall(assembler.createMatrix(&J));
   PetscCall(assembler.jacobian(U0, LoadState{}, J));
   PetscCall(MatNorm(J, NORM_FROBENIUS, &jn));
-  *finite = std::isfinite(fn) && std::isfinite(jn);
+  *law = assembler.nonFiniteLaw();
+  assembler.setNonFiniteLawsFatal(true);
+  *finite = std::isfinite(fn) && std::isfinite(jn) && law->empty();
   PetscCall(MatDestroy(&J));
   PetscCall(VecDestroy(&F));
   PetscCall(VecDestroy(&U0));
@@ -158,11 +163,14 @@ PetscErrorCode checkModelBeforeRun(const Model& model, const Plan& plan, Assembl
   if (!checkModel || model.opt.showinputonly || !(plan.statics || formfinding)) PetscFunctionReturn(PETSC_SUCCESS);
   const double tCheck = MPI_Wtime();
   bool finite = true;
-  PetscCall(finiteAtReference(assembler, &finite));
+  std::string law;
+  PetscCall(finiteAtReference(assembler, &finite, &law));
   if (!finite) {
     times->check = MPI_Wtime() - tCheck;
+    if (law.rfind("error: ", 0) == 0) law = law.substr(7);
     if (!model.opt.silent)
-      PetscCall(PetscPrintf(comm, "  note: constraint check skipped: the residual or tangent at the reference state is not finite (Inf/NaN, or tangent entries above 1e154)\n"));
+      PetscCall(PetscPrintf(comm, "  note: constraint check skipped: the residual or tangent at the reference state is not finite (%s)\n",
+                            law.empty() ? "Inf/NaN, or tangent entries above 1e154" : law.c_str()));
     PetscFunctionReturn(PETSC_SUCCESS);
   }
   ConstraintReport check;

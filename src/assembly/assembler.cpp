@@ -398,10 +398,14 @@ PetscErrorCode Assembler::assembleForces(const double* u, const LoadState& ls, T
     }
   }
   if (anyPressure_) fext2 += addPressureForces(ls, target, out);
-  double norms[2] = {fint2, fext2};
-  MPI_Allreduce(MPI_IN_PLACE, norms, 2, MPI_DOUBLE, MPI_SUM, mesh_.comm);
+  // third entry: ranks with a non-finite force law in this assembly (agreeElementValues needs no
+  // reduction of its own after a residual)
+  double norms[3] = {fint2, fext2, elementValueError_.empty() ? 0.0 : 1.0};
+  MPI_Allreduce(MPI_IN_PLACE, norms, 3, MPI_DOUBLE, MPI_SUM, mesh_.comm);
   fextNorm_ = std::sqrt(norms[1]);
   fintNorm_ = std::sqrt(norms[0]);
+  elementValueErrorKnown_ = true;
+  anyElementValueError_ = norms[2] > 0.0;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -429,14 +433,24 @@ void Assembler::evaluateElement(const LocalElement& el, const KernelInput& in, c
 
 PetscErrorCode Assembler::agreeElementValues() {
   PetscFunctionBeginUser;
+  if (elementValueErrorKnown_) {  // a residual assembly reduced it already
+    elementValueErrorKnown_ = false;
+    if (!anyElementValueError_) PetscFunctionReturn(PETSC_SUCCESS);
+  }
   RunFailure local;
-  if (!elementValueError_.empty())
-    local = {3, elementValueError_ + "; the analysis cannot continue (every user function must give finite values "
-                                     "over the states the solver visits)"};
+  if (!elementValueError_.empty()) local = {3, elementValueError_};
   elementValueError_.clear();
   const long at = elementValueErrorAt_;
   elementValueErrorAt_ = -1;
-  if (const RunFailure f = agreeOnFailure(mesh_.comm, local, at)) return raiseCollective(mesh_.comm, f);
+  if (RunFailure f = agreeOnFailure(mesh_.comm, local, at)) {
+    if (!nonFiniteLawsFatal_) {
+      if (nonFiniteLaw_.empty()) nonFiniteLaw_ = f.message;
+      PetscFunctionReturn(PETSC_SUCCESS);
+    }
+    f.message += "; the analysis cannot continue (every user function must give finite values over the states the "
+                 "solver visits)";
+    return raiseCollective(mesh_.comm, f);
+  }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -153,6 +153,14 @@ class Assembler {
   double internalForceNorm() const { return fintNorm_; }
   /// Some local or remote membrane carries a pressure (then residual and Jacobian have load terms).
   bool hasPressure() const { return anyPressure_; }
+  /// true (default): a non-finite force law ends the run at the end of the assembly (exit 3).
+  /// false: it is agreed on and kept in nonFiniteLaw() (the message, "" when none), the element's
+  /// contribution zero; for a probe of the reference state whose time t = 0 the analysis never uses.
+  void setNonFiniteLawsFatal(bool fatal) {
+    nonFiniteLawsFatal_ = fatal;
+    nonFiniteLaw_.clear();
+  }
+  const std::string& nonFiniteLaw() const { return nonFiniteLaw_; }
   /// Newton regularization of slack cables in elastic analyses: k = slackStiffness * EA / L (or
   /// * N0 / L when EA = 0) added to the Jacobian only (the residual, hence the solution, is exact).
   void setSlackStiffness(double s) { slackStiffness_ = s; }
@@ -202,6 +210,9 @@ class Assembler {
   KernelOutput out_;
   std::string elementValueError_;  // first non-finite force law of the current assembly on this rank
   long elementValueErrorAt_ = -1;  // its global FE element index
+  bool elementValueErrorKnown_ = false, anyElementValueError_ = false;  // set by assembleForces' reduction
+  bool nonFiniteLawsFatal_ = true;
+  std::string nonFiniteLaw_;
   const double* vLocal_ = nullptr;  // local form of the velocities while a dynamic evaluation runs
   AssemblyCounters counters_;
   double fextNorm_ = 0, fintNorm_ = 0;

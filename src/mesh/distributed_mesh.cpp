@@ -133,7 +133,8 @@ void applyNodeProps(const Model& model, LocalNode& n) {
 }
 
 /// Records the first kernel that could not be built on this rank (scene errors and invalid element
-/// data: exit 2; anything else: an internal error, exit 4).
+/// data: a SceneError, exit 2; anything else is rethrown as std::runtime_error, exit 1 like any
+/// other set-up error).
 void kernelFailure(const std::exception& ex, const FeMesh& fe, int e, RunFailure* failure, long* failedElement) {
   if (*failure) return;
   const bool sceneError = dynamic_cast<const SceneError*>(&ex) || dynamic_cast<const std::invalid_argument*>(&ex);

@@ -2,6 +2,7 @@
 // A kernel knows nothing about MPI or PETSc; the assembler maps it into the global system.
 #pragma once
 #include <span>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -44,6 +45,23 @@ struct KernelOutput {
   std::vector<double> K;   ///< [n*n]: tangent (material part only when splitGeometric)
   std::vector<double> Kg;  ///< [n*n]: geometric (stress-dependent) part, only when splitGeometric
   std::vector<double> D;   ///< [numDofs^2]: damping, only when damping requested and hasDamping()
+};
+
+/// Thrown by ElementKernel::evaluate when a force law gives a value that is not finite (a user
+/// function dividing by zero, sqrt(-1), log(0), exp(1000)). law(): the law ("bendingMomentUserFunction
+/// \"1/0*curvature\""); returned(): "inf", "-inf", "nan" or "a non-finite derivative ..."; where(): its
+/// arguments ("t = 0, axialStrain = 0, curvature = 0"). The assembler adds the property set and element.
+class ElementValueError : public std::runtime_error {
+ public:
+  ElementValueError(std::string law, std::string returned, std::string where)
+      : std::runtime_error(law + " returned " + returned + ", " + where),
+        law_(std::move(law)), returned_(std::move(returned)), where_(std::move(where)) {}
+  const std::string& law() const { return law_; }
+  const std::string& returned() const { return returned_; }
+  const std::string& where() const { return where_; }
+
+ private:
+  std::string law_, returned_, where_;
 };
 
 class ElementKernel {

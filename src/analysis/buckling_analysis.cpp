@@ -8,29 +8,30 @@
 #include <sstream>
 
 #include "analysis/modal_analysis.hpp"
+#include "mesh/collective_error.hpp"
 
 namespace sinew {
 
 BucklingAnalysis::BucklingAnalysis(Assembler& assembler, int nbuck) : asm_(assembler), nbuck_(nbuck) {
   MPI_Comm comm = asm_.mesh().comm;
-  PetscCallAbort(comm, asm_.createMatrix(&Km_));
-  PetscCallAbort(comm, asm_.createMatrix(&Kg_));
-  PetscCallAbort(comm, EPSCreate(comm, &eps_));
-  PetscCallAbort(comm, EPSSetOptionsPrefix(eps_, "buck_"));
-  PetscCallAbort(comm, EPSSetProblemType(eps_, EPS_GNHEP));
-  PetscCallAbort(comm, EPSSetDimensions(eps_, 2 * nbuck + 2, PETSC_DEFAULT, PETSC_DEFAULT));
-  PetscCallAbort(comm, EPSSetWhichEigenpairs(eps_, EPS_TARGET_MAGNITUDE));
-  PetscCallAbort(comm, EPSSetTarget(eps_, 0.0));
+  SinewCallThrow(comm, asm_.createMatrix(&Km_));
+  SinewCallThrow(comm, asm_.createMatrix(&Kg_));
+  SinewCallThrow(comm, EPSCreate(comm, &eps_));
+  SinewCallThrow(comm, EPSSetOptionsPrefix(eps_, "buck_"));
+  SinewCallThrow(comm, EPSSetProblemType(eps_, EPS_GNHEP));
+  SinewCallThrow(comm, EPSSetDimensions(eps_, 2 * nbuck + 2, PETSC_DEFAULT, PETSC_DEFAULT));
+  SinewCallThrow(comm, EPSSetWhichEigenpairs(eps_, EPS_TARGET_MAGNITUDE));
+  SinewCallThrow(comm, EPSSetTarget(eps_, 0.0));
   ST st;
   KSP ksp;
-  PetscCallAbort(comm, EPSGetST(eps_, &st));
-  PetscCallAbort(comm, STSetType(st, STSINVERT));
-  PetscCallAbort(comm, STSetMatStructure(st, SUBSET_NONZERO_PATTERN));
-  PetscCallAbort(comm, STGetKSP(st, &ksp));
-  PetscCallAbort(comm, useDirectSolver(ksp));
-  PetscCallAbort(comm, EPSSetFromOptions(eps_));
+  SinewCallThrow(comm, EPSGetST(eps_, &st));
+  SinewCallThrow(comm, STSetType(st, STSINVERT));
+  SinewCallThrow(comm, STSetMatStructure(st, SUBSET_NONZERO_PATTERN));
+  SinewCallThrow(comm, STGetKSP(st, &ksp));
+  SinewCallThrow(comm, useDirectSolver(ksp));
+  SinewCallThrow(comm, EPSSetFromOptions(eps_));
   PetscBool set = PETSC_FALSE;
-  PetscCallAbort(comm, PetscOptionsHasName(nullptr, "buck_", "-eps_nev", &set));
+  SinewCallThrow(comm, PetscOptionsHasName(nullptr, "buck_", "-eps_nev", &set));
   userNev_ = set;
 }
 

@@ -7,6 +7,7 @@
 
 #include "analysis/solver_defaults.hpp"
 #include "elements/ancf_cable2d.hpp"
+#include "mesh/collective_error.hpp"
 
 namespace sinew {
 
@@ -162,22 +163,22 @@ CableCoarseSpace::CableCoarseSpace(Assembler& assembler, int ratio) : asm_(assem
   }
   // 6. work vectors and the coarse matrix (4 unknowns per coarse node; constrained: identity rows)
   const PetscInt nc = 4 * static_cast<PetscInt>(nodeCount_);
-  PetscCallAbort(comm, VecCreateSeq(PETSC_COMM_SELF, nc, &rc_));
-  PetscCallAbort(comm, VecDuplicate(rc_, &yc_));
-  PetscCallAbort(comm, asm_.createVector(&t1_));
-  PetscCallAbort(comm, VecDuplicate(t1_, &t2_));
+  SinewCallThrow(comm, VecCreateSeq(PETSC_COMM_SELF, nc, &rc_));
+  SinewCallThrow(comm, VecDuplicate(rc_, &yc_));
+  SinewCallThrow(comm, asm_.createVector(&t1_));
+  SinewCallThrow(comm, VecDuplicate(t1_, &t2_));
   std::vector<PetscInt> nnz(static_cast<size_t>(nc));
   for (PetscInt r = 0; r < nc; ++r) nnz[r] = acRowStart_[r + 1] - acRowStart_[r];
-  PetscCallAbort(comm, MatCreateSeqAIJ(PETSC_COMM_SELF, nc, nc, 0, nnz.data(), &Ac_));
-  PetscCallAbort(comm, KSPCreate(PETSC_COMM_SELF, &coarseKsp_));
-  PetscCallAbort(comm, KSPSetOptionsPrefix(coarseKsp_, "coarse_"));
-  PetscCallAbort(comm, KSPSetType(coarseKsp_, KSPPREONLY));
+  SinewCallThrow(comm, MatCreateSeqAIJ(PETSC_COMM_SELF, nc, nc, 0, nnz.data(), &Ac_));
+  SinewCallThrow(comm, KSPCreate(PETSC_COMM_SELF, &coarseKsp_));
+  SinewCallThrow(comm, KSPSetOptionsPrefix(coarseKsp_, "coarse_"));
+  SinewCallThrow(comm, KSPSetType(coarseKsp_, KSPPREONLY));
   PC cpc;
-  PetscCallAbort(comm, KSPGetPC(coarseKsp_, &cpc));
-  PetscCallAbort(comm, PCSetType(cpc, PCLU));
-  PetscCallAbort(comm, PCFactorSetMatOrderingType(cpc, MATORDERINGND));
-  PetscCallAbort(comm, PCFactorSetShiftType(cpc, MAT_SHIFT_NONZERO));
-  PetscCallAbort(comm, KSPSetFromOptions(coarseKsp_));
+  SinewCallThrow(comm, KSPGetPC(coarseKsp_, &cpc));
+  SinewCallThrow(comm, PCSetType(cpc, PCLU));
+  SinewCallThrow(comm, PCFactorSetMatOrderingType(cpc, MATORDERINGND));
+  SinewCallThrow(comm, PCFactorSetShiftType(cpc, MAT_SHIFT_NONZERO));
+  SinewCallThrow(comm, KSPSetFromOptions(coarseKsp_));
 }
 
 CableCoarseSpace::~CableCoarseSpace() {

@@ -1,4 +1,5 @@
 #include "analysis/compliance_analysis.hpp"
+#include "mesh/collective_error.hpp"
 
 #include <algorithm>
 #include <array>
@@ -35,21 +36,21 @@ ComplianceAnalysis::ComplianceAnalysis(Assembler& assembler, const std::vector<i
   }
   MPI_Allreduce(&cols, &totalColumns_, 1, MPI_LONG, MPI_SUM, m.comm);
   PetscBool set = PETSC_FALSE;
-  PetscCallAbort(m.comm, PetscOptionsGetInt(nullptr, nullptr, "-compliance_batch", &batch_, &set));
+  SinewCallThrow(m.comm, PetscOptionsGetInt(nullptr, nullptr, "-compliance_batch", &batch_, &set));
   batch_ = std::max<PetscInt>(batch_, 1);
   const char* names[] = {"selinv", "sparse", "dense"};
   PetscInt which = 0;
-  PetscCallAbort(m.comm, PetscOptionsGetEList(nullptr, nullptr, "-compliance_method", names, 3, &which, &set));
+  SinewCallThrow(m.comm, PetscOptionsGetEList(nullptr, nullptr, "-compliance_method", names, 3, &which, &set));
   method_ = static_cast<Method>(which);
-  PetscCallAbort(m.comm, asm_.createMatrix(&J_));
-  PetscCallAbort(m.comm, KSPCreate(m.comm, &ksp_));
-  PetscCallAbort(m.comm, KSPSetOptionsPrefix(ksp_, "compl_"));
-  PetscCallAbort(m.comm, KSPSetType(ksp_, KSPPREONLY));
+  SinewCallThrow(m.comm, asm_.createMatrix(&J_));
+  SinewCallThrow(m.comm, KSPCreate(m.comm, &ksp_));
+  SinewCallThrow(m.comm, KSPSetOptionsPrefix(ksp_, "compl_"));
+  SinewCallThrow(m.comm, KSPSetType(ksp_, KSPPREONLY));
   PC pc;
-  PetscCallAbort(m.comm, KSPGetPC(ksp_, &pc));
-  PetscCallAbort(m.comm, PCSetType(pc, PCLU));
-  PetscCallAbort(m.comm, PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
-  PetscCallAbort(m.comm, KSPSetFromOptions(ksp_));
+  SinewCallThrow(m.comm, KSPGetPC(ksp_, &pc));
+  SinewCallThrow(m.comm, PCSetType(pc, PCLU));
+  SinewCallThrow(m.comm, PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
+  SinewCallThrow(m.comm, KSPSetFromOptions(ksp_));
 }
 
 ComplianceAnalysis::~ComplianceAnalysis() {

@@ -8,36 +8,37 @@
 #include <petscmat.h>
 
 #include "analysis/solver_defaults.hpp"
+#include "mesh/collective_error.hpp"
 
 namespace sinew {
 
 ContinuationAnalysis::ContinuationAnalysis(Assembler& assembler, const ContinuationOptions& opt)
     : asm_(assembler), opt_(opt) {
   MPI_Comm comm = asm_.mesh().comm;
-  PetscCallAbort(comm, asm_.createMatrix(&K_));
-  for (Vec* v : {&R_, &q_, &duR_, &duq_, &dU_, &e_, &work_}) PetscCallAbort(comm, asm_.createVector(v));
-  PetscCallAbort(comm, KSPCreate(comm, &ksp_));
-  PetscCallAbort(comm, KSPSetOptionsPrefix(ksp_, "continuation_"));
-  PetscCallAbort(comm, useDirectSolver(ksp_));
-  PetscCallAbort(comm, KSPSetFromOptions(ksp_));
-  PetscCallAbort(comm, PetscOptionsGetReal(nullptr, nullptr, "-continuation_rtol", &rtol_, nullptr));
+  SinewCallThrow(comm, asm_.createMatrix(&K_));
+  for (Vec* v : {&R_, &q_, &duR_, &duq_, &dU_, &e_, &work_}) SinewCallThrow(comm, asm_.createVector(v));
+  SinewCallThrow(comm, KSPCreate(comm, &ksp_));
+  SinewCallThrow(comm, KSPSetOptionsPrefix(ksp_, "continuation_"));
+  SinewCallThrow(comm, useDirectSolver(ksp_));
+  SinewCallThrow(comm, KSPSetFromOptions(ksp_));
+  SinewCallThrow(comm, PetscOptionsGetReal(nullptr, nullptr, "-continuation_rtol", &rtol_, nullptr));
   PetscInt v = maxIts_;
-  PetscCallAbort(comm, PetscOptionsGetInt(nullptr, nullptr, "-continuation_max_it", &v, nullptr));
+  SinewCallThrow(comm, PetscOptionsGetInt(nullptr, nullptr, "-continuation_max_it", &v, nullptr));
   maxIts_ = static_cast<int>(v);
   v = maxCuts_;
-  PetscCallAbort(comm, PetscOptionsGetInt(nullptr, nullptr, "-max_cuts", &v, nullptr));
+  SinewCallThrow(comm, PetscOptionsGetInt(nullptr, nullptr, "-max_cuts", &v, nullptr));
   maxCuts_ = static_cast<int>(v);
   v = desiredIts_;
-  PetscCallAbort(comm, PetscOptionsGetInt(nullptr, nullptr, "-continuation_desired_its", &v, nullptr));
+  SinewCallThrow(comm, PetscOptionsGetInt(nullptr, nullptr, "-continuation_desired_its", &v, nullptr));
   desiredIts_ = static_cast<int>(std::max<PetscInt>(v, 1));
   PetscBool inertia = PETSC_TRUE;
-  PetscCallAbort(comm, PetscOptionsGetBool(nullptr, nullptr, "-continuation_inertia", &inertia, nullptr));
+  SinewCallThrow(comm, PetscOptionsGetBool(nullptr, nullptr, "-continuation_inertia", &inertia, nullptr));
   inertia_ = inertia;
   // the control DOF: a unit vector over the unknowns (the node's owner sets its entry)
   long local = 0;
   for (const LocalElement& el : asm_.mesh().elements) local += el.kernel->numConstraints();
   MPI_Allreduce(&local, &multipliers_, 1, MPI_LONG, MPI_SUM, comm);
-  PetscCallAbort(comm, VecSet(e_, 0.0));
+  SinewCallThrow(comm, VecSet(e_, 0.0));
   if (opt_.node >= 0) {
     const DistributedMesh& m = asm_.mesh();
     int found = 0;
@@ -46,14 +47,14 @@ ContinuationAnalysis::ContinuationAnalysis(Assembler& assembler, const Continuat
       if (n.sceneNode != opt_.node) continue;
       const int d = n.dof[opt_.direction];
       if (d >= 0) {
-        PetscCallAbort(comm, VecSetValue(e_, m.localToGlobalUnknown(d), 1.0, INSERT_VALUES));
+        SinewCallThrow(comm, VecSetValue(e_, m.localToGlobalUnknown(d), 1.0, INSERT_VALUES));
         found = 1;
       } else {
         found = -1;
       }
     }
-    PetscCallAbort(comm, VecAssemblyBegin(e_));
-    PetscCallAbort(comm, VecAssemblyEnd(e_));
+    SinewCallThrow(comm, VecAssemblyBegin(e_));
+    SinewCallThrow(comm, VecAssemblyEnd(e_));
     int any[2] = {found > 0, found < 0};
     MPI_Allreduce(MPI_IN_PLACE, any, 2, MPI_INT, MPI_MAX, comm);
     if (any[1] && !any[0])

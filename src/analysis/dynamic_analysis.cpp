@@ -1,5 +1,6 @@
 #include "analysis/solver_defaults.hpp"
 #include "analysis/dynamic_analysis.hpp"
+#include "mesh/collective_error.hpp"
 
 #include <cfloat>
 #include <cmath>
@@ -16,30 +17,30 @@ DynamicAnalysis::DynamicAnalysis(Assembler& assembler, const DynamicsOptions& op
   ls_.loadFactor = 1.0;  // loads act from t = 0 (step loads); user functions see t
   ls_.gravityRamped = false;
   MPI_Comm comm = asm_.mesh().comm;
-  PetscCallAbort(comm, asm_.createMatrix(&J_));
-  PetscCallAbort(comm, asm_.createVector(&F_));
-  for (Vec* v : {&Un_, &Vn_, &An_, &Qn_, &V1_, &A1_, &Q1_, &Cu_}) PetscCallAbort(comm, VecDuplicate(F_, v));
+  SinewCallThrow(comm, asm_.createMatrix(&J_));
+  SinewCallThrow(comm, asm_.createVector(&F_));
+  for (Vec* v : {&Un_, &Vn_, &An_, &Qn_, &V1_, &A1_, &Q1_, &Cu_}) SinewCallThrow(comm, VecDuplicate(F_, v));
   char scheme[64] = "arnold_bruls";
   PetscBool set = PETSC_FALSE;
-  PetscCallAbort(comm, PetscOptionsGetString(nullptr, nullptr, "-dynamics_scheme", scheme, sizeof(scheme), &set));
+  SinewCallThrow(comm, PetscOptionsGetString(nullptr, nullptr, "-dynamics_scheme", scheme, sizeof(scheme), &set));
   useTS_ = std::string(scheme) == "tsalpha2";
   if (!useTS_ && std::string(scheme) != "arnold_bruls")
     throw SceneError("-dynamics_scheme", "expected arnold_bruls or tsalpha2, got " + std::string(scheme));
   PetscInt cuts = maxCuts_;
-  PetscCallAbort(comm, PetscOptionsGetInt(nullptr, nullptr, "-max_cuts", &cuts, &set));
+  SinewCallThrow(comm, PetscOptionsGetInt(nullptr, nullptr, "-max_cuts", &cuts, &set));
   maxCuts_ = static_cast<int>(cuts);
   PetscInt grow = growAfter_;
-  PetscCallAbort(comm, PetscOptionsGetInt(nullptr, nullptr, "-dt_grow_after", &grow, &set));
+  SinewCallThrow(comm, PetscOptionsGetInt(nullptr, nullptr, "-dt_grow_after", &grow, &set));
   growAfter_ = static_cast<int>(grow);
   if (growAfter_ < 0) throw SceneError("-dt_grow_after", "expected a count >= 0, got " + std::to_string(growAfter_));
   PetscReal rtol = forceRtol_;
-  PetscCallAbort(comm, PetscOptionsGetReal(nullptr, nullptr, "-force_rtol", &rtol, &set));
+  SinewCallThrow(comm, PetscOptionsGetReal(nullptr, nullptr, "-force_rtol", &rtol, &set));
   forceRtol_ = rtol;
   // modified Newton pays where a Jacobian and its factorization cost much more than a residual and
   // a solve; measured (docs/ancf_cable2d.md): A3 with 64 elements (258 unknowns) 1.8x faster, 512
   // elements 1.4x, a 16-element pendulum (66 unknowns) 1.1x slower: auto = from 200 unknowns
   char modified[16] = "auto";
-  PetscCallAbort(comm, PetscOptionsGetString(nullptr, nullptr, "-dynamics_modified_newton", modified, sizeof(modified), &set));
+  SinewCallThrow(comm, PetscOptionsGetString(nullptr, nullptr, "-dynamics_modified_newton", modified, sizeof(modified), &set));
   const std::string mode = modified;
   modifiedNewton_ = mode == "true" || (mode == "auto" && asm_.mesh().numGlobalUnknowns >= 200);
   coordMax_ = asm_.coordinateScale();

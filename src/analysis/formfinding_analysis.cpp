@@ -8,6 +8,7 @@
 
 #include "elements/cable3d.hpp"
 #include "elements/membrane.hpp"
+#include "mesh/collective_error.hpp"
 
 namespace sinew {
 
@@ -77,10 +78,10 @@ FormFindingAnalysis::FormFindingAnalysis(Assembler& assembler, const FormFinding
   auto inList = [](const std::vector<int>& v, int s) { return std::find(v.begin(), v.end(), s) != v.end(); };
   // initial states (load factor 0): the reference of a NONE restart, initial areas, model size
   Vec U0;
-  PetscCallAbort(comm, asm_.createVector(&U0));
-  PetscCallAbort(comm, VecSet(U0, 0.0));
+  SinewCallThrow(comm, asm_.createVector(&U0));
+  SinewCallThrow(comm, VecSet(U0, 0.0));
   const double* u;
-  PetscCallAbort(comm, asm_.beginLocal(U0, ls_, &u));
+  SinewCallThrow(comm, asm_.beginLocal(U0, ls_, &u));
   std::array<double, 48> q;
   std::array<int, 32> idx;
   double quality = 1.0;
@@ -109,8 +110,8 @@ FormFindingAnalysis::FormFindingAnalysis(Assembler& assembler, const FormFinding
       lo[k] = std::min(lo[k], asm_.nodeState(i)[k]);
       hi[k] = std::max(hi[k], asm_.nodeState(i)[k]);
     }
-  PetscCallAbort(comm, asm_.endLocal(&u));
-  PetscCallAbort(comm, VecDestroy(&U0));
+  SinewCallThrow(comm, asm_.endLocal(&u));
+  SinewCallThrow(comm, VecDestroy(&U0));
   MPI_Allreduce(MPI_IN_PLACE, lo, 3, MPI_DOUBLE, MPI_MIN, comm);
   MPI_Allreduce(MPI_IN_PLACE, hi, 3, MPI_DOUBLE, MPI_MAX, comm);
   MPI_Allreduce(MPI_IN_PLACE, &quality, 1, MPI_DOUBLE, MPI_MIN, comm);
@@ -120,44 +121,44 @@ FormFindingAnalysis::FormFindingAnalysis(Assembler& assembler, const FormFinding
   long n = static_cast<long>(elems_.size());
   MPI_Allreduce(&n, &nff_, 1, MPI_LONG, MPI_SUM, comm);
 
-  PetscCallAbort(comm, asm_.createMatrix(&J_));
-  PetscCallAbort(comm, asm_.createVector(&F_));
-  PetscCallAbort(comm, asm_.createVector(&nrm_));
-  PetscCallAbort(comm, asm_.createVector(&mdiag_));
-  PetscCallAbort(comm, asm_.createVector(&moff_));
-  PetscCallAbort(comm, SNESCreate(comm, &snes_));
-  PetscCallAbort(comm, SNESSetOptionsPrefix(snes_, "ff_"));
-  PetscCallAbort(comm, SNESSetType(snes_, SNESNEWTONLS));
-  PetscCallAbort(comm, SNESSetFunction(snes_, F_, formFunction, this));
-  PetscCallAbort(comm, SNESSetJacobian(snes_, J_, J_, formJacobian, this));
-  PetscCallAbort(comm, SNESSetTolerances(snes_, 1e-50, 1e-50, 0.0, ff_.max_iter_equilibrium, 100000));
-  PetscCallAbort(comm, SNESSetDivergenceTolerance(snes_, -1.0));
+  SinewCallThrow(comm, asm_.createMatrix(&J_));
+  SinewCallThrow(comm, asm_.createVector(&F_));
+  SinewCallThrow(comm, asm_.createVector(&nrm_));
+  SinewCallThrow(comm, asm_.createVector(&mdiag_));
+  SinewCallThrow(comm, asm_.createVector(&moff_));
+  SinewCallThrow(comm, SNESCreate(comm, &snes_));
+  SinewCallThrow(comm, SNESSetOptionsPrefix(snes_, "ff_"));
+  SinewCallThrow(comm, SNESSetType(snes_, SNESNEWTONLS));
+  SinewCallThrow(comm, SNESSetFunction(snes_, F_, formFunction, this));
+  SinewCallThrow(comm, SNESSetJacobian(snes_, J_, J_, formJacobian, this));
+  SinewCallThrow(comm, SNESSetTolerances(snes_, 1e-50, 1e-50, 0.0, ff_.max_iter_equilibrium, 100000));
+  SinewCallThrow(comm, SNESSetDivergenceTolerance(snes_, -1.0));
   SNESLineSearch ls;
-  PetscCallAbort(comm, SNESGetLineSearch(snes_, &ls));
-  PetscCallAbort(comm, SNESLineSearchSetType(ls, SNESLINESEARCHBASIC));
-  PetscCallAbort(comm, SNESSetConvergenceTest(snes_, convergenceTest, this, nullptr));
+  SinewCallThrow(comm, SNESGetLineSearch(snes_, &ls));
+  SinewCallThrow(comm, SNESLineSearchSetType(ls, SNESLINESEARCHBASIC));
+  SinewCallThrow(comm, SNESSetConvergenceTest(snes_, convergenceTest, this, nullptr));
   KSP ksp;
   PC pc;
-  PetscCallAbort(comm, SNESGetKSP(snes_, &ksp));
-  PetscCallAbort(comm, KSPGetPC(ksp, &pc));
+  SinewCallThrow(comm, SNESGetKSP(snes_, &ksp));
+  SinewCallThrow(comm, KSPGetPC(ksp, &pc));
   if (asm_.mesh().numGlobalUnknowns > kIterativeAbove) {
     // Large models: GMRES + BoomerAMG. The form-finding systems are well conditioned (geometric
     // stiffness of a prestressed surface); on the 185k-unknown sail this is 1.47 s per step on
     // 2 ranks against 1.60 s for MUMPS, and scales 2.3x from 1 to 2 ranks (MUMPS: 1.4x).
-    PetscCallAbort(comm, KSPSetType(ksp, KSPGMRES));
-    PetscCallAbort(comm, KSPSetTolerances(ksp, 1e-12, 1e-50, PETSC_DEFAULT, 2000));
-    PetscCallAbort(comm, PCSetType(pc, PCHYPRE));
+    SinewCallThrow(comm, KSPSetType(ksp, KSPGMRES));
+    SinewCallThrow(comm, KSPSetTolerances(ksp, 1e-12, 1e-50, PETSC_DEFAULT, 2000));
+    SinewCallThrow(comm, PCSetType(pc, PCHYPRE));
   } else {
-    PetscCallAbort(comm, KSPSetType(ksp, KSPPREONLY));
-    PetscCallAbort(comm, PCSetType(pc, PCLU));
-    PetscCallAbort(comm, PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
+    SinewCallThrow(comm, KSPSetType(ksp, KSPPREONLY));
+    SinewCallThrow(comm, PCSetType(pc, PCLU));
+    SinewCallThrow(comm, PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
   }
   // MUMPS fill-reducing ordering: SCOTCH (ICNTL(7) = 3) unless the user chose one. Measured on the
   // sail (55k unknowns, docs/performance.md): the automatic choice factors 1.6-2.4x slower.
   PetscBool ordering = PETSC_FALSE;
-  PetscCallAbort(comm, PetscOptionsHasName(nullptr, "ff_", "-mat_mumps_icntl_7", &ordering));
-  if (!ordering) PetscCallAbort(comm, PetscOptionsSetValue(nullptr, "-ff_mat_mumps_icntl_7", "3"));
-  PetscCallAbort(comm, SNESSetFromOptions(snes_));
+  SinewCallThrow(comm, PetscOptionsHasName(nullptr, "ff_", "-mat_mumps_icntl_7", &ordering));
+  if (!ordering) SinewCallThrow(comm, PetscOptionsSetValue(nullptr, "-ff_mat_mumps_icntl_7", "3"));
+  SinewCallThrow(comm, SNESSetFromOptions(snes_));
 }
 
 FormFindingAnalysis::~FormFindingAnalysis() {

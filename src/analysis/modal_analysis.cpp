@@ -1,5 +1,6 @@
 #include "analysis/solver_defaults.hpp"
 #include "analysis/modal_analysis.hpp"
+#include "mesh/collective_error.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -86,34 +87,42 @@ double frequencyHz(double omega2, double zeroTol) {
 ModalAnalysis::ModalAnalysis(Assembler& assembler, int nfreq, bool writeResults)
     : asm_(assembler), write_(writeResults), nev_(nfreq) {
   MPI_Comm comm = asm_.mesh().comm;
-  PetscCallAbort(comm, asm_.createMatrix(&K_));
-  PetscCallAbort(comm, asm_.createMatrix(&M_));
-  PetscCallAbort(comm, MatCreateVecs(K_, &dK_, &dM_));
-  PetscCallAbort(comm, EPSCreate(comm, &eps_));
-  PetscCallAbort(comm, EPSSetProblemType(eps_, EPS_GHEP));
-  PetscCallAbort(comm, EPSSetDimensions(eps_, nfreq, PETSC_DEFAULT, PETSC_DEFAULT));
-  PetscCallAbort(comm, EPSSetWhichEigenpairs(eps_, EPS_TARGET_MAGNITUDE));
-  PetscCallAbort(comm, EPSSetTarget(eps_, 0.0));
-  PetscCallAbort(comm, EPSSetPurify(eps_, PETSC_TRUE));  // keeps the multipliers' infinite eigenvalues out
+  SinewCallThrow(comm, asm_.createMatrix(&K_));
+  SinewCallThrow(comm, asm_.createMatrix(&M_));
+  SinewCallThrow(comm, MatCreateVecs(K_, &dK_, &dM_));
+  SinewCallThrow(comm, EPSCreate(comm, &eps_));
+  SinewCallThrow(comm, EPSSetProblemType(eps_, EPS_GHEP));
+  SinewCallThrow(comm, EPSSetDimensions(eps_, nfreq, PETSC_DEFAULT, PETSC_DEFAULT));
+  SinewCallThrow(comm, EPSSetWhichEigenpairs(eps_, EPS_TARGET_MAGNITUDE));
+  SinewCallThrow(comm, EPSSetTarget(eps_, 0.0));
+  SinewCallThrow(comm, EPSSetPurify(eps_, PETSC_TRUE));  // keeps the multipliers' infinite eigenvalues out
   ST st;
   KSP ksp;
-  PetscCallAbort(comm, EPSGetST(eps_, &st));
-  PetscCallAbort(comm, STSetType(st, STSINVERT));
-  PetscCallAbort(comm, STSetMatStructure(st, SUBSET_NONZERO_PATTERN));  // pattern(M) within pattern(K)
-  PetscCallAbort(comm, STGetKSP(st, &ksp));
-  PetscCallAbort(comm, useDirectSolver(ksp));
-  PetscCallAbort(comm, EPSSetFromOptions(eps_));  // last: -eps_* and -st_* flags win
+  SinewCallThrow(comm, EPSGetST(eps_, &st));
+  SinewCallThrow(comm, STSetType(st, STSINVERT));
+  SinewCallThrow(comm, STSetMatStructure(st, SUBSET_NONZERO_PATTERN));  // pattern(M) within pattern(K)
+  SinewCallThrow(comm, STGetKSP(st, &ksp));
+  SinewCallThrow(comm, useDirectSolver(ksp));
+  SinewCallThrow(comm, EPSSetFromOptions(eps_));  // last: -eps_* and -st_* flags win
   PetscInt nev, ncv, mpd;
-  PetscCallAbort(comm, EPSGetDimensions(eps_, &nev, &ncv, &mpd));
+  SinewCallThrow(comm, EPSGetDimensions(eps_, &nev, &ncv, &mpd));
   nev_ = static_cast<int>(nev);
+  // never more pairs than unknowns (nfreq 100000 allocated that many vectors: 48 s, a 373 MB file)
+  const long N = asm_.mesh().numGlobalUnknowns;
+  if (nev_ > N) {
+    SinewCallThrow(comm, PetscPrintf(comm, "warning: %d natural frequencies asked for (nfreq), the model has %ld unknowns: "
+                                           "computing at most %ld\n", nev_, N, N));
+    nev_ = static_cast<int>(N);
+    SinewCallThrow(comm, EPSSetDimensions(eps_, nev_, ncv > N ? PETSC_DEFAULT : ncv, PETSC_DEFAULT));
+  }
   PetscBool set = PETSC_FALSE;
-  PetscCallAbort(comm, PetscOptionsHasName(nullptr, nullptr, "-eps_target", &set));
+  SinewCallThrow(comm, PetscOptionsHasName(nullptr, nullptr, "-eps_target", &set));
   userTarget_ = set;
   PetscReal rel = shiftRel_;
-  PetscCallAbort(comm, PetscOptionsGetReal(nullptr, nullptr, "-freq_shift_rel", &rel, &set));
+  SinewCallThrow(comm, PetscOptionsGetReal(nullptr, nullptr, "-freq_shift_rel", &rel, &set));
   shiftRel_ = rel;
   modes_.resize(nev_, nullptr);
-  for (Vec& v : modes_) PetscCallAbort(comm, MatCreateVecs(K_, &v, nullptr));
+  for (Vec& v : modes_) SinewCallThrow(comm, MatCreateVecs(K_, &v, nullptr));
 }
 
 ModalAnalysis::~ModalAnalysis() {
@@ -169,6 +178,37 @@ PetscErrorCode ModalAnalysis::shiftTarget(double* sigma, double* scale) {
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+// Finite eigenvalues: at most (unknowns with mass) - (constraint multipliers), every multiplier
+// removing one massive direction. Asking for more gives infinite eigenvalues, never frequencies:
+// the finite ones are computed, with a warning saying how many exist (issue 10 item 8; before /freq
+// gets its width at the first step).
+PetscErrorCode ModalAnalysis::clampToFiniteModes() {
+  PetscFunctionBeginUser;
+  const DistributedMesh& m = asm_.mesh();
+  const PetscScalar* d;
+  PetscCall(VecGetArrayRead(dM_, &d));
+  long counts[2] = {0, 0};  // rows with mass, node-DOF unknowns
+  for (int i = 0; i < m.numOwnedUnknowns; ++i) counts[0] += d[i] > 0;
+  PetscCall(VecRestoreArrayRead(dM_, &d));
+  for (int i = 0; i < m.numOwnedNodes; ++i)
+    for (int k = 0; k < m.nodes[i].ndof; ++k) counts[1] += m.nodes[i].dof[k] >= 0;
+  MPI_Allreduce(MPI_IN_PLACE, counts, 2, MPI_LONG, MPI_SUM, m.comm);
+  const long multipliers = m.numGlobalUnknowns - counts[1];
+  const long finite = counts[0] - multipliers;
+  if (finite < 1 || nev_ <= finite) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(PetscPrintf(m.comm,
+                        "warning: %d natural frequencies asked for, the model has %ld finite ones (%ld unknowns, %ld with "
+                        "mass, %ld constraint multipliers): computing %ld\n",
+                        nev_, finite, m.numGlobalUnknowns, counts[0], multipliers, finite));
+  for (int j = static_cast<int>(finite); j < nev_; ++j) PetscCall(VecDestroy(&modes_[j]));
+  nev_ = static_cast<int>(finite);
+  modes_.resize(nev_);
+  PetscInt nev, ncv, mpd;
+  PetscCall(EPSGetDimensions(eps_, &nev, &ncv, &mpd));
+  PetscCall(EPSSetDimensions(eps_, nev_, ncv > nev_ ? ncv : PETSC_DEFAULT, PETSC_DEFAULT));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode ModalAnalysis::atStep(Vec U, const LoadState& ls, ResultFile& file, bool* ok) {
   PetscFunctionBeginUser;
   ++step_;
@@ -176,6 +216,7 @@ PetscErrorCode ModalAnalysis::atStep(Vec U, const LoadState& ls, ResultFile& fil
   PetscCall(assemble(U, ls));
   double sigma = 0, scale = 1;
   PetscCall(shiftTarget(&sigma, &scale));
+  if (step_ == 1) PetscCall(clampToFiniteModes());
   if (!userTarget_) PetscCall(EPSSetTarget(eps_, sigma));
   PetscCall(EPSSetOperators(eps_, K_, M_));
   PetscCall(PetscLogEventBegin(SinewEvents::get().eigen, 0, 0, 0, 0));

@@ -51,6 +51,7 @@ class ModalAnalysis : public StepAnalysis {
  private:
   PetscErrorCode assemble(Vec U, const LoadState& ls);
   PetscErrorCode shiftTarget(double* sigma, double* scale);
+  PetscErrorCode clampToFiniteModes();
 
   Assembler& asm_;
   bool write_;

@@ -1,5 +1,6 @@
 #include "analysis/solver_defaults.hpp"
 #include "analysis/static_analysis.hpp"
+#include "mesh/collective_error.hpp"
 
 #include <algorithm>
 #include <cfloat>
@@ -10,40 +11,40 @@ namespace sinew {
 
 StaticAnalysis::StaticAnalysis(Assembler& assembler, int loadsteps) : asm_(assembler), loadsteps_(loadsteps) {
   MPI_Comm comm = asm_.mesh().comm;
-  PetscCallAbort(comm, asm_.createMatrix(&J_));
+  SinewCallThrow(comm, asm_.createMatrix(&J_));
   {  // rigid-body modes as near-null space: used by algebraic multigrid (-pc_type gamg), ignored by LU
     MatNullSpace nsp;
-    PetscCallAbort(comm, asm_.rigidBodyModes(&nsp));
-    PetscCallAbort(comm, MatSetNearNullSpace(J_, nsp));
-    PetscCallAbort(comm, MatNullSpaceDestroy(&nsp));
+    SinewCallThrow(comm, asm_.rigidBodyModes(&nsp));
+    SinewCallThrow(comm, MatSetNearNullSpace(J_, nsp));
+    SinewCallThrow(comm, MatNullSpaceDestroy(&nsp));
   }
-  PetscCallAbort(comm, asm_.createVector(&F_));
-  PetscCallAbort(comm, SNESCreate(comm, &snes_));
-  PetscCallAbort(comm, SNESSetType(snes_, SNESNEWTONLS));
-  PetscCallAbort(comm, SNESSetFunction(snes_, F_, formFunction, this));
-  PetscCallAbort(comm, SNESSetJacobian(snes_, J_, J_, formJacobian, this));
-  PetscCallAbort(comm, SNESSetTolerances(snes_, 1e-50, 1e-10, 1e-9, 50, 10000));
-  PetscCallAbort(comm, SNESSetDivergenceTolerance(snes_, -1.0));  // stiff axial modes make the first residual jump
+  SinewCallThrow(comm, asm_.createVector(&F_));
+  SinewCallThrow(comm, SNESCreate(comm, &snes_));
+  SinewCallThrow(comm, SNESSetType(snes_, SNESNEWTONLS));
+  SinewCallThrow(comm, SNESSetFunction(snes_, F_, formFunction, this));
+  SinewCallThrow(comm, SNESSetJacobian(snes_, J_, J_, formJacobian, this));
+  SinewCallThrow(comm, SNESSetTolerances(snes_, 1e-50, 1e-10, 1e-9, 50, 10000));
+  SinewCallThrow(comm, SNESSetDivergenceTolerance(snes_, -1.0));  // stiff axial modes make the first residual jump
   SNESLineSearch ls;
-  PetscCallAbort(comm, SNESGetLineSearch(snes_, &ls));
-  PetscCallAbort(comm, SNESLineSearchSetType(ls, SNESLINESEARCHBASIC));
-  PetscCallAbort(comm, SNESSetConvergenceTest(snes_, convergenceTest, this, nullptr));
+  SinewCallThrow(comm, SNESGetLineSearch(snes_, &ls));
+  SinewCallThrow(comm, SNESLineSearchSetType(ls, SNESLINESEARCHBASIC));
+  SinewCallThrow(comm, SNESSetConvergenceTest(snes_, convergenceTest, this, nullptr));
   KSP ksp;
-  PetscCallAbort(comm, SNESGetKSP(snes_, &ksp));
-  PetscCallAbort(comm, useDirectSolver(ksp, asm_.mesh()));
-  PetscCallAbort(comm, setUpElementwiseOperator());
-  PetscCallAbort(comm, SNESSetFromOptions(snes_));
+  SinewCallThrow(comm, SNESGetKSP(snes_, &ksp));
+  SinewCallThrow(comm, useDirectSolver(ksp, asm_.mesh()));
+  SinewCallThrow(comm, setUpElementwiseOperator());
+  SinewCallThrow(comm, SNESSetFromOptions(snes_));
   PetscReal rtol = forceRtol_;
   PetscBool set = PETSC_FALSE;
   PetscInt cuts = maxCuts_;
-  PetscCallAbort(comm, PetscOptionsGetReal(nullptr, nullptr, "-force_rtol", &rtol, &set));
-  PetscCallAbort(comm, PetscOptionsGetInt(nullptr, nullptr, "-max_cuts", &cuts, &set));
+  SinewCallThrow(comm, PetscOptionsGetReal(nullptr, nullptr, "-force_rtol", &rtol, &set));
+  SinewCallThrow(comm, PetscOptionsGetInt(nullptr, nullptr, "-max_cuts", &cuts, &set));
   forceRtol_ = rtol;
 
   PetscBool adaptive = PETSC_TRUE;
   PetscInt growIts = growIts_;
-  PetscCallAbort(comm, PetscOptionsGetBool(nullptr, nullptr, "-adaptive_increments", &adaptive, &set));
-  PetscCallAbort(comm, PetscOptionsGetInt(nullptr, nullptr, "-increment_grow_its", &growIts, &set));
+  SinewCallThrow(comm, PetscOptionsGetBool(nullptr, nullptr, "-adaptive_increments", &adaptive, &set));
+  SinewCallThrow(comm, PetscOptionsGetInt(nullptr, nullptr, "-increment_grow_its", &growIts, &set));
   adaptive_ = adaptive;
   growIts_ = static_cast<int>(growIts);
   maxCuts_ = static_cast<int>(cuts);
@@ -51,7 +52,7 @@ StaticAnalysis::StaticAnalysis(Assembler& assembler, int loadsteps) : asm_(assem
   // Newton with mixed stresses (beams): see Assembler::setMixedStressNewton; -newton_mixed_stresses false
   // restores the displacement-based tangent
   PetscBool mixed = PETSC_TRUE;
-  PetscCallAbort(comm, PetscOptionsGetBool(nullptr, nullptr, "-newton_mixed_stresses", &mixed, &set));
+  SinewCallThrow(comm, PetscOptionsGetBool(nullptr, nullptr, "-newton_mixed_stresses", &mixed, &set));
   asm_.setMixedStressNewton(mixed);
   // The secant predictor extrapolates positions and rotation vectors additively: for beams that
   // stretches the elements (the spurious axial force the mixed-stress tangent keeps out of the
@@ -60,11 +61,11 @@ StaticAnalysis::StaticAnalysis(Assembler& assembler, int loadsteps) : asm_(assem
   // mixed-stress Newton, on otherwise.
   const bool beamsMixed = mixed && asm_.hasMixedStressKernels();
   PetscBool predictor = beamsMixed ? PETSC_FALSE : PETSC_TRUE;
-  PetscCallAbort(comm, PetscOptionsGetBool(nullptr, nullptr, "-predictor", &predictor, &set));
+  SinewCallThrow(comm, PetscOptionsGetBool(nullptr, nullptr, "-predictor", &predictor, &set));
   predictor_ = predictor;
   divergedIts_ = beamsMixed ? 6 : 0;
   PetscInt divergedIts = divergedIts_;
-  PetscCallAbort(comm, PetscOptionsGetInt(nullptr, nullptr, "-newton_diverged_its", &divergedIts, &set));
+  SinewCallThrow(comm, PetscOptionsGetInt(nullptr, nullptr, "-newton_diverged_its", &divergedIts, &set));
   divergedIts_ = static_cast<int>(divergedIts);
 }
 

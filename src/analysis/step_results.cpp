@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "sinew/rotation.hpp"
+#include "mesh/collective_error.hpp"
 
 namespace sinew {
 
@@ -20,22 +21,22 @@ int cellKindOf(const LocalElement& el) { return el.numNodes == 2 ? 0 : (el.numNo
 
 StepResults::StepResults(Assembler& assembler, const StepResultOptions& opts) : asm_(assembler), opts_(opts) {
   DistributedMesh& m = asm_.mesh();
-  PetscCallAbort(m.comm, asm_.createFullVector(&full_));
+  SinewCallThrow(m.comm, asm_.createFullVector(&full_));
   // scene element rows: contiguous ranges
   PetscLayout layout;
-  PetscCallAbort(m.comm, PetscLayoutCreate(m.comm, &layout));
-  PetscCallAbort(m.comm, PetscLayoutSetSize(layout, static_cast<PetscInt>(m.numSceneElements)));
-  PetscCallAbort(m.comm, PetscLayoutSetUp(layout));
-  PetscCallAbort(m.comm, PetscLayoutGetRange(layout, &elemLo_, &elemHi_));
+  SinewCallThrow(m.comm, PetscLayoutCreate(m.comm, &layout));
+  SinewCallThrow(m.comm, PetscLayoutSetSize(layout, static_cast<PetscInt>(m.numSceneElements)));
+  SinewCallThrow(m.comm, PetscLayoutSetUp(layout));
+  SinewCallThrow(m.comm, PetscLayoutGetRange(layout, &elemLo_, &elemHi_));
   if (opts_.stress) {
     std::vector<PetscInt> remote(m.elements.size());
     for (size_t e = 0; e < m.elements.size(); ++e) remote[e] = m.elements[e].sceneElement;
-    PetscCallAbort(m.comm, PetscSFCreate(m.comm, &stressSF_));
-    PetscCallAbort(m.comm, PetscSFSetGraphLayout(stressSF_, layout, static_cast<PetscInt>(remote.size()), nullptr,
+    SinewCallThrow(m.comm, PetscSFCreate(m.comm, &stressSF_));
+    SinewCallThrow(m.comm, PetscSFSetGraphLayout(stressSF_, layout, static_cast<PetscInt>(remote.size()), nullptr,
                                                  PETSC_COPY_VALUES, remote.data()));
-    PetscCallAbort(m.comm, PetscSFSetUp(stressSF_));
+    SinewCallThrow(m.comm, PetscSFSetUp(stressSF_));
   }
-  PetscCallAbort(m.comm, PetscLayoutDestroy(&layout));
+  SinewCallThrow(m.comm, PetscLayoutDestroy(&layout));
   for (const LocalElement& el : m.elements) ++cellCounts_[cellKindOf(el)];
   for (int i = 0; i < m.numOwnedNodes; ++i) {
     const LocalNode& n = m.nodes[i];

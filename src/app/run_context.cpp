@@ -1,6 +1,7 @@
 #include "app/run_context.hpp"
 
 #include "app/interrupt.hpp"
+#include "mesh/collective_error.hpp"
 
 namespace sinew {
 
@@ -8,11 +9,13 @@ PetscErrorCode RunContext::writeStep(double stepValue, Vec Ustate, const LoadSta
   PetscFunctionBeginUser;
   const double tOut = MPI_Wtime();
   file.beginStep(nextStep++, stepValue);
+  PhaseScope phase("the output of the results");
   PetscCall(results.write(file, Ustate, ls));
   times.output += MPI_Wtime() - tOut;
   for (auto& a : stepAnalyses) {
     const double ta = MPI_Wtime();
     bool ok = true;
+    PhaseScope analysisPhase(a->name());
     PetscCall(a->atStep(Ustate, ls, file, &ok));
     times.analyses += MPI_Wtime() - ta;
     if (!ok && converged) {

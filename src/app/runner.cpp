@@ -24,6 +24,7 @@
 #include "assembly/kernel_factory.hpp"
 #include "elements/ancf_cable2d.hpp"
 #include "elements/beam_section.hpp"
+#include "mesh/collective_error.hpp"
 #include "mesh/distributed_mesh.hpp"
 #include "mesh/fe_mesh.hpp"
 #include "output/output_target.hpp"
@@ -110,8 +111,11 @@ PetscErrorCode reportSingularModel(MPI_Comm comm, int rank, const std::string& m
 /// non-finite). A non-finite one (a user function dividing by zero, a property overflowing) is no mechanism: the analysis fails
 /// on it (exit 3) with its own message on every rank count, where the constraint check would call the
 /// model singular on some (MUMPS refuses to factor a tangent with Inf/NaN, PETSc's serial LU does not).
-PetscErrorCode finiteAtReference(Assembler& assembler, bool* finite) {
+/// A force law that is not finite here (at t = 0) is named in *law (the analysis starts at t > 0 and
+/// fails on it there if it stays non-finite).
+PetscErrorCode finiteAtReference(Assembler& assembler, bool* finite, std::string* law) {
   PetscFunctionBeginUser;
+  assembler.setNonFiniteLawsFatal(false);
   Vec U0, F;
   Mat J;
   PetscCall(assembler.createVector(&U0));
@@ -123,7 +127,9 @@ PetscErrorCode finiteAtReference(Assembler& assembler, bool* finite) {
   PetscCall(assembler.createMatrix(&J));
   PetscCall(assembler.jacobian(U0, LoadState{}, J));
   PetscCall(MatNorm(J, NORM_FROBENIUS, &jn));
-  *finite = std::isfinite(fn) && std::isfinite(jn);
+  *law = assembler.nonFiniteLaw();
+  assembler.setNonFiniteLawsFatal(true);
+  *finite = std::isfinite(fn) && std::isfinite(jn) && law->empty();
   PetscCall(MatDestroy(&J));
   PetscCall(VecDestroy(&F));
   PetscCall(VecDestroy(&U0));
@@ -157,11 +163,14 @@ PetscErrorCode checkModelBeforeRun(const Model& model, const Plan& plan, Assembl
   if (!checkModel || model.opt.showinputonly || !(plan.statics || formfinding)) PetscFunctionReturn(PETSC_SUCCESS);
   const double tCheck = MPI_Wtime();
   bool finite = true;
-  PetscCall(finiteAtReference(assembler, &finite));
+  std::string law;
+  PetscCall(finiteAtReference(assembler, &finite, &law));
   if (!finite) {
     times->check = MPI_Wtime() - tCheck;
+    if (law.rfind("error: ", 0) == 0) law = law.substr(7);
     if (!model.opt.silent)
-      PetscCall(PetscPrintf(comm, "  note: constraint check skipped: the residual or tangent at the reference state is not finite (Inf/NaN, or tangent entries above 1e154)\n"));
+      PetscCall(PetscPrintf(comm, "  note: constraint check skipped: the residual or tangent at the reference state is not finite (%s)\n",
+                            law.empty() ? "Inf/NaN, or tangent entries above 1e154" : law.c_str()));
     PetscFunctionReturn(PETSC_SUCCESS);
   }
   ConstraintReport check;
@@ -217,9 +226,7 @@ PetscErrorCode checkLoadedModelAfterFormFinding(RunContext& ctx, const Constrain
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-}  // namespace
-
-PetscErrorCode runFromCommandLine(int argc, char** argv, int* exitCode) {
+PetscErrorCode runScene(int argc, char** argv, int* exitCode) {
   PetscFunctionBeginUser;
   MPI_Comm comm = PETSC_COMM_WORLD;
   *exitCode = 0;
@@ -254,11 +261,10 @@ PetscErrorCode runFromCommandLine(int argc, char** argv, int* exitCode) {
     setupError = std::string("error: ") + ex.what();
     *exitCode = 1;
   }
-  int bad = *exitCode;
-  MPI_Allreduce(MPI_IN_PLACE, &bad, 1, MPI_INT, MPI_MAX, comm);
-  if (bad) {
-    PetscCall(PetscPrintf(comm, "%s\n", setupError.empty() ? "error: scene set-up failed on another rank" : setupError.c_str()));
-    *exitCode = bad;
+  // every rank ends with the message and exit code of the lowest failing rank
+  if (const RunFailure f = agreeOnFailure(comm, RunFailure{*exitCode, setupError})) {
+    PetscCall(PetscPrintf(comm, "%s\n", f.message.c_str()));
+    *exitCode = f.exitCode;
     PetscFunctionReturn(PETSC_SUCCESS);
   }
   PetscCall(PetscLogEventEnd(SinewEvents::get().setup, 0, 0, 0, 0));
@@ -313,7 +319,10 @@ PetscErrorCode runFromCommandLine(int argc, char** argv, int* exitCode) {
 
   // Mechanisms and redundant constraints are model errors (exit 2), found before any file exists.
   ConstraintCheckSetting check;
-  PetscCall(checkModelBeforeRun(model, plan, assembler, h5, &check, &times, exitCode));
+  {
+    PhaseScope checkPhase("the constraint check");
+    PetscCall(checkModelBeforeRun(model, plan, assembler, h5, &check, &times, exitCode));
+  }
   if (*exitCode) PetscFunctionReturn(PETSC_SUCCESS);
 
   std::unique_ptr<ResultFile> file;
@@ -338,7 +347,10 @@ PetscErrorCode runFromCommandLine(int argc, char** argv, int* exitCode) {
   ctx.guardedWrite([&] { file->writeArray("node/p0", p0, {static_cast<long>(initialPositions.size()), 3}); });
   PetscCall(assembler.createVector(&ctx.U));
   PetscCall(VecSet(ctx.U, 0.0));
-  PetscCall(addStepAnalyses(ctx));
+  {
+    PhaseScope phase("the set-up of the analyses");
+    PetscCall(addStepAnalyses(ctx));
+  }
   if (!ctx.ioError.empty()) {
     // nothing to do: the file error is reported below
   } else if (model.opt.showinputonly) {
@@ -351,14 +363,19 @@ PetscErrorCode runFromCommandLine(int argc, char** argv, int* exitCode) {
     PetscCall(ierr);
   } else {
     if (plan.formfinding) {
+      PhaseScope phase("form finding");
       PetscCall(runFormFinding(ctx));
+      PhaseScope checkAfter("the constraint check after form finding");
       PetscCall(checkLoadedModelAfterFormFinding(ctx, check, &modelError));
     }
     if (ctx.converged && plan.dynamics) {
+      PhaseScope phase("dynamics");
       PetscCall(runDynamics(ctx));
     } else if (ctx.converged && plan.continuation) {
+      PhaseScope phase("path following");
       PetscCall(runContinuation(ctx));
     } else if (ctx.converged && plan.statics) {
+      PhaseScope phase("statics");
       const double tStatics = MPI_Wtime();
       const double outBefore = ctx.times.output, anaBefore = ctx.times.analyses;
       StaticAnalysis statics(assembler, model.opt.loadsteps);
@@ -391,6 +408,7 @@ PetscErrorCode runFromCommandLine(int argc, char** argv, int* exitCode) {
           LoadState ls;
           ls.loadFactor = ls.time = ctx.reports.empty() ? 0.0 : ctx.reports.back().loadFactor;
           ConstraintReport report;
+          PhaseScope checkAfter("the constraint check after the failed step");
           PetscCall(checkConstraints(assembler, model, ctx.U, ls, &report));
           if (report.singular) {
             ctx.failure += "\n" + report.message;
@@ -459,6 +477,35 @@ PetscErrorCode runFromCommandLine(int argc, char** argv, int* exitCode) {
   PetscCall(VecDestroy(&ctx.U));
   const bool converged = ctx.converged;
   *exitCode = converged ? 0 : (modelError ? 2 : 3);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/// A PETSc error that every rank returned (a rank that could not reach the others was ended by the
+/// solver error handler): rank 0 prints the recorded message; returns the run's exit code.
+int reportRunFailure(MPI_Comm comm, PetscErrorCode ierr) {
+  RunFailure f = recordedFailure();
+  if (!f)
+    f = {kExitSolverError, "error: internal solver error in " + std::string(currentPhase()) + " (PETSc error " +
+                               std::to_string(static_cast<int>(ierr)) + ")"};
+  PetscPrintf(comm, "%s\n", f.message.c_str());
+  return f.exitCode;
+}
+
+}  // namespace
+
+PetscErrorCode runFromCommandLine(int argc, char** argv, int* exitCode) {
+  PetscFunctionBeginUser;
+  // PETSc/SLEPc errors: recorded with the phase, returned on every rank together, reported once
+  // (exit 4; exit 3 for a non-finite element force law). 10 s: how long a failing rank waits for the
+  // others before it ends the job alone (they wait in a collective it will never join).
+  SolverErrorGuard guard(PETSC_COMM_WORLD, 10.0);
+  PetscErrorCode ierr = PETSC_SUCCESS;
+  try {
+    ierr = runScene(argc, argv, exitCode);
+  } catch (const SolverCallError& e) {  // a constructor's PETSc call failed (SinewCallThrow)
+    ierr = e.code();
+  }
+  if (ierr) *exitCode = reportRunFailure(PETSC_COMM_WORLD, ierr);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "sinew/rotation.hpp"
+#include "mesh/collective_error.hpp"
 
 namespace sinew {
 
@@ -76,11 +77,11 @@ Assembler::Assembler(DistributedMesh& mesh, const std::optional<Vec3>& gravity) 
   MPI_Allreduce(MPI_IN_PLACE, &coordMax_, 1, MPI_DOUBLE, MPI_MAX, mesh_.comm);
   hasInertia_ = inertia != 0;
   initLoads();
-  PetscCallAbort(mesh_.comm, createVector(&uWork_));
-  PetscCallAbort(mesh_.comm, VecDuplicate(uWork_, &fWork_));
-  PetscCallAbort(mesh_.comm, createFullVector(&fullWork_));
+  SinewCallThrow(mesh_.comm, createVector(&uWork_));
+  SinewCallThrow(mesh_.comm, VecDuplicate(uWork_, &fWork_));
+  SinewCallThrow(mesh_.comm, createFullVector(&fullWork_));
   PetscBool coo = PETSC_TRUE;
-  PetscCallAbort(mesh_.comm, PetscOptionsGetBool(nullptr, nullptr, "-assembly_coo", &coo, nullptr));
+  SinewCallThrow(mesh_.comm, PetscOptionsGetBool(nullptr, nullptr, "-assembly_coo", &coo, nullptr));
   // the same decision on every rank (the COO calls are collective): no rank has cables, pressure
   // elements or ANCF nodes (their node and load tangents are added outside the element blocks)
   int cooOk = coo && !mesh_.anyAncf && pressureElems_.empty() && cableElems_.empty();
@@ -88,7 +89,7 @@ Assembler::Assembler(DistributedMesh& mesh, const std::optional<Vec3>& gravity) 
   cooAssembly_ = cooOk != 0;
   std::vector<PetscInt> l2g(mesh_.numLocalUnknowns());
   for (int i = 0; i < mesh_.numLocalUnknowns(); ++i) l2g[i] = static_cast<PetscInt>(mesh_.localToGlobalUnknown(i));
-  PetscCallAbort(mesh_.comm, ISLocalToGlobalMappingCreate(mesh_.comm, 1, static_cast<PetscInt>(l2g.size()), l2g.data(),
+  SinewCallThrow(mesh_.comm, ISLocalToGlobalMappingCreate(mesh_.comm, 1, static_cast<PetscInt>(l2g.size()), l2g.data(),
                                                           PETSC_COPY_VALUES, &l2g_));
 }
 
@@ -363,7 +364,7 @@ PetscErrorCode Assembler::assembleForces(const double* u, const LoadState& ls, T
     KernelInput in{q.data(), gatherVelocity(el, idx.data(), qdot.data()),
                    el.firstMultiplier >= 0 ? u + el.firstMultiplier : nullptr, ls.time};
     in.disp = elemDisp_.data();
-    el.kernel->evaluate(in, needs, out_);
+    evaluateElement(el, in, needs);
     const int nd = el.kernel->numDofs(), nc = el.kernel->numConstraints();
     const int* map = target == Target::Residual ? idx.data() : fidx.data();
     for (int k = 0; k < nd; ++k) {
@@ -397,10 +398,59 @@ PetscErrorCode Assembler::assembleForces(const double* u, const LoadState& ls, T
     }
   }
   if (anyPressure_) fext2 += addPressureForces(ls, target, out);
-  double norms[2] = {fint2, fext2};
-  MPI_Allreduce(MPI_IN_PLACE, norms, 2, MPI_DOUBLE, MPI_SUM, mesh_.comm);
+  // third entry: ranks with a non-finite force law in this assembly (agreeElementValues needs no
+  // reduction of its own after a residual)
+  double norms[3] = {fint2, fext2, elementValueError_.empty() ? 0.0 : 1.0};
+  MPI_Allreduce(MPI_IN_PLACE, norms, 3, MPI_DOUBLE, MPI_SUM, mesh_.comm);
   fextNorm_ = std::sqrt(norms[1]);
   fintNorm_ = std::sqrt(norms[0]);
+  elementValueErrorKnown_ = true;
+  anyElementValueError_ = norms[2] > 0.0;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+void Assembler::evaluateElement(const LocalElement& el, const KernelInput& in, const KernelNeeds& needs) {
+  try {
+    el.kernel->evaluate(in, needs, out_);
+  } catch (const ElementValueError& ex) {
+    if (elementValueError_.empty()) {
+      elementValueError_ = "error: " + ex.law() + (el.set >= 0 ? " of eprops[" + std::to_string(el.set) + "]" : std::string()) +
+                           " returned " + ex.returned() + ", which is not finite, at element " + std::to_string(el.sceneElement + 1);
+      if (el.numSub > 1)
+        elementValueError_ += " (part " + std::to_string(el.subIndex + 1) + " of " + std::to_string(el.numSub) + ")";
+      elementValueError_ += ", " + ex.where();
+      elementValueErrorAt_ = el.feIndex;
+    }
+    // zeros of the right sizes: the assembly completes on this rank, agreeElementValues ends it
+    const size_t n = static_cast<size_t>(el.kernel->numDofs() + el.kernel->numConstraints());
+    const size_t nd = static_cast<size_t>(el.kernel->numDofs());
+    out_.f.assign(n, 0.0);
+    if (needs.tangent) out_.K.assign(n * n, 0.0);
+    if (needs.splitGeometric) out_.Kg.assign(n * n, 0.0);
+    if (needs.damping) out_.D.assign(nd * nd, 0.0);
+  }
+}
+
+PetscErrorCode Assembler::agreeElementValues() {
+  PetscFunctionBeginUser;
+  if (elementValueErrorKnown_) {  // a residual assembly reduced it already
+    elementValueErrorKnown_ = false;
+    if (!anyElementValueError_) PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  RunFailure local;
+  if (!elementValueError_.empty()) local = {3, elementValueError_};
+  elementValueError_.clear();
+  const long at = elementValueErrorAt_;
+  elementValueErrorAt_ = -1;
+  if (RunFailure f = agreeOnFailure(mesh_.comm, local, at)) {
+    if (!nonFiniteLawsFatal_) {
+      if (nonFiniteLaw_.empty()) nonFiniteLaw_ = f.message;
+      PetscFunctionReturn(PETSC_SUCCESS);
+    }
+    f.message += "; the analysis cannot continue (every user function must give finite values over the states the "
+                 "solver visits)";
+    return raiseCollective(mesh_.comm, f);
+  }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -460,6 +510,7 @@ PetscErrorCode Assembler::residual(Vec U, const LoadState& ls, Vec F) {
   PetscCall(VecGhostUpdateEnd(fWork_, ADD_VALUES, SCATTER_REVERSE));
   PetscCall(VecCopy(fWork_, F));
   PetscCall(PetscLogEventEnd(SinewEvents::get().residual, 0, 0, 0, 0));
+  PetscCall(agreeElementValues());
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -483,6 +534,7 @@ PetscErrorCode Assembler::fullResidual(Vec U, const LoadState& ls, Vec Ffull) {
   PetscCall(VecGhostUpdateBegin(fullWork_, ADD_VALUES, SCATTER_REVERSE));
   PetscCall(VecGhostUpdateEnd(fullWork_, ADD_VALUES, SCATTER_REVERSE));
   PetscCall(VecCopy(fullWork_, Ffull));
+  PetscCall(agreeElementValues());
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -517,7 +569,7 @@ PetscErrorCode Assembler::jacobian(Vec U, const LoadState& ls, Mat J) {
       el.kernel->linearizedStresses(mixedRefValid_ ? q0.data() : nullptr, q.data(), sigmaMixed.data());
       in.sigmaMixed = sigmaMixed.data();
     }
-    el.kernel->evaluate(in, needs, out_);
+    evaluateElement(el, in, needs);
     const int n = el.kernel->numDofs() + el.kernel->numConstraints();
     rotationColumns(el, n, out_.K.data());
     if (keepBlocks_) {
@@ -550,6 +602,7 @@ PetscErrorCode Assembler::jacobian(Vec U, const LoadState& ls, Mat J) {
     PetscCall(MatAssemblyEnd(J, MAT_FINAL_ASSEMBLY));
   }
   PetscCall(PetscLogEventEnd(SinewEvents::get().jacobian, 0, 0, 0, 0));
+  PetscCall(agreeElementValues());
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -628,7 +681,7 @@ PetscErrorCode Assembler::splitTangent(Vec U, const LoadState& ls, Mat Km, Mat K
     gatherElement(el, q.data(), u, idx.data(), nullptr);
     KernelInput in{q.data(), nullptr, el.firstMultiplier >= 0 ? u + el.firstMultiplier : nullptr, ls.time};
     in.disp = elemDisp_.data();
-    el.kernel->evaluate(in, needs, out_);
+    evaluateElement(el, in, needs);
     const int n = el.kernel->numDofs() + el.kernel->numConstraints();
     rotationColumns(el, n, out_.K.data());
     rotationColumns(el, n, out_.Kg.data());
@@ -642,6 +695,7 @@ PetscErrorCode Assembler::splitTangent(Vec U, const LoadState& ls, Mat Km, Mat K
     PetscCall(MatAssemblyEnd(A, MAT_FINAL_ASSEMBLY));
   }
   PetscCall(PetscLogEventEnd(SinewEvents::get().splitTangent, 0, 0, 0, 0));
+  PetscCall(agreeElementValues());
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

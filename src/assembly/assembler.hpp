@@ -9,6 +9,7 @@
 
 #include <array>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "mesh/distributed_mesh.hpp"
@@ -152,6 +153,14 @@ class Assembler {
   double internalForceNorm() const { return fintNorm_; }
   /// Some local or remote membrane carries a pressure (then residual and Jacobian have load terms).
   bool hasPressure() const { return anyPressure_; }
+  /// true (default): a non-finite force law ends the run at the end of the assembly (exit 3).
+  /// false: it is agreed on and kept in nonFiniteLaw() (the message, "" when none), the element's
+  /// contribution zero; for a probe of the reference state whose time t = 0 the analysis never uses.
+  void setNonFiniteLawsFatal(bool fatal) {
+    nonFiniteLawsFatal_ = fatal;
+    nonFiniteLaw_.clear();
+  }
+  const std::string& nonFiniteLaw() const { return nonFiniteLaw_; }
   /// Newton regularization of slack cables in elastic analyses: k = slackStiffness * EA / L (or
   /// * N0 / L when EA = 0) added to the Jacobian only (the residual, hence the solution, is exact).
   void setSlackStiffness(double s) { slackStiffness_ = s; }
@@ -168,6 +177,12 @@ class Assembler {
   /// Element state (kernel layout) from a node-state array laid out like state_.
   void gatherStates(const LocalElement& el, const double* states, double* q) const;
   PetscErrorCode assembleForces(const double* u, const LoadState& ls, Target target, double* out);
+  /// el.kernel->evaluate into out_; a force law that is not finite (ElementValueError) is recorded
+  /// (the first element of this rank) and out_ holds zeros of the right sizes.
+  void evaluateElement(const LocalElement& el, const KernelInput& in, const KernelNeeds& needs);
+  /// Collective, at the end of every assembly: a non-finite force law on any rank ends the run on
+  /// every rank (exit 3, the message of the lowest such element: the same on any number of ranks).
+  PetscErrorCode agreeElementValues();
   // assembler_pressure.cpp: surface pressure (follower) and slack-cable regularization
   void initLoads();
   double addPressureForces(const LoadState& ls, Target target, double* out);
@@ -193,6 +208,11 @@ class Assembler {
   std::vector<Mat3> Rref_, T_;
   std::vector<char> hasTheta_;
   KernelOutput out_;
+  std::string elementValueError_;  // first non-finite force law of the current assembly on this rank
+  long elementValueErrorAt_ = -1;  // its global FE element index
+  bool elementValueErrorKnown_ = false, anyElementValueError_ = false;  // set by assembleForces' reduction
+  bool nonFiniteLawsFatal_ = true;
+  std::string nonFiniteLaw_;
   const double* vLocal_ = nullptr;  // local form of the velocities while a dynamic evaluation runs
   AssemblyCounters counters_;
   double fextNorm_ = 0, fintNorm_ = 0;

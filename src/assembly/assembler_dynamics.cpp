@@ -88,6 +88,7 @@ PetscErrorCode Assembler::dynamicResidual(Vec U, Vec V, Vec A, const LoadState& 
   PetscCall(VecGhostUpdateEnd(fWork_, ADD_VALUES, SCATTER_REVERSE));
   PetscCall(VecCopy(fWork_, F));
   PetscCall(PetscLogEventEnd(SinewEvents::get().residual, 0, 0, 0, 0));
+  PetscCall(agreeElementValues());
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -117,7 +118,7 @@ PetscErrorCode Assembler::dynamicJacobian(Vec U, Vec V, const LoadState& ls, dou
     KernelInput in{q.data(), gatherVelocity(el, idx.data(), qdot.data()),
                    el.firstMultiplier >= 0 ? u + el.firstMultiplier : nullptr, ls.time};
     in.disp = elemDisp_.data();
-    el.kernel->evaluate(in, needs, out_);
+    evaluateElement(el, in, needs);
     const int nd = el.kernel->numDofs(), n = nd + el.kernel->numConstraints();
     rotationColumns(el, n, out_.K.data());
     if (needs.damping)
@@ -148,6 +149,7 @@ PetscErrorCode Assembler::dynamicJacobian(Vec U, Vec V, const LoadState& ls, dou
   PetscCall(MatAssemblyBegin(J, MAT_FINAL_ASSEMBLY));
   PetscCall(MatAssemblyEnd(J, MAT_FINAL_ASSEMBLY));
   PetscCall(PetscLogEventEnd(SinewEvents::get().jacobian, 0, 0, 0, 0));
+  PetscCall(agreeElementValues());
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -3,13 +3,22 @@
 
 #include <atomic>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
+#include <string>
 
 namespace sinew {
 
 namespace {
 // force-law evaluation counters of this process (AncfCable2D::evaluationCounts)
 std::atomic<long> gUserFunctionCalls{0}, gDampingTerms{0};
+
+std::string number(double v) {
+  if (std::isnan(v)) return "nan";
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.6g", v);
+  return buf;
+}
 
 // Integration rules on [-1, 1] (Exudyn's gaussRuleOrder9/7/5/3 and the 3-point Lobatto rule).
 struct Rule {
@@ -324,6 +333,31 @@ struct AncfCable2D::Law {
     }
     return v;
   }
+  // A force law that is not finite (its value, or with a tangent/damping the derivatives used) ends
+  // the evaluation: the assembler reports it with the set, element and time instead of letting
+  // inf/NaN reach the solvers (issue 13 item 6). strain / curvature: whether s holds them here.
+  static void check(const AncfCable2DParameters& p, const UserFunctionValue& v, bool axialLaw, double t,
+                    const PointState& s, bool strain, bool curvature, bool derivatives) {
+    const double d[4] = {v.dAxialStrain, v.dAxialStrain_t, v.dCurvature, v.dCurvature_t};
+    static const char* dNames[4] = {"axialStrain", "axialStrain_t", "curvature", "curvature_t"};
+    int bad = -1;
+    for (int k = 0; derivatives && k < 4 && bad < 0; ++k)
+      if (!std::isfinite(d[k])) bad = k;
+    if (std::isfinite(v.value) && bad < 0) return;
+    // a non-finite state (a diverging Newton update) is not the law's doing: the solver handles it
+    if (!std::isfinite(t) || (strain && !std::isfinite(s.eps)) || (curvature && !std::isfinite(s.kap))) return;
+    const Expression* user = axialLaw ? p.axialForceUserFunction.get() : p.bendingMomentUserFunction.get();
+    const std::string law = user ? user->name() + " \"" + user->text() + "\""
+                            : axialLaw ? "the axial force physicsAxialStiffness*(axialStrain - axialStrainRef)"
+                                       : "the bending moment physicsBendingStiffness*(curvature - curvatureRef)";
+    const std::string returned = !std::isfinite(v.value)
+                                     ? number(v.value)
+                                     : "a non-finite derivative (d/d" + std::string(dNames[bad]) + " = " + number(d[bad]) + ")";
+    std::string where = "time t = " + number(t);
+    if (strain) where += ", axialStrain = " + number(s.eps);
+    if (curvature) where += ", curvature = " + number(s.kap);
+    throw ElementValueError(law, returned, where);
+  }
 };
 
 AncfCable2D::EvaluationCounts AncfCable2D::evaluationCounts() {
@@ -345,6 +379,7 @@ void AncfCable2D::evaluate(const KernelInput& in, const KernelNeeds& needs, Kern
     axialState(P.Sx, q, qd, s);
     if (axialNeedsCurvature_) bendingState(P.Sx, P.Sxx, q, qd, wantK, s);
     const UserFunctionValue N = Law::axial(p_, in.t, P.x / L_, s, P.strainRef, P.curvatureRef);
+    Law::check(p_, N, true, in.t, s, true, axialNeedsCurvature_, wantK || wantD);
     const double w = P.w;
     for (int a = 0; a < 8; ++a) f[a] += w * N.value * s.g[a];
     if (wantK) {
@@ -382,6 +417,7 @@ void AncfCable2D::evaluate(const KernelInput& in, const KernelNeeds& needs, Kern
     bendingState(P.Sx, P.Sxx, q, qd, wantK, s);
     if (bendingNeedsStrain_) axialState(P.Sx, q, qd, s);
     const UserFunctionValue M = Law::bending(p_, in.t, P.x / L_, s, P.strainRef, P.curvatureRef);
+    Law::check(p_, M, false, in.t, s, bendingNeedsStrain_, true, wantK || wantD);
     const double w = P.w;
     for (int a = 0; a < 8; ++a) f[a] += w * M.value * s.h[a];
     if (wantK) {

@@ -4,7 +4,10 @@
 
 #include <algorithm>
 #include <numeric>
+#include <stdexcept>
 #include <string>
+
+#include "mesh/collective_error.hpp"
 
 namespace sinew {
 namespace {
@@ -127,6 +130,17 @@ void applyNodeProps(const Model& model, LocalNode& n) {
   }
   n.mass = p.mass;
   n.mominertia = p.mominertia;
+}
+
+/// Records the first kernel that could not be built on this rank (scene errors and invalid element
+/// data: a SceneError, exit 2; anything else is rethrown as std::runtime_error, exit 1 like any
+/// other set-up error).
+void kernelFailure(const std::exception& ex, const FeMesh& fe, int e, RunFailure* failure, long* failedElement) {
+  if (*failure) return;
+  const bool sceneError = dynamic_cast<const SceneError*>(&ex) || dynamic_cast<const std::invalid_argument*>(&ex);
+  failure->exitCode = sceneError ? 2 : kExitSolverError;
+  failure->message = std::string(ex.what()) + " (element " + std::to_string(fe.elements[e].sceneElement + 1) + ")";
+  *failedElement = e;
 }
 
 }  // namespace
@@ -261,6 +275,8 @@ DistributedMesh distributeMesh(MPI_Comm comm, const Model& model, const FeMesh& 
     if (ln.kind == NodeKind::Frame6) dm.anyRotations = true;
     if (ln.kind == NodeKind::Ancf2D) dm.anyAncf = true;
   }
+  RunFailure failure;
+  long failedElement = -1;
   for (int e = 0; e < ne; ++e) {
     if (epart[e] != dm.rank) continue;
     LocalElement le;
@@ -272,10 +288,21 @@ DistributedMesh distributeMesh(MPI_Comm comm, const Model& model, const FeMesh& 
     le.numNodes = fe.elements[e].numNodes;
     for (int i = 0; i < le.numNodes; ++i) le.node[i] = localOf[fe.elements[e].nodes[i]];
     if (elemMult[e] > 0) le.firstMultiplier = static_cast<int>(elemMultGlobal[e] - dm.firstOwnedUnknown);
-    le.kernel = factory(model, fe, e);
+    try {
+      le.kernel = factory(model, fe, e);
+    } catch (const std::exception& ex) {
+      kernelFailure(ex, fe, e, &failure, &failedElement);
+      continue;
+    }
     if (le.kernel->numConstraints() != elemMult[e])
       throw std::logic_error("kernel constraint count differs from the DOF numbering");
     dm.elements.push_back(std::move(le));
+  }
+  // A kernel that cannot be built on one rank ends the set-up on every rank, with the message of the
+  // lowest failing element (the same on any number of ranks; it was a SEGV on 2 ranks, issue 13 item 1).
+  if (const RunFailure f = agreeOnFailure(comm, failure, failedElement)) {
+    if (f.exitCode == 2) throw SceneError("", f.message);
+    throw std::runtime_error(f.message);
   }
   int flags[2] = {dm.anyRotations, dm.anyAncf};
   MPI_Allreduce(MPI_IN_PLACE, flags, 2, MPI_INT, MPI_LOR, comm);

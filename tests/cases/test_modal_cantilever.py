@@ -1,7 +1,8 @@
 """Cantilever bending frequencies against reference B3 (Euler-Bernoulli, beta_n L), first five in
 the compliant plane of a rect section 10 mm x 0.1 mm (the stiff plane is 100x higher, torsion and
 axial far above). Also: rigid axial/torsion modes (multipliers, zero-mass rows) change nothing and
-never show up as eigenvalues, even when more eigenpairs are asked for than the model has."""
+never show up as eigenvalues; asking for more eigenpairs than the model has finite ones computes
+those with a warning."""
 import numpy as np
 
 import sinewtest as st
@@ -33,14 +34,13 @@ with st.h5(path) as f:
     st.check(np.all(fr > 0.05), "no zero frequency from the multipliers")
 
 # 3. 10 elements with rigid axial/torsion: 60 node DOFs - 20 constraints = 40 finite eigenvalues.
-# Asking for 44 gives the 40 finite ones and an honest failure, never a spurious 0 or infinity.
+# Asking for 44 computes the 40 finite ones with a warning (never a spurious 0, infinity or NaN padding).
 path, out = st.run("modal_cantilever_nev44", beam_x(L, W, T, 10, {1: {"fix": True}}, flex=(3, 4, 5, 6)),
-                   args=["-eps_nev", "44"], expect_exit=3)
+                   args=["-eps_nev", "44"], expect_exit=0)
 with st.h5(path) as f:
     fr = f["freq"][0]
-    finite = fr[np.isfinite(fr)]
-    print(f"  -eps_nev 44: {finite.size} finite frequencies, min {finite.min():.6g} Hz, max {finite.max():.6g} Hz")
-    st.check(finite.size == 40, f"{finite.size} finite frequencies, expected the 40 of the model")
-    st.check(np.all(finite > 0.05), "no zero frequency from the infinite eigenvalues")
-st.check("converged 40 of 44" in out, "failure message names the converged count")
+    print(f"  -eps_nev 44: {fr.size} frequencies, min {fr.min():.6g} Hz, max {fr.max():.6g} Hz")
+    st.check(fr.size == 40 and np.all(np.isfinite(fr)), f"{fr.size} frequencies written, expected the 40 finite ones")
+    st.check(np.all(fr > 0.05), "no zero frequency from the infinite eigenvalues")
+st.check("the model has 40 finite ones" in out and "computing 40" in out, "warning names the 40 finite modes")
 st.done()

@@ -61,9 +61,10 @@ PetscErrorCode printSummary(MPI_Comm comm, const SummaryBody& b) {
   }
   s << b.analysisLines;
   std::snprintf(line, sizeof line,
-                "\n wall time: setup %.3f s, constraint check %.3f s, statics %.3f s, step analyses %.3f s, output %.3f s\n"
+                "\n wall time: setup %.3f s, constraint check %.3f s, statics %.3f s, step analyses %.3f s, output %.3f s (checkpoints %.3f s)\n"
                 " assemblies: %ld residuals, %ld tangents, %ld mass, %ld split tangents, %ld stress\n",
-                b.times.setup, b.times.check, b.times.statics, b.times.analyses, b.times.output, b.counters.residuals,
+                b.times.setup, b.times.check, b.times.statics, b.times.analyses, b.times.output, b.times.checkpoint,
+                b.counters.residuals,
                 b.counters.jacobians, b.counters.masses, b.counters.splitTangents, b.counters.stressRecoveries);
   s << line;
   if (b.counters.pressureLoads > 0) s << " pressure: " << b.counters.pressureLoads << " follower element loads (rank 0)\n";

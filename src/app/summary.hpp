@@ -12,6 +12,7 @@ namespace sinew {
 
 struct Timings {
   double setup = 0, check = 0, statics = 0, analyses = 0, output = 0;
+  double checkpoint = 0;  ///< part of output: writing /checkpoint (src/output/checkpoint.*)
 };
 
 struct SummaryHeader {

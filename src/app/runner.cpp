@@ -357,7 +357,9 @@ PetscErrorCode runFromCommandLine(int argc, char** argv, int* exitCode) {
   PetscCall(VecSet(ctx.U, 0.0));
   PetscCall(addStepAnalyses(ctx));
   CheckpointWriter checkpointWriter(assembler, fingerprint);
-  ctx.checkpoint = &checkpointWriter;
+  PetscBool writeCheckpoints = PETSC_TRUE;  // -checkpoint false: no /checkpoint (the run cannot be continued)
+  PetscCall(PetscOptionsGetBool(nullptr, nullptr, "-checkpoint", &writeCheckpoints, nullptr));
+  if (writeCheckpoints) ctx.checkpoint = &checkpointWriter;
   ctx.stopAfterRows = stopAfterStepOption();
   ctx.restart = restart.get();
   if (restart && ctx.ioError.empty()) {

@@ -23,6 +23,14 @@ const char* const kScalarNames =
     "phase rows step step_value loadsteps lambda dl_prev dl_adapt fint_converged time substep successes dt "
     "spectral_radius energy0 max_drift formfinding";
 
+// "_U_dU": the vectors of a table, in column order (the tables of each phase have their own names,
+// since a fixed-size dataset keeps its shape)
+std::string tableSuffix(const std::vector<std::pair<std::string, Vec>>& vectors) {
+  std::string s;
+  for (const auto& [name, v] : vectors) s += "_" + name;
+  return s;
+}
+
 long globalFeElements(const DistributedMesh& m) {
   long mx = -1;
   for (const LocalElement& el : m.elements) mx = std::max(mx, el.feIndex);
@@ -100,40 +108,41 @@ void CheckpointWriter::write(ResultFile& file, const CheckpointData& d, const st
   std::vector<long> elemRows;
   for (const LocalElement& el : m.elements) elemRows.push_back(el.feIndex);
 
-  std::vector<double> x0, rr;
+  // one node table (X0, R_ref, then 6 columns per vector) and one element table (6 multiplier
+  // columns per vector, then the kernel states): few collective writes per checkpoint
+  const int nv = static_cast<int>(d.vectors.size());
+  const int nodeCols = 12 + 6 * nv, elemCols = 6 * nv + kernelColumns_;
+  std::vector<double> nt(nodeRows.size() * nodeCols, 0.0), et(elemRows.size() * elemCols, 0.0);
   const std::vector<Mat3> R = asm_.referenceRotations();
   for (int i = 0; i < m.numOwnedNodes; ++i) {
-    x0.insert(x0.end(), m.nodes[i].X0.begin(), m.nodes[i].X0.end());
+    double* row = &nt[static_cast<size_t>(i) * nodeCols];
+    std::copy(m.nodes[i].X0.begin(), m.nodes[i].X0.end(), row);
     const Mat3 Ri = i < static_cast<int>(R.size()) ? R[i] : identity3();
-    rr.insert(rr.end(), Ri.begin(), Ri.end());
+    std::copy(Ri.begin(), Ri.end(), row + 3);
   }
-  file.writeStateTable(group + "/node_X0", nfe, 3, nodeRows, x0);
-  file.writeStateTable(group + "/node_R", nfe, 9, nodeRows, rr);
-
-  for (const auto& [name, v] : d.vectors) {
+  for (int j = 0; j < nv; ++j) {
+    const auto& [name, v] = d.vectors[static_cast<size_t>(j)];
     const PetscScalar* a = nullptr;
     if (VecGetArrayRead(v, &a)) throw std::runtime_error("checkpoint vector " + name + ": PETSc error");
-    std::vector<double> nv(nodeRows.size() * 6, 0.0), ev(elemRows.size() * 6, 0.0);
     for (int i = 0; i < m.numOwnedNodes; ++i) {
       const LocalNode& n = m.nodes[i];
+      double* row = &nt[static_cast<size_t>(i) * nodeCols + 12 + 6 * j];
       for (int k = 0; k < n.ndof; ++k)
-        if (n.dof[k] >= 0 && n.dof[k] < m.numOwnedUnknowns) nv[6 * i + k] = a[n.dof[k]];
+        if (n.dof[k] >= 0 && n.dof[k] < m.numOwnedUnknowns) row[k] = a[n.dof[k]];
     }
     for (size_t e = 0; e < m.elements.size(); ++e) {
       const LocalElement& el = m.elements[e];
       if (el.firstMultiplier < 0) continue;
       const int nc = std::min(el.kernel->numConstraints(), 6);
-      for (int c = 0; c < nc; ++c) ev[6 * e + c] = a[el.firstMultiplier + c];
+      for (int c = 0; c < nc; ++c) et[e * elemCols + 6 * j + c] = a[el.firstMultiplier + c];
     }
     if (VecRestoreArrayRead(v, &a)) throw std::runtime_error("checkpoint vector " + name + ": PETSc error");
-    file.writeStateTable(group + "/node_" + name, nfe, 6, nodeRows, nv);
-    file.writeStateTable(group + "/element_" + name, numFeElements_, 6, elemRows, ev);
   }
-  if (kernelColumns_ > 0) {
-    std::vector<double> kv(elemRows.size() * kernelColumns_, 0.0);
-    for (size_t e = 0; e < m.elements.size(); ++e) m.elements[e].kernel->saveCheckpoint(&kv[e * kernelColumns_]);
-    file.writeStateTable(group + "/element_kernel", numFeElements_, kernelColumns_, elemRows, kv);
-  }
+  if (kernelColumns_ > 0)
+    for (size_t e = 0; e < m.elements.size(); ++e) m.elements[e].kernel->saveCheckpoint(&et[e * elemCols + 6 * nv]);
+  const std::string suffix = tableSuffix(d.vectors);
+  file.writeStateTable(group + "/node" + suffix, nfe, nodeCols, nodeRows, nt);
+  file.writeStateTable(group + "/element" + suffix, numFeElements_, elemCols, elemRows, et);
   if (d.formfindingRows > 0) {
     std::vector<double> ff(static_cast<size_t>(d.formfindingRows) * kFormFindingColumns, 0.0);
     std::copy_n(d.formfinding.begin(), std::min(d.formfinding.size(), ff.size()), ff.begin());
@@ -180,12 +189,12 @@ CheckpointReader::CheckpointReader(MPI_Comm comm, const std::string& path, const
   if (dims.size() != 1 || dims[0] != hsize_t(kNumScalars))
     throw std::runtime_error(path + ": /" + group_ + "/scalars has another layout (written by another Sinew version)");
   h5::check(H5Dread(ds, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, scalars_.data()), path + ": scalars");
-  h5::Handle dn(H5Dopen2(f, (group_ + "/node_X0").c_str(), H5P_DEFAULT), H5Dclose, path + ": /" + group_ + "/node_X0");
-  feNodes_ = static_cast<long>(datasetDims(dn, "/" + group_ + "/node_X0")[0]);
-  if (linkExists(f, group_ + "/element_U")) {
-    h5::Handle de(H5Dopen2(f, (group_ + "/element_U").c_str(), H5P_DEFAULT), H5Dclose, path + ": /" + group_ + "/element_U");
-    feElements_ = static_cast<long>(datasetDims(de, "/" + group_ + "/element_U")[0]);
-  }
+  if (checkpointVectors(phase()).empty()) throw std::runtime_error(path + ": /" + group_ + ": unknown phase");
+  const std::string nt = table("node"), et = table("element");
+  h5::Handle dn(H5Dopen2(f, nt.c_str(), H5P_DEFAULT), H5Dclose, path + ": /" + nt);
+  feNodes_ = static_cast<long>(datasetDims(dn, "/" + nt)[0]);
+  h5::Handle de(H5Dopen2(f, et.c_str(), H5P_DEFAULT), H5Dclose, path + ": /" + et);
+  feElements_ = static_cast<long>(datasetDims(de, "/" + et)[0]);
 }
 
 CheckpointReader::~CheckpointReader() {
@@ -201,22 +210,39 @@ bool CheckpointReader::exists(const std::string& name) const {
   }
 }
 
-bool CheckpointReader::hasVector(const std::string& name) const {
-  return exists(group_ + "/node_" + name) && exists(group_ + "/element_" + name);
+std::vector<std::string> checkpointVectors(CheckpointPhase p) {
+  switch (p) {
+    case CheckpointPhase::FormFinding: return {"U"};
+    case CheckpointPhase::Statics: return {"U", "dU"};
+    case CheckpointPhase::Dynamics: return {"U", "V", "A", "Qdd"};
+  }
+  return {};
 }
 
-std::vector<double> CheckpointReader::readRows(const std::string& name, const std::vector<long>& rows, int m) const {
+std::string CheckpointReader::table(const char* kind) const {
+  std::string s = group_ + "/" + kind;
+  for (const std::string& v : checkpointVectors(phase())) s += "_" + v;
+  return s;
+}
+
+bool CheckpointReader::hasVector(const std::string& name) const {
+  const auto names = checkpointVectors(phase());
+  return std::find(names.begin(), names.end(), name) != names.end();
+}
+
+std::vector<double> CheckpointReader::readRows(const std::string& name, const std::vector<long>& rows, int first,
+                                               int m) const {
   const std::string what = path_ + ": /" + name;
   h5::Handle d(H5Dopen2(static_cast<hid_t>(file_), name.c_str(), H5P_DEFAULT), H5Dclose, what);
   const auto dims = datasetDims(d, what);
-  if (dims.size() != 2 || dims[1] != hsize_t(m)) throw std::runtime_error(what + ": unexpected shape");
+  if (dims.size() != 2 || dims[1] < hsize_t(first + m)) throw std::runtime_error(what + ": unexpected shape");
   std::vector<hsize_t> coords;
   coords.reserve(rows.size() * static_cast<size_t>(m) * 2);
   for (long r : rows) {
     if (r < 0 || hsize_t(r) >= dims[0]) throw std::runtime_error(what + ": row " + std::to_string(r) + " missing");
     for (int j = 0; j < m; ++j) {
       coords.push_back(hsize_t(r));
-      coords.push_back(hsize_t(j));
+      coords.push_back(hsize_t(first + j));
     }
   }
   return readPoints(d, coords, 2, what);
@@ -234,8 +260,11 @@ PetscErrorCode CheckpointReader::loadVector(const std::string& name, Assembler& 
   std::vector<long> nodeRows, elemRows;
   for (int i = 0; i < m.numOwnedNodes; ++i) nodeRows.push_back(m.nodes[i].gid);
   for (const LocalElement& el : m.elements) elemRows.push_back(el.feIndex);
-  const std::vector<double> nv = readRows(group_ + "/node_" + name, nodeRows, 6);
-  const std::vector<double> ev = readRows(group_ + "/element_" + name, elemRows, 6);
+  const auto names = checkpointVectors(phase());
+  const int j = static_cast<int>(std::find(names.begin(), names.end(), name) - names.begin());
+  if (j == static_cast<int>(names.size())) throw std::runtime_error(path_ + ": no vector " + name + " in the checkpoint");
+  const std::vector<double> nv = readRows(table("node"), nodeRows, 12 + 6 * j, 6);
+  const std::vector<double> ev = readRows(table("element"), elemRows, 6 * j, 6);
   PetscCall(VecSet(v, 0.0));
   PetscScalar* a = nullptr;
   PetscCall(VecGetArray(v, &a));
@@ -260,8 +289,8 @@ void CheckpointReader::loadNodes(Assembler& assembler) const {
   DistributedMesh& m = assembler.mesh();
   std::vector<long> rows;
   for (const LocalNode& n : m.nodes) rows.push_back(n.gid);
-  const std::vector<double> x0 = readRows(group_ + "/node_X0", rows, 3);
-  const std::vector<double> rr = readRows(group_ + "/node_R", rows, 9);
+  const std::vector<double> x0 = readRows(table("node"), rows, 0, 3);
+  const std::vector<double> rr = readRows(table("node"), rows, 3, 9);
   std::vector<Mat3> R = assembler.referenceRotations();
   for (size_t i = 0; i < m.nodes.size(); ++i) {
     for (int k = 0; k < 3; ++k) m.nodes[i].X0[k] = x0[3 * i + k];
@@ -278,7 +307,8 @@ void CheckpointReader::loadKernels(Assembler& assembler) const {
   if (k == 0) return;
   std::vector<long> rows;
   for (const LocalElement& el : m.elements) rows.push_back(el.feIndex);
-  const std::vector<double> kv = readRows(group_ + "/element_kernel", rows, k);
+  const int first = 6 * static_cast<int>(checkpointVectors(phase()).size());
+  const std::vector<double> kv = readRows(table("element"), rows, first, k);
   for (size_t e = 0; e < m.elements.size(); ++e)
     if (m.elements[e].kernel->checkpointSize() > 0) m.elements[e].kernel->loadCheckpoint(&kv[e * k]);
 }

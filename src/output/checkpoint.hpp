@@ -4,13 +4,15 @@
 // on any number of ranks.
 //   /checkpoint/scalars        [kNumScalars]   phase, rows written, step counters, load factor/time,
 //                                              the analysis' own step-size state (names: attribute `names`)
-//   /checkpoint/node_X0        [nfe, 3]        node reference positions (changed by a FORCE elastic restart)
-//   /checkpoint/node_R         [nfe, 9]        reference rotations R_ref (row-major; identity without rotations)
-//   /checkpoint/node_<v>       [nfe, 6]        unknowns-layout vector v at the node DOFs (0 where constrained)
-//   /checkpoint/element_<v>    [nfe_el, 6]     the same vector's constraint multipliers of each element
-//   /checkpoint/element_kernel [nfe_el, k]     element internal state (ElementKernel::saveCheckpoint), k > 0 only
+//   /checkpoint/node_<vs>      [nfe, 12 + 6 nv]  per FE node: reference position X0 (changed by a FORCE
+//                                              elastic restart), reference rotation R_ref (9, row-major;
+//                                              identity without rotations), then each vector v at the
+//                                              node DOFs (6 columns, 0 where constrained)
+//   /checkpoint/element_<vs>   [nfe_el, 6 nv + k] per FE element: each vector's constraint multipliers
+//                                              (6 columns), then the element's internal state
+//                                              (ElementKernel::saveCheckpoint, k columns)
 //   /checkpoint/formfinding    [steps, 9]      form-finding history (step reports)
-// with v = U (state), dU (statics: last increment, the secant predictor), V, A, Qdd (dynamics:
+// with vs = the phase's vectors joined by "_" (checkpointVectors: U_dU for statics), v = U (state), dU (statics: last increment, the secant predictor), V, A, Qdd (dynamics:
 // velocities, generalized-alpha auxiliary and true accelerations). Attribute `fingerprint` holds
 // the scene's fingerprint (SceneFingerprint) to refuse a restart with another scene.
 // /checkpoint_formfinding has the same layout: the state at the end of form finding (the found shape
@@ -55,6 +57,9 @@ enum CheckpointScalar : int {
 
 enum class CheckpointPhase : int { FormFinding = 1, Statics = 2, Dynamics = 3 };
 const char* phaseName(CheckpointPhase p);
+/// The vectors a phase's checkpoint holds, in column order: U (form finding); U, dU (statics);
+/// U, V, A, Qdd (dynamics).
+std::vector<std::string> checkpointVectors(CheckpointPhase p);
 
 /// Columns of /checkpoint/formfinding (one form-finding step report per row).
 inline constexpr int kFormFindingColumns = 9;
@@ -125,7 +130,10 @@ class CheckpointReader {
   std::vector<long> datasetShape(const std::string& name) const;
 
  private:
-  std::vector<double> readRows(const std::string& name, const std::vector<long>& rows, int m) const;
+  /// Columns [first, first + m) of the rows `rows` of table `name`.
+  std::vector<double> readRows(const std::string& name, const std::vector<long>& rows, int first, int m) const;
+  /// Name of the node or element table of the checkpoint's phase ("checkpoint/node_U_dU").
+  std::string table(const char* kind) const;
   MPI_Comm comm_;
   std::string path_, group_;
   long long file_ = -1;

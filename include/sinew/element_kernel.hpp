@@ -91,6 +91,12 @@ class ElementKernel {
   /// Element force output (cable axial force, membrane resultants n11 n22 n12); empty when none.
   virtual void elementForce(const double* /*q*/, std::vector<double>& out) const { out.clear(); }
 
+  /// Internal state that analyses change (form finding: reference geometry, adapted prestress), for
+  /// checkpoints (output/checkpoint.hpp): size, save into / restore from checkpointSize() values.
+  virtual int checkpointSize() const { return 0; }
+  virtual void saveCheckpoint(double* /*out*/) const {}
+  virtual void loadCheckpoint(const double* /*in*/) {}
+
   int numDofs() const {
     int n = 0;
     for (NodeKind k : nodeKinds()) n += dofSize(k);

@@ -77,6 +77,18 @@ class ResultFile {
   void writeStepRow(const std::string& name, std::span<const double> values);
   /// A dataset written once (statespace/A, formfinding/residual): rank 0's values, given shape.
   void writeArray(const std::string& name, std::span<const double> values, std::vector<long> shape);
+  /// Restart state (src/output/checkpoint.*): fixed-size datasets without a step axis, created at
+  /// their first write and overwritten in place by every later one. They are recorded like every
+  /// other write, so commit() publishes them together with the step rows they belong to (no flush
+  /// of their own). [numRows, m] table from this rank's rows `rows` (global 0-based ids, each row
+  /// on one rank; rows no rank holds are NaN), m values per row. A name's rows are fixed at its
+  /// first write.
+  void writeStateTable(const std::string& name, long numRows, long m, std::span<const long> rows,
+                       std::span<const double> values);
+  /// [shape] state array of rank 0's values, overwritten in place.
+  void writeStateArray(const std::string& name, std::span<const double> values, std::vector<long> shape);
+  /// String attribute `attr` of the group `group` (created when missing): rank 0's text.
+  void writeStateAttribute(const std::string& group, const std::string& attr, const std::string& text);
   /// Makes everything written so far the content of the file under the final name (atomically)
   /// and rewrites the XDMF (rank 0) for those steps. Call after every step.
   void commit();

@@ -251,26 +251,30 @@ PetscErrorCode DynamicAnalysis::runArnoldBruls(Vec U, const StepCallback& onStep
   PetscCall(SNESSetSolution(snes_, Usol));
   PetscCall(VecDestroy(&Usol));
 
-  PetscCall(VecCopy(U, Un_));
-  PetscCall(VecSet(Vn_, 0.0));
   bool ok = false;
-  PetscCall(initialAccelerations(Un_, Vn_, Qn_, &ok));
-  if (!ok) {
-    *converged = false;
-    PetscFunctionReturn(PETSC_SUCCESS);
+  if (!resumed_) {
+    PetscCall(VecCopy(U, Un_));
+    PetscCall(VecSet(Vn_, 0.0));
+    PetscCall(initialAccelerations(Un_, Vn_, Qn_, &ok));
+    if (!ok) {
+      *converged = false;
+      PetscFunctionReturn(PETSC_SUCCESS);
+    }
+    PetscCall(VecCopy(Qn_, An_));  // a_0 = qdd_0
+    progress_ = {0, 0.0, opts_.dt, 0};
+    if (onStep) PetscCall(onStep(0, 0.0, Un_, Vn_, Qn_));
   }
-  PetscCall(VecCopy(Qn_, An_));  // a_0 = qdd_0
-  if (onStep) PetscCall(onStep(0, 0.0, Un_, Vn_, Qn_));
 
   const double dt = opts_.dt, tend = opts_.tend;
   const int nsteps = std::max(1, static_cast<int>(std::ceil(tend / dt - 1e-9)));
-  double t = 0.0;
+  double t = resumed_ ? progress_.time : 0.0;
   *converged = true;
   // Sub-step size h: halved when Newton fails, doubled again after growAfter_ successes in a row
   // (never above dt), so one hard moment does not leave the rest of the run at a tiny step.
   // growAfter_ = 0 is the former rule: every time step restarts at dt, no growth inside a step.
-  double h = dt;
-  int successes = 0;
+  // A resumed run (resume()) continues with the state of its checkpoint.
+  double h = resumed_ ? progress_.h : dt;
+  int successes = resumed_ ? progress_.successes : 0;
   // Guarded mode: a failed solve is first retried at the same step size with full Newton started
   // at q_n instead of the extrapolated predictor, then by halving (still guarded); the next time
   // step starts plain again (a diverging extrapolation is caught early: DIVERGED_DTOL).
@@ -283,7 +287,7 @@ PetscErrorCode DynamicAnalysis::runArnoldBruls(Vec U, const StepCallback& onStep
     modifiedNewton_ = on ? false : modifiedDefault;
     PetscFunctionReturn(PETSC_SUCCESS);
   };
-  for (int k = 1; k <= nsteps; ++k) {
+  for (int k = (resumed_ ? progress_.step : 0) + 1; k <= nsteps; ++k) {
     const double target = k == nsteps ? tend : k * dt;
     int cuts = 0;
     if (growAfter_ == 0) h = dt;
@@ -335,6 +339,7 @@ PetscErrorCode DynamicAnalysis::runArnoldBruls(Vec U, const StepCallback& onStep
     report_.steps = k;
     report_.reducedSteps += reduced;
     report_.time = t;
+    progress_ = {k, t, h, successes};
     if (onStep) PetscCall(onStep(k, t, Un_, Vn_, Qn_));
     if (stop_ && *stop_) break;
   }
@@ -444,6 +449,21 @@ PetscErrorCode DynamicAnalysis::runTSAlpha2(Vec U, const StepCallback& onStep, b
   PetscCall(VecDestroy(&V));
   PetscCall(VecDestroy(&A));
   PetscCall(TSDestroy(&ts));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode DynamicAnalysis::resume(const DynamicsProgress& p, Vec U, Vec V, Vec A, Vec Qdd) {
+  PetscFunctionBeginUser;
+  if (useTS_)
+    SETERRQ(asm_.mesh().comm, PETSC_ERR_SUP, "-dynamics_scheme tsalpha2 keeps its state inside PETSc TS: it cannot resume");
+  progress_ = p;
+  report_.steps = p.step;
+  report_.time = p.time;
+  resumed_ = true;
+  PetscCall(VecCopy(U, Un_));
+  PetscCall(VecCopy(V, Vn_));
+  PetscCall(VecCopy(A, An_));
+  PetscCall(VecCopy(Qdd, Qn_));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

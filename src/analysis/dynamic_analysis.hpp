@@ -32,6 +32,14 @@ struct DynamicsReport {
   double time = 0;           ///< last converged time
 };
 
+/// Where a time integration stands after a converged time step (checkpoints, -restart).
+struct DynamicsProgress {
+  int step = 0;        ///< time steps of size dt done
+  double time = 0;     ///< time reached
+  double h = 0;        ///< current sub-step size (halved after a failure, grows back)
+  int successes = 0;   ///< successful sub-steps in a row since the last change of h
+};
+
 class DynamicAnalysis {
  public:
   DynamicAnalysis(Assembler& assembler, const DynamicsOptions& opts);
@@ -49,6 +57,15 @@ class DynamicAnalysis {
   void setStopFlag(const bool* stop) { stop_ = stop; }
 
   const DynamicsReport& report() const { return report_; }
+  /// Continues after time step p.step (a checkpoint; Arnold-Brüls scheme only): U, V, the
+  /// generalized-alpha auxiliary accelerations A and the accelerations Qdd at p.time (copied).
+  PetscErrorCode resume(const DynamicsProgress& p, Vec U, Vec V, Vec A, Vec Qdd);
+  /// State after the last converged time step (valid inside the step callback).
+  const DynamicsProgress& progress() const { return progress_; }
+  /// Auxiliary (algorithmic) accelerations a_n of the last converged step.
+  Vec auxiliaryAccelerations() const { return An_; }
+  /// True for -dynamics_scheme tsalpha2 (PETSc TS; it cannot be resumed from a checkpoint).
+  bool usesPetscTS() const { return useTS_; }
   const std::string& failureMessage() const { return failure_; }
   double alphaM() const { return alphaM_; }
   double alphaF() const { return alphaF_; }
@@ -71,6 +88,8 @@ class DynamicAnalysis {
 
   Assembler& asm_;
   const bool* stop_ = nullptr;
+  bool resumed_ = false;
+  DynamicsProgress progress_;
   DynamicsOptions opts_;
   double alphaM_, alphaF_, gamma_, beta_;
   double h_ = 0;

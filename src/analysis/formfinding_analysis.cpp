@@ -404,7 +404,16 @@ PetscErrorCode FormFindingAnalysis::run(Vec U, const StepCallback& onStep, bool*
   PetscCall(VecDuplicate(U, &Uprev));
   ls_ = LoadState{};  // load factor 0: initial loads only
   const int nsteps = ff_.formfinding_step;
-  for (int k = 1; k <= nsteps; ++k) {
+  // stop on the normal change, from step 2 on and while the total change does not grow (an
+  // in-plane collapse of a flat membrane has zero normal change but a growing total change)
+  auto stops = [&]() {
+    const size_t n = reports_.size();
+    return n >= 2 && reports_[n - 1].step >= 2 && reports_[n - 1].shapeChangeNormal < ff_.formfinding_tolerance &&
+           reports_[n - 1].shapeChange <= reports_[n - 2].shapeChange;
+  };
+  // a resumed run (resume()) continues after its last step, unless that step ended form finding
+  const int first = static_cast<int>(reports_.size()) + 1;
+  for (int k = first; k <= nsteps && !(k > 1 && stops()); ++k) {
     FormFindingStepReport rep;
     rep.step = k;
     std::tie(rep.lambda, rep.xurs) = stepMode(ff_, k);
@@ -458,11 +467,6 @@ PetscErrorCode FormFindingAnalysis::run(Vec U, const StepCallback& onStep, bool*
     reports_.push_back(rep);
     if (onStep) PetscCall(onStep(rep, U));
     if (stop_ && *stop_) break;
-    // stop on the normal change, from step 2 on and while the total change does not grow (an
-    // in-plane collapse of a flat membrane has zero normal change but a growing total change)
-    if (k >= 2 && rep.shapeChangeNormal < ff_.formfinding_tolerance &&
-        rep.shapeChange <= reports_[reports_.size() - 2].shapeChange)
-      break;
   }
   if (*ok && !reports_.empty() && !reports_.back().equilibrium) {
     std::ostringstream msg;

@@ -82,6 +82,10 @@ class FormFindingAnalysis {
   /// The loop ends after the step whose onStep set *stop (an interrupt or a failed result file);
   /// the run is then neither converged nor failed here: the caller knows why it stopped.
   void setStopFlag(const bool* stop) { stop_ = stop; }
+  /// Continues after the steps of `history` (a checkpoint; the kernels' references and prestress,
+  /// and U, restored by the caller): run() starts at step history.size() + 1, or stops at once when
+  /// the last of them met the stop criterion.
+  void resume(std::vector<FormFindingStepReport> history) { reports_ = std::move(history); }
 
   /// Switches every form-found kernel to elastic as elastic_restart_method says (see file comment).
   PetscErrorCode restart(Vec U);

@@ -9,7 +9,8 @@
 
 namespace sinew {
 
-StaticAnalysis::StaticAnalysis(Assembler& assembler, int loadsteps) : asm_(assembler), loadsteps_(loadsteps) {
+StaticAnalysis::StaticAnalysis(Assembler& assembler, int loadsteps)
+    : asm_(assembler), loadsteps_(loadsteps), lastStep_(loadsteps) {
   MPI_Comm comm = asm_.mesh().comm;
   SinewCallThrow(comm, asm_.createMatrix(&J_));
   {  // rigid-body modes as near-null space: used by algebraic multigrid (-pc_type gamg), ignored by LU
@@ -139,6 +140,17 @@ StaticAnalysis::~StaticAnalysis() {
   MatDestroy(&Jop_);
   MatDestroy(&J_);
   VecDestroy(&F_);
+  VecDestroy(&dU_);
+}
+
+PetscErrorCode StaticAnalysis::resume(const StaticsProgress& p, Vec dU) {
+  PetscFunctionBeginUser;
+  progress_ = p;
+  fintConverged_ = p.fintConverged;
+  resumed_ = true;
+  if (!dU_) PetscCall(VecDuplicate(dU, &dU_));
+  PetscCall(VecCopy(dU, dU_));
+  PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 PetscErrorCode StaticAnalysis::formFunction(SNES, Vec U, Vec F, void* ctx) {
@@ -269,22 +281,25 @@ PetscErrorCode StaticAnalysis::solveIncrement(Vec U, double lambda, bool* ok, in
 PetscErrorCode StaticAnalysis::run(Vec U, const StepCallback& onStep, bool* converged) {
   PetscFunctionBeginUser;
   MPI_Comm comm = asm_.mesh().comm;
-  Vec Usave, dU;  // state before the increment; last converged increment (secant predictor)
+  Vec Usave;  // state before the increment; dU_: last converged increment (secant predictor)
   PetscCall(VecDuplicate(U, &Usave));
-  PetscCall(VecDuplicate(U, &dU));
-  double dlPrev = 0.0;
+  if (!dU_) PetscCall(VecDuplicate(U, &dU_));
+  Vec dU = dU_;
+  // a resumed run (resume()) continues with the step-size state of its checkpoint
+  double dlPrev = resumed_ ? progress_.dlPrev : 0.0;
   // adaptive increments: a halved increment grows back (x2 after an increment that converged in at
   // most -increment_grow_its Newton iterations), never beyond the user's load step; the size carries
   // over to the next load step, so a hard stretch is not retried at full size step after step
   const double dlMax = 1.0 / loadsteps_;
-  double dlAdapt = dlMax;
+  double dlAdapt = resumed_ ? progress_.dlAdapt : dlMax;
   *converged = true;
-  double lambda = 0.0;
+  double lambda = resumed_ ? progress_.lambda : 0.0;
   {
-    LoadState start;
+    LoadState start;  // the converged state the run starts from
+    start.loadFactor = start.time = lambda;
     PetscCall(asm_.setMixedReference(U, start));
   }
-  for (int step = 1; step <= loadsteps_; ++step) {
+  for (int step = (resumed_ ? progress_.step : 0) + 1; step <= lastStep_; ++step) {
     const double target = static_cast<double>(step) / loadsteps_;
     StepReport rep;
     rep.step = step;
@@ -350,7 +365,7 @@ PetscErrorCode StaticAnalysis::run(Vec U, const StepCallback& onStep, bool* conv
       }
       if (++cuts > maxCuts_) {
         std::ostringstream msg;
-        msg << "load step " << step << " of " << loadsteps_ << " did not converge: Newton stopped at load factor "
+        msg << "load step " << step << " of " << lastStep_ << " did not converge: Newton stopped at load factor "
             << next << " (" << SNESConvergedReasons[why] << ", residual norm " << fnorm << ") after " << maxCuts_
             << " halvings of the increment (last converged load factor " << lambda
             << "). Try more load steps (-loadsteps), a line search (-snes_linesearch_type bt|l2), "
@@ -372,11 +387,11 @@ PetscErrorCode StaticAnalysis::run(Vec U, const StepCallback& onStep, bool* conv
     if (!*converged) break;
     rep.loadFactor = lambda;
     reports_.push_back(rep);
+    progress_ = {step, lambda, dlPrev, dlAdapt, fintConverged_};
     if (onStep) PetscCall(onStep(rep, U));
     if (stop_ && *stop_) break;
   }
   PetscCall(VecDestroy(&Usave));
-  PetscCall(VecDestroy(&dU));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -26,6 +26,15 @@ struct StepReport {
   double relativeUpdate = 0;  ///< ||dU|| / ||U|| of the last Newton update of the step
 };
 
+/// Where a load-stepped run stands after a converged step (checkpoints, -restart).
+struct StaticsProgress {
+  int step = 0;              ///< load steps done
+  double lambda = 0;         ///< load factor reached
+  double dlPrev = 0;         ///< last converged increment (secant predictor)
+  double dlAdapt = 0;        ///< adaptive increment carried to the next step
+  double fintConverged = 0;  ///< ||f_int|| of the last converged state
+};
+
 class StaticAnalysis {
  public:
   /// options prefix "" -> -snes_*, -ksp_*, -pc_* act on this solver.
@@ -36,6 +45,16 @@ class StaticAnalysis {
   /// failureMessage (step, residual, what to try).
   using StepCallback = std::function<PetscErrorCode(const StepReport&, Vec U)>;
   PetscErrorCode run(Vec U, const StepCallback& onStep, bool* converged);
+  /// Steps run() goes to (default loadsteps): the load factor of step k stays k / loadsteps, so a
+  /// larger last step continues the ramp beyond load factor 1 with the same increment.
+  void setLastStep(int last) { lastStep_ = last; }
+  /// Continues after step p.step (a checkpoint; U, the reference rotations and the element states
+  /// restored by the caller): dU is the last converged increment (copied).
+  PetscErrorCode resume(const StaticsProgress& p, Vec dU);
+  /// State after the last converged step (valid inside the step callback).
+  const StaticsProgress& progress() const { return progress_; }
+  /// Last converged increment (nullptr before run()).
+  Vec lastIncrement() const { return dU_; }
   const std::vector<StepReport>& reports() const { return reports_; }
   const std::string& failureMessage() const { return failure_; }
   /// True when the last failed increment ended with SNES_DIVERGED_LINEAR_SOLVE on a finite tangent
@@ -65,6 +84,10 @@ class StaticAnalysis {
   Assembler& asm_;
   const bool* stop_ = nullptr;
   int loadsteps_;
+  int lastStep_;
+  StaticsProgress progress_;
+  bool resumed_ = false;
+  Vec dU_ = nullptr;  ///< last converged increment (secant predictor)
   SNES snes_ = nullptr;
   Mat J_ = nullptr;
   Mat Jop_ = nullptr;  ///< element-wise tangent operator (MATSHELL) when -tangent_operator elementwise

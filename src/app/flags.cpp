@@ -38,6 +38,9 @@ const std::vector<Flag>& sinewFlags() {
     std::vector<Flag> f = {
         {"o", text("a file name"), &output, "<filename>.h5", "result file (HDF5; the XDMF file for ParaView is written beside it)"},
         {"output_fsync_interval", realIn(0, 1e9, false, true), &output, "10", "seconds between commits of the result file that are forced to the disk (fsync; 0: every commit). A killed run never loses committed steps; a machine crash loses at most this interval"},
+        {"restart", text("a result file"), &output, "none", "continue the run that wrote this result file from its last written step (same scene; docs/results.md, Restart)"},
+        {"checkpoint", boolean(), &output, "true", "write /checkpoint (the restart state) with every written step; false: the run cannot be continued"},
+        {"stop_after_step", integerAtLeast(0), &output, "0 (off)", "testing aid: stop as on SIGTERM once the result file holds this many step rows (exit 5)"},
         {"force_rtol", realIn(0, 1, true, true), &statics, "1e-11", "equilibrium tolerance: residual relative to the element forces (dynamics: default 1e-10)"},
         {"max_cuts", integerIn(0, 50), &statics, "10", "halvings of a failing load increment (dynamics: of a failing time step)"},
         {"predictor", boolean(), &statics, "true (false for beams under the mixed-stress Newton)", "secant predictor from the last converged increment"},

@@ -26,6 +26,21 @@ PetscErrorCode RunContext::writeStep(double stepValue, Vec Ustate, const LoadSta
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+PetscErrorCode RunContext::writeCheckpoint(const std::string& group) {
+  PetscFunctionBeginUser;
+  if (!checkpoint || !checkpointState) PetscFunctionReturn(PETSC_SUCCESS);
+  const double t = MPI_Wtime();
+  CheckpointData d;
+  PetscCall(checkpointState(d));
+  d.scalars[kCkRows] = nextStep;
+  d.scalars[kCkFormFinding] = plan.formfinding ? 1.0 : 0.0;
+  if (model.formfinding && d.formfindingRows == 0) d.formfindingRows = model.formfinding->formfinding_step;
+  checkpoint->write(file, d, group);
+  times.checkpoint += MPI_Wtime() - t;
+  times.output += MPI_Wtime() - t;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 bool RunContext::guardedWrite(const std::function<void()>& write) {
   if (!ioError.empty()) return false;
   try {
@@ -46,6 +61,10 @@ PetscErrorCode RunContext::convergedStep(const Step& s, Vec Ustate, const LoadSt
     interruptSignal = sig;
     stop = true;
   }
+  if (!stop && stopAfterRows > 0 && nextStep + 1 >= stopAfterRows) {  // equal on every rank
+    interruptSignal = kStopAfterStep;
+    stop = true;
+  }
   lastStepIndex = s.index;
   const bool write = !s.selectable || s.last || stop || model.opt.output_steps.selects(s.index, s.last);
   if (write) {
@@ -53,6 +72,7 @@ PetscErrorCode RunContext::convergedStep(const Step& s, Vec Ustate, const LoadSt
     guardedWrite([&] {
       ierr = writeStep(s.value, Ustate, ls);
       if (!ierr && afterWrite) ierr = afterWrite();
+      if (!ierr) ierr = writeCheckpoint();  // same commit as the step: no flush of its own
       if (!ierr) {
         const double t = MPI_Wtime();
         file.commit();
@@ -75,6 +95,7 @@ PetscErrorCode RunContext::writeSkippedLast(Vec Ustate) {
   PetscErrorCode ierr = PETSC_SUCCESS;
   guardedWrite([&] {
     ierr = writeStep(skipped_.value, Ustate, skipped_.ls);
+    if (!ierr) ierr = writeCheckpoint();
     if (!ierr) file.commit();
   });
   PetscCall(ierr);

@@ -13,10 +13,13 @@
 #include "app/progress.hpp"
 #include "app/summary.hpp"
 #include "assembly/assembler.hpp"
+#include "output/checkpoint.hpp"
 #include "sinew/model.hpp"
 #include "sinew/result_file.hpp"
 
 namespace sinew {
+
+class Restart;
 
 struct RunContext {
   MPI_Comm comm = MPI_COMM_WORLD;
@@ -41,6 +44,15 @@ struct RunContext {
   std::string ioError;
   int lastStepIndex = 0;       ///< index of the last converged step (in its phase)
   std::string lastStepName;    ///< "load step", "time step", "form-finding step"
+  /// Checkpoints (src/output/checkpoint.*, src/app/restart.*): the writer, the running phase's
+  /// state after its last converged step (set by the phase before its loop; none: no checkpoint),
+  /// and the earlier run a -restart continues.
+  CheckpointWriter* checkpoint = nullptr;
+  std::function<PetscErrorCode(CheckpointData&)> checkpointState;
+  const Restart* restart = nullptr;
+  /// -stop_after_step k (a testing aid): the run stops as on SIGTERM once the file holds k step rows.
+  int stopAfterRows = 0;
+  static constexpr int kStopAfterStep = -1;  ///< interruptSignal of a -stop_after_step stop
 
   RunContext(Model& m, const Plan& p, Assembler& a, StepResults& r, ResultFile& f)
       : model(m), plan(p), assembler(a), results(r), file(f), progress(MPI_COMM_WORLD, m.opt.silent) {}
@@ -68,6 +80,9 @@ struct RunContext {
   /// Writes one step row: beginStep(stepValue), node/element/mesh results of U, then every step
   /// analysis (frequencies, buckling, ...). A failing step analysis sets converged = false.
   PetscErrorCode writeStep(double stepValue, Vec Ustate, const LoadState& ls);
+  /// Writes the running phase's checkpoint (checkpointState) into the result file, to be published
+  /// by the next commit with the step just written. ResultFileError on HDF5 failures.
+  PetscErrorCode writeCheckpoint(const std::string& group = "checkpoint");
 
  private:
   struct Skipped {

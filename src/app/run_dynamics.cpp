@@ -9,6 +9,7 @@
 
 #include "analysis/dynamic_analysis.hpp"
 #include "analysis/sensor_analysis.hpp"
+#include "app/restart.hpp"
 #include "app/run_context.hpp"
 #include "elements/ancf_cable2d.hpp"
 
@@ -115,6 +116,26 @@ PetscErrorCode runDynamics(RunContext& ctx) {
 
   DynamicAnalysis dyn(ctx.assembler, opts);
   dyn.setStopFlag(&ctx.stop);
+  if (ctx.restart && ctx.restart->phase() == CheckpointPhase::Dynamics)
+    PetscCall(ctx.restart->resumeDynamics(ctx, dyn, &energy0, &maxDrift));
+  // the checkpoint of a written time step (Arnold-Brüls only: PETSc TS keeps its state inside)
+  Vec stepU = nullptr, stepV = nullptr, stepQdd = nullptr;  // the step being written
+  if (!dyn.usesPetscTS())
+    ctx.checkpointState = [&](CheckpointData& d) -> PetscErrorCode {
+      const DynamicsProgress& p = dyn.progress();
+      d.scalars[kCkPhase] = static_cast<double>(CheckpointPhase::Dynamics);
+      d.scalars[kCkStep] = p.step;
+      d.scalars[kCkStepValue] = p.time;
+      d.scalars[kCkTime] = p.time;
+      d.scalars[kCkSubstep] = p.h;
+      d.scalars[kCkSuccesses] = p.successes;
+      d.scalars[kCkDt] = opts.dt;
+      d.scalars[kCkSpectralRadius] = opts.spectral_radius;
+      d.scalars[kCkEnergy0] = energy0;
+      d.scalars[kCkMaxDrift] = maxDrift;
+      d.vectors = {{"U", stepU}, {"V", stepV}, {"A", dyn.auxiliaryAccelerations()}, {"Qdd", stepQdd}};
+      return PETSC_SUCCESS;
+    };
   const int nsteps = std::max(1, static_cast<int>(std::ceil(opts.tend / opts.dt - 1e-9)));
   ctx.progress.startPhase("time step", nsteps);
   auto writeEnergy = [&](int k, Vec U, Vec V, const LoadState& ls) -> PetscErrorCode {
@@ -145,6 +166,9 @@ PetscErrorCode runDynamics(RunContext& ctx) {
     ls.time = t;
     ls.gravityRamped = false;
     if (sensors) sensors->setRates(V, Qdd);
+    stepU = U;
+    stepV = V;
+    stepQdd = Qdd;
     char detail[64];
     std::snprintf(detail, sizeof detail, "t = %.6g", t);
     PetscCall(ctx.convergedStep({k, last, t, detail}, U, ls, [&]() { return writeEnergy(k, U, V, ls); }));
@@ -154,6 +178,7 @@ PetscErrorCode runDynamics(RunContext& ctx) {
   bool ok = false;
   PetscCall(dyn.run(ctx.U, onStep, &ok));
   ctx.lastStepName = "time step";
+  ctx.checkpointState = nullptr;
   if (!ok && !ctx.stop) PetscCall(ctx.writeSkippedLast(ctx.U));
   if (!ok && ctx.converged && !ctx.stop) {
     ctx.converged = false;

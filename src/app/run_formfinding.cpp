@@ -6,6 +6,7 @@
 #include <span>
 
 #include "analysis/formfinding_analysis.hpp"
+#include "app/restart.hpp"
 #include "app/run_context.hpp"
 
 namespace sinew {
@@ -18,7 +19,20 @@ PetscErrorCode runFormFinding(RunContext& ctx) {
   const FormFinding& ff = *ctx.model.formfinding;
   FormFindingAnalysis analysis(ctx.assembler, ff, ctx.model.eprops);
   analysis.setStopFlag(&ctx.stop);
+  if (ctx.restart && ctx.restart->phase() == CheckpointPhase::FormFinding)
+    ctx.restart->resumeFormFinding(ctx, analysis);  // -restart: continue after its steps
   ctx.progress.startPhase("form-finding step", ff.formfinding_step);
+  // the checkpoint of a written step: U, the form-finding history (the kernels' states are added
+  // by the writer)
+  auto state = [&](CheckpointData& d) -> PetscErrorCode {
+    d.scalars[kCkPhase] = static_cast<double>(CheckpointPhase::FormFinding);
+    d.scalars[kCkStep] = analysis.reports().empty() ? 0 : analysis.reports().back().step;
+    d.formfinding = formfindingRows(analysis.reports());
+    d.formfindingRows = ff.formfinding_step;
+    d.vectors = {{"U", ctx.U}};
+    return PETSC_SUCCESS;
+  };
+  ctx.checkpointState = state;
   auto onStep = [&](const FormFindingStepReport& r, Vec U) -> PetscErrorCode {
     LoadState ls;  // load factor 0
     char detail[160];
@@ -42,12 +56,17 @@ PetscErrorCode runFormFinding(RunContext& ctx) {
     change.push_back(r.shapeChange);
     normal.push_back(r.shapeChangeNormal);
   }
+  PetscErrorCode ierr = PETSC_SUCCESS;
   ctx.guardedWrite([&] {
     ctx.file.writeArray("formfinding/residual", res, {static_cast<long>(res.size())});
     ctx.file.writeArray("formfinding/shape_change", change, {static_cast<long>(change.size())});
     ctx.file.writeArray("formfinding/shape_change_normal", normal, {static_cast<long>(normal.size())});
-    ctx.file.commit();
+    // the found shape before the elastic restart, kept for a restart with other loads (app/restart.hpp)
+    if (ok && !ctx.stop) ierr = ctx.writeCheckpoint("checkpoint_formfinding");
+    if (!ierr) ctx.file.commit();
   });
+  PetscCall(ierr);
+  ctx.checkpointState = nullptr;
   std::string s = "\n form finding (URS): " + std::to_string(analysis.numFormFoundElements()) +
                   " form-found elements, model size " ;
   char line[256];

@@ -18,6 +18,7 @@
 #include "app/command_line.hpp"
 #include "app/interrupt.hpp"
 #include "app/plan.hpp"
+#include "app/restart.hpp"
 #include "app/run_context.hpp"
 #include "app/summary.hpp"
 #include "assembly/assembler.hpp"
@@ -248,12 +249,14 @@ PetscErrorCode runScene(int argc, char** argv, int* exitCode) {
   std::unique_ptr<DistributedMesh> dmesh;
   Plan plan;
   std::string setupError;
+  std::string fingerprint;  // of the scene, stored with every checkpoint (app/restart.hpp)
   PetscCall(PetscLogEventBegin(SinewEvents::get().setup, 0, 0, 0, 0));
   try {
     model = readScene(scenePath, petscOverrides());
     plan = makePlan(model);
     const FeMesh fe = discretize(model);
     dmesh = std::make_unique<DistributedMesh>(distributeMesh(comm, model, fe, makeKernelFactory(model)));
+    fingerprint = sceneFingerprint(model, static_cast<long>(fe.X.size()), static_cast<long>(fe.elements.size()));
   } catch (const SceneError& ex) {
     setupError = std::string("error: ") + ex.what();
     *exitCode = 2;
@@ -283,6 +286,23 @@ PetscErrorCode runScene(int argc, char** argv, int* exitCode) {
     PetscCall(PetscPrintf(comm, "error: result file: %s\n", problem.c_str()));
     *exitCode = 1;
     PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  // -restart old.h5: the checkpoint must belong to this scene (refused with exit 2 before any file is written)
+  std::unique_ptr<Restart> restart;
+  if (const std::string from = restartOption(); !from.empty() && !model.opt.showinputonly) {
+    std::string error;
+    try {
+      restart = std::make_unique<Restart>(comm, from, h5, fingerprint, model, plan);
+    } catch (const std::exception& ex) {
+      error = std::string("error: ") + ex.what();
+    }
+    int failed = !error.empty();
+    MPI_Allreduce(MPI_IN_PLACE, &failed, 1, MPI_INT, MPI_MAX, comm);
+    if (failed) {
+      PetscCall(PetscPrintf(comm, "%s\n", error.empty() ? "error: -restart failed on another rank" : error.c_str()));
+      *exitCode = 2;
+      PetscFunctionReturn(PETSC_SUCCESS);
+    }
   }
   Assembler assembler(*dmesh, model.opt.gravity);
   StepResults results(assembler, {plan.stress, plan.stressPerElement});
@@ -351,6 +371,43 @@ PetscErrorCode runScene(int argc, char** argv, int* exitCode) {
     PhaseScope phase("the set-up of the analyses");
     PetscCall(addStepAnalyses(ctx));
   }
+  CheckpointWriter checkpointWriter(assembler, fingerprint);
+  PetscBool writeCheckpoints = PETSC_TRUE;  // -checkpoint false: no /checkpoint (the run cannot be continued)
+  PetscCall(PetscOptionsGetBool(nullptr, nullptr, "-checkpoint", &writeCheckpoints, nullptr));
+  if (writeCheckpoints) ctx.checkpoint = &checkpointWriter;
+  ctx.stopAfterRows = stopAfterStepOption();
+  ctx.restart = restart.get();
+  if (restart && ctx.ioError.empty()) {
+    // the earlier run's rows and state, committed with its checkpoint before the analysis goes on
+    PetscErrorCode ierr = PETSC_SUCCESS;
+    std::vector<Vec> work;
+    CheckpointData restored;
+    ctx.guardedWrite([&] {
+      try {
+        restart->restore(ctx, layout);
+      } catch (const std::exception& ex) {
+        throw std::runtime_error("-restart " + restart->source() + ": " + ex.what());
+      }
+      ierr = restart->restoredState(ctx, restored, &work);
+      if (!ierr) {
+        ctx.checkpointState = [&restored](CheckpointData& d) -> PetscErrorCode {
+          d = restored;
+          return PETSC_SUCCESS;
+        };
+        ierr = ctx.writeCheckpoint();
+        ctx.checkpointState = nullptr;
+      }
+      if (!ierr) file->commit();
+    });
+    PetscCall(ierr);
+    for (Vec& w : work) PetscCall(VecDestroy(&w));
+    if (ctx.ioError.empty() && !model.opt.silent)
+      PetscCall(PetscPrintf(comm, "  restart: %d step rows copied from %s, continuing the %s\n", ctx.nextStep,
+                            restart->source().c_str(), phaseName(restart->phase())));
+  }
+  // a restart continues its checkpoint's phase (form finding, then the load analysis, as usual)
+  const bool runFF = plan.formfinding && (!restart || restart->phase() == CheckpointPhase::FormFinding);
+  const bool resumeStatics = restart && restart->phase() == CheckpointPhase::Statics;
   if (!ctx.ioError.empty()) {
     // nothing to do: the file error is reported below
   } else if (model.opt.showinputonly) {
@@ -362,25 +419,43 @@ PetscErrorCode runScene(int argc, char** argv, int* exitCode) {
     });
     PetscCall(ierr);
   } else {
-    if (plan.formfinding) {
+    if (runFF) {
       PhaseScope phase("form finding");
       PetscCall(runFormFinding(ctx));
       PhaseScope checkAfter("the constraint check after form finding");
-      PetscCall(checkLoadedModelAfterFormFinding(ctx, check, &modelError));
+      if (!ctx.stop) PetscCall(checkLoadedModelAfterFormFinding(ctx, check, &modelError));
     }
-    if (ctx.converged && plan.dynamics) {
+    const bool go = ctx.converged && !ctx.stop;  // not after an interrupted form finding
+    if (go && plan.dynamics) {
       PhaseScope phase("dynamics");
       PetscCall(runDynamics(ctx));
-    } else if (ctx.converged && plan.continuation) {
+    } else if (go && plan.continuation) {
       PhaseScope phase("path following");
       PetscCall(runContinuation(ctx));
-    } else if (ctx.converged && plan.statics) {
+    } else if (go && plan.statics) {
       PhaseScope phase("statics");
       const double tStatics = MPI_Wtime();
       const double outBefore = ctx.times.output, anaBefore = ctx.times.analyses;
-      StaticAnalysis statics(assembler, model.opt.loadsteps);
+      // a restart keeps the earlier run's ramp (load factor k / its loadsteps); -loadsteps is the last step
+      const int ramp = resumeStatics ? restart->rampLoadsteps() : model.opt.loadsteps;
+      StaticAnalysis statics(assembler, ramp);
+      statics.setLastStep(model.opt.loadsteps);
       statics.setUnloaded(unloaded(model, *dmesh, assembler));
       statics.setStopFlag(&ctx.stop);
+      if (resumeStatics) PetscCall(restart->resumeStatics(ctx, statics));
+      ctx.checkpointState = [&](CheckpointData& d) -> PetscErrorCode {
+        const StaticsProgress& p = statics.progress();
+        d.scalars[kCkPhase] = static_cast<double>(CheckpointPhase::Statics);
+        d.scalars[kCkStep] = p.step;
+        d.scalars[kCkStepValue] = p.lambda;
+        d.scalars[kCkLoadsteps] = ramp;
+        d.scalars[kCkLambda] = p.lambda;
+        d.scalars[kCkDlPrev] = p.dlPrev;
+        d.scalars[kCkDlAdapt] = p.dlAdapt;
+        d.scalars[kCkFintConverged] = p.fintConverged;
+        d.vectors = {{"U", ctx.U}, {"dU", statics.lastIncrement()}};
+        return PETSC_SUCCESS;
+      };
       ctx.progress.startPhase("load step", model.opt.loadsteps);
       auto onStep = [&](const StepReport& rep, Vec Ustep) -> PetscErrorCode {
         LoadState ls;
@@ -395,6 +470,7 @@ PetscErrorCode runScene(int argc, char** argv, int* exitCode) {
       PetscCall(statics.run(ctx.U, onStep, &ok));
       ctx.lastStepName = "load step";
       if (!ok) PetscCall(ctx.writeSkippedLast(ctx.U));  // ctx.U holds the last converged state
+      ctx.checkpointState = nullptr;
       ctx.reports = statics.reports();
       if (const CableCoarseSpace* cs = statics.coarseSpace())
         ctx.summaryLines += "  cable coarse space: " + std::to_string(cs->coarseNodes()) + " coarse nodes, " +
@@ -438,7 +514,9 @@ PetscErrorCode runScene(int argc, char** argv, int* exitCode) {
     std::string msg;
     if (!ctx.ioError.empty()) msg = "error: writing the results failed: " + ctx.ioError + "\n";
     else
-      msg = std::string("interrupted by ") + signalName(ctx.interruptSignal) + " after " +
+      msg = std::string(ctx.interruptSignal == RunContext::kStopAfterStep ? "stopped by -stop_after_step"
+                                                                          : std::string("interrupted by ") + signalName(ctx.interruptSignal)) +
+            " after " +
             (ctx.lastStepName.empty() ? std::string("set-up") : ctx.lastStepName + " " + std::to_string(ctx.lastStepIndex)) + "\n";
     msg += "  results: " + h5 +
            (kept >= 0 ? " (" + std::to_string(kept) + " steps, converged = 0)"

@@ -91,10 +91,10 @@ PetscErrorCode printSummary(MPI_Comm comm, const SummaryBody& b) {
     s << line;
   }
   std::snprintf(line, sizeof line,
-                ", step analyses %.3f s, output %.3f s\n"
+                ", step analyses %.3f s, output %.3f s (checkpoints %.3f s)\n"
                 " assemblies: %ld residuals, %ld tangents, %ld mass, %ld split tangents, %ld stress\n",
-                b.times.analyses, b.times.output, b.counters.residuals, b.counters.jacobians, b.counters.masses,
-                b.counters.splitTangents, b.counters.stressRecoveries);
+                b.times.analyses, b.times.output, b.times.checkpoint, b.counters.residuals, b.counters.jacobians,
+                b.counters.masses, b.counters.splitTangents, b.counters.stressRecoveries);
   s << line;
   if (b.counters.pressureLoads > 0) s << " pressure: " << b.counters.pressureLoads << " follower element loads (rank 0)\n";
   s << " results: " << b.h5 << " (ParaView: " << b.xdmf << "); " << b.commits << " commits, " << b.syncedCommits

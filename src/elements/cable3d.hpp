@@ -36,6 +36,16 @@ class Cable3D final : public ElementKernel {
   double vonMisesMax(const double* q, const double* lambda) const override;
   /// {N}: elastic axial force, or the URS force lambda N0 + (1 - lambda) N0 l/L in form finding.
   void elementForce(const double* q, std::vector<double>& out) const override;
+  /// Reference length and active prestress force.
+  int checkpointSize() const override { return 2; }
+  void saveCheckpoint(double* out) const override {
+    out[0] = L_;
+    out[1] = N0_;
+  }
+  void loadCheckpoint(const double* in) override {
+    L_ = in[0];
+    N0_ = in[1];
+  }
 
   // --- properties
   void setReferenceLength(double L0) { L_ = L0; }

@@ -100,6 +100,25 @@ void Membrane::setPrestress(const std::array<double, 3>& s0) {
   sBase_ = s0;
 }
 
+void Membrane::saveCheckpoint(double* out) const {
+  for (int a = 0; a < 4; ++a)
+    for (int k = 0; k < 3; ++k) out[3 * a + k] = a < nn_ ? X_[a][k] : 0.0;
+  for (int k = 0; k < 3; ++k) {
+    out[12 + k] = props_.prestress[k];
+    out[15 + k] = sBase_[k];
+    out[18 + k] = sAct_[k];
+  }
+}
+
+void Membrane::loadCheckpoint(const double* in) {
+  setReference(in);
+  for (int k = 0; k < 3; ++k) {
+    props_.prestress[k] = in[12 + k];
+    sBase_[k] = in[15 + k];
+    sAct_[k] = in[18 + k];
+  }
+}
+
 void Membrane::setFormFinding(bool on, double lambda) {
   ff_ = on;
   lambda_ = lambda;

@@ -83,6 +83,10 @@ class Membrane final : public ElementKernel {
   double vonMisesMax(const double* q, const double* lambda) const override;
   /// Cauchy stress resultants n11 n22 n12 (force/length) in the current prestress frame at the centre.
   void elementForce(const double* q, std::vector<double>& out) const override;
+  /// Reference positions (4 x 3, unused corner 0), prescribed, base and active prestress (3 each).
+  int checkpointSize() const override { return 21; }
+  void saveCheckpoint(double* out) const override;
+  void loadCheckpoint(const double* in) override;
 
   int numNodes() const { return nn_; }
   const MembraneProps& props() const { return props_; }

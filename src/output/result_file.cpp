@@ -51,6 +51,7 @@
 #include <iostream>
 #include <limits>
 #include <map>
+#include <set>
 #include <utility>
 #include <stdexcept>
 
@@ -248,9 +249,12 @@ struct Sink {
   h5::Handle file, dxpl;
   std::map<std::string, StepDataset> steps;  // std::map: every rank iterates in the same order
   std::vector<double> stepValues;
+  std::map<std::string, h5::Handle> state;  // fixed-size restart state datasets, kept open
+  std::set<std::string> stateGroups;
   int numSteps() const { return static_cast<int>(stepValues.size()); }
   void closeHandles() noexcept {
     for (auto& [name, sd] : steps) sd.dset.reset();
+    for (auto& [name, d] : state) d.reset();
     dxpl.reset();
     file.reset();
   }
@@ -270,6 +274,7 @@ struct ResultFile::Impl {
   RowPlan cellPlans[3];             // lines, triangles, quads
   std::vector<long> ownedCells[3];  // global rows of this rank's cells of each kind (contiguous)
   bool hasReference = false;        // /mesh/p0 written (layout.meshReference given)
+  std::map<std::string, RowPlan> statePlans;  // per state table, built at its first write
   Sink sinks[2];
   int lead = 0;              // index of the sink receiving writes (named partPath)
   bool published = false;    // the other sink is under the final name (after the first commit)
@@ -550,6 +555,18 @@ struct ResultFile::Impl {
     }
   }
 
+  // The fixed-size state dataset `name` of sink s: created at the first write (shape dims).
+  hid_t stateDataset(Sink& s, const std::string& name, const std::vector<hsize_t>& dims) {
+    auto it = s.state.find(name);
+    if (it != s.state.end()) return it->second;
+    const std::string what = "dataset /" + name;
+    h5::Handle space = h5::dataspace(dims, what);
+    h5::Handle lcpl = h5::intermediateGroupLcpl(what);
+    const hid_t id = H5Dcreate2(s.file, name.c_str(), H5T_IEEE_F64LE, space, lcpl, H5P_DEFAULT, H5P_DEFAULT);
+    agreeStatus(comm, id, what + ": create", s.name);
+    return s.state.emplace(name, h5::Handle(id, H5Dclose, what + ": create")).first->second;
+  }
+
   void validateLayout() const {
     std::string error;
     auto fail = [&](const std::string& e) {
@@ -814,6 +831,74 @@ void ResultFile::writeArray(const std::string& rawName, std::span<const double> 
   });
 }
 
+void ResultFile::writeStateTable(const std::string& rawName, long numRows, long m, std::span<const long> rows,
+                                 std::span<const double> values) {
+  Impl& im = *impl_;
+  const std::string name = normalized(rawName);
+  const std::string what = "dataset /" + name;
+  std::string error = im.stateError(false);
+  if (error.empty() && (m < 1 || numRows < 0)) error = "shape [" + std::to_string(numRows) + ", " + std::to_string(m) + "]";
+  if (error.empty() && values.size() != rows.size() * std::size_t(m))
+    error = std::to_string(values.size()) + " values for " + std::to_string(rows.size()) + " rows of " + std::to_string(m);
+  if (error.empty() && name.empty()) error = "empty dataset name";
+  if (error.empty() && im.leadSink().steps.count(name)) error = "exists as a step dataset";
+  agree(im.comm, error, signatureOf(name, {numRows, m}, 12), what);
+  auto it = im.statePlans.find(name);
+  if (it == im.statePlans.end())
+    it = im.statePlans.emplace(name, RowPlan::build(im.comm, numRows, std::vector<long>(rows.begin(), rows.end()), what)).first;
+  const RowPlan& p = it->second;
+  im.apply([&im, name, numRows, m, begin = p.begin, count = p.count, block = p.exchange(im.comm, values, m)](Sink& s) {
+    const hid_t d = im.stateDataset(s, name, {hsize_t(numRows), hsize_t(m)});
+    im.writeBox(s, d, H5T_NATIVE_DOUBLE, {hsize_t(begin), 0}, {hsize_t(count), hsize_t(m)}, count > 0 ? block.data() : nullptr,
+                "dataset /" + name);
+  });
+}
+
+void ResultFile::writeStateArray(const std::string& rawName, std::span<const double> values, std::vector<long> shape) {
+  Impl& im = *impl_;
+  const std::string name = normalized(rawName);
+  const std::string what = "dataset /" + name;
+  long header[2] = {static_cast<long>(shape.size()), static_cast<long>(values.size())};
+  MPI_Bcast(header, 2, MPI_LONG, 0, im.comm);
+  shape.resize(static_cast<std::size_t>(header[0]));
+  MPI_Bcast(shape.data(), static_cast<int>(shape.size()), MPI_LONG, 0, im.comm);
+  std::string error = im.stateError(false);
+  for (long d : shape)
+    if (d < 1) error = "dimension < 1";
+  if (error.empty() && product(shape) != header[1])
+    error = std::to_string(header[1]) + " values on rank 0 for " + std::to_string(product(shape));
+  if (error.empty() && im.leadSink().steps.count(name)) error = "exists as a step dataset";
+  agree(im.comm, error, signatureOf(name, shape, 13), what);
+  std::vector<double> data(im.rank == 0 ? values.begin() : values.end(), values.end());
+  im.apply([&im, name, shape, data = std::move(data)](Sink& s) {
+    const std::vector<hsize_t> dims(shape.begin(), shape.end());
+    const hid_t d = im.stateDataset(s, name, dims);
+    im.writeBox(s, d, H5T_NATIVE_DOUBLE, std::vector<hsize_t>(dims.size(), 0), dims, im.rank == 0 ? data.data() : nullptr,
+                "dataset /" + name);
+  });
+}
+
+void ResultFile::writeStateAttribute(const std::string& rawGroup, const std::string& attr, const std::string& text) {
+  Impl& im = *impl_;
+  const std::string group = normalized(rawGroup);
+  agree(im.comm, im.stateError(false), signatureOf(group + "@" + attr, {}, 14), "group /" + group);
+  const std::string value = broadcastString(im.comm, text);
+  im.apply([&im, group, attr, value](Sink& s) {
+    const std::string what = "group /" + group;
+    h5::Handle g;
+    if (s.stateGroups.count(group)) {
+      g = h5::Handle(H5Gopen2(s.file, group.c_str(), H5P_DEFAULT), H5Gclose, what + ": open");
+    } else {
+      h5::Handle lcpl = h5::intermediateGroupLcpl(what);
+      const hid_t id = H5Gcreate2(s.file, group.c_str(), lcpl, H5P_DEFAULT, H5P_DEFAULT);
+      agreeStatus(im.comm, id, what + ": create", s.name);
+      g = h5::Handle(id, H5Gclose, what + ": create");
+      s.stateGroups.insert(group);
+    }
+    h5::writeAttribute(g, attr, value);
+  });
+}
+
 void ResultFile::commit() {
   Impl& m = *impl_;
   agree(m.comm, m.stateError(false), signatureOf("commit", {}, 11), "result file " + m.path + ": commit");
@@ -872,6 +957,7 @@ void ResultFile::close(bool converged) {
     m.fillAll(lead);
     h5::writeAttribute(lead.file, "converged", ok);
     for (auto& [name, sd] : lead.steps) agreeStatus(m.comm, sd.dset.reset(), "dataset /" + name + ": close", lead.name);
+    for (auto& [name, d] : lead.state) agreeStatus(m.comm, d.reset(), "dataset /" + name + ": close", lead.name);
     h5::check(lead.dxpl.reset(), "file " + lead.name + ": transfer list");
     agreeStatus(m.comm, lead.file.reset(), "close", lead.name);
     m.publishLead(false);

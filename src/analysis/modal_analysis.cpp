@@ -80,7 +80,7 @@ ModalAnalysis::ModalAnalysis(Assembler& assembler, int nfreq, bool writeResults)
   PetscCallAbort(comm, STSetType(st, STSINVERT));
   PetscCallAbort(comm, STSetMatStructure(st, SUBSET_NONZERO_PATTERN));  // pattern(M) within pattern(K)
   PetscCallAbort(comm, STGetKSP(st, &ksp));
-  PetscCallAbort(comm, useDirectSolver(ksp));
+  PetscCallAbort(comm, useDirectSolver(ksp, asm_.mesh()));
   PetscCallAbort(comm, eigenOperator(asm_, &elementwise_));
   if (elementwise_) {
     // K x by the element-wise, rigid-motion-free products (accurate for the soft modes of fine
@@ -278,6 +278,10 @@ PetscErrorCode ModalAnalysis::atStep(Vec U, const LoadState& ls, ResultFile& fil
   for (Vec& x : found) PetscCall(VecDestroy(&x));
   PetscCall(PetscInfo(nullptr, "step %d: target %g (scale %g), %d converged, reason %s\n", step_, userTarget_ ? 0.0 : sigma,
                       scale, static_cast<int>(nconv), EPSConvergedReasons[reason]));
+  if (elementwise_) {
+    const long rf = asm_.rigidFreeElements();
+    PetscCall(PetscInfo(nullptr, "step %d: %ld elements (all ranks; %ld local) apply K rigid-motion free\n", step_, rf, static_cast<long>(mesh.elements.size())));
+  }
 
   if (static_cast<int>(pairs.size()) < nev_) {
     *ok = false;

@@ -129,7 +129,7 @@ void Assembler::keepRigid(const LocalElement& el, const double* q, const double*
       err = std::max(err, std::abs(s - F[r * nr + k]));
       scale = std::max(scale, a);
     }
-  rigidInfo_.push_back({err <= 1e-12 * scale ? nr : 0, off});
+  rigidInfo_.push_back({err <= 1e-8 * scale ? nr : 0, off});
 }
 
 long Assembler::rigidFreeElements() const {

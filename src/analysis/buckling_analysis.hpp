@@ -32,6 +32,12 @@ class BucklingAnalysis : public StepAnalysis {
 
  private:
   PetscErrorCode solve(int nev, int* nconv);
+  static PetscErrorCode materialMult(Mat A, Vec x, Vec y);
+  PetscErrorCode refine(Vec x, PetscScalar* mu, double* backward);
+  bool elementwise_ = false;  // -eigen_operator: K_m x = (element-wise K) x - K_g x
+  Mat Kop_ = nullptr;
+  std::vector<double> estimate_, backward_;
+  double tol_ = 1e-8;
 
   Assembler& asm_;
   int nbuck_;

@@ -102,7 +102,21 @@ ModalAnalysis::ModalAnalysis(Assembler& assembler, int nfreq, bool writeResults)
   SinewCallThrow(comm, STSetType(st, STSINVERT));
   SinewCallThrow(comm, STSetMatStructure(st, SUBSET_NONZERO_PATTERN));  // pattern(M) within pattern(K)
   SinewCallThrow(comm, STGetKSP(st, &ksp));
-  SinewCallThrow(comm, useDirectSolver(ksp));
+  SinewCallThrow(comm, useDirectSolver(ksp, asm_.mesh()));
+  SinewCallThrow(comm, eigenOperator(asm_, &elementwise_));
+  if (elementwise_) {
+    // K x by the element-wise, rigid-motion-free products (accurate for the soft modes of fine
+    // meshes); (K - sigma M) y = b by GMRES preconditioned with the LU of the assembled K - sigma M
+    asm_.keepTangentBlocks(true);
+    asm_.keepRigidData(true);
+    const PetscInt nloc = asm_.mesh().numOwnedUnknowns, N = static_cast<PetscInt>(asm_.mesh().numGlobalUnknowns);
+    SinewCallThrow(comm, MatCreateShell(comm, nloc, nloc, N, N, this, &Kop_));
+    SinewCallThrow(comm, MatShellSetOperation(Kop_, MATOP_MULT, reinterpret_cast<void (*)(void)>(stiffnessMult)));
+    SinewCallThrow(comm, MatSetOption(Kop_, MAT_SYMMETRIC, PETSC_TRUE));
+    SinewCallThrow(comm, asm_.createMatrix(&P_));
+    SinewCallThrow(comm, STSetMatMode(st, ST_MATMODE_SHELL));
+    SinewCallThrow(comm, useAccurateInnerSolver(ksp));
+  }
   SinewCallThrow(comm, EPSSetFromOptions(eps_));  // last: -eps_* and -st_* flags win
   PetscInt nev, ncv, mpd;
   SinewCallThrow(comm, EPSGetDimensions(eps_, &nev, &ncv, &mpd));
@@ -133,6 +147,16 @@ ModalAnalysis::~ModalAnalysis() {
   MatDestroy(&K_);
   MatDestroy(&Kt_);
   MatDestroy(&M_);
+  MatDestroy(&Kop_);
+  MatDestroy(&P_);
+}
+
+PetscErrorCode ModalAnalysis::stiffnessMult(Mat A, Vec x, Vec y) {
+  PetscFunctionBeginUser;
+  void* ctx;
+  PetscCall(MatShellGetContext(A, &ctx));
+  PetscCall(static_cast<ModalAnalysis*>(ctx)->asm_.applyTangent(x, y, true));
+  PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 // K: tangent at the converged state (theta = 0), made symmetric: at equilibrium under conservative
@@ -218,12 +242,33 @@ PetscErrorCode ModalAnalysis::atStep(Vec U, const LoadState& ls, ResultFile& fil
   PetscCall(shiftTarget(&sigma, &scale));
   if (step_ == 1) PetscCall(clampToFiniteModes());
   if (!userTarget_) PetscCall(EPSSetTarget(eps_, sigma));
-  PetscCall(EPSSetOperators(eps_, K_, M_));
+  if (elementwise_) {
+    PetscScalar target;
+    PetscCall(EPSGetTarget(eps_, &target));
+    PetscCall(MatCopy(K_, P_, SAME_NONZERO_PATTERN));
+    PetscCall(MatAXPY(P_, -target, M_, SUBSET_NONZERO_PATTERN));
+    ST st;
+    PetscCall(EPSGetST(eps_, &st));
+    PetscCall(STSetPreconditionerMat(st, P_));
+    PetscCall(EPSSetOperators(eps_, Kop_, M_));
+  } else {
+    PetscCall(EPSSetOperators(eps_, K_, M_));
+  }
+
   PetscCall(PetscLogEventBegin(SinewEvents::get().eigen, 0, 0, 0, 0));
   PetscCall(EPSSolve(eps_));
   PetscCall(PetscLogEventEnd(SinewEvents::get().eigen, 0, 0, 0, 0));
   PetscInt nconv;
   PetscCall(EPSGetConverged(eps_, &nconv));
+  PetscReal tol;
+  PetscInt maxit;
+  PetscCall(EPSGetTolerances(eps_, &tol, &maxit));
+  tol_ = tol;
+  PetscReal normK, normM;  // scales of the backward error
+  PetscCall(MatNorm(K_, NORM_INFINITY, &normK));
+  PetscCall(MatNorm(M_, NORM_INFINITY, &normM));
+  Vec r;
+  PetscCall(MatCreateVecs(K_, &r, nullptr));
   EPSConvergedReason reason;
   PetscCall(EPSGetConvergedReason(eps_, &reason));
 
@@ -233,6 +278,7 @@ PetscErrorCode ModalAnalysis::atStep(Vec U, const LoadState& ls, ResultFile& fil
   struct Pair {
     double lambda;
     int index;
+    double estimate, backward;
   };
   std::vector<Pair> pairs;
   Vec Mx;
@@ -254,22 +300,50 @@ PetscErrorCode ModalAnalysis::atStep(Vec U, const LoadState& ls, ResultFile& fil
       PetscCall(VecDestroy(&x));
       continue;
     }
+    PetscReal estimate = 0;
+    PetscCall(EPSGetErrorEstimate(eps_, i, &estimate));
     PetscCall(VecScale(x, 1.0 / std::sqrt(xMx)));
-    pairs.push_back({kr, static_cast<int>(found.size())});
+    PetscCall(MatMult(M_, x, Mx));
+    if (elementwise_) {  // Rayleigh quotient with the accurate operator (error quadratic in the mode's)
+      PetscCall(asm_.applyTangent(x, r, true));
+      PetscScalar xKx;
+      PetscCall(VecDot(x, r, &xKx));
+      kr = xKx;
+    } else {
+      PetscCall(MatMult(K_, x, r));
+    }
+    // backward error ||K x - lambda M x|| / ((||K|| + |lambda| ||M||) ||x||) with the operator used
+    PetscCall(VecAXPY(r, -kr, Mx));
+    PetscReal rn, xn2;
+    PetscCall(VecNorm(r, NORM_2, &rn));
+    PetscCall(VecNorm(x, NORM_2, &xn2));
+    const double backward = rn / ((normK + std::abs(kr) * normM) * xn2);
+    pairs.push_back({kr, static_cast<int>(found.size()), estimate, backward});
     found.push_back(x);
   }
   PetscCall(VecDestroy(&Mx));
+  PetscCall(VecDestroy(&r));
   std::stable_sort(pairs.begin(), pairs.end(), [](const Pair& a, const Pair& b) { return a.lambda < b.lambda; });
 
   const double zeroTol = 1e-6 * scale;
   hz_.assign(nev_, std::numeric_limits<double>::quiet_NaN());
+  estimate_.assign(nev_, std::numeric_limits<double>::quiet_NaN());
+  backward_.assign(nev_, std::numeric_limits<double>::quiet_NaN());
+  double worst = 0;
   for (size_t j = 0; j < pairs.size(); ++j) {
     hz_[j] = frequencyHz(pairs[j].lambda, zeroTol);
+    estimate_[j] = pairs[j].estimate;
+    backward_[j] = pairs[j].backward;
+    worst = std::max({worst, pairs[j].estimate, pairs[j].backward});
     PetscCall(VecCopy(found[pairs[j].index], modes_[j]));
   }
   for (Vec& x : found) PetscCall(VecDestroy(&x));
   PetscCall(PetscInfo(nullptr, "step %d: target %g (scale %g), %d converged, reason %s\n", step_, userTarget_ ? 0.0 : sigma,
                       scale, static_cast<int>(nconv), EPSConvergedReasons[reason]));
+  if (elementwise_) {
+    const long rf = asm_.rigidFreeElements();
+    PetscCall(PetscInfo(nullptr, "step %d: %ld elements (all ranks; %ld local) apply K rigid-motion free\n", step_, rf, static_cast<long>(mesh.elements.size())));
+  }
 
   if (static_cast<int>(pairs.size()) < nev_) {
     *ok = false;
@@ -279,8 +353,17 @@ PetscErrorCode ModalAnalysis::atStep(Vec U, const LoadState& ls, ResultFile& fil
         << "); try -eps_max_it, -eps_ncv, a looser -eps_tol, or fewer frequencies (-nfreq)";
     failure_ = msg.str();
   }
+  if (worst > tol_) {
+    ++warned_;
+    PetscCall(PetscPrintf(mesh.comm,
+                          "  warning: natural frequencies at step %d: error estimate or backward error %.2e of an "
+                          "eigenpair exceeds -eps_tol %.1e (/freq_error_estimate, /freq_backward_error)\n",
+                          step_, worst, tol_));
+  }
   if (write_) {
     file.writeStepRow("freq", hz_);
+    file.writeStepRow("freq_error_estimate", estimate_);
+    file.writeStepRow("freq_backward_error", backward_);
     std::vector<double> rows, rot;
     std::vector<double>* withRot = mesh.anyRotations ? &rot : nullptr;
     for (int j = 0; j < nev_; ++j) {

@@ -52,6 +52,7 @@ class ModalAnalysis : public StepAnalysis {
   PetscErrorCode assemble(Vec U, const LoadState& ls);
   PetscErrorCode shiftTarget(double* sigma, double* scale);
   PetscErrorCode clampToFiniteModes();
+  static PetscErrorCode stiffnessMult(Mat A, Vec x, Vec y);
 
   Assembler& asm_;
   bool write_;
@@ -59,6 +60,13 @@ class ModalAnalysis : public StepAnalysis {
   bool userTarget_ = false;
   double shiftRel_ = 1e-8;
   Mat K_ = nullptr, Kt_ = nullptr, M_ = nullptr;
+  bool elementwise_ = false;   // -eigen_operator: K applied element by element (rigid-motion free)
+  Mat Kop_ = nullptr;          // shell: Assembler::applyTangent(x, y, true)
+  Mat P_ = nullptr;            // assembled K - sigma M: the preconditioner (LU) of the inner GMRES
+  std::vector<double> estimate_;  // SLEPc's error estimate per reported pair, last step
+  std::vector<double> backward_;  // backward error ||K x - lambda M x|| / ((||K|| + |lambda| ||M||) ||x||)
+  double tol_ = 1e-8;
+  int warned_ = 0;
   Vec dK_ = nullptr, dM_ = nullptr;
   EPS eps_ = nullptr;
   std::vector<double> hz_;

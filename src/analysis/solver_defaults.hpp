@@ -3,6 +3,9 @@
 #pragma once
 #include <petscksp.h>
 
+#include <string>
+
+#include "assembly/assembler.hpp"
 #include "mesh/distributed_mesh.hpp"
 #include "sinew/petsc_compat.hpp"
 
@@ -46,6 +49,70 @@ inline PetscErrorCode useDirectSolver(KSP ksp, const DistributedMesh& mesh) {
   PetscCall(PCFactorSetMatOrderingType(pc, MATORDERINGND));
   // no pivoting: a zero pivot (a wild Newton iterate) is shifted instead of failing the solve
   PetscCall(PCFactorSetShiftType(pc, MAT_SHIFT_NONZERO));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/// -eigen_operator auto|elementwise|assembled: how the eigenvalue analyses apply the stiffness.
+/// elementwise (auto: whenever the model allows it, Assembler::elementwiseTangentAvailable, and has no
+/// multipliers of rigid elements or modes): the
+/// element-wise rigid-motion-free products of Assembler::applyTangent(x, y, true), with inner GMRES
+/// solves preconditioned by the LU of the assembled matrix (docs/modal.md, "Eigenvalues on fine
+/// meshes"); assembled: the assembled matrix and its LU alone. Collective.
+inline PetscErrorCode eigenOperator(Assembler& assembler, bool* elementwise) {
+  PetscFunctionBeginUser;
+  MPI_Comm comm = assembler.mesh().comm;
+  char choice[32] = "auto";
+  PetscCall(PetscOptionsGetString(nullptr, nullptr, "-eigen_operator", choice, sizeof choice, nullptr));
+  const std::string c = choice;
+  if (c != "auto" && c != "elementwise" && c != "assembled")
+    SETERRQ(comm, PETSC_ERR_ARG_WRONG, "-eigen_operator: expected auto, elementwise or assembled, got '%s'", choice);
+  const bool available = assembler.elementwiseTangentAvailable();
+  if (c == "elementwise" && !available)
+    SETERRQ(comm, PETSC_ERR_ARG_INCOMP, "-eigen_operator elementwise: not available for models with cables or surface pressure");
+  // auto: not for models with multipliers (rigid elements/modes): their eigenvectors' constraint
+  // components made the crosshinge's frequencies differ by 2e-6 between rank counts (test_core_ranks)
+  int multipliers = 0;
+  for (const LocalElement& e : assembler.mesh().elements) multipliers |= e.firstMultiplier >= 0;
+  MPI_Allreduce(MPI_IN_PLACE, &multipliers, 1, MPI_INT, MPI_LOR, comm);
+  *elementwise = available && (c == "elementwise" || (c == "auto" && !multipliers));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/// The inner solver of shift-and-invert with the element-wise operator: GMRES (right preconditioned,
+/// so it measures the true residual) with the LU of the assembled shifted matrix (set by
+/// STSetPreconditionerMat). It stops at rtol 1e-12 or where the residual stagnates at the round-off
+/// of the element-wise products (less than halved in an iteration), never with a failure.
+struct InnerSolveContext {
+  void* defaultCtx = nullptr;  // KSPConvergedDefault's
+  PetscReal previous = 0;
+};
+
+inline PetscErrorCode innerConverged(KSP ksp, PetscInt it, PetscReal rnorm, KSPConvergedReason* reason, void* ctx) {
+  PetscFunctionBeginUser;
+  auto* c = static_cast<InnerSolveContext*>(ctx);
+  PetscCall(KSPConvergedDefault(ksp, it, rnorm, reason, c->defaultCtx));
+  if (*reason == KSP_CONVERGED_ITERATING && it >= 2 && rnorm > 0.5 * c->previous) *reason = KSP_CONVERGED_STEP_LENGTH;
+  PetscInt maxit;
+  PetscCall(KSPGetTolerances(ksp, nullptr, nullptr, nullptr, &maxit));
+  if (*reason == KSP_DIVERGED_ITS || (*reason == KSP_CONVERGED_ITERATING && it >= maxit)) *reason = KSP_CONVERGED_ITS;
+  c->previous = rnorm;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+inline PetscErrorCode useAccurateInnerSolver(KSP ksp) {
+  PetscFunctionBeginUser;
+  PetscCall(KSPSetType(ksp, KSPGMRES));
+  PetscCall(KSPSetPCSide(ksp, PC_RIGHT));
+  PetscCall(KSPGMRESSetRestart(ksp, 50));
+  PetscCall(KSPSetTolerances(ksp, 1e-12, 1e-300, PETSC_DEFAULT, 100));
+  auto* c = new InnerSolveContext;
+  PetscCall(KSPConvergedDefaultCreate(&c->defaultCtx));
+  PetscCall(KSPSetConvergenceTest(ksp, innerConverged, c, [](void* p) -> PetscErrorCode {
+    auto* c = static_cast<InnerSolveContext*>(p);
+    PetscCall(KSPConvergedDefaultDestroy(c->defaultCtx));
+    delete c;
+    return PETSC_SUCCESS;
+  }));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -60,6 +60,7 @@ const std::vector<Flag>& sinewFlags() {
         {"constraint_check_max_unknowns", integerAtLeast(0), &check, "200000", "skip the check above this many unknowns"},
         {"constraint_check_tol", realIn(0, 1, true, true), &check, "1e-11", "null vectors: ||J v|| <= tol ||D v||"},
         {"constraint_check_vectors", integerAtLeast(1), &check, "3", "null vectors looked for and reported"},
+        {"eigen_operator", oneOf({"auto", "elementwise", "assembled"}), &modal, "auto", "frequencies and buckling: K applied element by element (rigid-motion free) with GMRES + LU inner solves, or the assembled K and its LU alone (auto: element-wise where available)"},
         {"freq_shift_rel", realIn(0, 1, true, false), &modal, "1e-8", "shift-and-invert target -freq_shift_rel * min diag(K)/diag(M)"},
         {"eps_nev", integerAtLeast(1), &modal, "nfreq", "(SLEPc) frequencies computed; overrides opt.nfreq"},
         {"eps_target", anyReal(), &modal, "automatic", "(SLEPc) shift-and-invert target of the frequency analysis, replaces -freq_shift_rel"},

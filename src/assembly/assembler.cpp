@@ -558,6 +558,10 @@ PetscErrorCode Assembler::jacobian(Vec U, const LoadState& ls, Mat J) {
   PetscCall(PetscLogEventBegin(SinewEvents::get().jacobianElements, 0, 0, 0, 0));
   size_t offset = 0, kept = 0;
   if (keepBlocks_) torqueBlocks_.clear();
+  if (keepBlocks_ && keepRigid_) {
+    rigidInfo_.clear();
+    rigidData_.clear();
+  }
   std::array<double, 48> q0;
   std::array<double, 6> sigmaMixed;
   for (const LocalElement& el : mesh_.elements) {
@@ -576,6 +580,7 @@ PetscErrorCode Assembler::jacobian(Vec U, const LoadState& ls, Mat J) {
       if (blocks_.size() < kept + static_cast<size_t>(n) * n) blocks_.resize(kept + static_cast<size_t>(n) * n);
       std::copy(out_.K.begin(), out_.K.begin() + n * n, blocks_.begin() + static_cast<long>(kept));
       kept += static_cast<size_t>(n) * n;
+      if (keepRigid_) keepRigid(el, q.data(), out_.f.data(), out_.K.data(), n);
     }
     if (coo) {
       std::copy(out_.K.begin(), out_.K.begin() + n * n, cooValues_.begin() + static_cast<long>(offset));

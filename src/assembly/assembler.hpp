@@ -129,14 +129,28 @@ class Assembler {
   /// From now on jacobian() also keeps every element block (and the slope-torque node blocks), so
   /// that applyTangent() can apply the same tangent element by element.
   void keepTangentBlocks(bool on) { keepBlocks_ = on; }
+  /// With keepTangentBlocks: jacobian() also keeps, per element, the rigid-motion data that
+  /// applyTangent(x, y, true) needs (the element's internal forces and its infinitesimal rotation about
+  /// its first node). Used by the eigenvalue analyses (docs/modal.md, "Eigenvalues on fine meshes").
+  void keepRigidData(bool on) { keepRigid_ = on; }
   /// y = J x from the kept blocks of the last jacobian(), each block applied to its element's part
   /// of x minus the translation of the element's first node (a rigid translation is in the null space
   /// of every element tangent). The assembled matrix applies the same J, but its products carry
   /// round-off eps * |J| * |x|; here it is eps * |J_e| * |x_e - t_e|, which matters when element
   /// stiffnesses are huge and x is a large, locally almost rigid motion (fine ANCF cables: bending
   /// stiffness EI/h^3 against a soft global mode). Logged as SinewTangentOp.
-  PetscErrorCode applyTangent(Vec x, Vec y);
-  /// applyTangent() reproduces jacobian(): no rank has pressure loads or cables (their load and
+  PetscErrorCode applyTangent(Vec x, Vec y) { return applyTangent(x, y, false); }
+  /// rigidFree (needs keepRigidData before the jacobian()): each element block is applied to its part
+  /// of x minus the rigid motion (translation and infinitesimal rotation) of the element's first node,
+  /// d = d' + R c, as K_e d' + F c with F = K_e R the spin of the element's internal forces (exact by
+  /// objectivity: f(Q q) = Q f(q)); the output is then balanced so that its resultant force and moment
+  /// about the first node are the exact ones (zero force, moment -sum d_g x f_g). Round-off is then
+  /// eps |K_e| |d'| with d' the element's deformation: the products stay accurate for smooth modes of
+  /// fine meshes, where the translation-free product loses eps n^2 of a soft mode's energy
+  /// (elements whose block fails the check K_e R = F fall back to the translation-free product).
+  PetscErrorCode applyTangent(Vec x, Vec y, bool rigidFree);
+  /// Elements whose kept block passed the rigid-motion check (all ranks).
+  long rigidFreeElements() const;  /// applyTangent() reproduces jacobian(): no rank has pressure loads or cables (their load and
   /// regularization tangents are not element blocks). Collective.
   bool elementwiseTangentAvailable() const;
   /// The kept block of the element whose block starts at `offset` (sum of n^2 over the elements
@@ -228,6 +242,12 @@ class Assembler {
   bool keepBlocks_ = false;
   std::vector<double> blocks_;
   std::vector<std::pair<int, std::array<double, 4>>> torqueBlocks_;
+  // rigid-motion data of the kept blocks (keepRigidData): per element nr = 0 (translation-free only),
+  // 1 (ANCF 2D) or 3 (Frame6) rotations, offset into rigidData_ = [f (n), R (n x nr), F (n x nr), E (nr x n)]
+  bool keepRigid_ = false;
+  std::vector<std::pair<int, size_t>> rigidInfo_;
+  std::vector<double> rigidData_;
+  void keepRigid(const LocalElement& el, const double* q, const double* f, const double* K, int n);
   Vec xOp_ = nullptr, yOp_ = nullptr;  // ghosted work vectors of applyTangent
   std::vector<std::pair<int, SetPressure>> pressureElems_;  // local element index, pressure
   bool anyPressure_ = false;

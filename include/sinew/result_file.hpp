@@ -73,6 +73,8 @@ class ResultFile {
   /// as a cell attribute in the XDMF.
   void writeCellField(const std::string& cells, const std::string& quantity, std::span<const double> values,
                       std::vector<long> inner);
+  /// Global rows of this rank's cells of one kind ("lines", "triangles", "quads") in /cell/<cells>/*.
+  const std::vector<long>& ownedCellRows(const std::string& cells) const;
   /// [ns] or [ns, k] dataset ("stressmax", "freq", "buck", "sensors/tip"): rank 0's values are written.
   void writeStepRow(const std::string& name, std::span<const double> values);
   /// A dataset written once (statespace/A, formfinding/residual): rank 0's values, given shape.
@@ -92,9 +94,9 @@ class ResultFile {
   /// Makes everything written so far the content of the file under the final name (atomically)
   /// and rewrites the XDMF (rank 0) for those steps. Call after every step.
   void commit();
-  /// A commit forces the file to the disk (fsync) only when `seconds` have passed since the last
-  /// one that did (0: every commit); the published file survives a killed run either way
-  /// (src/output/file_sync.hpp). Default 10 s. Same value on every rank.
+  /// On one process, a commit forces the file to the disk (fsync) only when `seconds` have passed
+  /// since the last one that did (0: every commit); the published file survives a killed run either
+  /// way (src/output/file_sync.hpp). Default 10 s. With several processes every commit syncs.
   void setSyncInterval(double seconds);
   /// Commits so far, and how many of them were forced to the disk.
   long commits() const;

@@ -76,11 +76,7 @@ PetscErrorCode DynamicAnalysis::useDynamicsSolver(KSP ksp) {
     if (!set) PetscCall(PetscOptionsSetValue(nullptr, "-mat_mumps_icntl_14", "100"));
     PetscFunctionReturn(PETSC_SUCCESS);
   }
-  PC pc;
-  PetscCall(KSPGetPC(ksp, &pc));
-  PetscCall(PCFactorSetMatSolverType(pc, MATSOLVERPETSC));
-  PetscCall(PCFactorSetMatOrderingType(pc, MATORDERINGND));
-  PetscCall(PCFactorSetShiftType(pc, MAT_SHIFT_NONZERO));
+  PetscCall(usePetscLU(ksp));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

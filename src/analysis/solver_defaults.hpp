@@ -27,6 +27,19 @@ inline PetscErrorCode useDirectSolver(KSP ksp) {
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/// PETSc's own sequential LU in nested-dissection order, without pivoting: a zero pivot (a wild
+/// Newton iterate) is shifted instead of failing the solve. For one-process models whose matrices
+/// need no pivoting (see below and DynamicAnalysis::useDynamicsSolver).
+inline PetscErrorCode usePetscLU(KSP ksp) {
+  PetscFunctionBeginUser;
+  PC pc;
+  PetscCall(KSPGetPC(ksp, &pc));
+  PetscCall(PCFactorSetMatSolverType(pc, MATSOLVERPETSC));
+  PetscCall(PCFactorSetMatOrderingType(pc, MATORDERINGND));
+  PetscCall(PCFactorSetShiftType(pc, MAT_SHIFT_NONZERO));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /// The default direct solver for a model's tangent. An ANCF-only model on one process (chains of
 /// cable elements, no multipliers, symmetric positive tangents in statics) is factored with PETSc's
 /// own LU in nested-dissection order: the chain's elimination tree has thousands of tiny fronts,
@@ -42,13 +55,7 @@ inline PetscErrorCode useDirectSolver(KSP ksp, const DistributedMesh& mesh) {
   int chain = size == 1 && mesh.anyAncf;
   for (const LocalNode& n : mesh.nodes) chain = chain && n.kind == NodeKind::Ancf2D;
   for (const LocalElement& e : mesh.elements) chain = chain && e.firstMultiplier < 0;
-  if (!chain) PetscFunctionReturn(PETSC_SUCCESS);
-  PC pc;
-  PetscCall(KSPGetPC(ksp, &pc));
-  PetscCall(PCFactorSetMatSolverType(pc, MATSOLVERPETSC));
-  PetscCall(PCFactorSetMatOrderingType(pc, MATORDERINGND));
-  // no pivoting: a zero pivot (a wild Newton iterate) is shifted instead of failing the solve
-  PetscCall(PCFactorSetShiftType(pc, MAT_SHIFT_NONZERO));
+  if (chain) PetscCall(usePetscLU(ksp));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

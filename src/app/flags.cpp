@@ -37,7 +37,7 @@ const std::vector<Flag>& sinewFlags() {
     // One line per flag: name, accepted values, -help group, default, meaning.
     std::vector<Flag> f = {
         {"o", text("a file name"), &output, "<filename>.h5", "result file (HDF5; the XDMF file for ParaView is written beside it)"},
-        {"output_fsync_interval", realIn(0, 1e9, false, true), &output, "10", "seconds between commits of the result file that are forced to the disk (fsync; 0: every commit). A killed run never loses committed steps; a machine crash loses at most this interval"},
+        {"output_fsync_interval", realIn(0, 1e9, false, true), &output, "10", "one process: seconds between commits of the result file that are forced to the disk (fsync; 0: every commit; several processes: every commit). A killed run never loses committed steps; a machine crash loses at most this interval"},
         {"restart", text("a result file"), &output, "none", "continue the run that wrote this result file from its last written step (same scene; docs/results.md, Restart)"},
         {"checkpoint", boolean(), &output, "true", "write /checkpoint (the restart state) with every written step; false: the run cannot be continued"},
         {"stop_after_step", integerAtLeast(0), &output, "0 (off)", "testing aid: stop as on SIGTERM once the result file holds this many step rows (exit 5)"},
@@ -70,6 +70,7 @@ const std::vector<Flag>& sinewFlags() {
         {"compl_mat_mumps_icntl_27", anyInteger(), &compliance, "2048", "(MUMPS) right-hand-side columns per block of the compliance solve"},
         {"dynamics_scheme", oneOf({"arnold_bruls", "tsalpha2"}), &dynamics, "arnold_bruls", "Exudyn's generalized-alpha loop or PETSc TS alpha2"},
         {"dynamics_modified_newton", oneOf({"auto", "true", "false"}), &dynamics, "auto", "keep the factored Jacobian across Newton iterations and time steps while each iteration halves the residual (false: a new Jacobian at every iteration; auto: true from 200 unknowns)"},
+        {"mat_mumps_icntl_14", anyInteger(), &dynamics, "100 when dynamics factors with MUMPS, else MUMPS' own", "(MUMPS) percentage of extra workspace for pivoting; dynamics reserves 100 so wild Newton iterates do not fail the factorization (INFOG(1) = -9)"},
         {"dt_grow_after", integerAtLeast(0), &dynamics, "3", "after a halving, double the time step after this many successes (0: never)"},
         {"dynamics_energy", boolean(), &dynamics, "false", "report the energy drift of the time integration"},
         {"ff_mat_mumps_icntl_7", integerIn(0, 7), &formfinding, "3", "(MUMPS) fill-reducing ordering of the form-finding factorization (3: SCOTCH)"},

@@ -71,8 +71,9 @@ bool sameFile(const std::string& a, const std::string& b) {
   return std::filesystem::weakly_canonical(a, ec) == std::filesystem::weakly_canonical(b, ec);
 }
 
-enum class TableKind { Node, Element, Mesh, Row };
+enum class TableKind { Node, Element, Mesh, Cell, Row };
 TableKind tableKind(const std::string& name, size_t rank) {
+  if (rank >= 2 && name.rfind("cell/", 0) == 0) return TableKind::Cell;
   if (rank >= 2 && name.rfind("node/", 0) == 0) return TableKind::Node;
   if (rank >= 2 && name.rfind("element/", 0) == 0) return TableKind::Element;
   if (rank >= 2 && name.rfind("mesh/", 0) == 0) return TableKind::Mesh;
@@ -303,9 +304,12 @@ void Restart::restore(RunContext& ctx, const ResultLayout& layout) {
       if (name == "load_factor" || name == "time") continue;
       const std::vector<long> shape = r.datasetShape(name);
       const TableKind kind = tableKind(name, shape.size());
+      // cell/<cells>/<quantity>: the rows of this rank's cells of that kind
+      const std::string cells = kind == TableKind::Cell ? name.substr(5, name.find('/', 5) - 5) : "";
       const std::vector<long>* sel = kind == TableKind::Node      ? &layout.ownedNodes
                                      : kind == TableKind::Element ? &layout.ownedElements
                                      : kind == TableKind::Mesh    ? &layout.ownedMeshNodes
+                                     : kind == TableKind::Cell    ? &file.ownedCellRows(cells)
                                                                   : nullptr;
       std::vector<long> in;
       const std::vector<double> row = r.readStepRow(name, s, sel, &in);
@@ -317,7 +321,8 @@ void Restart::restore(RunContext& ctx, const ResultLayout& layout) {
         continue;
       }
       const std::vector<long> cellInner(shape.begin() + 2, shape.end());
-      if (kind == TableKind::Node) file.writeNodeField(name, row, cellInner);
+      if (kind == TableKind::Cell) file.writeCellField(cells, name.substr(name.find('/', 5) + 1), row, cellInner);
+      else if (kind == TableKind::Node) file.writeNodeField(name, row, cellInner);
       else if (kind == TableKind::Element) file.writeElementField(name, row, cellInner);
       else file.writeMeshField(name, row, cellInner);
     }

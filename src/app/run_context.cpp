@@ -84,7 +84,7 @@ PetscErrorCode RunContext::convergedStep(const Step& s, Vec Ustate, const LoadSt
   } else {
     skipped_ = {true, s.value, ls};
   }
-  progress.step(s.index, s.detail);
+  if (ioError.empty()) progress.step(s.index, s.detail);  // a step whose write failed is not reported as done
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

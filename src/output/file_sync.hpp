@@ -6,9 +6,11 @@
 // without any fsync; only a crash of the operating system or a power loss can lose data the disk
 // has not received yet. HDF5 forces every parallel H5Fflush to the device (MPI_File_sync, i.e.
 // fsync on every rank), which costs 0.2..15 ms per commit depending on the disk's load, more than
-// the integration step of a small dynamics model. Sinew therefore lets a commit skip that sync and
-// syncs when `-output_fsync_interval` seconds (default 10) have passed since the last synced commit,
-// and at close: a crash of the machine loses at most that many seconds of steps.
+// the integration step of a small dynamics model. On one process Sinew therefore lets a commit skip
+// that sync and syncs when `-output_fsync_interval` seconds (default 10) have passed since the last
+// synced commit: a crash of the machine loses at most that many seconds of steps. With several
+// processes every commit syncs: HDF5's parallel flush relies on the collective sync to bring all
+// ranks out of the flush together when one fails (a full disk hung 2 ranks without it).
 #pragma once
 
 namespace sinew {

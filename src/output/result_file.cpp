@@ -46,6 +46,7 @@
 #include <algorithm>
 #include <array>
 #include <climits>
+#include <cstdint>
 #include <filesystem>
 #include <functional>
 #include <iostream>
@@ -283,6 +284,7 @@ struct ResultFile::Impl {
   bool closed = false, failed = false;
   double syncInterval = 10, lastSync = 0;  // seconds between commits forced to the disk (file_sync.hpp)
   long commits = 0, syncedCommits = 0;
+  std::uintmax_t leadBytes = 0, stepBytes = 0;  // rank 0: lead file size after the last flush, largest growth per commit
   double xdmfWritten = 0, xdmfSeconds = 0;  // rank 0: when the XDMF was last written, and how long it took
 
   ~Impl() {
@@ -758,6 +760,11 @@ void ResultFile::writeCellField(const std::string& cells, const std::string& qua
   impl_->writeTable(kind, "cell/" + cells + "/" + quantity, values, std::move(inner));
 }
 
+const std::vector<long>& ResultFile::ownedCellRows(const std::string& cells) const {
+  const int k = cells == "lines" ? 0 : (cells == "triangles" ? 1 : 2);
+  return impl_->ownedCells[k];
+}
+
 void ResultFile::writeStepRow(const std::string& rawName, std::span<const double> values) {
   Impl& m = *impl_;
   const std::string name = normalized(rawName);
@@ -905,15 +912,48 @@ void ResultFile::commit() {
   try {
     Sink& lead = m.leadSink();
     m.fillAll(lead);
-    // fsync only every syncInterval seconds (rank 0's clock decides for all: the sync is collective)
+    // A full disk inside H5Fflush can leave the ranks in different collective calls of HDF5's
+    // metadata flush (one fails a write and leaves, the others wait in its barrier): rank 0 checks
+    // the free space first and the commit fails on every rank with "no space left" while the last
+    // published state stays the file's content.
+    {
+      std::string error;
+      if (m.rank == 0) {
+        namespace fs = std::filesystem;
+        std::error_code ec;
+        const fs::path dir = fs::absolute(fs::path(m.path), ec).parent_path();
+        const fs::space_info space = fs::space(dir, ec);
+        // a new chunk (up to kChunkBytes) per copy may be allocated by the next step's writes
+        const std::uintmax_t reserve = kChunkBytes + 2 * m.stepBytes;
+        if (!ec && space.available < reserve)
+          error = "no space left on device (" + std::to_string(space.available) + " bytes free on the file system of " +
+                  dir.string() + ", a commit needs about " + std::to_string(reserve) + ")";
+      }
+      error = broadcastString(m.comm, error);
+      if (!error.empty()) {
+        m.failed = true;
+        throw ResultFileError("result file " + m.path + ": " + error);
+      }
+    }
+    // fsync only every syncInterval seconds, and only on one process: with several, HDF5's flush
+    // relies on the collective MPI_File_sync to bring every rank out of the flush together when one
+    // of them fails (a full disk left the others waiting in the flush's barrier without it)
     const double now = MPI_Wtime();
-    int sync = m.syncInterval <= 0 || now - m.lastSync >= m.syncInterval;
+    int sync = m.size > 1 || m.syncInterval <= 0 || now - m.lastSync >= m.syncInterval;
     MPI_Bcast(&sync, 1, MPI_INT, 0, m.comm);
     {
       FileSyncSkip skip(!sync);
       agreeStatus(m.comm, H5Fflush(lead.file, H5F_SCOPE_GLOBAL), "flush", lead.name);
     }
     if (sync) m.lastSync = now;
+    if (m.rank == 0) {
+      std::error_code ec;
+      const std::uintmax_t bytes = std::filesystem::file_size(lead.name, ec);
+      if (!ec) {
+        if (bytes > m.leadBytes && m.leadBytes > 0) m.stepBytes = std::max(m.stepBytes, bytes - m.leadBytes);
+        m.leadBytes = bytes;
+      }
+    }
     ++m.commits;
     m.syncedCommits += sync;
     m.publishLead(true);

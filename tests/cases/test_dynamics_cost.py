@@ -38,12 +38,18 @@ with st.h5(h5m) as f, st.h5(h5f) as g:
 st.check(re.search(r"dynamics [0-9.]+ s \(\d+ Newton iterations\)", outm) is not None and
          not re.search(r"\bstatics [0-9.]+ s", outm), "summary: integration time labelled 'dynamics', no 'statics'")
 
-# commits forced to the disk: all with -output_fsync_interval 0, none with an interval longer than the run
-m0 = re.search(r"(\d+) commits, (\d+) forced to the disk", st.run("dyncost_sync0", text(a3), args=["-output_fsync_interval", "0"])[1])
-ml = re.search(r"(\d+) commits, (\d+) forced to the disk", st.run("dyncost_sync_long", text(a3), args=["-output_fsync_interval", "1e6"])[1])
-print(f"  commits forced to the disk: interval 0 -> {m0.group(0) if m0 else None}; 1e6 s -> {ml.group(0) if ml else None}")
-st.check(m0 is not None and int(m0.group(1)) >= 11 and m0.group(1) == m0.group(2), "-output_fsync_interval 0: every commit synced")
-st.check(ml is not None and int(ml.group(1)) >= 11 and int(ml.group(2)) == 0, "-output_fsync_interval 1e6: no commit synced")
+# commits forced to the disk (1 rank): all with -output_fsync_interval 0, none with an interval longer
+# than the run; on 2 ranks every commit syncs whatever the interval
+def synced(name, args, np_=1):
+    m = re.search(r"(\d+) commits, (\d+) forced to the disk", st.run(name, text(a3), np_=np_, args=args)[1])
+    print(f"  {np_} rank(s) {' '.join(args)}: {m.group(0) if m else None}")
+    return (int(m.group(1)), int(m.group(2))) if m else (0, -1)
+c0, s0 = synced("dyncost_sync0", ["-output_fsync_interval", "0"])
+cl, sl = synced("dyncost_sync_long", ["-output_fsync_interval", "1e6"])
+c2, s2 = synced("dyncost_sync_2ranks", ["-output_fsync_interval", "1e6"], np_=2)
+st.check(c0 >= 11 and s0 == c0, "-output_fsync_interval 0: every commit synced")
+st.check(cl >= 11 and sl == 0, "-output_fsync_interval 1e6 on 1 rank: no commit synced")
+st.check(c2 >= 11 and s2 == c2, "2 ranks: every commit synced")
 
 # tsalpha2 failing on a step load at 512 elements: Sinew's message and exit 3, no PETSc trace
 a3_512 = cantilever(512, force=F, dynamics={"tend": 1e-3, "dt": 1e-4, "spectral_radius": 0.6})

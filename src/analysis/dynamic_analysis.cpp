@@ -275,20 +275,16 @@ PetscErrorCode DynamicAnalysis::runArnoldBruls(Vec U, const StepCallback& onStep
   // at q_n instead of the extrapolated predictor, then by halving (still guarded); the next time
   // step starts plain again (a diverging extrapolation is caught early: DIVERGED_DTOL).
   const bool modifiedDefault = modifiedNewton_;
-  bool guarded = false;
-  auto setGuarded = [&](bool on) -> PetscErrorCode {
-    PetscFunctionBeginUser;
-    guarded = on;
+  auto setGuarded = [&](bool on) {
     restPredictor_ = on;
     modifiedNewton_ = on ? false : modifiedDefault;
-    PetscFunctionReturn(PETSC_SUCCESS);
   };
   for (int k = (resumed_ ? progress_.step : 0) + 1; k <= nsteps; ++k) {
     const double target = k == nsteps ? tend : k * dt;
     int cuts = 0;
     if (growAfter_ == 0) h = dt;
     bool reduced = h < dt;
-    PetscCall(setGuarded(false));
+    setGuarded(false);
     while (t < target) {
       // a remainder below 1e-6 of the sub-step is round-off of the summed sub-steps: end on target
       h_ = target - t - h <= 1e-6 * h ? target - t : h;
@@ -308,8 +304,8 @@ PetscErrorCode DynamicAnalysis::runArnoldBruls(Vec U, const StepCallback& onStep
         continue;
       }
       successes = 0;
-      if (!guarded) {
-        PetscCall(setGuarded(true));
+      if (!restPredictor_) {
+        setGuarded(true);
         ++report_.guardedSteps;
         PetscCall(PetscPrintf(comm, "  t = %.6g: Newton failed (%s); retrying with full Newton from the last state\n", t1,
                               SNESConvergedReasons[why]));

@@ -939,8 +939,7 @@ void ResultFile::commit() {
     // relies on the collective MPI_File_sync to bring every rank out of the flush together when one
     // of them fails (a full disk left the others waiting in the flush's barrier without it)
     const double now = MPI_Wtime();
-    int sync = m.size > 1 || m.syncInterval <= 0 || now - m.lastSync >= m.syncInterval;
-    MPI_Bcast(&sync, 1, MPI_INT, 0, m.comm);
+    const int sync = m.size > 1 || m.syncInterval <= 0 || now - m.lastSync >= m.syncInterval;  // 1 on every rank when several
     {
       FileSyncSkip skip(!sync);
       agreeStatus(m.comm, H5Fflush(lead.file, H5F_SCOPE_GLOBAL), "flush", lead.name);

@@ -60,6 +60,7 @@ class ModalAnalysis : public StepAnalysis {
   bool userTarget_ = false;
   double shiftRel_ = 1e-8;
   Mat K_ = nullptr, Kt_ = nullptr, M_ = nullptr;
+  Mat Kskew_ = nullptr;  ///< (K^T - K)/2 of the assembled tangent, added to the element-wise products (or null)
   bool elementwise_ = false;   // -eigen_operator: K applied element by element (rigid-motion free)
   Mat Kop_ = nullptr;          // shell: Assembler::applyTangent(x, y, true)
   Mat P_ = nullptr;            // assembled K - sigma M: the preconditioner (LU) of the inner GMRES

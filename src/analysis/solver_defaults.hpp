@@ -65,7 +65,7 @@ inline PetscErrorCode useDirectSolver(KSP ksp, const DistributedMesh& mesh) {
 /// element-wise rigid-motion-free products of Assembler::applyTangent(x, y, true), with inner GMRES
 /// solves preconditioned by the LU of the assembled matrix (docs/modal.md, "Eigenvalues on fine
 /// meshes"); assembled: the assembled matrix and its LU alone. Collective.
-inline PetscErrorCode eigenOperator(Assembler& assembler, bool* elementwise) {
+inline PetscErrorCode eigenOperator(Assembler& assembler, bool* elementwise, bool withMultipliers = false) {
   PetscFunctionBeginUser;
   MPI_Comm comm = assembler.mesh().comm;
   char choice[32] = "auto";
@@ -76,12 +76,14 @@ inline PetscErrorCode eigenOperator(Assembler& assembler, bool* elementwise) {
   const bool available = assembler.elementwiseTangentAvailable();
   if (c == "elementwise" && !available)
     SETERRQ(comm, PETSC_ERR_ARG_INCOMP, "-eigen_operator elementwise: not available for models with cables or surface pressure");
-  // auto: not for models with multipliers (rigid elements/modes): their eigenvectors' constraint
-  // components made the crosshinge's frequencies differ by 2e-6 between rank counts (test_core_ranks)
+  // auto with multipliers (rigid elements/modes): the frequency analysis (withMultipliers) uses the
+  // element-wise operator once it is made symmetric as the assembled tangent (ModalAnalysis::Kskew_;
+  // before, a loaded crosshinge's frequencies differed by 2e-6 between rank counts); the buckling
+  // analysis keeps the assembled operator for them (not measured on such models)
   int multipliers = 0;
   for (const LocalElement& e : assembler.mesh().elements) multipliers |= e.firstMultiplier >= 0;
   MPI_Allreduce(MPI_IN_PLACE, &multipliers, 1, MPI_INT, MPI_LOR, comm);
-  *elementwise = available && (c == "elementwise" || (c == "auto" && !multipliers));
+  *elementwise = available && (c == "elementwise" || (c == "auto" && (withMultipliers || !multipliers)));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

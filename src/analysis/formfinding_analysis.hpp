@@ -22,7 +22,8 @@
 //      the shape-relevant directions of node a (the tangential motion of a membrane's nodes within
 //      its surface, and of an edge node along its edge cable, leaves the shape unchanged and is not
 //      determined by the URS: Bletzinger et al. measure the normal change): P_a = n n^T (n =
-//      area-weighted normal of the adjacent form-found membranes) at membrane nodes without
+//      dominant eigenvector of sum A n n^T of the adjacent form-found membranes: independent of
+//      their node order) at membrane nodes without
 //      cables, I - t t^T (t = direction of the adjacent collinear form-found cables) at membrane
 //      nodes on edge cables, I at all other nodes (cable nets, loaded chains, partly fixed nodes);
 //   4. the reference of every form-found kernel := current shape (updateReference, with stress
@@ -122,7 +123,8 @@ class FormFindingAnalysis {
   SNES snes_ = nullptr;
   Mat J_ = nullptr;
   Vec F_ = nullptr;
-  Vec nrm_ = nullptr, mdiag_ = nullptr, moff_ = nullptr;  // nodal normal sums, cable direction tensors
+  Vec nrm_ = nullptr, nrmOff_ = nullptr;  // nodal membrane normal tensors sum A n n^T (diagonal, off-diagonal)
+  Vec mdiag_ = nullptr, moff_ = nullptr;  // nodal cable direction tensors
   LoadState ls_;
   double size_ = 1.0, quality0_ = 1.0;
   long nff_ = 0;

@@ -57,6 +57,7 @@ std::string outputPath(const Model& model, const std::string& scenePath) {
 }
 
 void warnings(MPI_Comm comm, const Model& model) {
+  for (const std::string& w : model.warnings) PetscPrintf(comm, "warning: %s\n", w.c_str());
   for (size_t set = 0; set < model.eprops.size(); ++set) {
     const ElementSet& s = model.eprops[set];
     if (s.type != ElementType::Beam) continue;

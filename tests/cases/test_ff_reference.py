@@ -40,7 +40,7 @@ p = np.array([0.3, -0.2, -1.0])
 sc = {"nodes": X.tolist(), "elements": [[1, 4], [2, 4], [3, 4]],
       "nprops": {"1": {"fix": True}, "2": {"fix": True}, "3": {"fix": True}, "4": {"force_initial": p.tolist()}},
       "eprops": [{"elems": [j + 1], "type": "cable", "area": 1, "emod": 1e6, "prestress": N0[j]} for j in range(3)],
-      "formfinding": {"formfinding_step": 1, "equilibrium_accuracy": 1e-13}, "opt": {"loadsteps": 1}}
+      "formfinding": {"formfinding_step": 1, "equilibrium_accuracy": 1e-13, "formfinding_tolerance": 0}, "opt": {"loadsteps": 1}}
 q = np.array([N0[j] / np.linalg.norm(X[3] - X[j]) for j in range(3)])
 xfd = (p + (q[:, None] * X[:3]).sum(0)) / q.sum()
 out, log = run("ff_c3_node", to_yaml(sc))
@@ -54,7 +54,7 @@ sc = {"nodes": nodes, "elements": [[i + 1, i + 2] for i in range(n + 1)],
       "nprops": dict({"1": {"fix": True}, str(n + 2): {"fix": True}},
                      **{str(i + 1): {"force_initial": [0, 0, -P]} for i in range(1, n + 1)}),
       "eprops": [{"elems": list(range(1, n + 2)), "type": "cable", "area": 1, "emod": 1e6, "prestress": qd * h}],
-      "formfinding": {"formfinding_step": 1, "equilibrium_accuracy": 1e-13}, "opt": {"loadsteps": 1}}
+      "formfinding": {"formfinding_step": 1, "equilibrium_accuracy": 1e-13, "formfinding_tolerance": 0}, "opt": {"loadsteps": 1}}
 out, log = run("ff_c3_chain", to_yaml(sc))
 i = np.arange(1, n + 1)
 with h5(out) as f:
@@ -76,7 +76,7 @@ for j in range(m + 1):
 sc = {"nodes": nodes, "elements": els, "nprops": nprops,
       "eprops": [{"elems": list(range(1, len(els) + 1)), "type": "cable", "area": 1, "emod": 0,
                   "prestress": 2.0 * (xs[1] - xs[0])}],
-      "formfinding": {"formfinding_step": 1, "equilibrium_accuracy": 1e-13}, "opt": {"loadsteps": 1}}
+      "formfinding": {"formfinding_step": 1, "equilibrium_accuracy": 1e-13, "formfinding_tolerance": 0}, "opt": {"loadsteps": 1}}
 out, log = run("ff_c5", to_yaml(sc))
 with h5(out) as f:
     pz = f["node/p"][0, :, :]

@@ -194,6 +194,35 @@ long orientMeshSurfaces(Model& m, const std::vector<int>& surface) {
   return reversed;
 }
 
+/// Membrane sets with emod: 0 (issue 10 item 16): allowed for form-finding-only sets, i.e. sets that
+/// are form-found and keep their prestress as their only stiffness afterwards (FORCE restart) in a
+/// run whose load analysis carries no load (frequencies, buckling, compliance about the found shape
+/// use the prestress stiffness). Refused where the membrane would have to carry load elastically.
+void checkZeroModulusMembranes(const Model& m) {
+  bool loaded = (m.opt.gravity && norm(*m.opt.gravity) > 0.0) || m.opt.dynamics.has_value();
+  for (const auto& [node, np] : m.nprops) {
+    loaded |= norm(np.force) > 0.0 || norm(np.moment) > 0.0 || np.rot.has_value();
+    for (const auto& d : np.displ) loaded |= d.has_value() && *d != 0.0;
+  }
+  for (const ElementSet& s : m.eprops) loaded |= s.pressure != 0.0 || (s.massProportionalLoad && norm(*s.massProportionalLoad) > 0.0);
+  for (std::size_t i = 0; i < m.eprops.size(); ++i) {
+    const ElementSet& s = m.eprops[i];
+    if (s.type != ElementType::Membrane || s.emod != 0.0) continue;
+    const std::string path = childPath(indexPath("eprops", i), "emod");
+    if (!m.formfinding)
+      fail(path, "emod: 0 is only for membranes that are form-found (a formfinding block); an elastic membrane needs emod > 0");
+    const auto& ffe = m.formfinding->formfinding_elements;
+    if (!ffe.empty() && std::find(ffe.begin(), ffe.end(), static_cast<int>(i)) == ffe.end())
+      fail(path, "emod: 0 is only for form-found membranes; this set is not in formfinding.formfinding_elements");
+    if (m.formfinding->elastic_restart_method != "FORCE")
+      fail(path, "emod: 0 with elastic_restart_method " + m.formfinding->elastic_restart_method +
+                     ": the membrane would have no stiffness at all after form finding (use FORCE, or emod > 0)");
+    if (loaded)
+      fail(path, "emod: 0 (a form-finding-only membrane) cannot carry the loads of the analysis after form finding "
+                 "(nprops force/moment/displ/rot, gravity, pressure, massProportionalLoad or opt.dynamics): give emod > 0");
+  }
+}
+
 /// Element rows: node numbers in range, no node twice, no two nodes at the same place.
 void checkElementNodes(const std::vector<std::vector<YAML::Node>>& rows, SceneContext& ctx) {
   Model& m = ctx.model;
@@ -283,6 +312,7 @@ void parseRoot(const YAML::Node& root, const std::string& baseDir, Model& m) {
   const YAML::Node ff = root["formfinding"];
   if (ff.IsDefined()) parseFormfinding(ff, ctx);
   parseSensors(root["sensors"], ctx);
+  checkZeroModulusMembranes(m);
 }
 
 /// A command-line value as a YAML node: "0,0,-9.81" -> [0, 0, -9.81]; "" -> true.

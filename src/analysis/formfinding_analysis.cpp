@@ -467,9 +467,10 @@ PetscErrorCode FormFindingAnalysis::run(Vec U, const StepCallback& onStep, bool*
     if (!(rep.shapeChange <= ff_.max_shape_change)) {
       msg << "formfinding step " << k << " of " << nsteps << ": the shape changed by " << rep.shapeChange
           << " of the model size (max_shape_change " << ff_.max_shape_change << ") in the form-found sets "
-          << setNames()
-          << ": there is no equilibrium shape for this prestress; the prestress is too low for the loads or the "
-             "edge cables, or a membrane edge is unsupported (add an edge cable or supports).";
+          << setNames() << ": there is no equilibrium shape for this prestress"
+          << (hint_.empty() ? "; the prestress is too low for the loads or the edge cables, or a membrane edge is "
+                              "unsupported (add an edge cable or supports)."
+                            : ": " + hint_);
       failure_ = msg.str();
       *ok = false;
       break;
@@ -479,8 +480,9 @@ PetscErrorCode FormFindingAnalysis::run(Vec U, const StepCallback& onStep, bool*
     if (bad > 0) {
       msg << "formfinding step " << k << " of " << nsteps << ": element " << bad
           << " collapsed (area below 1e-3 of its initial area, or zero length) in the form-found sets " << setNames()
-          << ": the surface crumples instead of converging; a membrane edge is unsupported or the prestress "
-             "is too low against the edge cables or loads.";
+          << ": the surface crumples instead of converging"
+          << (hint_.empty() ? "; a membrane edge is unsupported or the prestress is too low against the edge cables or loads."
+                            : ": " + hint_);
       failure_ = msg.str();
       *ok = false;
       break;

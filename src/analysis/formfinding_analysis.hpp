@@ -88,6 +88,11 @@ class FormFindingAnalysis {
   /// the last of them met the stop criterion.
   void resume(std::vector<FormFindingStepReport> history) { reports_ = std::move(history); }
 
+  /// The causes of a collapse or of a too large shape change that this model has (issue 10 item 17:
+  /// the messages name only these), e.g. "3 membrane edges are free (...)"; set by the caller, which
+  /// knows the whole scene. Empty: the generic hint.
+  void setFailureHint(std::string hint) { hint_ = std::move(hint); }
+
   /// Switches every form-found kernel to elastic as elastic_restart_method says (see file comment).
   PetscErrorCode restart(Vec U);
 
@@ -130,6 +135,7 @@ class FormFindingAnalysis {
   long nff_ = 0;
   std::vector<FormFindingStepReport> reports_;
   std::string failure_;
+  std::string hint_;
 };
 
 /// Mechanisms and redundant constraints of the form-finding problem (collective): the tangent at the

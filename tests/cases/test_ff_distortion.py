@@ -77,6 +77,15 @@ plain, plain_log = result("ff_distort_plain", plain_sc, expect_exit=3)
 check(plain["converged"] == 0, "without control: converged = 0 in the result file")
 check("the shape is not converged after formfinding_step = 40 steps" in plain_log,
       "without control: message says the shape is not converged")
+# a -restart of that run finds its 40 steps done: the same exit 3 and converged = 0 (the checkpoint's
+# form-finding history is re-checked against formfinding_tolerance)
+rs_out, rs_log = run("ff_distort_plain_rs", to_yaml(plain_sc), args=["-restart", os.path.join(WORK, "ff_distort_plain.h5")],
+                     expect_exit=3)
+with h5(rs_out) as f:
+    check(int(f.attrs["converged"]) == 0 and len(f["formfinding/residual"]) == 40,
+          "restart of the unconverged run: converged = 0, the 40 form-finding rows")
+check("continuing the form finding" in rs_log and "the shape is not converged" in rs_log,
+      "restart of the unconverged run: continues the form finding and reports the shape not converged")
 ctrl, _ = result("ff_distort_ctrl", ctrl_sc)
 for name, r in (("without control", plain), ("with distortion_max 1.1", ctrl)):
     print(f"  {name}: {r['steps']} steps, residual {r['res'][-1]:.2e}, normal change {r['normal'][-1]:.2e}, "

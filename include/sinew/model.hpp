@@ -163,6 +163,7 @@ struct Model {
   Options opt;
   std::optional<FormFinding> formfinding;
   std::vector<Sensor> sensors;
+  std::vector<std::string> warnings;   ///< found while reading (printed by the runner on rank 0)
 };
 
 }  // namespace sinew

@@ -124,6 +124,7 @@ FormFindingAnalysis::FormFindingAnalysis(Assembler& assembler, const FormFinding
   SinewCallThrow(comm, asm_.createMatrix(&J_));
   SinewCallThrow(comm, asm_.createVector(&F_));
   SinewCallThrow(comm, asm_.createVector(&nrm_));
+  SinewCallThrow(comm, asm_.createVector(&nrmOff_));
   SinewCallThrow(comm, asm_.createVector(&mdiag_));
   SinewCallThrow(comm, asm_.createVector(&moff_));
   SinewCallThrow(comm, SNESCreate(comm, &snes_));
@@ -166,6 +167,7 @@ FormFindingAnalysis::~FormFindingAnalysis() {
   MatDestroy(&J_);
   VecDestroy(&F_);
   VecDestroy(&nrm_);
+  VecDestroy(&nrmOff_);
   VecDestroy(&mdiag_);
   VecDestroy(&moff_);
 }
@@ -265,18 +267,23 @@ PetscErrorCode FormFindingAnalysis::normalShapeChange(Vec U, Vec Uprev, double* 
   PetscFunctionBeginUser;
   DistributedMesh& m = asm_.mesh();
   // nodal sums over the form-found elements at the current shape (ghost contributions added):
-  // nrm_ = sum of membrane area vectors, mdiag_/moff_ = sum of e e^T of cables (xx yy zz / xy yz zx)
+  // nrm_/nrmOff_ = sum of A n n^T of the membranes (a a^T / |a|, a = area vector: the same for either
+  // node order, so a mesh with flipped triangles gets the same normals, issue 10 item 15),
+  // mdiag_/moff_ = sum of e e^T of cables (xx yy zz / xy yz zx)
   // (zeroed in the local forms: VecSet on a ghosted vector leaves the ghost entries, which would
   // carry the previous step's sums into this one at partition interfaces)
-  Vec nl, dl, ol;
+  Vec nl, dl, ol, nol;
   PetscCall(VecGhostGetLocalForm(nrm_, &nl));
+  PetscCall(VecGhostGetLocalForm(nrmOff_, &nol));
+  PetscCall(VecSet(nol, 0.0));
   PetscCall(VecGhostGetLocalForm(mdiag_, &dl));
   PetscCall(VecGhostGetLocalForm(moff_, &ol));
   PetscCall(VecSet(nl, 0.0));
   PetscCall(VecSet(dl, 0.0));
   PetscCall(VecSet(ol, 0.0));
-  PetscScalar *na, *da, *oa;
+  PetscScalar *na, *da, *oa, *noa;
   PetscCall(VecGetArray(nl, &na));
+  PetscCall(VecGetArray(nol, &noa));
   PetscCall(VecGetArray(dl, &da));
   PetscCall(VecGetArray(ol, &oa));
   const double* u;
@@ -300,6 +307,8 @@ PetscErrorCode FormFindingAnalysis::normalShapeChange(Vec U, Vec Uprev, double* 
       if (l > 0.0) a = (1.0 / l) * a;
     } else {
       a = el.numNodes == 3 ? 0.5 * cross(v(0, 1), v(0, 2)) : 0.5 * cross(v(0, 2), v(1, 3));
+      const double l = norm(a);
+      if (l > 0.0) a = (1.0 / std::sqrt(l)) * a;  // a a^T = A n n^T
     }
     for (int j = 0; j < el.numNodes; ++j) {
       const LocalNode& n = m.nodes[static_cast<size_t>(el.node[static_cast<size_t>(j)])];
@@ -309,28 +318,53 @@ PetscErrorCode FormFindingAnalysis::normalShapeChange(Vec U, Vec Uprev, double* 
           da[n.dof[k]] += a[k] * a[k];
           oa[n.dof[k]] += a[k] * a[(k + 1) % 3];
         } else {
-          na[n.dof[k]] += a[k];
+          na[n.dof[k]] += a[k] * a[k];
+          noa[n.dof[k]] += a[k] * a[(k + 1) % 3];
         }
       }
     }
   }
   PetscCall(asm_.endLocal(&u));
   PetscCall(VecRestoreArray(nl, &na));
+  PetscCall(VecRestoreArray(nol, &noa));
+  PetscCall(VecGhostRestoreLocalForm(nrmOff_, &nol));
   PetscCall(VecRestoreArray(dl, &da));
   PetscCall(VecRestoreArray(ol, &oa));
   PetscCall(VecGhostRestoreLocalForm(nrm_, &nl));
   PetscCall(VecGhostRestoreLocalForm(mdiag_, &dl));
   PetscCall(VecGhostRestoreLocalForm(moff_, &ol));
-  for (Vec w : {nrm_, mdiag_, moff_}) {
+  for (Vec w : {nrm_, nrmOff_, mdiag_, moff_}) {
     PetscCall(VecGhostUpdateBegin(w, ADD_VALUES, SCATTER_REVERSE));
     PetscCall(VecGhostUpdateEnd(w, ADD_VALUES, SCATTER_REVERSE));
   }
-  const PetscScalar *a, *b, *N, *D, *O;
+  const PetscScalar *a, *b, *N, *NO, *D, *O;
   PetscCall(VecGetArrayRead(U, &a));
   PetscCall(VecGetArrayRead(Uprev, &b));
   PetscCall(VecGetArrayRead(nrm_, &N));
+  PetscCall(VecGetArrayRead(nrmOff_, &NO));
   PetscCall(VecGetArrayRead(mdiag_, &D));
   PetscCall(VecGetArrayRead(moff_, &O));
+  // dominant eigenvector and eigenvalue of the symmetric positive semidefinite tensor stored as
+  // diagonal (xx yy zz) and off-diagonal (xy yz zx) parts at dof[0..2]
+  auto dominant = [](const PetscScalar* Dg, const PetscScalar* Of, const int* dof, double* lam) {
+    const double M[3][3] = {{Dg[dof[0]], Of[dof[0]], Of[dof[2]]},
+                            {Of[dof[0]], Dg[dof[1]], Of[dof[1]]},
+                            {Of[dof[2]], Of[dof[1]], Dg[dof[2]]}};
+    int c = 0;
+    for (int k = 1; k < 3; ++k)
+      if (M[k][k] > M[c][c]) c = k;
+    Vec3 t{M[0][c], M[1][c], M[2][c]};
+    for (int it = 0; it < 30; ++it) {  // power iteration
+      Vec3 s{};
+      for (int r = 0; r < 3; ++r) s[r] = M[r][0] * t[0] + M[r][1] * t[1] + M[r][2] * t[2];
+      const double ns = norm(s);
+      if (!(ns > 0.0)) break;
+      t = (1.0 / ns) * s;
+    }
+    *lam = 0.0;
+    for (int r = 0; r < 3; ++r) *lam += t[r] * (M[r][0] * t[0] + M[r][1] * t[1] + M[r][2] * t[2]);
+    return t;
+  };
   double mx = 0.0;
   for (int i = 0; i < m.numOwnedNodes; ++i) {
     const LocalNode& n = m.nodes[i];
@@ -341,32 +375,18 @@ PetscErrorCode FormFindingAnalysis::normalShapeChange(Vec U, Vec Uprev, double* 
       mx = std::max(mx, std::sqrt(d2));
       continue;
     }
-    Vec3 d, nv;
-    for (int k = 0; k < 3; ++k) {
-      d[k] = a[n.dof[k]] - b[n.dof[k]];
-      nv[k] = N[n.dof[k]];
-    }
+    Vec3 d;
+    for (int k = 0; k < 3; ++k) d[k] = a[n.dof[k]] - b[n.dof[k]];
     const double trace = D[n.dof[0]] + D[n.dof[1]] + D[n.dof[2]];
-    const bool membrane = norm(nv) > 0.0;
+    const bool membrane = N[n.dof[0]] + N[n.dof[1]] + N[n.dof[2]] > 0.0;
     if (membrane && trace == 0.0) {
-      const Vec3 nn = (1.0 / norm(nv)) * nv;
+      double lamN;
+      const Vec3 nn = dominant(N, NO, n.dof.data(), &lamN);  // area-weighted best-fit normal
       d = dot(d, nn) * nn;
     } else if (membrane) {
       // cable direction tensor M = sum e e^T; collinear cables: largest eigenvalue = trace
-      const double M[3][3] = {{D[n.dof[0]], O[n.dof[0]], O[n.dof[2]]},
-                              {O[n.dof[0]], D[n.dof[1]], O[n.dof[1]]},
-                              {O[n.dof[2]], O[n.dof[1]], D[n.dof[2]]}};
-      int c = 0;
-      for (int k = 1; k < 3; ++k)
-        if (M[k][k] > M[c][c]) c = k;
-      Vec3 t{M[0][c], M[1][c], M[2][c]};
-      for (int it = 0; it < 30; ++it) {  // power iteration (M is positive semidefinite)
-        Vec3 s{};
-        for (int r = 0; r < 3; ++r) s[r] = M[r][0] * t[0] + M[r][1] * t[1] + M[r][2] * t[2];
-        t = (1.0 / norm(s)) * s;
-      }
-      double lam = 0.0;
-      for (int r = 0; r < 3; ++r) lam += t[r] * (M[r][0] * t[0] + M[r][1] * t[1] + M[r][2] * t[2]);
+      double lam;
+      const Vec3 t = dominant(D, O, n.dof.data(), &lam);
       if (lam >= 0.9 * trace) d = d - dot(d, t) * t;
     }
     mx = std::max(mx, norm(d));
@@ -374,6 +394,7 @@ PetscErrorCode FormFindingAnalysis::normalShapeChange(Vec U, Vec Uprev, double* 
   PetscCall(VecRestoreArrayRead(U, &a));
   PetscCall(VecRestoreArrayRead(Uprev, &b));
   PetscCall(VecRestoreArrayRead(nrm_, &N));
+  PetscCall(VecRestoreArrayRead(nrmOff_, &NO));
   PetscCall(VecRestoreArrayRead(mdiag_, &D));
   PetscCall(VecRestoreArrayRead(moff_, &O));
   MPI_Allreduce(MPI_IN_PLACE, &mx, 1, MPI_DOUBLE, MPI_MAX, m.comm);
@@ -446,9 +467,10 @@ PetscErrorCode FormFindingAnalysis::run(Vec U, const StepCallback& onStep, bool*
     if (!(rep.shapeChange <= ff_.max_shape_change)) {
       msg << "formfinding step " << k << " of " << nsteps << ": the shape changed by " << rep.shapeChange
           << " of the model size (max_shape_change " << ff_.max_shape_change << ") in the form-found sets "
-          << setNames()
-          << ": there is no equilibrium shape for this prestress; the prestress is too low for the loads or the "
-             "edge cables, or a membrane edge is unsupported (add an edge cable or supports).";
+          << setNames() << ": there is no equilibrium shape for this prestress"
+          << (hint_.empty() ? "; the prestress is too low for the loads or the edge cables, or a membrane edge is "
+                              "unsupported (add an edge cable or supports)."
+                            : ": " + hint_);
       failure_ = msg.str();
       *ok = false;
       break;
@@ -458,8 +480,9 @@ PetscErrorCode FormFindingAnalysis::run(Vec U, const StepCallback& onStep, bool*
     if (bad > 0) {
       msg << "formfinding step " << k << " of " << nsteps << ": element " << bad
           << " collapsed (area below 1e-3 of its initial area, or zero length) in the form-found sets " << setNames()
-          << ": the surface crumples instead of converging; a membrane edge is unsupported or the prestress "
-             "is too low against the edge cables or loads.";
+          << ": the surface crumples instead of converging"
+          << (hint_.empty() ? "; a membrane edge is unsupported or the prestress is too low against the edge cables or loads."
+                            : ": " + hint_);
       failure_ = msg.str();
       *ok = false;
       break;
@@ -468,11 +491,27 @@ PetscErrorCode FormFindingAnalysis::run(Vec U, const StepCallback& onStep, bool*
     if (onStep) PetscCall(onStep(rep, U));
     if (stop_ && *stop_) break;
   }
+  const bool interrupted = stop_ && *stop_;
   if (*ok && !reports_.empty() && !reports_.back().equilibrium) {
     std::ostringstream msg;
     msg << "formfinding step " << reports_.back().step << ": equilibrium_accuracy " << ff_.equilibrium_accuracy
         << " not reached in max_iter_equilibrium = " << ff_.max_iter_equilibrium << " iterations (residual norm "
         << reports_.back().residualNorm << "); raise max_iter_equilibrium or formfinding_step";
+    failure_ = msg.str();
+    *ok = false;
+  } else if (*ok && !interrupted && ff_.formfinding_tolerance > 0.0 && !stops()) {
+    // formfinding_step used up before the stop criterion (issue 10 item 14): the last shape is
+    // written (and kept in the result file) but it is not the found shape
+    const FormFindingStepReport& r = reports_.back();
+    std::ostringstream msg;
+    msg << "formfinding: the shape is not converged after formfinding_step = " << nsteps
+        << " steps: normal shape change " << r.shapeChangeNormal << " of the model size in the last step (formfinding_tolerance "
+        << ff_.formfinding_tolerance << ")";
+    if (reports_.size() >= 2 && r.shapeChange > reports_[reports_.size() - 2].shapeChange)
+      msg << ", total change growing (" << reports_[reports_.size() - 2].shapeChange << " -> " << r.shapeChange << ")";
+    msg << ", mesh quality " << r.meshQuality << " of the form-found sets " << setNames()
+        << ". Raise formfinding_step, or formfinding_tolerance for a mesh that drifts in its surface "
+           "(docs/formfinding.md); formfinding_tolerance: 0 runs exactly formfinding_step steps without a stop rule.";
     failure_ = msg.str();
     *ok = false;
   }

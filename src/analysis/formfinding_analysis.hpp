@@ -22,7 +22,8 @@
 //      the shape-relevant directions of node a (the tangential motion of a membrane's nodes within
 //      its surface, and of an edge node along its edge cable, leaves the shape unchanged and is not
 //      determined by the URS: Bletzinger et al. measure the normal change): P_a = n n^T (n =
-//      area-weighted normal of the adjacent form-found membranes) at membrane nodes without
+//      dominant eigenvector of sum A n n^T of the adjacent form-found membranes: independent of
+//      their node order) at membrane nodes without
 //      cables, I - t t^T (t = direction of the adjacent collinear form-found cables) at membrane
 //      nodes on edge cables, I at all other nodes (cable nets, loaded chains, partly fixed nodes);
 //   4. the reference of every form-found kernel := current shape (updateReference, with stress
@@ -87,6 +88,11 @@ class FormFindingAnalysis {
   /// the last of them met the stop criterion.
   void resume(std::vector<FormFindingStepReport> history) { reports_ = std::move(history); }
 
+  /// The causes of a collapse or of a too large shape change that this model has (issue 10 item 17:
+  /// the messages name only these), e.g. "3 membrane edges are free (...)"; set by the caller, which
+  /// knows the whole scene. Empty: the generic hint.
+  void setFailureHint(std::string hint) { hint_ = std::move(hint); }
+
   /// Switches every form-found kernel to elastic as elastic_restart_method says (see file comment).
   PetscErrorCode restart(Vec U);
 
@@ -122,12 +128,14 @@ class FormFindingAnalysis {
   SNES snes_ = nullptr;
   Mat J_ = nullptr;
   Vec F_ = nullptr;
-  Vec nrm_ = nullptr, mdiag_ = nullptr, moff_ = nullptr;  // nodal normal sums, cable direction tensors
+  Vec nrm_ = nullptr, nrmOff_ = nullptr;  // nodal membrane normal tensors sum A n n^T (diagonal, off-diagonal)
+  Vec mdiag_ = nullptr, moff_ = nullptr;  // nodal cable direction tensors
   LoadState ls_;
   double size_ = 1.0, quality0_ = 1.0;
   long nff_ = 0;
   std::vector<FormFindingStepReport> reports_;
   std::string failure_;
+  std::string hint_;
 };
 
 /// Mechanisms and redundant constraints of the form-finding problem (collective): the tangent at the

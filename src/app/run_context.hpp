@@ -43,6 +43,7 @@ struct RunContext {
   int interruptSignal = 0;
   std::string ioError;
   int lastStepIndex = 0;       ///< index of the last converged step (in its phase)
+  std::string formfindingHint;  ///< formFindingCollapseCauses of the scene (set before form finding)
   std::string lastStepName;    ///< "load step", "time step", "form-finding step"
   /// Checkpoints (src/output/checkpoint.*, src/app/restart.*): the writer, the running phase's
   /// state after its last converged step (set by the phase before its loop; none: no checkpoint),
@@ -96,6 +97,9 @@ struct RunContext {
 PetscErrorCode addStepAnalyses(RunContext& ctx);
 /// Form finding (formfinding block): writes its steps and leaves the found shape in ctx.U.
 PetscErrorCode runFormFinding(RunContext& ctx);
+/// What can make this model's form finding collapse (for the messages; computed before set-up
+/// releases the scene's elements, src/app/run_formfinding.cpp).
+std::string formFindingCollapseCauses(const Model& m);
 /// Time integration (opt.dynamics) instead of statics.
 PetscErrorCode runDynamics(RunContext& ctx);
 /// Path following (opt.continuation) instead of load steps: one result row per path point, and

@@ -2,14 +2,85 @@
 // form-finding step (load factor 0; the last row is the found shape; /formfinding/step numbers
 // these rows), /formfinding/residual and /formfinding/shape_change, a summary table, then the
 // elastic restart so that the load analysis continues in ctx.U.
+#include <algorithm>
 #include <cstdio>
+#include <map>
 #include <span>
+#include <string>
 
 #include "analysis/formfinding_analysis.hpp"
 #include "app/restart.hpp"
 #include "app/run_context.hpp"
 
 namespace sinew {
+
+namespace {
+/// The eprops sets that are form-found (formfinding_elements, or every cable and membrane set).
+std::vector<int> formFoundSetList(const Model& m) {
+  std::vector<int> sets = m.formfinding->formfinding_elements;
+  if (sets.empty())
+    for (size_t s = 0; s < m.eprops.size(); ++s)
+      if (m.eprops[s].type == ElementType::Cable || m.eprops[s].type == ElementType::Membrane) sets.push_back(static_cast<int>(s));
+  return sets;
+}
+
+bool hasFormFound(const Model& m, ElementType type) {
+  for (int s : formFoundSetList(m))
+    if (m.eprops[static_cast<size_t>(s)].type == type) return true;
+  return false;
+}
+
+}  // namespace
+
+/// The causes of a collapse this model can have (issue 10 item 17): free membrane edges (boundary
+/// edges of the form-found membranes with neither a 2-node element along them nor both nodes
+/// supported), form-found edge cables, initial loads. Needs the scene's elements (before set-up
+/// releases them).
+std::string formFindingCollapseCauses(const Model& m) {
+  const std::vector<int> sets = formFoundSetList(m);
+  bool cables = false, membranes = false, loads = false;
+  std::map<std::pair<int, int>, int> edges;
+  for (int s : sets) {
+    const ElementSet& es = m.eprops[static_cast<size_t>(s)];
+    cables |= es.type == ElementType::Cable;
+    if (es.type != ElementType::Membrane) continue;
+    membranes = true;
+    for (int e : es.elems) {
+      const auto& el = m.elements[static_cast<size_t>(e)];
+      for (size_t j = 0; j < el.size(); ++j) {
+        const int a = el[j], b = el[(j + 1) % el.size()];
+        ++edges[{std::min(a, b), std::max(a, b)}];
+      }
+    }
+  }
+  for (const ElementSet& es : m.eprops) loads |= es.pressure_initial != 0.0;
+  auto held = [&](int node) {
+    auto it = m.nprops.find(node);
+    if (it == m.nprops.end()) return false;
+    const NodeProps& p = it->second;
+    return p.fix || p.fix_pos || (p.fix_x && p.fix_y && p.fix_z);
+  };
+  for (const auto& [node, p] : m.nprops) loads |= norm(p.force_initial) > 0.0 || norm(p.moment_initial) > 0.0;
+  std::map<std::pair<int, int>, bool> lines;  // 2-node elements (cables, beams) along membrane edges
+  for (const auto& el : m.elements)
+    if (el.size() == 2) lines[{std::min(el[0], el[1]), std::max(el[0], el[1])}] = true;
+  long freeEdges = 0;
+  for (const auto& [e, n] : edges)
+    if (n == 1 && !lines.count(e) && !(held(e.first) && held(e.second))) ++freeEdges;
+  std::vector<std::string> causes;
+  if (freeEdges > 0)
+    causes.push_back(std::to_string(freeEdges) +
+                     " membrane edges lie on no support and no cable (a free edge contracts: add an edge cable or supports)");
+  if (cables && membranes) causes.push_back("the membrane prestress is too low against the edge cables (raise it or lower the cable prestress)");
+  if (cables && !membranes) causes.push_back("the cable prestresses do not balance (a cable is pulled to zero length)");
+  if (loads) causes.push_back("the prestress is too low for the initial loads (force_initial, moment_initial, pressure_initial)");
+  if (causes.empty())
+    return "no free membrane edge, no edge cable and no initial load here: no surface with this prestress spans "
+           "this boundary (e.g. a catenoid whose rings are more than 1.3255 radii apart)";
+  std::string s;
+  for (size_t i = 0; i < causes.size(); ++i) s += (i ? (i + 1 == causes.size() ? ", or " : ", ") : "") + causes[i];
+  return s;
+}
 
 PetscErrorCode runFormFinding(RunContext& ctx) {
   PetscFunctionBeginUser;
@@ -19,6 +90,7 @@ PetscErrorCode runFormFinding(RunContext& ctx) {
   const FormFinding& ff = *ctx.model.formfinding;
   FormFindingAnalysis analysis(ctx.assembler, ff, ctx.model.eprops);
   analysis.setStopFlag(&ctx.stop);
+  analysis.setFailureHint(ctx.formfindingHint);
   if (ctx.restart && ctx.restart->phase() == CheckpointPhase::FormFinding)
     ctx.restart->resumeFormFinding(ctx, analysis);  // -restart: continue after its steps
   ctx.progress.startPhase("form-finding step", ff.formfinding_step);
@@ -80,9 +152,11 @@ PetscErrorCode runFormFinding(RunContext& ctx) {
                   r.equilibrium ? "" : "  (max_iter_equilibrium reached)");
     s += line;
   }
-  std::snprintf(line, sizeof line, "  membrane mesh quality: initial %.4f, found %.4f (1 = equilateral/square)\n",
-                analysis.initialMeshQuality(), reps.empty() ? analysis.initialMeshQuality() : reps.back().meshQuality);
-  s += line;
+  if (hasFormFound(ctx.model, ElementType::Membrane)) {  // not for a pure cable net (issue 10 item 17)
+    std::snprintf(line, sizeof line, "  membrane mesh quality: initial %.4f, found %.4f (1 = equilateral/square)\n",
+                  analysis.initialMeshQuality(), reps.empty() ? analysis.initialMeshQuality() : reps.back().meshQuality);
+    s += line;
+  }
   if (!reps.empty()) {
     const double tff = MPI_Wtime() - t0 - (ctx.times.output - outBefore) - (ctx.times.analyses - anaBefore);
     std::snprintf(line, sizeof line, "  form-finding time %.3f s (%.4f s per step, output excluded)\n", tff,

@@ -57,6 +57,23 @@ std::string outputPath(const Model& model, const std::string& scenePath) {
 }
 
 void warnings(MPI_Comm comm, const Model& model) {
+  for (const std::string& w : model.warnings) PetscPrintf(comm, "warning: %s\n", w.c_str());
+  if (model.formfinding) {  // form-found sets without prestress (issue 10 item 17)
+    const auto& ffe = model.formfinding->formfinding_elements;
+    for (size_t set = 0; set < model.eprops.size(); ++set) {
+      const ElementSet& s = model.eprops[set];
+      const bool cable = s.type == ElementType::Cable, membrane = s.type == ElementType::Membrane;
+      if (!cable && !membrane) continue;
+      if (!ffe.empty() && std::find(ffe.begin(), ffe.end(), static_cast<int>(set)) == ffe.end()) continue;
+      const bool zero = cable ? s.prestress.value_or(0.0) == 0.0 && s.prestress_stress.value_or(0.0) == 0.0
+                              : s.membrane_prestress[0] == 0.0 && s.membrane_prestress[1] == 0.0 && s.membrane_prestress[2] == 0.0;
+      if (zero)
+        PetscPrintf(comm,
+                    "warning: eprops[%zu] (%s set %zu) is form-found with zero prestress (%s): it carries no force and "
+                    "gives no stiffness in form finding\n",
+                    set, cable ? "cable" : "membrane", set + 1, cable ? "prestress / prestress_stress" : "prestress [s11, s22, s12]");
+    }
+  }
   for (size_t set = 0; set < model.eprops.size(); ++set) {
     const ElementSet& s = model.eprops[set];
     if (s.type != ElementType::Beam) continue;
@@ -317,6 +334,7 @@ PetscErrorCode runScene(int argc, char** argv, int* exitCode) {
   // the global model arrays are not needed past set-up
   std::vector<Vec3> initialPositions;
   if (dmesh->rank == 0) initialPositions = model.nodes;
+  const std::string formfindingHint = model.formfinding ? formFindingCollapseCauses(model) : std::string();
   model.nodes.clear();
   model.nodes.shrink_to_fit();
   model.elements.clear();
@@ -360,6 +378,7 @@ PetscErrorCode runScene(int argc, char** argv, int* exitCode) {
   for (const Vec3& x : initialPositions) p0.insert(p0.end(), x.begin(), x.end());
 
   RunContext ctx(model, plan, assembler, results, *file);
+  ctx.formfindingHint = formfindingHint;
   bool modelError = false;  // a singular tangent found when Newton's linear solve failed
   ctx.comm = comm;
   ctx.times = times;

@@ -20,6 +20,13 @@ double rectTorsionConstant(double s1, double s2) {
   return (1.0 / 3.0) * std::pow(2.0 * a, 3) * (2.0 * b) * (1.0 - 192.0 / std::pow(pi, 5) * (a / b) * sum);
 }
 
+// Cowper (1966), J. Appl. Mech. 33, 335-340, as SPACAR Light: rect 10(1+nu)/(12+11nu), circ 6(1+nu)/(7+6nu).
+double cowperShearCoefficient(CrossSection shape, double nu) {
+  if (shape == CrossSection::Rect) return 10.0 * (1.0 + nu) / (12.0 + 11.0 * nu);
+  if (shape == CrossSection::Circ) return 6.0 * (1.0 + nu) / (7.0 + 6.0 * nu);
+  return 0.0;
+}
+
 // B5: factor = a c / (a c - 2 tanh(a c / 2)).
 double constrainedWarpingFactor(double L, double w, double nu) {
   const double a = L / w, c = std::sqrt(24.0 / (1.0 + nu));
@@ -59,7 +66,6 @@ BeamSection beamSection(const ElementSet& set, double flexureLength) {
     s.Iy = s.w * s.t * s.t * s.t / 12.0;
     s.Iz = s.t * s.w * s.w * s.w / 12.0;
     s.It = rectTorsionConstant(s.w, s.t);
-    s.kappa = 5.0 / 6.0;
     s.ymax = 0.5 * s.w;
     s.zmax = 0.5 * s.t;
     s.torsionStressFactor = std::min(s.w, s.t) / s.It;
@@ -71,14 +77,12 @@ BeamSection beamSection(const ElementSet& set, double flexureLength) {
     s.A = pi * s.d * s.d / 4.0;
     s.Iy = s.Iz = pi * std::pow(s.d, 4) / 64.0;
     s.It = pi * std::pow(s.d, 4) / 32.0;
-    s.kappa = 0.9;
     s.ymax = s.zmax = 0.5 * s.d;
     s.torsionStressFactor = s.d / (2.0 * s.It);
   } else {
     throw SceneError("eprops.cshape", "cshape (rect or circ) is required " + why);
   }
   s.Ip = s.Iy + s.Iz;
-  s.Asy = s.Asz = s.kappa * s.A;
   s.rho = set.dens;
   s.rhoA = s.rho * s.A;
   s.rhoIy = s.rho * s.Iy;
@@ -90,6 +94,9 @@ BeamSection beamSection(const ElementSet& set, double flexureLength) {
     s.E = set.emod;
     s.G = set.smod;
     s.nu = s.E / (2.0 * s.G) - 1.0;
+    if (!(s.nu > -1.0)) throw SceneError("eprops.smod", "emod/(2 smod) - 1 (Poisson's ratio of the shear coefficient) must be > -1");
+    s.kappa = cowperShearCoefficient(s.shape, s.nu);
+    s.Asy = s.Asz = s.kappa * s.A;
     s.EA = s.E * s.A;
     s.EIy = s.E * s.Iy;
     s.EIz = s.E * s.Iz;

@@ -12,7 +12,7 @@ struct BeamSection {
   double Iy = 0, Iz = 0;       ///< second moments: Iy about local y (deflection along z), Iz about z
   double Ip = 0;               ///< polar moment Iy + Iz (rotary inertia in torsion)
   double It = 0;               ///< Saint-Venant torsion constant (reference B6 for rect)
-  double kappa = 0;            ///< Timoshenko shear coefficient (rect 5/6, circ 9/10)
+  double kappa = 0;            ///< Timoshenko shear coefficient, Cowper's from nu (0 without smod)
   double Asy = 0, Asz = 0;     ///< shear areas kappa A for shear along y and z
   double E = 0, G = 0, nu = 0, rho = 0;
   double cwFactor = 1.0;       ///< constrained-warping factor (reference B5), 1 without cw
@@ -27,6 +27,9 @@ struct BeamSection {
 
 /// Rect torsion constant of reference B6 for sides s1, s2 (any order), series summed to convergence.
 double rectTorsionConstant(double s1, double s2);
+/// Cowper's shear coefficient (J. Appl. Mech. 33, 1966) as SPACAR Light uses it, nu = E/(2G) - 1:
+/// rect 10(1+nu)/(12+11nu), circ 6(1+nu)/(7+6nu).
+double cowperShearCoefficient(CrossSection shape, double nu);
 /// Constrained-warping factor of reference B5: a c / (a c - 2 tanh(a c / 2)), a = L / w, c = sqrt(24/(1+nu)).
 double constrainedWarpingFactor(double L, double w, double nu);
 

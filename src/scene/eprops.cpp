@@ -137,7 +137,9 @@ void parseMembrane(const YAML::Node& n, const std::string& path, ElementSet& s) 
   if (!n["thickness"].IsDefined()) fail(childPath(path, "thickness"), "missing: a membrane needs thickness");
   s.thickness = getPositive(n["thickness"], childPath(path, "thickness"), kSectionLength);
   if (!n["emod"].IsDefined()) fail(childPath(path, "emod"), "missing: a membrane needs emod (Young's modulus)");
-  s.emod = getPositive(n["emod"], childPath(path, "emod"), kMaterial);
+  // emod: 0 for a form-finding-only set (Kratos' form-finding tests use E = 0); checked against the
+  // analyses by checkZeroModulusMembranes once the formfinding block is read
+  s.emod = getNonNegative(n["emod"], childPath(path, "emod"), kMaterial);
   if (!n["nu"].IsDefined()) fail(childPath(path, "nu"), "missing: a membrane needs nu (Poisson's ratio, in [0, 0.5))");
   s.nu = getInRange(n["nu"], childPath(path, "nu"), 0.0, 0.5, true);
   if (const YAML::Node v = n["dens"]; v.IsDefined()) s.dens = getNonNegative(v, childPath(path, "dens"), kMaterial);

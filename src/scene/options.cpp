@@ -281,7 +281,7 @@ void parseFormfinding(const YAML::Node& ff, SceneContext& ctx) {
   }
   if (ff["stress_adaption"].IsDefined()) f.stress_adaption = sets("stress_adaption");
   if (ff["lambda_max"].IsDefined()) f.lambda_max = getPositive(ff["lambda_max"], p("lambda_max"), kRatio);
-  if (ff["mue_relax"].IsDefined()) f.mue_relax = getNonNegative(ff["mue_relax"], p("mue_relax"), kRatio);
+  if (ff["mue_relax"].IsDefined()) f.mue_relax = getInRange(ff["mue_relax"], p("mue_relax"), 0.0, 1.0, false);
   if (ff["distortion_max"].IsDefined()) f.distortion_max = getNonNegative(ff["distortion_max"], p("distortion_max"), kRatio);
   if (ff["x_urs"].IsDefined()) f.x_urs = getBool(ff["x_urs"], p("x_urs"));
   if (ff["x_urs_step"].IsDefined()) f.x_urs_step = getIntAtLeast(ff["x_urs_step"], p("x_urs_step"), 1);
@@ -297,6 +297,18 @@ void parseFormfinding(const YAML::Node& ff, SceneContext& ctx) {
     if (std::find(f.formfinding_elements.begin(), f.formfinding_elements.end(), s) == f.formfinding_elements.end() &&
         !f.formfinding_elements.empty())
       fail(p("stress_adaption"), "eprops set " + std::to_string(s + 1) + " is not in formfinding_elements");
+  // stress adaption that cannot act (issue 10 item 16): N0 <- (1 - mue_relax) s N0 + mue_relax N0 with
+  // s = stretch / clamp(stretch, 1/lambda_max, lambda_max) (docs/formfinding.md)
+  if (f.lambda_max < 1.0)
+    fail(p("lambda_max"), "expected a stretch bound >= 1 (1 only with distortion_max > 1), got " + fmt(f.lambda_max));
+  if (!f.stress_adaption.empty()) {
+    if (f.lambda_max <= 1.0 && !(f.distortion_max > 1.0))
+      fail(p("lambda_max"), "expected a stretch bound > 1 for stress_adaption, got " + fmt(f.lambda_max) +
+                                " (lambda_max <= 1 adapts nothing; lambda_max: 1 is meant to go with distortion_max > 1)");
+    if (f.mue_relax >= 1.0 && f.lambda_max > 1.0 && !(f.distortion_max > 1.0))
+      fail(p("mue_relax"), "expected a relaxation in [0, 1) for stress_adaption, got " + fmt(f.mue_relax) +
+                               " (mue_relax = 1 keeps the prestress unchanged: no adaption)");
+  }
   m.formfinding = f;
 }
 

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <set>
 #include <sstream>
 
@@ -147,6 +148,81 @@ void mergeMesh(const YAML::Node& root, int sceneDim, SceneContext& ctx) {
   }
 }
 
+/// Makes the node order of the Gmsh surface elements (triangles, quads) consistent across each
+/// connected surface (issue 10 item 15): two elements sharing an edge must run along it in
+/// opposite directions. Elements are grouped into connected surfaces through their edges shared
+/// by exactly two surface elements; in each surface the orientation of the majority is kept (a tie:
+/// that of the lowest element) and the others are reversed. Returns how many were reversed.
+long orientMeshSurfaces(Model& m, const std::vector<int>& surface) {
+  std::map<std::pair<int, int>, std::vector<std::pair<int, int>>> edges;  // edge -> (surface index, +1/-1)
+  for (std::size_t i = 0; i < surface.size(); ++i) {
+    const auto& el = m.elements[static_cast<std::size_t>(surface[i])];
+    for (std::size_t j = 0; j < el.size(); ++j) {
+      const int a = el[j], b = el[(j + 1) % el.size()];
+      edges[{std::min(a, b), std::max(a, b)}].push_back({static_cast<int>(i), a < b ? 1 : -1});
+    }
+  }
+  std::vector<std::vector<std::pair<int, int>>> nb(surface.size());  // neighbour, 1 = must differ in flip
+  for (const auto& [e, uses] : edges) {
+    if (uses.size() != 2) continue;  // boundary or non-manifold edge
+    const int same = uses[0].second == uses[1].second ? 1 : 0;
+    nb[static_cast<std::size_t>(uses[0].first)].push_back({uses[1].first, same});
+    nb[static_cast<std::size_t>(uses[1].first)].push_back({uses[0].first, same});
+  }
+  std::vector<int> flip(surface.size(), -1);
+  long reversed = 0;
+  for (std::size_t seed = 0; seed < surface.size(); ++seed) {
+    if (flip[seed] >= 0) continue;
+    std::vector<int> comp{static_cast<int>(seed)};
+    flip[seed] = 0;
+    for (std::size_t k = 0; k < comp.size(); ++k)
+      for (const auto& [f, differ] : nb[static_cast<std::size_t>(comp[k])])
+        if (flip[static_cast<std::size_t>(f)] < 0) {
+          flip[static_cast<std::size_t>(f)] = flip[static_cast<std::size_t>(comp[k])] ^ differ;
+          comp.push_back(f);
+        }
+    long ones = 0;
+    for (int i : comp) ones += flip[static_cast<std::size_t>(i)];
+    const int reverse = 2 * ones > static_cast<long>(comp.size()) ? 0 : 1;  // reverse the minority
+    for (int i : comp) {
+      if (flip[static_cast<std::size_t>(i)] != reverse) continue;
+      auto& el = m.elements[static_cast<std::size_t>(surface[static_cast<std::size_t>(i)])];
+      std::reverse(el.begin() + 1, el.end());  // [a, b, c] -> [a, c, b], [a, b, c, d] -> [a, d, c, b]
+      ++reversed;
+    }
+  }
+  return reversed;
+}
+
+/// Membrane sets with emod: 0 (issue 10 item 16): allowed for form-finding-only sets, i.e. sets that
+/// are form-found and keep their prestress as their only stiffness afterwards (FORCE restart) in a
+/// run whose load analysis carries no load (frequencies, buckling, compliance about the found shape
+/// use the prestress stiffness). Refused where the membrane would have to carry load elastically.
+void checkZeroModulusMembranes(const Model& m) {
+  bool loaded = (m.opt.gravity && norm(*m.opt.gravity) > 0.0) || m.opt.dynamics.has_value();
+  for (const auto& [node, np] : m.nprops) {
+    loaded |= norm(np.force) > 0.0 || norm(np.moment) > 0.0 || np.rot.has_value();
+    for (const auto& d : np.displ) loaded |= d.has_value() && *d != 0.0;
+  }
+  for (const ElementSet& s : m.eprops) loaded |= s.pressure != 0.0 || (s.massProportionalLoad && norm(*s.massProportionalLoad) > 0.0);
+  for (std::size_t i = 0; i < m.eprops.size(); ++i) {
+    const ElementSet& s = m.eprops[i];
+    if (s.type != ElementType::Membrane || s.emod != 0.0) continue;
+    const std::string path = childPath(indexPath("eprops", i), "emod");
+    if (!m.formfinding)
+      fail(path, "emod: 0 is only for membranes that are form-found (a formfinding block); an elastic membrane needs emod > 0");
+    const auto& ffe = m.formfinding->formfinding_elements;
+    if (!ffe.empty() && std::find(ffe.begin(), ffe.end(), static_cast<int>(i)) == ffe.end())
+      fail(path, "emod: 0 is only for form-found membranes; this set is not in formfinding.formfinding_elements");
+    if (m.formfinding->elastic_restart_method != "FORCE")
+      fail(path, "emod: 0 with elastic_restart_method " + m.formfinding->elastic_restart_method +
+                     ": the membrane would have no stiffness at all after form finding (use FORCE, or emod > 0)");
+    if (loaded)
+      fail(path, "emod: 0 (a form-finding-only membrane) cannot carry the loads of the analysis after form finding "
+                 "(nprops force/moment/displ/rot, gravity, pressure, massProportionalLoad or opt.dynamics): give emod > 0");
+  }
+}
+
 /// Element rows: node numbers in range, no node twice, no two nodes at the same place.
 void checkElementNodes(const std::vector<std::vector<YAML::Node>>& rows, SceneContext& ctx) {
   Model& m = ctx.model;
@@ -215,6 +291,14 @@ void parseRoot(const YAML::Node& root, const std::string& baseDir, Model& m) {
     if (p.is_relative() && !baseDir.empty()) p = std::filesystem::path(baseDir) / p;
     ctx.mesh = readGmsh(p.lexically_normal().string());
     mergeMesh(root, sceneDim, ctx);
+    std::vector<int> surface;
+    for (int e : ctx.meshElementToModel)
+      if (e >= 0 && m.elements[static_cast<std::size_t>(e)].size() >= 3) surface.push_back(e);
+    if (const long n = orientMeshSurfaces(m, surface); n > 0)
+      m.warnings.push_back("mesh " + ctx.mesh->file + ": " + std::to_string(n) + " of " + std::to_string(surface.size()) +
+                           " triangles/quadrangles were inverted against their neighbours (inconsistent node order); "
+                           "reversed them so that each connected surface has one orientation (that of the majority), "
+                           "which pressure loads follow (right-hand rule)");
   }
   m.dimension = (ctx.sceneNodes > 0 && sceneDim == 2) ? 2 : 3;
   if (m.nodes.empty()) fail("nodes", "the model has no nodes");
@@ -228,6 +312,7 @@ void parseRoot(const YAML::Node& root, const std::string& baseDir, Model& m) {
   const YAML::Node ff = root["formfinding"];
   if (ff.IsDefined()) parseFormfinding(ff, ctx);
   parseSensors(root["sensors"], ctx);
+  checkZeroModulusMembranes(m);
 }
 
 /// A command-line value as a YAML node: "0,0,-9.81" -> [0, 0, -9.81]; "" -> true.

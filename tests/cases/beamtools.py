@@ -16,11 +16,18 @@ def rect_torsion_constant(s1, s2):
     return (1 / 3) * (2 * a) ** 3 * (2 * b) * (1 - 192 / math.pi ** 5 * (a / b) * s)
 
 
+def cowper_rect(E_=E, G_=G):
+    """Cowper's (1966, J. Appl. Mech. 33) shear coefficient of a rectangle as SPACAR Light uses it:
+    10 (1 + nu) / (12 + 11 nu), nu = E / (2 G) - 1 (0.8497 for 210/80 GPa, not 5/6)."""
+    nu = E_ / (2 * G_) - 1
+    return 10 * (1 + nu) / (12 + 11 * nu)
+
+
 def rect_section(w, t, E_=E, G_=G):
     """Stiffnesses of a rect section dim [w, t] (w along local y = orien, t along local z)."""
     A = w * t
     return dict(EA=E_ * A, EIy=E_ * w * t ** 3 / 12, EIz=E_ * t * w ** 3 / 12,
-                GIt=G_ * rect_torsion_constant(w, t), kGA=G_ * 5 / 6 * A, A=A)
+                GIt=G_ * rect_torsion_constant(w, t), kGA=G_ * cowper_rect(E_, G_) * A, A=A)
 
 
 def beam_set(elems, w, t, flex=(1, 2, 3, 4, 5, 6), nbeams=1, orien=(0, 0, 1), **extra):

@@ -26,6 +26,18 @@ with h5(out) as f:
     uz = f["node/p"][:3, 4, 2] - 5.0
     close(uz, [-35 / 19, -2.324760220, -2.453273210], atol=1e-8, what="C2 node 5 uz after steps 1-3")
     check(len(f["formfinding/residual"]) == 3, "C2 three form-finding rows")
+# Kratos' membrane_test/test_formfinding setup (docs/formfinding.md, "C2 and Kratos' test"): its element
+# node order [1,2,5], [1,5,3], [3,4,5], [2,4,5], E = 0 and one Newton iteration per step (max_iters 1):
+# the same C2 values (the reference problem of a step is linear), not Kratos' stored -2.16216216216
+kr = c2_scene()
+kr["elements"] = [[1, 2, 5], [1, 5, 3], [3, 4, 5], [2, 4, 5]]
+kr["eprops"][0]["emod"] = 0
+kr["formfinding"]["max_iter_equilibrium"] = 1
+out, log = run("ff_c2_kratos_setup", to_yaml(kr))
+with h5(out) as f:
+    close(f["node/p"][:3, 4] - 5.0, [[0, 0, u] for u in (-35 / 19, -2.324760220, -2.453273210)], atol=1e-8,
+          what="C2 in Kratos' element order, E = 0, one iteration per step: node 5 displacement after steps 1-3")
+    check(abs(f["node/p"][2, 4, 2] - 5.0 + 80 / 37) > 0.29, "not Kratos' -80/37 = -2.16216 after 3 steps")
 # converged, anisotropic and isotropic
 for name, ps in (("ff_c2_conv", (2, 1, 0)), ("ff_c2_iso", (1, 1, 0))):
     out, log = run(name, to_yaml(c2_scene(prestress=ps, steps=200, tol=1e-12)))
@@ -40,7 +52,7 @@ p = np.array([0.3, -0.2, -1.0])
 sc = {"nodes": X.tolist(), "elements": [[1, 4], [2, 4], [3, 4]],
       "nprops": {"1": {"fix": True}, "2": {"fix": True}, "3": {"fix": True}, "4": {"force_initial": p.tolist()}},
       "eprops": [{"elems": [j + 1], "type": "cable", "area": 1, "emod": 1e6, "prestress": N0[j]} for j in range(3)],
-      "formfinding": {"formfinding_step": 1, "equilibrium_accuracy": 1e-13}, "opt": {"loadsteps": 1}}
+      "formfinding": {"formfinding_step": 1, "equilibrium_accuracy": 1e-13, "formfinding_tolerance": 0}, "opt": {"loadsteps": 1}}
 q = np.array([N0[j] / np.linalg.norm(X[3] - X[j]) for j in range(3)])
 xfd = (p + (q[:, None] * X[:3]).sum(0)) / q.sum()
 out, log = run("ff_c3_node", to_yaml(sc))
@@ -54,7 +66,7 @@ sc = {"nodes": nodes, "elements": [[i + 1, i + 2] for i in range(n + 1)],
       "nprops": dict({"1": {"fix": True}, str(n + 2): {"fix": True}},
                      **{str(i + 1): {"force_initial": [0, 0, -P]} for i in range(1, n + 1)}),
       "eprops": [{"elems": list(range(1, n + 2)), "type": "cable", "area": 1, "emod": 1e6, "prestress": qd * h}],
-      "formfinding": {"formfinding_step": 1, "equilibrium_accuracy": 1e-13}, "opt": {"loadsteps": 1}}
+      "formfinding": {"formfinding_step": 1, "equilibrium_accuracy": 1e-13, "formfinding_tolerance": 0}, "opt": {"loadsteps": 1}}
 out, log = run("ff_c3_chain", to_yaml(sc))
 i = np.arange(1, n + 1)
 with h5(out) as f:
@@ -76,7 +88,7 @@ for j in range(m + 1):
 sc = {"nodes": nodes, "elements": els, "nprops": nprops,
       "eprops": [{"elems": list(range(1, len(els) + 1)), "type": "cable", "area": 1, "emod": 0,
                   "prestress": 2.0 * (xs[1] - xs[0])}],
-      "formfinding": {"formfinding_step": 1, "equilibrium_accuracy": 1e-13}, "opt": {"loadsteps": 1}}
+      "formfinding": {"formfinding_step": 1, "equilibrium_accuracy": 1e-13, "formfinding_tolerance": 0}, "opt": {"loadsteps": 1}}
 out, log = run("ff_c5", to_yaml(sc))
 with h5(out) as f:
     pz = f["node/p"][0, :, :]

@@ -49,7 +49,7 @@ TEST(BeamSection, RectConstants) {
   EXPECT_DOUBLE_EQ(s.It, rectTorsionConstant(w, t));
   EXPECT_DOUBLE_EQ(s.EA, 210e9 * w * t);
   EXPECT_DOUBLE_EQ(s.GIt, 80e9 * s.It);
-  EXPECT_DOUBLE_EQ(s.kGAz, 80e9 * 5.0 / 6.0 * w * t);
+  EXPECT_DOUBLE_EQ(s.kGAz, 80e9 * s.kappa * w * t);
   EXPECT_NEAR(s.nu, 210.0 / 160.0 - 1.0, 1e-15);
   EXPECT_DOUBLE_EQ(s.rhoA, 7800 * w * t);
   EXPECT_DOUBLE_EQ(s.rhoIp, 7800 * (s.Iy + s.Iz));
@@ -58,6 +58,17 @@ TEST(BeamSection, RectConstants) {
   EXPECT_DOUBLE_EQ(s.torsionStressFactor, t / s.It);  // ~ 3 / (w t^2) for thin strips
   EXPECT_NEAR(s.torsionStressFactor * w * t * t / 3.0, 1.0, 0.03);
   EXPECT_EQ(s.cwFactor, 1.0);
+}
+
+// Issue 10 item 11: SPACAR Light's (Cowper's) coefficient, not 5/6 / 9/10.
+TEST(BeamSection, CowperShearCoefficient) {
+  const BeamSection s = beamSection(rectSet(0.05, 0.002), 0.1);  // E 210e9, G 80e9: nu = 0.3125
+  EXPECT_NEAR(s.kappa, 10.0 * 1.3125 / (12.0 + 11.0 * 0.3125), 1e-15);
+  EXPECT_NEAR(s.kappa, 0.850, 5e-4);  // the issue's 0.850
+  EXPECT_GT(std::abs(s.kappa - 5.0 / 6.0), 0.016);
+  EXPECT_NEAR(cowperShearCoefficient(CrossSection::Rect, 0.0), 5.0 / 6.0, 1e-15);  // nu = 0: 5/6
+  EXPECT_NEAR(cowperShearCoefficient(CrossSection::Circ, 0.0), 6.0 / 7.0, 1e-15);
+  EXPECT_NEAR(cowperShearCoefficient(CrossSection::Circ, 0.3), 7.8 / 8.8, 1e-15);
 }
 
 TEST(BeamSection, CircConstants) {
@@ -69,7 +80,8 @@ TEST(BeamSection, CircConstants) {
   EXPECT_DOUBLE_EQ(s.A, pi * d * d / 4);
   EXPECT_DOUBLE_EQ(s.Iy, pi * std::pow(d, 4) / 64);
   EXPECT_DOUBLE_EQ(s.It, pi * std::pow(d, 4) / 32);
-  EXPECT_DOUBLE_EQ(s.kGAy, 80e9 * 0.9 * s.A);
+  EXPECT_DOUBLE_EQ(s.kGAy, 80e9 * s.kappa * s.A);
+  EXPECT_NEAR(s.kappa, 6.0 * 1.3125 / (7.0 + 6.0 * 0.3125), 1e-15);  // Cowper circ, nu = 0.3125: 0.8873
   // tau = T r / J
   EXPECT_DOUBLE_EQ(s.torsionStressFactor, (d / 2) / s.It);
 }

@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 #include <petscmat.h>
+#include <slepceps.h>
 
 #include "analysis/solver_defaults.hpp"
 #include "mesh/collective_error.hpp"
@@ -34,6 +36,9 @@ ContinuationAnalysis::ContinuationAnalysis(Assembler& assembler, const Continuat
   PetscBool inertia = PETSC_TRUE;
   SinewCallThrow(comm, PetscOptionsGetBool(nullptr, nullptr, "-continuation_inertia", &inertia, nullptr));
   inertia_ = inertia;
+  PetscBool lowest = PETSC_FALSE;
+  SinewCallThrow(comm, PetscOptionsGetBool(nullptr, nullptr, "-continuation_lowest_eigenvalue", &lowest, nullptr));
+  lowest_ = lowest;
   // the control DOF: a unit vector over the unknowns (the node's owner sets its entry)
   long local = 0;
   for (const LocalElement& el : asm_.mesh().elements) local += el.kernel->numConstraints();
@@ -98,7 +103,7 @@ PetscErrorCode ContinuationAnalysis::factor(Vec U, double lambda) {
 // Negative eigenvalues of the tangent at a converged point: the inertia of a symmetric (LDL^T)
 // MUMPS factorization. The tangent with rigid-mode multipliers is a saddle-point matrix whose
 // inertia is that of the constrained stiffness plus one negative eigenvalue per multiplier.
-PetscErrorCode ContinuationAnalysis::negativeEigenvalues(Vec U, double lambda, int* count) {
+PetscErrorCode ContinuationAnalysis::negativeEigenvalues(Vec U, double lambda, int* count, double* lowest) {
   PetscFunctionBeginUser;
   LoadState ls;
   ls.loadFactor = ls.time = lambda;
@@ -118,8 +123,47 @@ PetscErrorCode ContinuationAnalysis::negativeEigenvalues(Vec U, double lambda, i
   PetscInt neg = 0, zero = 0, pos = 0;
   PetscCall(MatGetInertia(F, &neg, &zero, &pos));
   PetscCall(MatDestroy(&F));
+  if (lowest_ && lowest) PetscCall(lowestEigenvalue(lowest));
   PetscCall(MatSetOption(K_, MAT_SYMMETRIC, PETSC_FALSE));
   *count = static_cast<int>(neg - multipliers_);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+// An independent check of the inertia: the eigenvalues of K closest to 0 (shift-and-invert with MUMPS
+// LU, K phi = mu phi), the lowest of them returned. Near a critical point the eigenvalue that crosses
+// zero is the one closest to it, so its sign must agree with the negative-pivot count.
+PetscErrorCode ContinuationAnalysis::lowestEigenvalue(double* value) {
+  PetscFunctionBeginUser;
+  MPI_Comm comm = asm_.mesh().comm;
+  EPS eps;
+  ST st;
+  KSP ksp;
+  PC pc;
+  PetscCall(EPSCreate(comm, &eps));
+  PetscCall(EPSSetOperators(eps, K_, nullptr));
+  PetscCall(EPSSetProblemType(eps, multipliers_ > 0 ? EPS_NHEP : EPS_HEP));
+  PetscCall(EPSSetWhichEigenpairs(eps, EPS_TARGET_MAGNITUDE));
+  PetscCall(EPSSetTarget(eps, 0.0));
+  PetscCall(EPSSetDimensions(eps, 4, PETSC_DEFAULT, PETSC_DEFAULT));
+  PetscCall(EPSSetTolerances(eps, 1e-10, 200));
+  PetscCall(EPSGetST(eps, &st));
+  PetscCall(STSetType(st, STSINVERT));
+  PetscCall(STGetKSP(st, &ksp));
+  PetscCall(KSPSetType(ksp, KSPPREONLY));
+  PetscCall(KSPGetPC(ksp, &pc));
+  PetscCall(PCSetType(pc, PCLU));
+  PetscCall(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
+  PetscCall(EPSSolve(eps));
+  PetscInt nconv = 0;
+  PetscCall(EPSGetConverged(eps, &nconv));
+  double low = std::numeric_limits<double>::quiet_NaN();
+  for (PetscInt i = 0; i < nconv; ++i) {
+    PetscScalar re, im;
+    PetscCall(EPSGetEigenvalue(eps, i, &re, &im));
+    if (!(low <= re)) low = re;
+  }
+  PetscCall(EPSDestroy(&eps));
+  *value = low;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -278,7 +322,7 @@ PetscErrorCode ContinuationAnalysis::run(Vec U, const PointCallback& onPoint, bo
     PetscCall(asm_.setMixedReference(U, start));
   }
   int prevNeg = -1;
-  if (inertia_) PetscCall(negativeEigenvalues(U, 0.0, &prevNeg));
+  if (inertia_) PetscCall(negativeEigenvalues(U, 0.0, &prevNeg, nullptr));
   for (int n = 1; n <= opt_.max_steps; ++n) {
     PathPoint p;
     p.step = n;
@@ -316,7 +360,7 @@ PetscErrorCode ContinuationAnalysis::run(Vec U, const PointCallback& onPoint, bo
     p.iterations = its;
     PetscCall(controlDisplacement(U, lambda, &p.controlValue));
     if (inertia_) PetscCall(pathSlopes(U, lambda, dUprev, dlPrev, &p));
-    if (inertia_) PetscCall(negativeEigenvalues(U, lambda, &p.negativeEigenvalues));
+    if (inertia_) PetscCall(negativeEigenvalues(U, lambda, &p.negativeEigenvalues, &p.lowestEigenvalue));
     points_.push_back(p);
     if (inertia_ && prevNeg >= 0 && p.negativeEigenvalues != prevNeg) classify();
     prevNeg = p.negativeEigenvalues;

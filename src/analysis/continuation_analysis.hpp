@@ -27,6 +27,7 @@ struct PathPoint {
   int negativeEigenvalues = -1;  ///< of the tangent, rigid-mode multipliers discounted; -1 when not computed
   double controlValue = 0;     ///< the displacement of the control DOF (when a node is given)
   double slopeLoad = 0, slopeControl = 0;  ///< d lambda / ds and d u_control / ds along the path there
+  double lowestEigenvalue = 0;  ///< SLEPc: lowest eigenvalue of the tangent (-continuation_lowest_eigenvalue)
 };
 
 struct CriticalPoint {
@@ -47,6 +48,7 @@ class ContinuationAnalysis {
   const std::vector<PathPoint>& points() const { return points_; }
   const std::vector<CriticalPoint>& criticalPoints() const { return critical_; }
   const std::string& failureMessage() const { return failure_; }
+  bool computesLowestEigenvalue() const { return lowest_; }
   std::string summary() const;
   /// The path ends after the current point when *stop is set (an interrupt; equal on every rank).
   void setStopFlag(const bool* stop) { stop_ = stop; }
@@ -54,7 +56,9 @@ class ContinuationAnalysis {
  private:
   PetscErrorCode loadDerivative(Vec U, double lambda, Vec q);
   PetscErrorCode factor(Vec U, double lambda);
-  PetscErrorCode negativeEigenvalues(Vec U, double lambda, int* count);
+  PetscErrorCode negativeEigenvalues(Vec U, double lambda, int* count, double* lowest);
+  /// Lowest eigenvalue of K_ (assembled true tangent) by SLEPc: shift-and-invert about 0, a few pairs.
+  PetscErrorCode lowestEigenvalue(double* value);
   PetscErrorCode controlDisplacement(Vec U, double lambda, double* value);
   /// Path tangent at a converged point, oriented along dUlast: d lambda / ds and d u_control / ds.
   PetscErrorCode pathSlopes(Vec U, double lambda, Vec dUlast, double dlLast, PathPoint* p);
@@ -71,6 +75,7 @@ class ContinuationAnalysis {
   double rtol_ = 1e-9;
   int maxIts_ = 15, maxCuts_ = 10, desiredIts_ = 5;
   bool inertia_ = true;
+  bool lowest_ = false;  ///< -continuation_lowest_eigenvalue
   std::vector<PathPoint> points_;
   std::vector<CriticalPoint> critical_;
   std::string failure_;

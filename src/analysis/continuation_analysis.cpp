@@ -33,6 +33,9 @@ ContinuationAnalysis::ContinuationAnalysis(Assembler& assembler, const Continuat
   v = desiredIts_;
   SinewCallThrow(comm, PetscOptionsGetInt(nullptr, nullptr, "-continuation_desired_its", &v, nullptr));
   desiredIts_ = static_cast<int>(std::max<PetscInt>(v, 1));
+  v = initialSteps_;
+  SinewCallThrow(comm, PetscOptionsGetInt(nullptr, nullptr, "-continuation_initial_steps", &v, nullptr));
+  initialSteps_ = static_cast<int>(std::max<PetscInt>(v, 1));
   PetscBool inertia = PETSC_TRUE;
   SinewCallThrow(comm, PetscOptionsGetBool(nullptr, nullptr, "-continuation_inertia", &inertia, nullptr));
   inertia_ = inertia;
@@ -87,6 +90,68 @@ PetscErrorCode ContinuationAnalysis::loadDerivative(Vec U, double lambda, Vec q)
   PetscCall(asm_.residual(U, ls, q));
   PetscCall(VecAXPY(q, -1.0, work_));
   PetscCall(VecScale(q, 0.5 / h));  // q = (R(-h) - R(+h)) / 2h = -dR/dlambda
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+// Initial loads (force_initial, moment_initial, displ_initial, rot_initial) act at every load factor,
+// so the path starts from their equilibrium: Newton at load factor 0 with the initial loads ramped in
+// equal increments (a cut increment is halved), rotations absorbed after each.
+PetscErrorCode ContinuationAnalysis::equilibrateInitial(Vec U, bool* ok) {
+  PetscFunctionBeginUser;
+  LoadState ls;
+  *ok = true;
+  PetscCall(asm_.residual(U, ls, R_));
+  PetscReal r0, fint;
+  PetscCall(VecNorm(R_, NORM_2, &r0));
+  ls.initialFactor = 0.0;
+  PetscCall(asm_.residual(U, ls, work_));
+  PetscCall(VecAXPY(work_, -1.0, R_));  // the initial loads' share of the residual
+  PetscCall(VecNorm(work_, NORM_2, &fint));
+  if (fint == 0.0 && r0 == 0.0) PetscFunctionReturn(PETSC_SUCCESS);
+  Vec U0;
+  PetscCall(VecDuplicate(U, &U0));
+  double mu = 0.0, dmu = 1.0 / initialSteps_;
+  int cuts = 0;
+  while (mu < 1.0 && *ok) {
+    const double next = std::min(1.0, mu + dmu);
+    PetscCall(VecCopy(U, U0));
+    const auto Rsave = asm_.referenceRotations();
+    ls.initialFactor = next;
+    bool conv = false;
+    PetscReal jnorm = 0;
+    for (int k = 0; k <= 3 * maxIts_; ++k) {
+      PetscCall(asm_.residual(U, ls, R_));
+      PetscReal rn;
+      PetscCall(VecNorm(R_, NORM_2, &rn));
+      if (!std::isfinite(rn)) break;
+      const double floor = 8.0 * DBL_EPSILON * jnorm * std::max(asm_.coordinateScale(), 1.0);
+      if (k > 0 && rn <= std::max(rtol_ * fint, floor)) {
+        conv = true;
+        break;
+      }
+      if (k == 3 * maxIts_) break;
+      PetscCall(asm_.jacobian(U, ls, K_));
+      PetscCall(MatNorm(K_, NORM_INFINITY, &jnorm));
+      PetscCall(KSPSetOperators(ksp_, K_, K_));
+      PetscCall(VecScale(R_, -1.0));
+      PetscCall(KSPSolve(ksp_, R_, duR_));
+      KSPConvergedReason kr;
+      PetscCall(KSPGetConvergedReason(ksp_, &kr));
+      if (kr < 0) break;
+      PetscCall(VecAXPY(U, 1.0, duR_));
+    }
+    if (conv) {
+      PetscCall(asm_.setMixedReference(U, ls));
+      PetscCall(asm_.absorbRotations(U));
+      mu = next;
+      continue;
+    }
+    PetscCall(VecCopy(U0, U));
+    asm_.setReferenceRotations(Rsave);
+    if (++cuts > maxCuts_) *ok = false;
+    dmu *= 0.5;
+  }
+  PetscCall(VecDestroy(&U0));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -320,6 +385,18 @@ PetscErrorCode ContinuationAnalysis::run(Vec U, const PointCallback& onPoint, bo
   {
     LoadState start;
     PetscCall(asm_.setMixedReference(U, start));
+  }
+  {
+    bool ok = true;
+    PetscCall(equilibrateInitial(U, &ok));
+    if (!ok) {
+      failure_ = "the start state under the initial loads (load factor 0) did not converge after " + std::to_string(maxCuts_) +
+                 " halvings of its increments; try -continuation_initial_steps with more increments";
+      *converged = false;
+      PetscCall(VecDestroy(&dUprev));
+      PetscCall(VecDestroy(&Uprev));
+      PetscFunctionReturn(PETSC_SUCCESS);
+    }
   }
   int prevNeg = -1;
   if (inertia_) PetscCall(negativeEigenvalues(U, 0.0, &prevNeg, nullptr));

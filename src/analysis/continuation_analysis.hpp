@@ -55,6 +55,9 @@ class ContinuationAnalysis {
 
  private:
   PetscErrorCode loadDerivative(Vec U, double lambda, Vec q);
+  /// The start state: equilibrium under the initial loads alone (load factor 0), reached by ramping them
+  /// (LoadState::initialFactor 0 -> 1 in -continuation_initial_steps Newton-solved increments).
+  PetscErrorCode equilibrateInitial(Vec U, bool* ok);
   PetscErrorCode factor(Vec U, double lambda);
   PetscErrorCode negativeEigenvalues(Vec U, double lambda, int* count, double* lowest);
   /// Lowest eigenvalue of K_ (assembled true tangent) by SLEPc: shift-and-invert about 0, a few pairs.
@@ -73,7 +76,7 @@ class ContinuationAnalysis {
   long multipliers_ = 0;      ///< global number of rigid-mode multipliers (each adds one negative pivot)
   bool haveControl_ = false;  ///< e_ selects the control DOF among the unknowns
   double rtol_ = 1e-9;
-  int maxIts_ = 15, maxCuts_ = 10, desiredIts_ = 5;
+  int maxIts_ = 15, maxCuts_ = 10, desiredIts_ = 5, initialSteps_ = 10;
   bool inertia_ = true;
   bool lowest_ = false;  ///< -continuation_lowest_eigenvalue
   std::vector<PathPoint> points_;

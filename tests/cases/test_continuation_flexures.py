@@ -16,7 +16,7 @@ Reference: shallow-beam (Marguerre) theory with a uniform axial force P, exact f
 EI (w - w0)'''' + P w'' = -F delta(x - L/2), clamped ends, P L / EA = Delta + 1/2 int (w0'^2 - w'^2) dx
 (e.g. Vangbo 1998, Sens. Actuators A 69, 212, for the buckled beam; Qiu, Lang & Slocum 2004, JMEMS 13,
 137, for the curved beam). For each P the deflection is linear in F (w = a + F b, a fourth-order finite
-difference solve on 800 intervals here), the compatibility is a quadratic for F: the path F(P) is
+difference solve on 400 intervals here), the compatibility is a quadratic for F: the path F(P) is
 maximized/minimized over P. Its error against the exact kinematics of the beam elements is of the
 order of the squared slopes (max slope 2 pi h / L = 0.09): tolerances 0.5% on the limit loads (arch 0.6%), 1% on
 the deflections."""
@@ -34,7 +34,7 @@ EI, EA = E * wd * t ** 3 / 12, E * wd * t
 class Shallow:
     """Shallow-beam theory on N intervals: w = a(P) + F b(P) at the interior points."""
 
-    def __init__(self, w0f, Delta, N=800):
+    def __init__(self, w0f, Delta, N=400):
         self.hx = hx = L / N
         self.x = np.arange(1, N) * hx
         self.w0 = w0f(self.x)
@@ -85,7 +85,7 @@ class Shallow:
     def extreme(self, lo, hi, branch, sign):
         """Largest (sign 1) / smallest (sign -1) F for P in [lo, hi] of the root branch that starts as root
         `branch` at lo (followed by continuity of the mid-span deflection)."""
-        Ps = np.linspace(lo, hi, 400)
+        Ps = np.linspace(lo, hi, 150)
         idx, last = [], None
         for P in Ps:
             r = self.roots(P)

@@ -33,6 +33,7 @@ struct PathPoint {
 struct CriticalPoint {
   enum Kind { Limit = 1, Bifurcation = 2 };
   Kind kind = Limit;
+  bool interpolated = false;  ///< a bifurcation located by the lowest eigenvalue's zero (else the midpoint)
   int afterStep = 0;    ///< between path points afterStep and afterStep + 1
   double loadFactor = 0;  ///< located load factor (parabola through three points for a limit point)
   double controlValue = 0;
@@ -60,8 +61,14 @@ class ContinuationAnalysis {
   PetscErrorCode equilibrateInitial(Vec U, bool* ok);
   PetscErrorCode factor(Vec U, double lambda);
   PetscErrorCode negativeEigenvalues(Vec U, double lambda, int* count, double* lowest);
-  /// Lowest eigenvalue of K_ (assembled true tangent) by SLEPc: shift-and-invert about 0, a few pairs.
-  PetscErrorCode lowestEigenvalue(double* value);
+  /// Lowest eigenvalue of K_ (assembled true tangent) by SLEPc: shift-and-invert about 0, a few pairs;
+  /// its eigenvector into phi when given.
+  PetscErrorCode lowestEigenvalue(double* value, Vec phi = nullptr);
+  /// Newton at a fixed load factor from U (the branch switch); ok when the residual meets the tolerance.
+  PetscErrorCode solveFixedLoad(Vec U, double lambda, double scale, bool* ok);
+  /// -branch_switch: from the point just past a bifurcation, onto the branch along the critical
+  /// eigenvector (orthogonal to the path tangent dUprev), by tau = |ds|; ok when it left the primary path.
+  PetscErrorCode switchBranch(Vec U, double lambda, double tau, Vec dUprev, bool* ok);
   PetscErrorCode controlDisplacement(Vec U, double lambda, double* value);
   /// Path tangent at a converged point, oriented along dUlast: d lambda / ds and d u_control / ds.
   PetscErrorCode pathSlopes(Vec U, double lambda, Vec dUlast, double dlLast, PathPoint* p);
@@ -79,6 +86,8 @@ class ContinuationAnalysis {
   int maxIts_ = 15, maxCuts_ = 10, desiredIts_ = 5, initialSteps_ = 10;
   bool inertia_ = true;
   bool lowest_ = false;  ///< -continuation_lowest_eigenvalue
+  bool branchSwitch_ = false, switched_ = false;  ///< -branch_switch; done once
+  int switchedAt_ = 0;   ///< the path point reached on the new branch (0: none)
   std::vector<PathPoint> points_;
   std::vector<CriticalPoint> critical_;
   std::string failure_;

@@ -51,6 +51,7 @@ const std::vector<Flag>& sinewFlags() {
         {"continuation_desired_its", integerAtLeast(1), &statics, "5", "path following: corrector iterations the adaptive step aims at"},
         {"continuation_inertia", boolean(), &statics, "true", "path following: count the tangent's negative eigenvalues at every point (MUMPS LDL^T)"},
         {"continuation_initial_steps", integerAtLeast(1), &statics, "10", "path following: increments in which the initial loads (force_initial, displ_initial, ...) are applied before the path starts from their equilibrium"},
+        {"branch_switch", boolean(), &statics, "false", "path following: at the first bifurcation, switch onto the bifurcated branch along the critical eigenvector (symmetric bifurcations; docs/continuation.md)"},
         {"continuation_lowest_eigenvalue", boolean(), &statics, "false", "path following: also the tangent's eigenvalue closest to 0 (lowest of 4, SLEPc shift-and-invert) per point, /path/lowest_eigenvalue"},
         {"adaptive_increments", boolean(), &statics, "true", "after a cut, grow the increment again when Newton converges quickly"},
         {"increment_grow_its", integerAtLeast(0), &statics, "5", "Newton iterations that count as quick (the next increment doubles)"},

@@ -80,3 +80,36 @@ class Shallow:
         r = minimize_scalar(f, bounds=(Ps[max(k - 1, 0)], Ps[min(k + 1, len(Ps) - 1)]), method="bounded",
                             options={"xatol": 1e-10 * hi})
         return self.roots(r.x)[branch]
+
+    def trace(self, n=3000):
+        """The path from the unloaded state (F = 0, w = w0): (F, mid-span w) arrays, P increasing from 0
+        and, past a fold in P (where the two roots meet), decreasing on the other root. A root is chosen
+        by the mid-span deflection extrapolated from the last two points."""
+        Ps = np.linspace(0.0, 0.99999 * self.P2, n)
+        F, w = [], []
+        k = 0
+        for k, P in enumerate(Ps):
+            z = self.roots(P)
+            if z is None:
+                break
+            if not w:
+                j = int(np.argmin([abs(q[0]) for q in z]))
+            else:
+                pred = w[-1] + (w[-1] - w[-2] if len(w) > 1 else 0.0)
+                j = int(np.argmin([abs(q[1] - pred) for q in z]))
+            F.append(z[j][0])
+            w.append(z[j][1])
+        else:
+            return np.array(F), np.array(w)
+        for m, P in enumerate(Ps[k - 1::-1]):  # back along the other root
+            z = self.roots(P)
+            if z is None:
+                break
+            if m == 0:  # at the last forward P: the root we did not come along
+                j = int(np.argmax([abs(q[1] - w[-1]) for q in z]))
+            else:
+                pred = w[-1] + (w[-1] - w[-2])
+                j = int(np.argmin([abs(q[1] - pred) for q in z]))
+            F.append(z[j][0])
+            w.append(z[j][1])
+        return np.array(F), np.array(w)

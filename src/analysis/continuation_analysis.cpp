@@ -215,7 +215,11 @@ PetscErrorCode ContinuationAnalysis::switchBranch(Vec U, double lambda, double t
   if (tt > 0) PetscCall(VecAXPY(phi, -tp / tt, dUprev));  // orthogonal to the primary path
   PetscCall(VecNorm(phi, NORM_2, &pn));
   if (pn > 0 && std::isfinite(mu)) {
-    PetscCall(VecScale(phi, 1.0 / pn));
+    // the eigenvector's sign is arbitrary (it may differ between rank counts): its largest entry positive
+    PetscReal vmax, vmin;
+    PetscCall(VecMax(phi, nullptr, &vmax));
+    PetscCall(VecMin(phi, nullptr, &vmin));
+    PetscCall(VecScale(phi, (-vmin > vmax ? -1.0 : 1.0) / pn));
     PetscCall(VecCopy(U, Ub));
     const auto Rsave = asm_.referenceRotations();
     PetscCall(loadDerivative(Ub, lambda, q_));

@@ -15,7 +15,8 @@ Checks:
       P / P_cr = (2 K(k) / pi)^2, k = sin(alpha / 2), alpha the tip rotation (from /node/r_quat), at
       every point of the new branch (at least 3; here 15 up to alpha = 2.26 rad): relative error < 0.5%
       (measured 0.11% at alpha = 1.19 to 0.43% at 2.26 with 20 elements; discretization error: with 40
-      elements 0.03% to 0.10%, second order)."""
+      elements 0.03% to 0.10%, second order);
+  (4) 1 and 2 ranks: the same path to 1e-9, through the switch."""
 import numpy as np
 from scipy.special import ellipk
 
@@ -35,8 +36,12 @@ scene = bt.yaml_text({"title": "perfect Euler column", "nodes": [[0.0, L * i / n
                       "opt": {"calccompl": False,
                               "continuation": {"method": "arclength", "constraint": "spherical", "psi": float(1 / Pcr),
                                                "ds": 0.1, "ds_max": 0.3, "node": n + 1, "direction": "x", "max_steps": 20}}})
+h5_1, _ = st.run("continuation_euler_1", scene, np_=1, args=["-branch_switch"])
 h5, out = st.run("continuation_euler", scene, args=["-branch_switch"])
+with st.h5(h5_1) as f:
+    lam1, p1 = f["load_factor"][:], f["node/p"][:]
 with st.h5(h5) as f:
+    p2 = f["node/p"][:]
     lam, ux, neg = f["load_factor"][:], f["path/control_displacement"][:], f["path/negative_eigenvalues"][:]
     crit, quat, conv = f["path/critical_points"][:], f["node/r_quat"][:, n, :], int(f.attrs["converged"])
 alpha = 2 * np.arccos(np.clip(np.abs(quat[:, 0]), 0, 1))
@@ -63,4 +68,8 @@ err = lam[branch] / ref - 1
 for a_, l_, r_, e_ in zip(alpha[branch], lam[branch], ref, err):
     print(f"    alpha {a_:.4f} rad: P/Pcr {l_:.6f}, elastica {r_:.6f}, error {e_:+.2e}")
 st.close(lam[branch], ref, rtol=5e-3, what="post-buckling load factor vs the elastica (2 K(k)/pi)^2")
+# (4) 1 and 2 ranks: the same branch (the eigenvector's sign is fixed by its largest entry) and path
+if st.check(len(lam1) == len(lam), "1 and 2 ranks: same number of path points"):
+    st.close(lam1, lam, atol=1e-9 * np.abs(lam).max(), what="1 vs 2 ranks: load factors")
+    st.close(p1, p2, atol=1e-9 * L, what="1 vs 2 ranks: node positions along the path (through the switch)")
 st.done()

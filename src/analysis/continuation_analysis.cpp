@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 #include <petscmat.h>
+#include <slepceps.h>
 
 #include "analysis/solver_defaults.hpp"
 #include "mesh/collective_error.hpp"
@@ -31,9 +33,18 @@ ContinuationAnalysis::ContinuationAnalysis(Assembler& assembler, const Continuat
   v = desiredIts_;
   SinewCallThrow(comm, PetscOptionsGetInt(nullptr, nullptr, "-continuation_desired_its", &v, nullptr));
   desiredIts_ = static_cast<int>(std::max<PetscInt>(v, 1));
+  v = initialSteps_;
+  SinewCallThrow(comm, PetscOptionsGetInt(nullptr, nullptr, "-continuation_initial_steps", &v, nullptr));
+  initialSteps_ = static_cast<int>(std::max<PetscInt>(v, 1));
   PetscBool inertia = PETSC_TRUE;
   SinewCallThrow(comm, PetscOptionsGetBool(nullptr, nullptr, "-continuation_inertia", &inertia, nullptr));
   inertia_ = inertia;
+  PetscBool lowest = PETSC_FALSE;
+  SinewCallThrow(comm, PetscOptionsGetBool(nullptr, nullptr, "-continuation_lowest_eigenvalue", &lowest, nullptr));
+  lowest_ = lowest;
+  PetscBool bs = PETSC_FALSE;
+  SinewCallThrow(comm, PetscOptionsGetBool(nullptr, nullptr, "-branch_switch", &bs, nullptr));
+  branchSwitch_ = bs;
   // the control DOF: a unit vector over the unknowns (the node's owner sets its entry)
   long local = 0;
   for (const LocalElement& el : asm_.mesh().elements) local += el.kernel->numConstraints();
@@ -85,6 +96,161 @@ PetscErrorCode ContinuationAnalysis::loadDerivative(Vec U, double lambda, Vec q)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+// Initial loads (force_initial, moment_initial, displ_initial, rot_initial) act at every load factor,
+// so the path starts from their equilibrium: Newton at load factor 0 with the initial loads ramped in
+// equal increments (a cut increment is halved), rotations absorbed after each.
+PetscErrorCode ContinuationAnalysis::equilibrateInitial(Vec U, bool* ok) {
+  PetscFunctionBeginUser;
+  LoadState ls;
+  *ok = true;
+  PetscCall(asm_.residual(U, ls, R_));
+  PetscReal r0, fint;
+  PetscCall(VecNorm(R_, NORM_2, &r0));
+  ls.initialFactor = 0.0;
+  PetscCall(asm_.residual(U, ls, work_));
+  PetscCall(VecAXPY(work_, -1.0, R_));  // the initial loads' share of the residual
+  PetscCall(VecNorm(work_, NORM_2, &fint));
+  if (fint == 0.0 && r0 == 0.0) PetscFunctionReturn(PETSC_SUCCESS);
+  Vec U0;
+  PetscCall(VecDuplicate(U, &U0));
+  double mu = 0.0, dmu = 1.0 / initialSteps_;
+  int cuts = 0;
+  while (mu < 1.0 && *ok) {
+    const double next = std::min(1.0, mu + dmu);
+    PetscCall(VecCopy(U, U0));
+    const auto Rsave = asm_.referenceRotations();
+    ls.initialFactor = next;
+    bool conv = false;
+    PetscReal jnorm = 0;
+    for (int k = 0; k <= 3 * maxIts_; ++k) {
+      PetscCall(asm_.residual(U, ls, R_));
+      PetscReal rn;
+      PetscCall(VecNorm(R_, NORM_2, &rn));
+      if (!std::isfinite(rn)) break;
+      const double floor = 8.0 * DBL_EPSILON * jnorm * std::max(asm_.coordinateScale(), 1.0);
+      if (k > 0 && rn <= std::max(rtol_ * fint, floor)) {
+        conv = true;
+        break;
+      }
+      if (k == 3 * maxIts_) break;
+      PetscCall(asm_.jacobian(U, ls, K_));
+      PetscCall(MatNorm(K_, NORM_INFINITY, &jnorm));
+      PetscCall(KSPSetOperators(ksp_, K_, K_));
+      PetscCall(VecScale(R_, -1.0));
+      PetscCall(KSPSolve(ksp_, R_, duR_));
+      KSPConvergedReason kr;
+      PetscCall(KSPGetConvergedReason(ksp_, &kr));
+      if (kr < 0) break;
+      PetscCall(VecAXPY(U, 1.0, duR_));
+    }
+    if (conv) {
+      PetscCall(asm_.setMixedReference(U, ls));
+      PetscCall(asm_.absorbRotations(U));
+      mu = next;
+      continue;
+    }
+    PetscCall(VecCopy(U0, U));
+    asm_.setReferenceRotations(Rsave);
+    if (++cuts > maxCuts_) *ok = false;
+    dmu *= 0.5;
+  }
+  PetscCall(VecDestroy(&U0));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode ContinuationAnalysis::solveFixedLoad(Vec U, double lambda, double scale, bool* ok) {
+  PetscFunctionBeginUser;
+  LoadState ls;
+  ls.loadFactor = ls.time = lambda;
+  *ok = false;
+  PetscReal jnorm = 0;
+  for (int k = 0; k <= 2 * maxIts_; ++k) {
+    PetscCall(asm_.residual(U, ls, R_));
+    PetscReal rn;
+    PetscCall(VecNorm(R_, NORM_2, &rn));
+    if (!std::isfinite(rn)) break;
+    const double floor = 8.0 * DBL_EPSILON * jnorm * std::max(asm_.coordinateScale(), 1.0);
+    if (k > 0 && rn <= std::max(rtol_ * scale, floor)) {
+      *ok = true;
+      break;
+    }
+    if (k == 2 * maxIts_) break;
+    PetscCall(factor(U, lambda));
+    PetscCall(MatNorm(K_, NORM_INFINITY, &jnorm));
+    PetscCall(VecScale(R_, -1.0));
+    PetscCall(KSPSolve(ksp_, R_, duR_));
+    KSPConvergedReason kr;
+    PetscCall(KSPGetConvergedReason(ksp_, &kr));
+    if (kr < 0) break;
+    PetscCall(VecAXPY(U, 1.0, duR_));
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+// Branch switching at a symmetric bifurcation (e.g. Wagner & Wriggers 1988): at the first point past it
+// (one more negative eigenvalue, the buckled branch exists at this load for a supercritical
+// bifurcation) the state is perturbed by tau phi, phi the eigenvector of the lowest eigenvalue made
+// orthogonal to the primary path's last increment, and equilibrium found at the same load factor
+// (perturbations doubled from tau until Newton does not return to the primary path). The switch counts
+// when the result kept at least a tenth of tau along phi.
+PetscErrorCode ContinuationAnalysis::switchBranch(Vec U, double lambda, double tau, Vec dUprev, bool* ok) {
+  PetscFunctionBeginUser;
+  *ok = false;
+  LoadState ls;
+  ls.loadFactor = ls.time = lambda;
+  const bool mixed = asm_.mixedStressNewton();
+  asm_.setMixedStressNewton(false);
+  PetscCall(asm_.jacobian(U, ls, K_));
+  asm_.setMixedStressNewton(mixed);
+  PetscCall(MatSetOption(K_, MAT_SYMMETRIC, PETSC_TRUE));
+  Vec phi, Ub;
+  PetscCall(VecDuplicate(U, &phi));
+  PetscCall(VecDuplicate(U, &Ub));
+  double mu = 0;
+  PetscCall(lowestEigenvalue(&mu, phi));
+  PetscCall(MatSetOption(K_, MAT_SYMMETRIC, PETSC_FALSE));
+  PetscReal tt, tp, pn;
+  PetscCall(VecDot(dUprev, dUprev, &tt));
+  PetscCall(VecDot(dUprev, phi, &tp));
+  if (tt > 0) PetscCall(VecAXPY(phi, -tp / tt, dUprev));  // orthogonal to the primary path
+  PetscCall(VecNorm(phi, NORM_2, &pn));
+  if (pn > 0 && std::isfinite(mu)) {
+    // the eigenvector's sign is arbitrary (it may differ between rank counts): its largest entry positive
+    PetscReal vmax, vmin;
+    PetscCall(VecMax(phi, nullptr, &vmax));
+    PetscCall(VecMin(phi, nullptr, &vmin));
+    PetscCall(VecScale(phi, (-vmin > vmax ? -1.0 : 1.0) / pn));
+    PetscCall(VecCopy(U, Ub));
+    const auto Rsave = asm_.referenceRotations();
+    PetscCall(loadDerivative(Ub, lambda, q_));
+    PetscReal qn;
+    PetscCall(VecNorm(q_, NORM_2, &qn));
+    // the branch's amplitude at this load is unknown: perturbations tau, 2 tau, 4 tau, ... until Newton
+    // stays off the primary path (from too small a one it returns there)
+    for (int k = 0; k < 10 && !*ok; ++k) {
+      const double t = std::abs(tau) * std::ldexp(1.0, k);
+      PetscCall(VecWAXPY(U, t, phi, Ub));
+      bool conv = false;
+      PetscCall(solveFixedLoad(U, lambda, qn * std::max(1.0, std::abs(lambda)), &conv));
+      PetscReal amp = 0;
+      if (conv) {
+        PetscCall(VecWAXPY(work_, -1.0, Ub, U));
+        PetscCall(VecDot(work_, phi, &amp));
+      }
+      if (conv && std::abs(amp) > 0.1 * std::abs(tau)) {
+        PetscCall(VecCopy(work_, dUprev));  // the next steps continue along the new branch
+        *ok = true;
+      } else {
+        asm_.setReferenceRotations(Rsave);
+      }
+    }
+    if (!*ok) PetscCall(VecCopy(Ub, U));
+  }
+  PetscCall(VecDestroy(&phi));
+  PetscCall(VecDestroy(&Ub));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode ContinuationAnalysis::factor(Vec U, double lambda) {
   PetscFunctionBeginUser;
   LoadState ls;
@@ -98,7 +264,7 @@ PetscErrorCode ContinuationAnalysis::factor(Vec U, double lambda) {
 // Negative eigenvalues of the tangent at a converged point: the inertia of a symmetric (LDL^T)
 // MUMPS factorization. The tangent with rigid-mode multipliers is a saddle-point matrix whose
 // inertia is that of the constrained stiffness plus one negative eigenvalue per multiplier.
-PetscErrorCode ContinuationAnalysis::negativeEigenvalues(Vec U, double lambda, int* count) {
+PetscErrorCode ContinuationAnalysis::negativeEigenvalues(Vec U, double lambda, int* count, double* lowest) {
   PetscFunctionBeginUser;
   LoadState ls;
   ls.loadFactor = ls.time = lambda;
@@ -118,8 +284,55 @@ PetscErrorCode ContinuationAnalysis::negativeEigenvalues(Vec U, double lambda, i
   PetscInt neg = 0, zero = 0, pos = 0;
   PetscCall(MatGetInertia(F, &neg, &zero, &pos));
   PetscCall(MatDestroy(&F));
+  if ((lowest_ || branchSwitch_) && lowest) PetscCall(lowestEigenvalue(lowest));
   PetscCall(MatSetOption(K_, MAT_SYMMETRIC, PETSC_FALSE));
   *count = static_cast<int>(neg - multipliers_);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+// An independent check of the inertia: the eigenvalues of K closest to 0 (shift-and-invert with MUMPS
+// LU, K phi = mu phi), the lowest of them returned. Near a critical point the eigenvalue that crosses
+// zero is the one closest to it, so its sign must agree with the negative-pivot count.
+PetscErrorCode ContinuationAnalysis::lowestEigenvalue(double* value, Vec phi) {
+  PetscFunctionBeginUser;
+  MPI_Comm comm = asm_.mesh().comm;
+  EPS eps;
+  ST st;
+  KSP ksp;
+  PC pc;
+  PetscCall(EPSCreate(comm, &eps));
+  PetscCall(EPSSetOperators(eps, K_, nullptr));
+  PetscCall(EPSSetProblemType(eps, multipliers_ > 0 ? EPS_NHEP : EPS_HEP));
+  PetscCall(EPSSetWhichEigenpairs(eps, EPS_TARGET_MAGNITUDE));
+  PetscCall(EPSSetTarget(eps, 0.0));
+  PetscCall(EPSSetDimensions(eps, 4, PETSC_DEFAULT, PETSC_DEFAULT));
+  PetscCall(EPSSetTolerances(eps, 1e-10, 200));
+  PetscCall(EPSGetST(eps, &st));
+  PetscCall(STSetType(st, STSINVERT));
+  PetscCall(STGetKSP(st, &ksp));
+  PetscCall(KSPSetType(ksp, KSPPREONLY));
+  PetscCall(KSPGetPC(ksp, &pc));
+  PetscCall(PCSetType(pc, PCLU));
+  PetscCall(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
+  PetscCall(EPSSolve(eps));
+  PetscInt nconv = 0;
+  PetscCall(EPSGetConverged(eps, &nconv));
+  double low = std::numeric_limits<double>::quiet_NaN();
+  PetscInt at = -1;
+  for (PetscInt i = 0; i < nconv; ++i) {
+    PetscScalar re, im;
+    PetscCall(EPSGetEigenvalue(eps, i, &re, &im));
+    if (!(low <= re)) {
+      low = re;
+      at = i;
+    }
+  }
+  if (phi) {
+    if (at >= 0) PetscCall(EPSGetEigenvector(eps, at, phi, nullptr));
+    else PetscCall(VecSet(phi, 0.0));
+  }
+  PetscCall(EPSDestroy(&eps));
+  *value = low;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -277,8 +490,20 @@ PetscErrorCode ContinuationAnalysis::run(Vec U, const PointCallback& onPoint, bo
     LoadState start;
     PetscCall(asm_.setMixedReference(U, start));
   }
+  {
+    bool ok = true;
+    PetscCall(equilibrateInitial(U, &ok));
+    if (!ok) {
+      failure_ = "the start state under the initial loads (load factor 0) did not converge after " + std::to_string(maxCuts_) +
+                 " halvings of its increments; try -continuation_initial_steps with more increments";
+      *converged = false;
+      PetscCall(VecDestroy(&dUprev));
+      PetscCall(VecDestroy(&Uprev));
+      PetscFunctionReturn(PETSC_SUCCESS);
+    }
+  }
   int prevNeg = -1;
-  if (inertia_) PetscCall(negativeEigenvalues(U, 0.0, &prevNeg));
+  if (inertia_) PetscCall(negativeEigenvalues(U, 0.0, &prevNeg, nullptr));
   for (int n = 1; n <= opt_.max_steps; ++n) {
     PathPoint p;
     p.step = n;
@@ -316,12 +541,41 @@ PetscErrorCode ContinuationAnalysis::run(Vec U, const PointCallback& onPoint, bo
     p.iterations = its;
     PetscCall(controlDisplacement(U, lambda, &p.controlValue));
     if (inertia_) PetscCall(pathSlopes(U, lambda, dUprev, dlPrev, &p));
-    if (inertia_) PetscCall(negativeEigenvalues(U, lambda, &p.negativeEigenvalues));
+    if (inertia_) PetscCall(negativeEigenvalues(U, lambda, &p.negativeEigenvalues, &p.lowestEigenvalue));
     points_.push_back(p);
     if (inertia_ && prevNeg >= 0 && p.negativeEigenvalues != prevNeg) classify();
     prevNeg = p.negativeEigenvalues;
     if (onPoint) PetscCall(onPoint(p, U));
     if (stop_ && *stop_) break;
+    if (branchSwitch_ && !switched_ && !critical_.empty() && critical_.back().kind == CriticalPoint::Bifurcation &&
+        critical_.back().afterStep == static_cast<int>(points_.size()) - 1 && n < opt_.max_steps) {
+      switched_ = true;
+      bool sw = false;
+      PetscCall(switchBranch(U, lambda, ds, dUprev, &sw));
+      if (sw) {
+        PathPoint b;
+        b.step = ++n;
+        LoadState lb;
+        lb.loadFactor = lb.time = lambda;
+        PetscCall(asm_.setMixedReference(U, lb));
+        PetscCall(asm_.absorbRotations(U));
+        b.loadFactor = lambda;
+        PetscReal an;
+        PetscCall(VecNorm(dUprev, NORM_2, &an));
+        b.arcLength = an;
+        dlPrev = 0.0;
+        PetscCall(controlDisplacement(U, lambda, &b.controlValue));
+        if (inertia_) PetscCall(pathSlopes(U, lambda, dUprev, dlPrev, &b));
+        if (inertia_) PetscCall(negativeEigenvalues(U, lambda, &b.negativeEigenvalues, &b.lowestEigenvalue));
+        points_.push_back(b);
+        prevNeg = b.negativeEigenvalues;
+        switchedAt_ = b.step;
+        PetscCall(PetscPrintf(comm, "  branch switched at path point %d (load factor %.6g)\n", b.step, lambda));
+        if (onPoint) PetscCall(onPoint(b, U));
+      } else {
+        PetscCall(PetscPrintf(comm, "  branch switch at path point %d failed: Newton returned to the primary path\n", n));
+      }
+    }
     // adaptive arc length: aim at desiredIts corrector iterations
     ds *= std::clamp(std::sqrt(static_cast<double>(desiredIts_) / std::max(its, 1)), 0.5, 2.0);
     if (opt_.ds_max > 0) ds = std::copysign(std::min(std::abs(ds), opt_.ds_max), ds);
@@ -365,6 +619,13 @@ void ContinuationAnalysis::classify() {
     };
     c.loadFactor = hermite(la, lb, ma, mb);
     c.controlValue = hermite(a.controlValue, b.controlValue, h * a.slopeControl, h * b.slopeControl);
+  } else if (n >= 2 && (lowest_ || branchSwitch_) && std::isfinite(a.lowestEigenvalue) && std::isfinite(b.lowestEigenvalue) &&
+             a.lowestEigenvalue * b.lowestEigenvalue < 0) {
+    // the lowest eigenvalue crosses zero there: linear interpolation of it over the step
+    const double t = a.lowestEigenvalue / (a.lowestEigenvalue - b.lowestEigenvalue);
+    c.loadFactor = a.loadFactor + t * (b.loadFactor - a.loadFactor);
+    c.controlValue = a.controlValue + t * (b.controlValue - a.controlValue);
+    c.interpolated = true;
   } else {
     c.loadFactor = 0.5 * (a.loadFactor + b.loadFactor);
     c.controlValue = 0.5 * (a.controlValue + b.controlValue);
@@ -385,8 +646,10 @@ std::string ContinuationAnalysis::summary() const {
     s << "  " << (c.kind == CriticalPoint::Limit ? "limit point" : "bifurcation point") << " between path points "
       << c.afterStep << " and " << c.afterStep + 1 << ": load factor " << c.loadFactor;
     if (haveControl_) s << ", control displacement " << c.controlValue;
+    if (c.kind == CriticalPoint::Bifurcation) s << (c.interpolated ? " (zero of the lowest eigenvalue)" : " (midpoint)");
     s << "\n";
   }
+  if (switchedAt_ > 0) s << "  branch switched: path point " << switchedAt_ << " is on the bifurcated branch\n";
   return s.str();
 }
 

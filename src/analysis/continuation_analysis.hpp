@@ -27,11 +27,13 @@ struct PathPoint {
   int negativeEigenvalues = -1;  ///< of the tangent, rigid-mode multipliers discounted; -1 when not computed
   double controlValue = 0;     ///< the displacement of the control DOF (when a node is given)
   double slopeLoad = 0, slopeControl = 0;  ///< d lambda / ds and d u_control / ds along the path there
+  double lowestEigenvalue = 0;  ///< SLEPc: lowest eigenvalue of the tangent (-continuation_lowest_eigenvalue)
 };
 
 struct CriticalPoint {
   enum Kind { Limit = 1, Bifurcation = 2 };
   Kind kind = Limit;
+  bool interpolated = false;  ///< a bifurcation located by the lowest eigenvalue's zero (else the midpoint)
   int afterStep = 0;    ///< between path points afterStep and afterStep + 1
   double loadFactor = 0;  ///< located load factor (parabola through three points for a limit point)
   double controlValue = 0;
@@ -47,14 +49,26 @@ class ContinuationAnalysis {
   const std::vector<PathPoint>& points() const { return points_; }
   const std::vector<CriticalPoint>& criticalPoints() const { return critical_; }
   const std::string& failureMessage() const { return failure_; }
+  bool computesLowestEigenvalue() const { return lowest_; }
   std::string summary() const;
   /// The path ends after the current point when *stop is set (an interrupt; equal on every rank).
   void setStopFlag(const bool* stop) { stop_ = stop; }
 
  private:
   PetscErrorCode loadDerivative(Vec U, double lambda, Vec q);
+  /// The start state: equilibrium under the initial loads alone (load factor 0), reached by ramping them
+  /// (LoadState::initialFactor 0 -> 1 in -continuation_initial_steps Newton-solved increments).
+  PetscErrorCode equilibrateInitial(Vec U, bool* ok);
   PetscErrorCode factor(Vec U, double lambda);
-  PetscErrorCode negativeEigenvalues(Vec U, double lambda, int* count);
+  PetscErrorCode negativeEigenvalues(Vec U, double lambda, int* count, double* lowest);
+  /// Lowest eigenvalue of K_ (assembled true tangent) by SLEPc: shift-and-invert about 0, a few pairs;
+  /// its eigenvector into phi when given.
+  PetscErrorCode lowestEigenvalue(double* value, Vec phi = nullptr);
+  /// Newton at a fixed load factor from U (the branch switch); ok when the residual meets the tolerance.
+  PetscErrorCode solveFixedLoad(Vec U, double lambda, double scale, bool* ok);
+  /// -branch_switch: from the point just past a bifurcation, onto the branch along the critical
+  /// eigenvector (orthogonal to the path tangent dUprev), by tau = |ds|; ok when it left the primary path.
+  PetscErrorCode switchBranch(Vec U, double lambda, double tau, Vec dUprev, bool* ok);
   PetscErrorCode controlDisplacement(Vec U, double lambda, double* value);
   /// Path tangent at a converged point, oriented along dUlast: d lambda / ds and d u_control / ds.
   PetscErrorCode pathSlopes(Vec U, double lambda, Vec dUlast, double dlLast, PathPoint* p);
@@ -69,8 +83,11 @@ class ContinuationAnalysis {
   long multipliers_ = 0;      ///< global number of rigid-mode multipliers (each adds one negative pivot)
   bool haveControl_ = false;  ///< e_ selects the control DOF among the unknowns
   double rtol_ = 1e-9;
-  int maxIts_ = 15, maxCuts_ = 10, desiredIts_ = 5;
+  int maxIts_ = 15, maxCuts_ = 10, desiredIts_ = 5, initialSteps_ = 10;
   bool inertia_ = true;
+  bool lowest_ = false;  ///< -continuation_lowest_eigenvalue
+  bool branchSwitch_ = false, switched_ = false;  ///< -branch_switch; done once
+  int switchedAt_ = 0;   ///< the path point reached on the new branch (0: none)
   std::vector<PathPoint> points_;
   std::vector<CriticalPoint> critical_;
   std::string failure_;

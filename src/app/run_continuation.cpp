@@ -27,6 +27,8 @@ PetscErrorCode runContinuation(RunContext& ctx) {
     PetscCall(ctx.convergedStep(st, U, ls, [&]() -> PetscErrorCode {
       ctx.file.writeStepRow("path/negative_eigenvalues", std::vector<double>{static_cast<double>(p.negativeEigenvalues)});
       ctx.file.writeStepRow("path/control_displacement", std::vector<double>{p.controlValue});
+      if (path.computesLowestEigenvalue())
+        ctx.file.writeStepRow("path/lowest_eigenvalue", std::vector<double>{p.lowestEigenvalue});
       return PETSC_SUCCESS;
     }));
     StepReport rep;

@@ -249,14 +249,14 @@ PetscErrorCode Assembler::loadLocal(Vec U, Vec local) {
 }
 
 void Assembler::computeStates(const double* u, const LoadState& ls) {
-  const double lam = ls.loadFactor;
+  const double lam = ls.loadFactor, lam0 = ls.initialFactor;
   for (size_t i = 0; i < mesh_.nodes.size(); ++i) {
     const LocalNode& n = mesh_.nodes[i];
     double* s = &state_[12 * i];
     auto value = [&](int k) {
       switch (n.status[k]) {
         case DofStatus::Free: return u[n.dof[k]];
-        case DofStatus::Prescribed: return lam * n.prescribed[k] + n.prescribedInitial[k];
+        case DofStatus::Prescribed: return lam * n.prescribed[k] + lam0 * n.prescribedInitial[k];
         default: return 0.0;
       }
     };
@@ -275,7 +275,7 @@ void Assembler::computeStates(const double* u, const LoadState& ls) {
     if (n.kind != NodeKind::Frame6) continue;
     Mat3 R;
     if (n.rotationPrescribed) {
-      R = expSO3(lam * n.rot) * expSO3(n.rotInitial);  // rot_initial first, then the ramped rot
+      R = expSO3(lam * n.rot) * expSO3(lam0 * n.rotInitial);  // rot_initial first, then the ramped rot
     } else {
       const Vec3 theta{u[n.dof[3]], u[n.dof[4]], u[n.dof[5]]};
       if (theta[0] != 0.0 || theta[1] != 0.0 || theta[2] != 0.0) {
@@ -382,7 +382,7 @@ PetscErrorCode Assembler::assembleForces(const double* u, const LoadState& ls, T
   for (int i = 0; i < mesh_.numOwnedNodes; ++i) {
     const LocalNode& n = mesh_.nodes[i];
     std::array<double, 6> fe{};
-    for (int k = 0; k < 6; ++k) fe[k] = n.loadInitial[k] + ls.loadFactor * n.load[k];
+    for (int k = 0; k < 6; ++k) fe[k] = ls.initialFactor * n.loadInitial[k] + ls.loadFactor * n.load[k];
     if (n.kind == NodeKind::Ancf2D) {
       // a torque acts on the slope: generalized force tau (-s_y, s_x) / |s|^2
       const double* s = &state_[12 * static_cast<size_t>(i)];
@@ -647,11 +647,11 @@ PetscErrorCode Assembler::prepareCOO(Mat J) {
 // J = nullptr: only kept as blocks for applyTangent
 PetscErrorCode Assembler::addSlopeTorqueTangent(const LoadState& ls, Mat J) {
   PetscFunctionBeginUser;
-  const double lam = ls.loadFactor;
+  const double lam = ls.loadFactor, lam0 = ls.initialFactor;
   for (int i = 0; i < mesh_.numOwnedNodes; ++i) {
     const LocalNode& n = mesh_.nodes[i];
     if (n.kind != NodeKind::Ancf2D) continue;
-    const double tau = n.loadInitial[4] + lam * n.load[4];
+    const double tau = lam0 * n.loadInitial[4] + lam * n.load[4];
     if (tau == 0.0) continue;
     const double* s = &state_[12 * static_cast<size_t>(i)];
     const double sx = s[2], sy = s[3], s2 = sx * sx + sy * sy, s4 = s2 * s2;

@@ -37,6 +37,7 @@ struct LoadState {
   double loadFactor = 0.0;     ///< ramps `force`, `moment`, `displ_*`, `rot`, gravity
   double time = 0.0;           ///< passed to kernels (user functions)
   bool gravityRamped = true;   ///< gravity scaled by the load factor (statics)
+  double initialFactor = 1.0;  ///< scales the initial loads (`force_initial`, `displ_initial`, ...); path following ramps it to 1 first
 };
 
 /// Counters that prove which phases ran (also visible as PetscLogEvents in -log_view).

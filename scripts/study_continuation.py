@@ -1,0 +1,133 @@
+#!/usr/bin/python3
+"""Accuracy study of path following (opt.continuation): the limit load located by the cubic Hermite
+interpolant against the arc length ds, and against the number of beam elements, with the wall time of
+the path following (the summary's "path following" phase). Two problems:
+  * the von Mises truss of tests/cases/test_continuation.py (closed-form limit load: only the location
+    error of the limit point between path points remains);
+  * the shallow clamped arch of tests/cases/test_continuation_flexures.py (reference: shallow-arch
+    theory, tests/cases/shallow_beam.py; discretization and location error, plus the theory's own
+    small-slope error of order 1e-4).
+Writes the generated blocks of docs/accuracy_continuation.md. Runs on 2 ranks; about a minute.
+
+usage: scripts/study_continuation.py [--bin build/sinew] [--np 2]"""
+import argparse
+import math
+import os
+import re
+import subprocess
+import sys
+import tempfile
+
+import h5py
+import numpy as np
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.join(ROOT, "tests", "cases"))
+import beamtools as bt  # noqa: E402
+from shallow_beam import Shallow  # noqa: E402
+import doc_tables  # noqa: E402
+
+ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
+           OMPI_MCA_rmaps_base_oversubscribe="1")
+
+
+def run(args, scene, work, name):
+    path = os.path.join(work, name + ".yaml")
+    with open(path, "w") as f:
+        f.write(scene)
+    h5 = os.path.join(work, name + ".h5")
+    p = subprocess.run(["mpirun", "-n", str(args.np), args.bin, path, "-o", h5], env=ENV,
+                       stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    if p.returncode:
+        raise SystemExit(p.stdout)
+    t = float(re.search(r"path following ([0-9.]+) s", p.stdout).group(1))
+    with h5py.File(h5, "r") as f:
+        crit = f["path/critical_points"][:]
+        npts = len(f["load_factor"])
+    return crit[0, 2] if len(crit) and crit[0, 0] == 1 else float("nan"), npts, t
+
+
+# von Mises truss: half span 1, rise 0.1, EA = 1e4; P(w) = 2 EA (L0 - L)/L0 (H - w)/L
+A_, H, EA_T = 1.0, 0.1, 1e4
+
+
+def truss_pmax():
+    L0 = math.hypot(A_, H)
+    w = np.linspace(0, H, 400001)
+    Lw = np.hypot(A_, H - w)
+    return np.max(2 * EA_T * (L0 - Lw) / L0 * (H - w) / Lw)
+
+
+def truss(args, work, ds):
+    d = math.sqrt(4 * 1e-3 / math.pi)
+    scene = bt.yaml_text({"title": "von Mises truss", "nodes": [[-A_, 0, 0], [0, H, 0], [A_, 0, 0]], "elements": [[1, 2], [3, 2]],
+                          "nprops": {1: {"fix": True}, 3: {"fix": True}, 2: {"fix_z": True, "fix_orien": True, "force": [0, -1, 0]}},
+                          "eprops": [{"elems": [1, 2], "flex": [1], "emod": 1e7, "smod": 4e6, "cshape": "circ", "dim": [d]}],
+                          "opt": {"rls": {1: [2, 3, 4, 5, 6], 2: [2, 3, 4, 5, 6]}, "calccompl": False,
+                                  "continuation": {"method": "arclength", "ds": ds, "ds_max": ds, "node": 2, "direction": "y",
+                                                   "stop_displacement": -0.08}}})
+    return run(args, scene, work, f"truss_{ds:g}")
+
+
+# shallow clamped arch: L = 0.1 m, 5 x 0.5 mm, E = 210 GPa, rise h = 0.75 mm
+L, T, WD, E, HA = 0.1, 0.5e-3, 5e-3, 210e9, 0.75e-3
+EI, EA = E * WD * T ** 3 / 12, E * WD * T
+
+
+def w0(x):
+    return HA / 2 * (1 - np.cos(2 * np.pi * x / L))
+
+
+def arch(args, work, n, ds):
+    x = np.linspace(0, L, n + 1)
+    c = n // 2 + 1
+    nprops = {i + 1: {"fix_z": True} for i in range(n + 1)}
+    nprops[1] = {"fix": True}
+    nprops[n + 1] = {"fix": True}
+    nprops[c] = {"fix_z": True, "force": [0, -1, 0]}
+    scene = bt.yaml_text({"title": "shallow clamped arch", "nodes": [[float(a), float(b), 0.0] for a, b in zip(x, w0(x))],
+                          "elements": [[i + 1, i + 2] for i in range(n)], "nprops": nprops,
+                          "eprops": [{"elems": list(range(1, n + 1)), "flex": [1, 2, 3, 4, 5, 6], "emod": E, "smod": E / 2.6,
+                                      "cshape": "rect", "dim": [WD, T], "orien": [0, 0, 1]}],
+                          "opt": {"calccompl": False,
+                                  "continuation": {"method": "arclength", "ds": ds, "ds_max": ds, "node": c, "direction": "y",
+                                                   "stop_displacement": -0.6e-3, "max_steps": 400}}})
+    return run(args, scene, work, f"arch_{n}_{ds:g}")
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--bin", default=os.path.join(ROOT, "build", "sinew"))
+    ap.add_argument("--np", type=int, default=2)
+    args = ap.parse_args()
+    work = tempfile.mkdtemp(prefix="study_continuation_")
+    pmax = truss_pmax()
+    ref = Shallow(L, EI, EA, w0, 0.0, N=800)
+    flim, _ = ref.extreme(0.0, 0.999 * ref.P2, 1, 1)
+
+    doc_tables.write_block("accuracy_continuation.md", "continuation_study_run",
+                           f"Generated by `scripts/study_continuation.py` ({args.np} MPI rank{'s' if args.np > 1 else ''}); "
+                           f"every number in the tables comes from that run. References: truss P_max = {pmax:.7f} N "
+                           f"(closed form), arch limit load {flim:.6f} N (shallow-arch theory, 800 intervals).")
+    md = ["| ds | truss: points | truss: err P_max | time (s) | arch (40 el.): points | arch: err F_lim | time (s) |",
+          "|---|---|---|---|---|---|---|"]
+    for dt, da in zip([0.04, 0.02, 0.01, 0.005, 0.0025], [0.016, 0.008, 0.004, 0.002, 0.001]):
+        pt, nt, tt = truss(args, work, dt)
+        pa, na, ta = arch(args, work, 40, da)
+        md.append(f"| {dt:g} / {da:g} | {nt} | {abs(pt / pmax - 1):.2e} | {tt:.2f} | {na} | {abs(pa / flim - 1):.2e} | {ta:.2f} |")
+        print(md[-1], flush=True)
+    md += ["", "ds: truss / arch (the arch's unknowns include the node rotations, hence its smaller steps); "
+           "ds_max = ds, so every step has the given length unless cut."]
+    doc_tables.write_block("accuracy_continuation.md", "continuation_ds", "\n".join(md))
+    md = ["| elements | unknowns | points | F_lim (N) | err F_lim | time (s) |", "|---|---|---|---|---|---|"]
+    for n in [10, 20, 40, 80, 160]:
+        pa, na, ta = arch(args, work, n, 0.002 * math.sqrt(n / 40))
+        md.append(f"| {n} | {6 * (n - 1)} | {na} | {pa:.6f} | {abs(pa / flim - 1):.2e} | {ta:.2f} |")
+        print(md[-1], flush=True)
+    md += ["", "ds = 0.002 sqrt(elements / 40): the same path resolution (the norm of the unknowns grows with the "
+           "square root of their number)."]
+    doc_tables.write_block("accuracy_continuation.md", "continuation_elements", "\n".join(md))
+
+
+if __name__ == "__main__":
+    main()

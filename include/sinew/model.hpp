@@ -110,6 +110,9 @@ struct ContinuationOptions {
 
 struct Options {
   int loadsteps = 10;
+  /// Sinew: "spacar" (SPACAR Light's load steps: step 1 = initial loads alone, then (k-1)/(n-1)) or
+  /// "uniform" (k/n, Sinew's former steps)
+  std::string load_ramp = "spacar";
   bool calcbuck = false;
   bool calccompl = true;
   std::optional<bool> calcfreq;       ///< Sinew: default = scene has inertia

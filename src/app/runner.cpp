@@ -436,12 +436,14 @@ PetscErrorCode runScene(int argc, char** argv, int* exitCode) {
       PhaseScope phase("statics");
       const double tStatics = MPI_Wtime();
       const double outBefore = ctx.times.output, anaBefore = ctx.times.analyses;
-      // a restart keeps the earlier run's ramp (load factor k / its loadsteps); -loadsteps is the last step
+      // a restart keeps the earlier run's ramp (its loadsteps and opt.load_ramp, checked equal by Restart):
+      // -loadsteps is the last step, the load factor of step k stays StaticAnalysis::stepFactor(k)
       const int ramp = resumeStatics ? restart->rampLoadsteps() : model.opt.loadsteps;
       StaticAnalysis statics(assembler, ramp);
       statics.setLastStep(model.opt.loadsteps);
       statics.setUnloaded(unloaded(model, *dmesh, assembler));
       statics.setStopFlag(&ctx.stop);
+      statics.setUniformRamp(model.opt.load_ramp == "uniform");
       if (resumeStatics) PetscCall(restart->resumeStatics(ctx, statics));
       ctx.checkpointState = [&](CheckpointData& d) -> PetscErrorCode {
         const StaticsProgress& p = statics.progress();
@@ -449,6 +451,7 @@ PetscErrorCode runScene(int argc, char** argv, int* exitCode) {
         d.scalars[kCkStep] = p.step;
         d.scalars[kCkStepValue] = p.lambda;
         d.scalars[kCkLoadsteps] = ramp;
+        d.scalars[kCkLoadRamp] = model.opt.load_ramp == "uniform" ? 1.0 : 0.0;
         d.scalars[kCkLambda] = p.lambda;
         d.scalars[kCkDlPrev] = p.dlPrev;
         d.scalars[kCkDlAdapt] = p.dlAdapt;

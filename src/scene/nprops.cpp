@@ -204,7 +204,7 @@ void parseNprops(const YAML::Node& nprops, SceneContext& ctx) {
     const std::string path = childPath("nprops", key);
     Entry e{path, it->second, {}};
     if (isNodeNumber(key)) {
-      const int node = checkedIndex(it->first, path, "node", m.nodes.size());
+      const int node = checkedKeyIndex(it->first, path, "node", m.nodes.size());
       if (!seen.emplace(node, path).second)
         fail(path, "node " + std::to_string(node + 1) + " is given twice (also at " + seen[node] + ")");
       e.nodes = {node};

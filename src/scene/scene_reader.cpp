@@ -55,6 +55,14 @@ int checkedIndex(const YAML::Node& n, const std::string& path, const std::string
   return v - 1;
 }
 
+int checkedKeyIndex(const YAML::Node& key, const std::string& path, const std::string& what, std::size_t count) {
+  // JSON object keys are strings: {"1": {...}} is node 1 as much as YAML's {1: {...}}
+  const std::string t = key.IsScalar() ? key.Scalar() : std::string();
+  const bool digits = !t.empty() && t.size() < 10 && std::all_of(t.begin(), t.end(), [](char c) { return c >= '0' && c <= '9'; });
+  if (digits && key.Tag() == "!") return checkedIndex(YAML::Load(t), path, what, count);
+  return checkedIndex(key, path, what, count);
+}
+
 namespace {
 
 const std::vector<std::string> kTopKeys = {"title", "nodes", "elements", "mesh", "nprops",

@@ -29,7 +29,7 @@ bool isNodeNumber(const std::string& key) {
 
 /// Paths of the entries that gave loads, per node (for conflict messages).
 struct LoadSources {
-  std::string force, force_initial, moment, moment_initial, transfer_in;
+  std::string force, force_initial, moment, moment_initial, transfer_in, transfer_out;
 };
 
 std::array<double, 6> getMominertia(const YAML::Node& v, const std::string& p) {
@@ -130,7 +130,7 @@ void applyProps(NodeProps& np, LoadSources& src, const YAML::Node& n, const std:
     else if (k == "moment") { np.moment = getMoment(v, p, twoD); src.moment = p; }
     else if (k == "moment_initial") { np.moment_initial = getMoment(v, p, twoD); src.moment_initial = p; }
     else if (k == "transfer_in") { np.transfer_in = getTransfer(v, p, kTransferIn); src.transfer_in = p; }
-    else if (k == "transfer_out") np.transfer_out = getTransfer(v, p, kTransferOut);
+    else if (k == "transfer_out") { np.transfer_out = getTransfer(v, p, kTransferOut); src.transfer_out = p; }
   }
 }
 
@@ -162,6 +162,12 @@ void checkConflicts(int node, const NodeProps& np, const LoadSources& src) {
                             " (a load on a held direction only changes the reaction; remove it or free the direction)";
     if (np.force[k] != 0) fail(src.force, "force" + msg);
     if (np.force_initial[k] != 0) fail(src.force_initial, "force_initial" + msg);
+    for (const char* kind : {"displ_", "veloc_"}) {
+      const std::string out = kind + std::string(kAxis[k]);
+      if (std::find(np.transfer_out.begin(), np.transfer_out.end(), out) != np.transfer_out.end())
+        fail(src.transfer_out, "transfer output " + out + ", but " + label + " is held in " + kAxis[k] + " by " + held +
+                                   " (a held direction does not move: the output would be zero; remove it or free the direction)");
+    }
     const std::string in = std::string("force_") + kAxis[k];
     if (std::find(np.transfer_in.begin(), np.transfer_in.end(), in) != np.transfer_in.end())
       fail(src.transfer_in, "transfer input " + in + ", but " + label + " is held in " + kAxis[k] + " by " + held);

@@ -93,12 +93,16 @@ void parseBeam(const YAML::Node& n, const std::string& path, ElementSet& s) {
       fail(childPath(path, "cshape"), "missing: dim is given, so cshape (rect or circ) is needed to read it");
     const std::size_t want = s.cshape == CrossSection::Rect ? 2 : 1;
     const std::string shape = s.cshape == CrossSection::Rect ? "rect" : "circ";
-    if (!v.IsSequence()) fail(p, "expected a list of " + std::to_string(want) + (want == 1 ? " number" : " numbers") +
-                                     " for cshape " + shape + ", got " + describe(v));
-    if (v.size() != want)
-      fail(p, "expected " + std::to_string(want) + (want == 1 ? " number" : " numbers") + " for cshape " + shape + " (" +
-                  (want == 2 ? "[width, height]" : "[diameter]") + "), got " + std::to_string(v.size()));
-    for (std::size_t i = 0; i < want; ++i) s.dim.push_back(getPositive(v[i], indexPath(p, i), kSectionLength));
+    if (want == 1 && v.IsScalar()) {  // the seed's double: dim: 0.01 is dim: [0.01]
+      s.dim.push_back(getPositive(v, p, kSectionLength));
+    } else {
+      if (!v.IsSequence()) fail(p, "expected a list of " + std::to_string(want) + (want == 1 ? " number" : " numbers") +
+                                       " (or, for circ, one number) for cshape " + shape + ", got " + describe(v));
+      if (v.size() != want)
+        fail(p, "expected " + std::to_string(want) + (want == 1 ? " number" : " numbers") + " for cshape " + shape + " (" +
+                    (want == 2 ? "[width, height]" : "[diameter]") + "), got " + std::to_string(v.size()));
+      for (std::size_t i = 0; i < want; ++i) s.dim.push_back(getPositive(v[i], indexPath(p, i), kSectionLength));
+    }
   }
   if (const YAML::Node v = n["orien"]; v.IsDefined()) s.orien = getDirection(v, childPath(path, "orien"));
 

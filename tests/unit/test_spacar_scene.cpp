@@ -1,0 +1,70 @@
+// SPACAR Light's scene vocabulary (issue 10): what a scene written in the seed's own terms reads as.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "scene/scene_reader.hpp"
+
+#ifndef SINEW_SOURCE_DIR
+#define SINEW_SOURCE_DIR "/work/main"
+#endif
+
+namespace {
+
+using sinew::Model;
+using sinew::SceneError;
+
+Model parse(const std::string& text) { return sinew::parseScene(text, SINEW_SOURCE_DIR, {}); }
+
+SceneError parseError(const std::string& text) {
+  try {
+    parse(text);
+  } catch (const SceneError& e) {
+    return e;
+  }
+  ADD_FAILURE() << "no SceneError for:\n" << text;
+  return SceneError("<none>", "<none>");
+}
+
+std::string beam(const std::string& nprops, const std::string& set, const std::string& opt = "") {
+  return "nodes: [[0, 0, 0], [1, 0, 0]]\nelements: [[1, 2]]\nnprops: {" + nprops + "}\neprops:\n  - {elems: [1], " + set +
+         "}\nopt: {" + opt + "}\n";
+}
+
+// item 4: dim for circ as the seed's double; generally a 1-element list and a scalar are the same
+TEST(SpacarScene, ScalarAndOneElementListAreTheSame) {
+  const std::string set = "flex: [1, 2, 3, 4, 5, 6], emod: 210e9, smod: 80e9, cshape: circ, dim: ";
+  const Model a = parse(beam("1: {fix: true}", set + "0.01"));
+  const Model b = parse(beam("1: {fix: true}", set + "[0.01]"));
+  ASSERT_EQ(a.eprops[0].dim.size(), 1u);
+  EXPECT_EQ(a.eprops[0].dim, b.eprops[0].dim);
+  // [x] where a number is expected, x where a 1-element list is expected
+  const Model c = parse(beam("1: {fix: true}, 2: {mass: [0.5]}", "flex: 1, emod: [210e9], cshape: circ, dim: [0.01]",
+                             "loadsteps: [3], nfreq: [2]"));
+  EXPECT_EQ(c.eprops[0].emod, 210e9);
+  EXPECT_TRUE(c.eprops[0].flex[0]);
+  EXPECT_EQ(c.nprops.at(1).mass, 0.5);
+  EXPECT_EQ(c.opt.loadsteps, 3);
+  EXPECT_EQ(c.opt.nfreq, 2);
+  // rect still needs its two numbers
+  EXPECT_EQ(parseError(beam("1: {fix: true}", "flex: [1], emod: 1e9, cshape: rect, dim: 0.01")).path(), "eprops[0].dim");
+}
+
+// item 16 (JSON): object keys are strings, "1" is node 1
+TEST(SpacarScene, QuotedNodeKeys) {
+  const Model m = parse(R"({"nodes": [[0,0,0],[1,0,0]], "elements": [[1,2]], "nprops": {"1": {"fix": true}, "2": {"mass": 1}},
+                            "opt": {"rls": {"1": [1]}}})");
+  EXPECT_TRUE(m.nprops.at(0).fix);
+  EXPECT_EQ(m.nprops.at(1).mass, 1.0);
+  EXPECT_EQ(m.opt.rls.count(0), 1u);
+}
+
+// item 1: SPACAR Light's load steps by default, Sinew's former ramp behind opt.load_ramp
+TEST(SpacarScene, LoadRamp) {
+  EXPECT_EQ(parse(beam("1: {fix: true}", "flex: []")).opt.load_ramp, "spacar");
+  EXPECT_EQ(parse(beam("1: {fix: true}", "flex: []", "load_ramp: uniform")).opt.load_ramp, "uniform");
+  EXPECT_EQ(parseError(beam("1: {fix: true}", "flex: []", "load_ramp: linear")).path(), "opt.load_ramp");
+}
+
+}  // namespace

@@ -64,6 +64,21 @@ std::array<double, 6> getMominertia(const YAML::Node& v, const std::string& p) {
   return I;
 }
 
+/// Prescribed rotation: SPACAR Light's 1x4 [angle, axis_x, axis_y, axis_z] (axis normalized, a zero
+/// axis is an error), or a rotation vector [rx, ry, rz] = angle * unit axis. Returns the rotation vector.
+Vec3 getRotation(const YAML::Node& v, const std::string& p) {
+  const std::string what = "expected [angle, axis_x, axis_y, axis_z] (SPACAR Light) or a rotation vector [rx, ry, rz]";
+  if (!v.IsSequence() || (v.size() != 3 && v.size() != 4))
+    fail(p, what + ", got " + (v.IsSequence() ? "a list of " + std::to_string(v.size()) : describe(v)));
+  if (v.size() == 3) return getVec3(v, p, false, kRotation);
+  const double angle = getNumber(v[0], indexPath(p, 0), kRotation);
+  Vec3 axis{};
+  for (std::size_t k = 0; k < 3; ++k) axis[k] = getNumber(v[k + 1], indexPath(p, k + 1), kLoad);
+  const double a = norm(axis);
+  if (a == 0.0) fail(p, "the rotation axis [" + fmt(axis[0]) + ", " + fmt(axis[1]) + ", " + fmt(axis[2]) + "] is zero; " + what);
+  return {angle * axis[0] / a, angle * axis[1] / a, angle * axis[2] / a};
+}
+
 /// Moment: 3 numbers; a 2D model also takes one number (about z).
 Vec3 getMoment(const YAML::Node& v, const std::string& p, bool twoD) {
   if (twoD && (isNumber(v) || (v.IsSequence() && v.size() == 1))) {
@@ -123,8 +138,8 @@ void applyProps(NodeProps& np, LoadSources& src, const YAML::Node& n, const std:
     else if (k == "mominertia") np.mominertia = getMominertia(v, p);
     else if (k.rfind("displ_initial_", 0) == 0) np.displ_initial[static_cast<std::size_t>(k.back() - 'x')] = getNumber(v, p, kCoordinate);
     else if (k.rfind("displ_", 0) == 0) np.displ[static_cast<std::size_t>(k.back() - 'x')] = getNumber(v, p, kCoordinate);
-    else if (k == "rot") np.rot = getVec3(v, p, false, kRotation);
-    else if (k == "rot_initial") np.rot_initial = getVec3(v, p, false, kRotation);
+    else if (k == "rot") np.rot = getRotation(v, p);
+    else if (k == "rot_initial") np.rot_initial = getRotation(v, p);
     else if (k == "force") { np.force = getVec3(v, p, twoD, kLoad); src.force = p; }
     else if (k == "force_initial") { np.force_initial = getVec3(v, p, twoD, kLoad); src.force_initial = p; }
     else if (k == "moment") { np.moment = getMoment(v, p, twoD); src.moment = p; }

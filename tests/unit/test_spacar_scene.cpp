@@ -68,3 +68,20 @@ TEST(SpacarScene, LoadRamp) {
 }
 
 }  // namespace
+
+namespace {
+
+// item 2: rot / rot_initial as [angle, axis] (axis normalized), or a rotation vector
+TEST(SpacarScene, RotationAngleAxis) {
+  const sinew::Model m = parse(beam("1: {fix_pos: true, rot_initial: [0.5, 0, 3, 4], rot: [0.1, 0.2, 0.3]}", "flex: []"));
+  const auto& np = m.nprops.at(0);
+  ASSERT_TRUE(np.rot_initial && np.rot);
+  EXPECT_DOUBLE_EQ((*np.rot_initial)[0], 0.0);
+  EXPECT_DOUBLE_EQ((*np.rot_initial)[1], 0.3);
+  EXPECT_DOUBLE_EQ((*np.rot_initial)[2], 0.4);
+  EXPECT_DOUBLE_EQ((*np.rot)[2], 0.3);
+  EXPECT_EQ(parseError(beam("1: {fix_pos: true, rot: [0.5, 0, 0, 0]}", "flex: []")).path(), "nprops.1.rot");
+  EXPECT_EQ(parseError(beam("1: {fix_pos: true, rot: [0.5, 0]}", "flex: []")).path(), "nprops.1.rot");
+}
+
+}  // namespace

@@ -317,7 +317,7 @@ PetscErrorCode StaticAnalysis::run(Vec U, const StepCallback& onStep, bool* conv
     int cuts = 0;
     bool predictNext = true;
     // SPACAR Light's step 1 (target 0): one solve under the initial loads and motions alone
-    bool initialSolve = target == 0.0;
+    bool initialSolve = target == 0.0 && !startIsInitial_;
     while (lambda < target || initialSolve) {
       initialSolve = false;
       const double next = target - (lambda + dl) < 1e-9 * dlMax ? target : lambda + dl;  // no sliver increments

@@ -70,6 +70,9 @@ class StaticAnalysis {
   void setStopFlag(const bool* stop) { stop_ = stop; }
   /// opt.load_ramp uniform: step k at load factor k/loadsteps (Sinew's former steps).
   void setUniformRamp(bool u) { uniform_ = u; }
+  /// Nothing acts at load factor 0 (no initial loads or motions): SPACAR Light's step 1 is the start
+  /// state, reported without a solve.
+  void setStartIsInitialState(bool s) { startIsInitial_ = s; }
   /// Load factor of 1-based load step k (SPACAR Light: 0 at step 1, 1 at the last step).
   double stepFactor(int step) const;
 
@@ -95,6 +98,7 @@ class StaticAnalysis {
   bool resumed_ = false;
   Vec dU_ = nullptr;  ///< last converged increment (secant predictor)
   bool uniform_ = false;
+  bool startIsInitial_ = false;
   SNES snes_ = nullptr;
   Mat J_ = nullptr;
   Mat Jop_ = nullptr;  ///< element-wise tangent operator (MATSHELL) when -tangent_operator elementwise

@@ -88,6 +88,25 @@ bool unloaded(const Model& model, const DistributedMesh& mesh, const Assembler& 
   return !loaded;
 }
 
+/// Anything acting at load factor 0 (SPACAR Light's step 1): initial loads, pressures and prescribed
+/// motions, cable and membrane prestress, ANCF reference strains/curvatures and force laws, a
+/// form-found start state. Without any, step 1 is the start state itself and needs no solve.
+bool initiallyLoaded(const Model& model, const DistributedMesh& mesh) {
+  int loaded = model.formfinding.has_value();
+  for (const ElementSet& s : model.eprops) {
+    loaded |= s.pressure_initial != 0.0 || s.physicsReferenceAxialStrain != 0.0 || s.physicsReferenceCurvature != 0.0;
+    loaded |= (s.prestress && *s.prestress != 0.0) || (s.prestress_stress && *s.prestress_stress != 0.0);
+    for (double p : s.membrane_prestress) loaded |= p != 0.0;
+    loaded |= !s.axialForceUserFunction.empty() || !s.bendingMomentUserFunction.empty();
+  }
+  for (const LocalNode& n : mesh.nodes) {
+    for (int k = 0; k < 6; ++k) loaded |= n.loadInitial[k] != 0.0 || n.prescribedInitial[k] != 0.0;
+    for (int k = 0; k < 3; ++k) loaded |= n.rotInitial[k] != 0.0;
+  }
+  MPI_Allreduce(MPI_IN_PLACE, &loaded, 1, MPI_INT, MPI_LOR, mesh.comm);
+  return loaded;
+}
+
 /// -constraint_check (default true) and -constraint_check_max_unknowns: whether the model is checked.
 struct ConstraintCheckSetting {
   bool enabled = true;
@@ -444,6 +463,7 @@ PetscErrorCode runScene(int argc, char** argv, int* exitCode) {
       statics.setUnloaded(unloaded(model, *dmesh, assembler));
       statics.setStopFlag(&ctx.stop);
       statics.setUniformRamp(model.opt.load_ramp == "uniform");
+      statics.setStartIsInitialState(!initiallyLoaded(model, *dmesh));
       if (resumeStatics) PetscCall(restart->resumeStatics(ctx, statics));
       ctx.checkpointState = [&](CheckpointData& d) -> PetscErrorCode {
         const StaticsProgress& p = statics.progress();

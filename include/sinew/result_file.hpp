@@ -30,7 +30,10 @@ struct ResultLayout {
   int dimension = 3;
   // root attributes
   std::string version, scene;
-  long ndof = 0;
+  long ndof = 0;           ///< SPACAR Light's ndof: kinematic DOFs = free node coordinates - rigid-mode constraints
+  long nunknowns = 0;      ///< equations solved: free node coordinates + constraint multipliers
+  long nnodedofs = 0;      ///< free node coordinates (supports and prescribed motions eliminated)
+  long nconstraints = 0;   ///< rigid deformation modes held exactly (Lagrange multipliers)
   int nranks = 1;
   std::string stepName = "load_factor";  ///< "load_factor" or "time"
 };

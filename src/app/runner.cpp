@@ -329,7 +329,18 @@ PetscErrorCode runScene(int argc, char** argv, int* exitCode) {
   results.fillLayout(layout);
   layout.version = sinewVersion();
   layout.scene = model.sceneText;
-  layout.ndof = dmesh->numGlobalUnknowns;
+  {  // SPACAR Light's ndof: free node coordinates minus the rigid-mode constraints (no multipliers)
+    long free = 0;
+    for (int i = 0; i < dmesh->numOwnedNodes; ++i) {
+      const LocalNode& n = dmesh->nodes[static_cast<std::size_t>(i)];
+      for (int k = 0; k < n.ndof; ++k) free += n.status[k] == DofStatus::Free;
+    }
+    MPI_Allreduce(MPI_IN_PLACE, &free, 1, MPI_LONG, MPI_SUM, comm);
+    layout.nunknowns = dmesh->numGlobalUnknowns;
+    layout.nnodedofs = free;
+    layout.nconstraints = dmesh->numGlobalUnknowns - free;
+    layout.ndof = free - layout.nconstraints;
+  }
   layout.nranks = dmesh->size;
   if (plan.dynamics) layout.stepName = "time";
   int nranks = dmesh->size;

@@ -705,13 +705,16 @@ ResultFile::ResultFile(MPI_Comm comm, const std::string& path, const ResultLayou
   m.createFile(m.sinks[0], m.partPath);
   m.createFile(m.sinks[1], m.sparePath);
   // Attributes are collective: every rank writes rank 0's values.
-  long numbers[2] = {layout.ndof, layout.nranks};
-  MPI_Bcast(numbers, 2, MPI_LONG, 0, m.comm);
+  long numbers[5] = {layout.ndof, layout.nranks, layout.nunknowns, layout.nnodedofs, layout.nconstraints};
+  MPI_Bcast(numbers, 5, MPI_LONG, 0, m.comm);
   const std::string version = broadcastString(m.comm, layout.version), scene = broadcastString(m.comm, layout.scene);
   m.apply([&m, numbers, version, scene, reference](Sink& s) {
     h5::writeAttribute(s.file, "version", version);
     h5::writeAttribute(s.file, "ndof", numbers[0]);
     h5::writeAttribute(s.file, "nranks", static_cast<int>(numbers[1]));
+    h5::writeAttribute(s.file, "nunknowns", numbers[2]);
+    h5::writeAttribute(s.file, "nnodedofs", numbers[3]);
+    h5::writeAttribute(s.file, "nconstraints", numbers[4]);
     h5::writeAttribute(s.file, "scene", scene);
     h5::writeAttribute(s.file, "converged", 0);
     m.writeCells(s);

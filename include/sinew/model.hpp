@@ -123,6 +123,7 @@ struct Options {
   std::string filename;
   bool stressperelement = false, rigidstress = false;
   bool showinputonly = false, silent = false;
+  bool spavisual = false, customvis = false;  ///< SPACAR Light visualization options (accepted; Sinew writes XDMF)
   std::vector<int> compliance_nodes;  ///< 0-based; empty = all nodes
   std::optional<DynamicsOptions> dynamics;
   std::optional<ContinuationOptions> continuation;

@@ -12,7 +12,7 @@ namespace sinew::scene {
 namespace {
 
 const std::vector<std::string> kCommonKeys = {"elems", "type", "physical", "color", "opacity", "hide"};
-const std::vector<std::string> kBeamKeys = {"flex", "nbeams", "cw", "emod", "smod", "dens", "cshape", "dim", "orien"};
+const std::vector<std::string> kBeamKeys = {"flex", "nbeams", "cw", "warping", "emod", "smod", "dens", "cshape", "dim", "orien"};
 const std::vector<std::string> kCableKeys = {"area", "emod", "dens", "prestress", "prestress_stress"};
 const std::vector<std::string> kMembraneKeys = {"thickness", "emod", "nu", "dens", "prestress", "prestress_dir",
                                                 "prestress_radial_axis", "pressure", "pressure_initial"};
@@ -81,6 +81,10 @@ void parseBeam(const YAML::Node& n, const std::string& path, ElementSet& s) {
   std::sort(flexModes.begin(), flexModes.end());
   if (const YAML::Node v = n["nbeams"]; v.IsDefined()) s.nbeams = getIntAtLeast(v, childPath(path, "nbeams"), 1);
   if (const YAML::Node v = n["cw"]; v.IsDefined()) s.cw = getBool(v, childPath(path, "cw"));
+  if (const YAML::Node v = n["warping"]; v.IsDefined()) {  // newer SPACAR Light scripts' name of cw
+    if (n["cw"].IsDefined()) fail(childPath(path, "warping"), "warping is another name of cw; give one of them");
+    s.cw = getBool(v, childPath(path, "warping"));
+  }
   const bool hasE = n["emod"].IsDefined(), hasG = n["smod"].IsDefined(), hasRho = n["dens"].IsDefined();
   if (hasE) s.emod = getNonNegative(n["emod"], childPath(path, "emod"), kMaterial);
   if (hasG) s.smod = getNonNegative(n["smod"], childPath(path, "smod"), kMaterial);
@@ -199,11 +203,33 @@ void parseAncf(const YAML::Node& n, const std::string& path, ElementSet& s) {
 void parseLook(const YAML::Node& n, const std::string& path, ElementSet& s) {
   if (const YAML::Node v = n["color"]; v.IsDefined()) {
     const std::string p = childPath(path, "color");
-    if (!v.IsSequence() || v.size() != 3)
-      fail(p, "expected 3 numbers [r, g, b] in [0, 1], got " + (v.IsSequence() ? std::to_string(v.size()) : describe(v)));
-    std::array<double, 3> c{};
-    for (std::size_t i = 0; i < 3; ++i) c[i] = getInRange(v[i], indexPath(p, i), 0.0, 1.0);
-    s.color = c;
+    // SPACAR Light's forms: [r, g, b] in 0..1, or 0..255 when any value is > 1; a name or a 1-based
+    // index of the seed's colour table
+    static const std::vector<std::string> names = {"blue", "grey", "darkblue", "darkgrey", "green", "darkgreen"};
+    static const std::array<std::array<double, 3>, 6> table = {{{0.0, 0.447, 0.741},
+                                                                 {0.7, 0.7, 0.7},
+                                                                 {0.0, 0.2, 0.5},
+                                                                 {0.4, 0.4, 0.4},
+                                                                 {0.466, 0.674, 0.188},
+                                                                 {0.1, 0.4, 0.1}}};
+    const std::string what = "expected [r, g, b] (0..1 or 0..255), a colour name (blue, grey, darkblue, darkgrey, green, "
+                             "darkgreen) or its index 1..6";
+    if (v.IsScalar() && !isNumber(v)) {
+      const auto it = std::find(names.begin(), names.end(), v.Scalar());
+      if (it == names.end()) fail(p, what + ", got '" + v.Scalar() + "'" + suggestion(v.Scalar(), names));
+      s.color = table[static_cast<std::size_t>(it - names.begin())];
+    } else if (v.IsScalar() || (v.IsSequence() && v.size() == 1)) {
+      const int k = getInt(v, p);
+      if (k < 1 || k > 6) fail(p, what + ", got the index " + std::to_string(k));
+      s.color = table[static_cast<std::size_t>(k - 1)];
+    } else {
+      if (!v.IsSequence() || v.size() != 3) fail(p, what + ", got " + (v.IsSequence() ? "a list of " + std::to_string(v.size()) : describe(v)));
+      std::array<double, 3> c{};
+      for (std::size_t i = 0; i < 3; ++i) c[i] = getInRange(v[i], indexPath(p, i), 0.0, 255.0);
+      if (std::any_of(c.begin(), c.end(), [](double x) { return x > 1.0; }))
+        for (double& x : c) x /= 255.0;
+      s.color = c;
+    }
   }
   if (const YAML::Node v = n["opacity"]; v.IsDefined()) s.opacity = getInRange(v, childPath(path, "opacity"), 0.0, 1.0);
   if (const YAML::Node v = n["hide"]; v.IsDefined()) s.hide = getBool(v, childPath(path, "hide"));

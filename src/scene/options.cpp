@@ -27,6 +27,8 @@ const std::vector<OptionDoc>& sceneOptionDocs() {
       {"rigidstress", "bool", "false", "also report stresses in rigid deformation modes"},
       {"showinputonly", "bool", "false", "read and check the scene, print it, and stop"},
       {"silent", "bool", "false", "no summary on stdout"},
+      {"spavisual", "bool", "false", "SPACAR Light: open the seed's viewer after the run (Sinew: the XDMF file is always written; accepted)"},
+      {"customvis", "string (file) or map", "none", "SPACAR Light: custom visualization (Sinew: accepted, not drawn)"},
       {"compliance_nodes", "[node numbers]", "all nodes", "nodes whose compliance matrices are computed"},
       {"dynamics", "{tend, dt, spectral_radius, output_every}", "none",
        "time integration (generalized-alpha) to tend with step dt; spectral_radius in [0,1] defaults to 0.9; "
@@ -236,6 +238,8 @@ void parseOptions(const YAML::Node& opt, SceneContext& ctx) {
     else if (k == "rigidstress") o.rigidstress = getBool(v, p);
     else if (k == "showinputonly") o.showinputonly = getBool(v, p);
     else if (k == "silent") o.silent = getBool(v, p);
+    else if (k == "spavisual") o.spavisual = getBool(v, p);
+    else if (k == "customvis") o.customvis = true;
     else if (k == "compliance_nodes") {
       if (!v.IsSequence() && !v.IsScalar()) fail(p, "expected a list of node numbers, got " + describe(v));
       std::set<int> seen;

@@ -85,3 +85,31 @@ TEST(SpacarScene, RotationAngleAxis) {
 }
 
 }  // namespace
+
+namespace {
+
+// item 5: colour forms, opacity, hide, warping = cw, opt.customvis / opt.spavisual accepted
+TEST(SpacarScene, VisualizationVocabulary) {
+  const std::string rigid = "color: ";
+  auto color = [&](const std::string& c) { return *parse(beam("1: {fix: true}", "flex: [], color: " + c)).eprops[0].color; };
+  EXPECT_DOUBLE_EQ(color("[0.2, 0.4, 0.6]")[1], 0.4);
+  EXPECT_DOUBLE_EQ(color("[51, 102, 255]")[2], 1.0);
+  EXPECT_DOUBLE_EQ(color("[51, 102, 255]")[0], 0.2);
+  EXPECT_EQ(color("darkgreen"), color("6"));
+  EXPECT_EQ(color("blue"), color("[1]"));
+  EXPECT_NE(color("grey"), color("darkgrey"));
+  EXPECT_EQ(parseError(beam("1: {fix: true}", "flex: [], color: purple")).path(), "eprops[0].color");
+  EXPECT_EQ(parseError(beam("1: {fix: true}", "flex: [], color: 7")).path(), "eprops[0].color");
+  const Model m = parse(beam("1: {fix: true}", "flex: [1, 2], emod: 1e9, smod: 4e8, cshape: rect, dim: [0.01, 0.001], "
+                                               "warping: true, opacity: 0.5, hide: true",
+                             "spavisual: false, customvis: {file: part.stl}"));
+  EXPECT_TRUE(m.eprops[0].cw);
+  EXPECT_EQ(m.eprops[0].opacity, 0.5);
+  EXPECT_TRUE(m.eprops[0].hide);
+  EXPECT_TRUE(m.opt.customvis);
+  EXPECT_EQ(parseError(beam("1: {fix: true}", "flex: [2], smod: 4e8, cshape: rect, dim: [0.01, 0.001], cw: true, warping: true"))
+                .path(),
+            "eprops[0].warping");
+}
+
+}  // namespace

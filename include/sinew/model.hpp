@@ -164,6 +164,9 @@ struct Model {
   std::map<int, NodeProps> nprops;     ///< 0-based node -> properties
   std::vector<ElementSet> eprops;
   std::vector<int> elementSet;         ///< per element: eprops index, -1 = rigid (no set)
+  /// Nodes 0 .. connectedNodes-1 reach the last node an element connects; the nodes after it are
+  /// trailing unconnected nodes (allowed as in SPACAR Light: held fixed, no unknowns)
+  std::size_t connectedNodes = 0;
   Options opt;
   std::optional<FormFinding> formfinding;
   std::vector<Sensor> sensors;

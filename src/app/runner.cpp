@@ -56,7 +56,35 @@ std::string outputPath(const Model& model, const std::string& scenePath) {
   return stem + ".h5";
 }
 
+/// "3, 5, 8 and 12 more" of 0-based element numbers.
+std::string elementList(const std::vector<int>& elems) {
+  std::string s;
+  const std::size_t shown = std::min<std::size_t>(elems.size(), 5);
+  for (std::size_t i = 0; i < shown; ++i) s += (i ? ", " : "") + std::to_string(elems[i] + 1);
+  if (elems.size() > shown) s += " and " + std::to_string(elems.size() - shown) + " more";
+  return s;
+}
+
 void warnings(MPI_Comm comm, const Model& model) {
+  if (model.nodes.size() > model.connectedNodes) {
+    const std::size_t first = model.connectedNodes + 1, last = model.nodes.size();
+    PetscPrintf(comm,
+                "warning: node%s %zu%s%s %s not connected to any element (trailing nodes, allowed as in SPACAR Light): "
+                "held fixed at %s input position%s, no unknowns\n",
+                first == last ? "" : "s", first, first == last ? "" : "..", first == last ? "" : std::to_string(last).c_str(),
+                first == last ? "is" : "are", first == last ? "its" : "their", first == last ? "" : "s");
+  }
+  for (size_t set = 0; set < model.eprops.size(); ++set) {
+    const ElementSet& s = model.eprops[set];
+    if (s.type == ElementType::Beam && s.cshape == CrossSection::Rect && !s.orien && !s.elems.empty())
+      PetscPrintf(comm,
+                  "warning: eprops[%zu] element%s %s: cshape rect without orien (SPACAR Light requires it); the width "
+                  "dim[0] is taken along the global z axis (global y for an element along z): give orien\n",
+                  set, s.elems.size() > 1 ? "s" : "", elementList(s.elems).c_str());
+  }
+  if (model.opt.customvis)
+    PetscPrintf(comm, "note: opt.customvis (SPACAR Light's custom visualization) is accepted but not drawn by Sinew; "
+                      "the XDMF file beside the result file shows the mesh (eprops color, opacity, hide)\n");
   for (size_t set = 0; set < model.eprops.size(); ++set) {
     const ElementSet& s = model.eprops[set];
     if (s.type != ElementType::Beam) continue;

@@ -110,14 +110,35 @@ void parseBeam(const YAML::Node& n, const std::string& path, ElementSet& s) {
   }
   if (const YAML::Node v = n["orien"]; v.IsDefined()) s.orien = getDirection(v, childPath(path, "orien"));
 
+  // The materials the flexible modes need, as the element (beamSection) needs them: emod for
+  // elongation (1) and bending (3-6), smod for torsion (2) and for the shear deformation of bending
+  // (3-6, Timoshenko); constrained warping (cw) needs both (Poisson's ratio emod / (2 smod) - 1).
   std::vector<int> needE, needG;
-  for (int m : flexModes) (m == 2 ? needG : needE).push_back(m);
+  for (int m : flexModes) {
+    if (m != 2 || s.cw) needE.push_back(m);
+    if (m != 1) needG.push_back(m);
+  }
+  auto what = [](const std::vector<int>& modes) {
+    std::string w;
+    for (int m : modes) {
+      const char* kind = m == 1 ? "elongation" : m == 2 ? "torsion" : "bending";
+      if (w.find(kind) == std::string::npos) w += std::string(w.empty() ? "" : ", ") + kind;
+    }
+    return w;
+  };
   if (!needE.empty() && (!hasE || s.emod == 0))
     fail(childPath(path, "emod"), std::string(hasE ? "expected emod > 0" : "missing") + ": flexible mode" +
-                                      (needE.size() > 1 ? "s " : " ") + modeList(needE) + " need emod (Young's modulus)");
+                                      (needE.size() > 1 ? "s " : " ") + modeList(needE) + " (" + what(needE) +
+                                      (s.cw && s.flex[1] ? "; torsion with cw" : "") + ") need" +
+                                      (needE.size() > 1 ? " " : "s ") + "emod (Young's modulus)");
   if (!needG.empty() && (!hasG || s.smod == 0))
-    fail(childPath(path, "smod"), std::string(hasG ? "expected smod > 0" : "missing") +
-                                      ": flexible mode 2 (torsion) needs smod (shear modulus)");
+    fail(childPath(path, "smod"), std::string(hasG ? "expected smod > 0" : "missing") + ": flexible mode" +
+                                      (needG.size() > 1 ? "s " : " ") + modeList(needG) + " (" + what(needG) +
+                                      (needG.back() > 2 ? ", with shear deformation" : "") + ") need" +
+                                      (needG.size() > 1 ? " " : "s ") + "smod (shear modulus)");
+  if (s.cw && s.cshape == CrossSection::Circ && !flexModes.empty())
+    fail(childPath(path, n["warping"].IsDefined() ? "warping" : "cw"),
+         "constrained warping (cw) applies to rect sections only (cshape is circ)");
   if (!flexModes.empty() || s.dens > 0) {
     const std::string why = flexModes.empty() ? "a beam with dens > 0" : "a flexible beam";
     if (s.cshape == CrossSection::None) fail(childPath(path, "cshape"), "missing: " + why + " needs cshape (rect or circ) and dim");

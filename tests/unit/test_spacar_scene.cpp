@@ -4,6 +4,7 @@
 #include <cmath>
 #include <string>
 
+#include "elements/beam_section.hpp"
 #include "scene/scene_reader.hpp"
 
 #ifndef SINEW_SOURCE_DIR
@@ -110,6 +111,62 @@ TEST(SpacarScene, VisualizationVocabulary) {
   EXPECT_EQ(parseError(beam("1: {fix: true}", "flex: [2], smod: 4e8, cshape: rect, dim: [0.01, 0.001], cw: true, warping: true"))
                 .path(),
             "eprops[0].warping");
+}
+
+}  // namespace
+
+namespace {
+
+// item 13: the scene check (src/scene/eprops.cpp) and the element check (beamSection) agree on when
+// emod and smod are required, for every set of flexible modes, with and without each modulus and cw
+TEST(SpacarScene, ModulusRequirementsAgree) {
+  int cases = 0;
+  for (int mask = 0; mask < 64; ++mask)
+    for (int materials = 0; materials < 4; ++materials)
+      for (int cw = 0; cw < 2; ++cw) {
+        const bool hasE = materials & 1, hasG = materials & 2;
+        std::string flex = "[";
+        sinew::ElementSet set;
+        set.type = sinew::ElementType::Beam;
+        set.cshape = sinew::CrossSection::Rect;
+        set.dim = {0.01, 0.001};
+        set.orien = sinew::Vec3{0, 0, 1};
+        set.cw = cw;
+        for (int m = 0; m < 6; ++m)
+          if (mask & (1 << m)) {
+            flex += (flex.size() > 1 ? ", " : "") + std::to_string(m + 1);
+            set.flex[static_cast<std::size_t>(m)] = true;
+          }
+        flex += "]";
+        if (hasE) set.emod = 210e9;
+        if (hasG) set.smod = 80e9;
+        const std::string text = beam("1: {fix: true}", "flex: " + flex + (hasE ? ", emod: 210e9" : "") +
+                                                            (hasG ? ", smod: 80e9" : "") +
+                                                            ", cshape: rect, dim: [0.01, 0.001], orien: [0, 0, 1]" +
+                                                            (cw ? ", cw: true" : ""));
+        bool sceneOk = true, elementOk = true;
+        std::string sceneMsg, elementMsg;
+        try {
+          parse(text);
+        } catch (const SceneError& e) {
+          sceneOk = false;
+          sceneMsg = e.what();
+        }
+        try {
+          sinew::beamSection(set, 1.0);
+        } catch (const SceneError& e) {
+          elementOk = false;
+          elementMsg = e.what();
+        }
+        EXPECT_EQ(sceneOk, elementOk) << "flex " << flex << (hasE ? " emod" : "") << (hasG ? " smod" : "")
+                                      << (cw ? " cw" : "") << ": scene '" << sceneMsg << "', element '" << elementMsg << "'";
+        ++cases;
+      }
+  EXPECT_EQ(cases, 512);
+  // flex [3, 4] without smod: the error names the set's smod and says why
+  const SceneError e = parseError(beam("1: {fix: true}", "flex: [3, 4], emod: 210e9, cshape: rect, dim: [0.01, 0.001], orien: [0, 0, 1]"));
+  EXPECT_EQ(e.path(), "eprops[0].smod");
+  EXPECT_NE(std::string(e.what()).find("modes 3 and 4 (bending, with shear deformation) need smod"), std::string::npos) << e.what();
 }
 
 }  // namespace

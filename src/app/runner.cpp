@@ -16,6 +16,7 @@
 #include "analysis/step_analysis.hpp"
 #include "analysis/step_results.hpp"
 #include "app/command_line.hpp"
+#include "app/input_summary.hpp"
 #include "app/interrupt.hpp"
 #include "app/plan.hpp"
 #include "app/restart.hpp"
@@ -99,6 +100,22 @@ void warnings(MPI_Comm comm, const Model& model) {
         break;
       }
     }
+  }
+}
+
+/// SPACAR Light's element look (eprops color, opacity, hide) per visualization cell, in the order of
+/// StepResults::fillLayout, when any set gives one: /mesh/<kind>_color, _opacity, _visible and the
+/// XDMF cell attributes, drawn by scripts/plot_input.py and plot_results.py. Cells without a colour
+/// are blue (the first colour of the seed's table), rigid elements (in no set) grey.
+void fillLook(const Model& model, const DistributedMesh& mesh, ResultLayout& layout) {
+  for (const ElementSet& s : model.eprops) layout.look |= s.color.has_value() || s.opacity != 1.0 || s.hide;
+  if (!layout.look) return;
+  const std::array<double, 3> blue{0.0, 0.447, 0.741}, grey{0.7, 0.7, 0.7};
+  for (const LocalElement& el : mesh.elements) {
+    auto& look = el.numNodes == 2 ? layout.lineLook : (el.numNodes == 3 ? layout.triangleLook : layout.quadLook);
+    const ElementSet* s = el.set >= 0 ? &model.eprops[static_cast<std::size_t>(el.set)] : nullptr;
+    const std::array<double, 3> c = s ? s->color.value_or(blue) : grey;
+    look.insert(look.end(), {c[0], c[1], c[2], s ? s->opacity : 1.0, s && s->hide ? 0.0 : 1.0});
   }
 }
 
@@ -355,6 +372,7 @@ PetscErrorCode runScene(int argc, char** argv, int* exitCode) {
   StepResults results(assembler, {plan.stress, plan.stressPerElement});
   ResultLayout layout;
   results.fillLayout(layout);
+  fillLook(model, *dmesh, layout);
   layout.version = sinewVersion();
   layout.scene = model.sceneText;
   {  // SPACAR Light's ndof: free node coordinates minus the rigid-mode constraints (no multipliers)
@@ -370,8 +388,15 @@ PetscErrorCode runScene(int argc, char** argv, int* exitCode) {
     layout.ndof = free - layout.nconstraints;
   }
   layout.nranks = dmesh->size;
+  layout.inputOnly = model.opt.showinputonly;
   if (plan.dynamics) layout.stepName = "time";
   int nranks = dmesh->size;
+  std::string inputText;  // opt.showinputonly: what was read (before the global arrays go)
+  if (model.opt.showinputonly) {
+    long feElements = static_cast<long>(dmesh->elements.size());
+    MPI_Allreduce(MPI_IN_PLACE, &feElements, 1, MPI_LONG, MPI_SUM, comm);
+    inputText = inputSummary(model, {dmesh->numFeNodes, feElements, dmesh->numGlobalUnknowns, layout.ndof});
+  }
   // the global model arrays are not needed past set-up
   std::vector<Vec3> initialPositions;
   if (dmesh->rank == 0) initialPositions = model.nodes;
@@ -383,9 +408,9 @@ PetscErrorCode runScene(int argc, char** argv, int* exitCode) {
   model.elementSet.shrink_to_fit();
   times.setup = MPI_Wtime() - t0;
 
-  SummaryHeader header{model.title, scenePath, nranks, dmesh->numGlobalUnknowns, plan.describe(model)};
+  SummaryHeader header{model.title, scenePath, nranks, dmesh->numGlobalUnknowns, plan.describe(model), model.opt.showinputonly};
   if (!model.opt.silent) PetscCall(printHeader(comm, header));
-  if (!model.opt.silent && nranks > 1) {  // partition balance: elements, owned unknowns, ghosts per rank
+  if (!model.opt.silent && nranks > 1 && !model.opt.showinputonly) {  // partition balance: elements, owned unknowns, ghosts per rank
     long mine[3] = {static_cast<long>(dmesh->elements.size()), dmesh->numOwnedUnknowns,
                     static_cast<long>(dmesh->ghostUnknowns.size())};
     long lo[3], hi[3];
@@ -425,7 +450,7 @@ PetscErrorCode runScene(int argc, char** argv, int* exitCode) {
   ctx.guardedWrite([&] { file->writeArray("node/p0", p0, {static_cast<long>(initialPositions.size()), 3}); });
   PetscCall(assembler.createVector(&ctx.U));
   PetscCall(VecSet(ctx.U, 0.0));
-  {
+  if (!model.opt.showinputonly) {  // an input-only run computes nothing
     PhaseScope phase("the set-up of the analyses");
     PetscCall(addStepAnalyses(ctx));
   }
@@ -469,13 +494,8 @@ PetscErrorCode runScene(int argc, char** argv, int* exitCode) {
   if (!ctx.ioError.empty()) {
     // nothing to do: the file error is reported below
   } else if (model.opt.showinputonly) {
-    LoadState ls;
-    PetscErrorCode ierr = PETSC_SUCCESS;
-    ctx.guardedWrite([&] {
-      file->beginStep(ctx.nextStep++, 0.0);
-      ierr = results.write(*file, ctx.U, ls);
-    });
-    PetscCall(ierr);
+    // SPACAR Light's input check: the file holds the input geometry (/node/p0, /mesh/p0, the cells,
+    // the element look), no step rows; converged = 0 and showinputonly = 1 (nothing was solved)
   } else {
     if (runFF) {
       PhaseScope phase("form finding");
@@ -561,7 +581,7 @@ PetscErrorCode runScene(int argc, char** argv, int* exitCode) {
   }
 
   const double tClose = MPI_Wtime();
-  const bool completed = ctx.converged && ctx.interruptSignal == 0 && ctx.ioError.empty();
+  const bool completed = ctx.converged && ctx.interruptSignal == 0 && ctx.ioError.empty() && !model.opt.showinputonly;
   if (ctx.ioError.empty()) ctx.guardedWrite([&] { file->close(completed); });
   else {
     try {
@@ -586,6 +606,14 @@ PetscErrorCode runScene(int argc, char** argv, int* exitCode) {
     PetscCall(PetscPrintf(comm, "%s", msg.c_str()));
     PetscCall(VecDestroy(&ctx.U));
     *exitCode = ctx.ioError.empty() ? 5 : 1;
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  if (model.opt.showinputonly) {
+    if (!model.opt.silent)
+      PetscCall(PetscPrintf(comm, "%s\n  input geometry: %s (ParaView: %s)\n  picture: scripts/plot_input.py %s\n",
+                            inputText.c_str(), file->path().c_str(), file->xdmfPath().c_str(), file->path().c_str()));
+    PetscCall(VecDestroy(&ctx.U));
+    *exitCode = 0;
     PetscFunctionReturn(PETSC_SUCCESS);
   }
   SummaryBody body;

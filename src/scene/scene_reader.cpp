@@ -230,7 +230,7 @@ void checkConnectivity(SceneContext& ctx) {
            "node " + std::to_string(node + 1) + " is not connected to any element (a trailing node, held fixed): " + field +
                " has nothing to act on");
   }
-  if (m.opt.continuation && static_cast<std::size_t>(m.opt.continuation->node) > last)
+  if (m.opt.continuation && m.opt.continuation->node >= 0 && static_cast<std::size_t>(m.opt.continuation->node) > last)
     fail("opt.continuation.node", "node " + std::to_string(m.opt.continuation->node + 1) +
                                       " is not connected to any element (a trailing node, held fixed)");
 }

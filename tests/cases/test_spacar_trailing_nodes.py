@@ -4,7 +4,8 @@ element connects. Sinew warns, holds them fixed (no unknowns: the solve is not s
 them at their input positions with zero reactions. On 2 ranks, an L-frame (two flexible beams, a tip
 force and a tip mass; frequencies and compliance computed) with two trailing nodes gives the same
 results as without them; a support on a trailing node is accepted. An unconnected node before the
-last connected one stays an error naming it, and so does a load or a mass on a trailing node."""
+last connected one stays an error naming it, and so does a load or a mass on a trailing node or a
+path-following control node there."""
 import numpy as np
 
 import sinewtest as st
@@ -46,4 +47,9 @@ for field, value in (("force", [1, 0, 0]), ("mass", 1.0)):
     bad = dict(trailing, nprops={**base["nprops"], 5: {field: value}})
     _, log = st.run("trailing_" + field, bad, expect_exit=2)
     st.check(f"nprops.5.{field}" in log and "not connected" in log, f"{field} on a trailing node: " + log.strip()[-300:])
+# path following controlled at a trailing node: refused, naming the field
+cont = dict(trailing, opt={"continuation": {"method": "arclength", "ds": 0.01, "node": 5, "direction": "y",
+                                            "stop_displacement": -0.1}})
+_, log = st.run("trailing_continuation", cont, expect_exit=2)
+st.check("opt.continuation.node" in log and "not connected" in log, "continuation node on a trailing node: " + log.strip()[-300:])
 st.done()

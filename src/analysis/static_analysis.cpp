@@ -382,9 +382,9 @@ PetscErrorCode StaticAnalysis::run(Vec U, const StepCallback& onStep, bool* conv
         msg << "load step " << step << " of " << lastStep_ << " did not converge: Newton stopped at load factor "
             << next << " (" << SNESConvergedReasons[why] << ", residual norm " << fnorm << ")";
         if (next == lambda)
-          msg << " under the initial loads and prescribed motions alone (SPACAR Light's step 1, solved in one increment). "
-                 "Try smaller *_initial loads and motions (and ramped ones for the rest), opt.load_ramp: uniform "
-                 "(-load_ramp uniform: the first increment solved with them), a line search (-snes_linesearch_type bt|l2), "
+          msg << " under the initial loads and prescribed motions alone (SPACAR Light's step 1: they act in full, "
+                 "in one increment that cannot be cut). Try moving part of them to the ramped loads and motions "
+                 "(force, moment, displ_*, rot instead of *_initial), a line search (-snes_linesearch_type bt|l2), "
                  "-snes_monitor to watch the residual, or check supports and rigid modes for a mechanism.";
         else
           msg << " after " << maxCuts_ << " halvings of the increment (last converged load factor " << lambda

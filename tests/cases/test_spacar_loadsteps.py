@@ -35,6 +35,23 @@ for ramp, args, lam_ref, reac_ref, z_ref in [
 out, _ = st.run("spacar_loadsteps_one", dict(scene, opt={"loadsteps": 1, "calccompl": False}))
 with st.h5(out) as f:
     st.close(f["node/Freac"][:, 0, 0], [-2], rtol=1e-9, what="1 step: full load")
+# initial loads that have no equilibrium (an end moment of 6 EI / L on one element, beyond the bound
+# of its bending measures; test_core_newton_failure ramps the same moment): step 1 fails (exit 3)
+# with a message that names SPACAR Light's step 1 and what to try, and no step is written
+w, t, E = 0.02, 0.01, 2e9
+limit = {"nodes": [[0, 0, 0], [1, 0, 0]], "elements": [[1, 2]],
+         "nprops": {1: {"fix": True}, 2: {"moment_initial": [0, 0, 6 * E * w * t**3 / 12]}},
+         "eprops": [{"elems": [1], "flex": [1, 2, 3, 4, 5, 6], "emod": E, "smod": 0.8e9, "cshape": "rect",
+                     "dim": [w, t], "orien": [0, 0, 1]}],
+         "opt": {"loadsteps": 4, "calccompl": False}}
+out, log = st.run("spacar_loadsteps_initial_fails", limit, args=["-snes_max_it", "25"], expect_exit=3)
+err = [ln for ln in log.splitlines() if ln.startswith("error:")]
+print("  message:", err[0] if err else "(none)")
+st.check(len(err) == 1 and "load step 1 of 4 did not converge" in err[0] and "SPACAR Light's step 1" in err[0]
+         and "*_initial" in err[0], "step 1 under the initial loads alone fails with its own message")
+with st.h5(out) as f:
+    st.check("load_factor" not in f or len(f["load_factor"]) == 0, "no step written")
+    st.check(int(f.attrs["converged"]) == 0, "converged = 0")
 # a bad value is a scene error
 out, log = st.run("spacar_loadsteps_bad", scene, args=["-load_ramp", "linear"], expect_exit=2)
 st.check("load_ramp" in log, "opt.load_ramp: a bad value is named")

@@ -340,7 +340,8 @@ def main():
     canvas.shape(deformed, res.cells, deformed_nodes, colors=res.colors, **blue)
     if labels:
         canvas.labels(deformed_nodes)
-    title = f"{res.title}\ndeformed (blue) and {res.ref_name(k)} (grey), {res.state(k)}{scaled(s)}"
+    drawn = "scene colours" if res.colors is not None else "blue"
+    title = f"{res.title}\ndeformed ({drawn}) and {res.ref_name(k)} (grey), {res.state(k)}{scaled(s)}"
     canvas.title(title)
     save_png(canvas, a.output or base + f"_step{k + 1}.png", title)
     return 0

@@ -258,6 +258,13 @@ void Restart::check(MPI_Comm comm, const std::string& src, const std::string& pa
     throw SceneError("-restart", path + " holds a dynamics checkpoint; this scene has no opt.dynamics");
   if (ph == CheckpointPhase::Statics && !plan.statics)
     throw SceneError("-restart", path + " holds a statics checkpoint; this scene runs dynamics (opt.dynamics)");
+  if (ph == CheckpointPhase::Statics) {
+    const std::string ramp = sc[kCkLoadRamp] != 0.0 ? "uniform" : "spacar";
+    if (ramp != model.opt.load_ramp)
+      throw SceneError("opt.load_ramp", "the run that wrote " + path + " had opt.load_ramp " + ramp + ", this scene has " +
+                                            model.opt.load_ramp + ": a restart continues the same load steps (give -load_ramp " +
+                                            ramp + ")");
+  }
   if (ph == CheckpointPhase::Dynamics) {
     const DynamicsOptions& d = *model.opt.dynamics;
     if (d.dt != sc[kCkDt] || d.spectral_radius != sc[kCkSpectralRadius]) {

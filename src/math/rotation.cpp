@@ -83,7 +83,9 @@ std::array<double, 4> axisAngleOf(const Mat3& R) {
   const auto q = quaternionOf(R);
   const Vec3 v{q[1], q[2], q[3]};
   const double s = norm(v);
-  if (s < 1e-300) return {0.0, 1.0, 0.0, 0.0};
+  // a turn below 2e-14 rad is the round-off of R (entries carry eps): its axis would be noise (it
+  // flipped between rank counts), so it is reported as the identity
+  if (s < 1e-14) return {0.0, 1.0, 0.0, 0.0};
   return {2.0 * std::atan2(s, q[0]), v[0] / s, v[1] / s, v[2] / s};
 }
 

@@ -78,6 +78,7 @@ ContinuationAnalysis::ContinuationAnalysis(Assembler& assembler, const Continuat
 ContinuationAnalysis::~ContinuationAnalysis() {
   KSPDestroy(&ksp_);
   MatDestroy(&K_);
+  MatDestroy(&Ks_);
   for (Vec* v : {&R_, &q_, &duR_, &duq_, &dU_, &e_, &work_}) VecDestroy(v);
 }
 
@@ -98,7 +99,9 @@ PetscErrorCode ContinuationAnalysis::loadDerivative(Vec U, double lambda, Vec q)
 
 // Initial loads (force_initial, moment_initial, displ_initial, rot_initial) act at every load factor,
 // so the path starts from their equilibrium: Newton at load factor 0 with the initial loads ramped in
-// equal increments (a cut increment is halved), rotations absorbed after each.
+// equal increments (a cut increment is halved), rotations absorbed after each. A start state that already
+// carries them (form finding's found shape with the corners lifted) is equilibrated in one increment:
+// ramping from load factor 0 would first pull the prescribed motions back to zero.
 PetscErrorCode ContinuationAnalysis::equilibrateInitial(Vec U, bool* ok) {
   PetscFunctionBeginUser;
   LoadState ls;
@@ -113,7 +116,7 @@ PetscErrorCode ContinuationAnalysis::equilibrateInitial(Vec U, bool* ok) {
   if (fint == 0.0 && r0 == 0.0) PetscFunctionReturn(PETSC_SUCCESS);
   Vec U0;
   PetscCall(VecDuplicate(U, &U0));
-  double mu = 0.0, dmu = 1.0 / initialSteps_;
+  double mu = 0.0, dmu = startCarriesInitial_ ? 1.0 : 1.0 / initialSteps_;
   int cuts = 0;
   while (mu < 1.0 && *ok) {
     const double next = std::min(1.0, mu + dmu);
@@ -202,13 +205,13 @@ PetscErrorCode ContinuationAnalysis::switchBranch(Vec U, double lambda, double t
   asm_.setMixedStressNewton(false);
   PetscCall(asm_.jacobian(U, ls, K_));
   asm_.setMixedStressNewton(mixed);
-  PetscCall(MatSetOption(K_, MAT_SYMMETRIC, PETSC_TRUE));
+  PetscCall(stabilityMatrix());
   Vec phi, Ub;
   PetscCall(VecDuplicate(U, &phi));
   PetscCall(VecDuplicate(U, &Ub));
   double mu = 0;
   PetscCall(lowestEigenvalue(&mu, phi));
-  PetscCall(MatSetOption(K_, MAT_SYMMETRIC, PETSC_FALSE));
+  PetscCall(MatSetOption(K_, MAT_SYMMETRIC, PETSC_FALSE));  // K_ is the Newton matrix again
   PetscReal tt, tp, pn;
   PetscCall(VecDot(dUprev, dUprev, &tt));
   PetscCall(VecDot(dUprev, phi, &tp));
@@ -272,21 +275,39 @@ PetscErrorCode ContinuationAnalysis::negativeEigenvalues(Vec U, double lambda, i
   asm_.setMixedStressNewton(false);  // the true tangent of the converged state
   PetscCall(asm_.jacobian(U, ls, K_));
   asm_.setMixedStressNewton(mixed);
+  PetscCall(stabilityMatrix());
   Mat F;
   MatFactorInfo info;
   PetscCall(MatFactorInfoInitialize(&info));
-  PetscCall(MatSetOption(K_, MAT_SYMMETRIC, PETSC_TRUE));
-  PetscCall(MatGetFactor(K_, MATSOLVERMUMPS, MAT_FACTOR_CHOLESKY, &F));
+  PetscCall(MatGetFactor(stab_, MATSOLVERMUMPS, MAT_FACTOR_CHOLESKY, &F));
   PetscCall(MatMumpsSetIcntl(F, 13, 1));  // root front factored sequentially: the global inertia is exact
   PetscCall(MatMumpsSetIcntl(F, 24, 1));  // null pivots detected (a critical point itself is singular)
-  PetscCall(MatCholeskyFactorSymbolic(F, K_, nullptr, &info));
-  PetscCall(MatCholeskyFactorNumeric(F, K_, &info));
+  PetscCall(MatCholeskyFactorSymbolic(F, stab_, nullptr, &info));
+  PetscCall(MatCholeskyFactorNumeric(F, stab_, &info));
   PetscInt neg = 0, zero = 0, pos = 0;
   PetscCall(MatGetInertia(F, &neg, &zero, &pos));
   PetscCall(MatDestroy(&F));
   if ((lowest_ || branchSwitch_) && lowest) PetscCall(lowestEigenvalue(lowest));
   PetscCall(MatSetOption(K_, MAT_SYMMETRIC, PETSC_FALSE));
   *count = static_cast<int>(neg - multipliers_);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+// The matrix of the stability checks: the tangent K_ itself, or, when follower pressure loads make it
+// unsymmetric (their load stiffness), its symmetric part (K + K^T)/2: the assembled pressure stiffness is
+// symmetric where the pressure's boundary terms vanish (fixed edges, closed surfaces; Schweizerhof & Ramm
+// 1984), and a symmetric LDL^T of K_ itself would read one triangle only. Marked symmetric for MUMPS' Cholesky and SLEPc.
+PetscErrorCode ContinuationAnalysis::stabilityMatrix() {
+  PetscFunctionBeginUser;
+  stab_ = K_;
+  if (asm_.hasPressure()) {
+    PetscCall(MatDestroy(&Ks_));
+    PetscCall(MatTranspose(K_, MAT_INITIAL_MATRIX, &Ks_));
+    PetscCall(MatAXPY(Ks_, 1.0, K_, DIFFERENT_NONZERO_PATTERN));
+    PetscCall(MatScale(Ks_, 0.5));
+    stab_ = Ks_;
+  }
+  PetscCall(MatSetOption(stab_, MAT_SYMMETRIC, PETSC_TRUE));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -301,7 +322,7 @@ PetscErrorCode ContinuationAnalysis::lowestEigenvalue(double* value, Vec phi) {
   KSP ksp;
   PC pc;
   PetscCall(EPSCreate(comm, &eps));
-  PetscCall(EPSSetOperators(eps, K_, nullptr));
+  PetscCall(EPSSetOperators(eps, stab_, nullptr));
   PetscCall(EPSSetProblemType(eps, multipliers_ > 0 ? EPS_NHEP : EPS_HEP));
   PetscCall(EPSSetWhichEigenpairs(eps, EPS_TARGET_MAGNITUDE));
   PetscCall(EPSSetTarget(eps, 0.0));

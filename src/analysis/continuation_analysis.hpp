@@ -53,6 +53,9 @@ class ContinuationAnalysis {
   std::string summary() const;
   /// The path ends after the current point when *stop is set (an interrupt; equal on every rank).
   void setStopFlag(const bool* stop) { stop_ = stop; }
+  /// The start state already carries the initial loads (a form-found shape: form finding applied the
+  /// prescribed initial motions): equilibrium under them is found from it in one increment, not ramped.
+  void setStartCarriesInitialLoads(bool v) { startCarriesInitial_ = v; }
 
  private:
   PetscErrorCode loadDerivative(Vec U, double lambda, Vec q);
@@ -64,6 +67,7 @@ class ContinuationAnalysis {
   /// Lowest eigenvalue of K_ (assembled true tangent) by SLEPc: shift-and-invert about 0, a few pairs;
   /// its eigenvector into phi when given.
   PetscErrorCode lowestEigenvalue(double* value, Vec phi = nullptr);
+  PetscErrorCode stabilityMatrix();
   /// Newton at a fixed load factor from U (the branch switch); ok when the residual meets the tolerance.
   PetscErrorCode solveFixedLoad(Vec U, double lambda, double scale, bool* ok);
   /// -branch_switch: from the point just past a bifurcation, onto the branch along the critical
@@ -78,12 +82,15 @@ class ContinuationAnalysis {
   Assembler& asm_;
   ContinuationOptions opt_;
   Mat K_ = nullptr;
+  Mat Ks_ = nullptr;   ///< symmetric part of K_ (follower pressure makes K_ unsymmetric); see stabilityMatrix
+  Mat stab_ = nullptr; ///< the matrix whose inertia / lowest eigenvalue is taken: K_ or Ks_
   KSP ksp_ = nullptr;
   Vec R_ = nullptr, q_ = nullptr, duR_ = nullptr, duq_ = nullptr, dU_ = nullptr, e_ = nullptr, work_ = nullptr;
   long multipliers_ = 0;      ///< global number of rigid-mode multipliers (each adds one negative pivot)
   bool haveControl_ = false;  ///< e_ selects the control DOF among the unknowns
   double rtol_ = 1e-9;
   int maxIts_ = 15, maxCuts_ = 10, desiredIts_ = 5, initialSteps_ = 10;
+  bool startCarriesInitial_ = false;
   bool inertia_ = true;
   bool lowest_ = false;  ///< -continuation_lowest_eigenvalue
   bool branchSwitch_ = false, switched_ = false;  ///< -branch_switch; done once

@@ -14,6 +14,7 @@ PetscErrorCode runContinuation(RunContext& ctx) {
   ContinuationAnalysis path(ctx.assembler, *ctx.model.opt.continuation);
   std::vector<double> negative;
   path.setStopFlag(&ctx.stop);
+  path.setStartCarriesInitialLoads(ctx.model.formfinding.has_value());  // runs after form finding
   ctx.progress.startPhase("path point", ctx.model.opt.continuation->max_steps);
   auto onPoint = [&](const PathPoint& p, Vec U) -> PetscErrorCode {
     PetscFunctionBeginUser;

@@ -15,7 +15,8 @@ step, so the count goes 0 -> 3, not by one). Checked:
       steps to the same pressure) to 1e-8 m (measured 6e-15 m);
   (3) the stability checks take the symmetric part of the tangent (the follower pressure makes it
       unsymmetric): SLEPc's lowest eigenvalue of it is negative exactly where MUMPS' inertia counts
-      negative eigenvalues."""
+      negative eigenvalues;
+  (4) 1 and 2 ranks: the same path (load factors and positions to 1e-9, the same counts)."""
 import numpy as np
 
 import ffscenes as ff
@@ -26,13 +27,17 @@ sc, idx = ff.sail_scene(n=n, steps=10, pressure=1.0, tol=0.0)
 c = idx[("v", n // 2, n // 2)] + 1
 sc["opt"] = {"calccompl": False, "continuation": {"method": "arclength", "ds": 0.01, "ds_max": 0.05, "node": c,
                                                    "direction": "z", "max_steps": 9}}
-h5, out = st.run("continuation_sail", ff.to_yaml(sc), args=["-continuation_lowest_eigenvalue"])
-with st.h5(h5) as f:
-    nff = len(f["formfinding/residual"][:])
-    lam, p = f["load_factor"][nff:], f["node/p"][nff:]
-    neg, crit, low = f["path/negative_eigenvalues"][nff:], f["path/critical_points"][:], f["path/lowest_eigenvalue"][nff:]
-    zfound = f["node/p"][nff - 1, c - 1, 2]
-    conv = int(f.attrs["converged"])
+runs = {}
+for np_ in (2, 1):
+    h5, out = st.run(f"continuation_sail_{np_}", ff.to_yaml(sc), np_=np_, args=["-continuation_lowest_eigenvalue"])
+    with st.h5(h5) as f:
+        nff = len(f["formfinding/residual"][:])
+        runs[np_] = (f["load_factor"][nff:], f["node/p"][nff:], f["path/negative_eigenvalues"][nff:])
+        if np_ == 2:
+            crit, low = f["path/critical_points"][:], f["path/lowest_eigenvalue"][nff:]
+            zfound = f["node/p"][nff - 1, c - 1, 2]
+            conv = int(f.attrs["converged"])
+lam, p, neg = runs[2]
 print("  load factors (pressure, Pa)", np.array2string(lam, precision=4))
 print("  negative eigenvalues", neg.astype(int))
 print("  lowest eigenvalues", np.array2string(low, precision=3))
@@ -45,6 +50,11 @@ if st.check(len(crit) >= 1 and crit[0, 0] == 1, f"the first critical point is a 
     st.check(lam[k] < crit[0, 2] and lam[k + 1] < lam[k] and lam[-1] > crit[0, 2] + 2,
              f"the load falls after the limit point ({crit[0, 2]:.4f} Pa) and the path continues beyond it ({lam[-1]:.4f} Pa)")
 st.check(np.array_equal(low < 0, neg > 0), "SLEPc's lowest eigenvalue < 0 exactly where the inertia counts negative eigenvalues")
+lam1, p1, neg1 = runs[1]
+if st.check(len(lam1) == len(lam), "1 and 2 ranks: same number of path points"):
+    st.close(lam1, lam, atol=1e-9 * lam.max(), what="1 vs 2 ranks: load factors [Pa]")
+    st.close(p1, p, atol=1e-9, what="1 vs 2 ranks: positions [m]")
+    st.check(np.array_equal(neg1, neg), "1 vs 2 ranks: negative eigenvalue counts")
 # (2) load stepping to the pressure of stable path points
 for k in (2, 4):
     st.check(neg[k] == 0, f"path point {k + 1} is stable")

@@ -57,6 +57,16 @@ class ContinuationAnalysis {
   /// prescribed initial motions): equilibrium under them is found from it in one increment, not ramped.
   void setStartCarriesInitialLoads(bool v) { startCarriesInitial_ = v; }
 
+  /// Checkpoint (-restart): the path's state after the last reported point as a fixed-size row of
+  /// checkpointSize() values (header, the points so far, the critical points), and the last increment
+  /// (the predictor's direction; valid during the point callback).
+  static long checkpointSize(int maxSteps) { return kCkHeader + static_cast<long>(maxSteps) * (kCkPointCols + kCkCritCols); }
+  std::vector<double> checkpointState() const;
+  Vec lastIncrement() const { return dUprev_; }
+  /// Continues the path from a checkpoint: U is the state of its last point (reference rotations
+  /// restored), dU its last increment; run() then goes on after that point.
+  PetscErrorCode resume(const std::vector<double>& state, Vec dU);
+
  private:
   PetscErrorCode loadDerivative(Vec U, double lambda, Vec q);
   /// The start state: equilibrium under the initial loads alone (load factor 0), reached by ramping them
@@ -79,8 +89,15 @@ class ContinuationAnalysis {
   PetscErrorCode step(Vec U, double* lambda, double ds, Vec dUprev, double dlPrev, bool first, bool* ok, int* its);
   void classify();
 
+  static constexpr int kCkHeader = 9, kCkPointCols = 10, kCkCritCols = 5;
   Assembler& asm_;
   ContinuationOptions opt_;
+  Vec dUprev_ = nullptr;  ///< increment of the last converged step
+  bool resumed_ = false;   ///< run() continues after points_.back() (resume)
+  double resumeLambda_ = 0, resumeDs_ = 0, resumeDlPrev_ = 0;
+  int resumePrevNeg_ = -1, resumeIts_ = 0;
+  double ckDs_ = 0, ckDlPrev_ = 0;  ///< step state at the reported point (checkpointState)
+  int ckIts_ = 0;
   Mat K_ = nullptr;
   Mat Ks_ = nullptr;   ///< symmetric part of K_ (follower pressure makes K_ unsymmetric); see stabilityMatrix
   Mat stab_ = nullptr; ///< the matrix whose inertia / lowest eigenvalue is taken: K_ or Ks_

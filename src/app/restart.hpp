@@ -4,7 +4,8 @@
 //   form finding  from the next URS step (or, when form finding had ended, with the load analysis),
 //   statics       from the next load step; the load factor of step k stays k / loadsteps of the
 //                 earlier run, so -loadsteps N beyond it continues the ramp past load factor 1,
-//   dynamics      from the next time step to the scene's (possibly later) tend.
+//   dynamics      from the next time step to the scene's (possibly later) tend,
+//   path following after the last path point (its step size, increment, points and critical points).
 // A scene that differs from the earlier one (nodes, elements, eprops, supports, form-finding block) is
 // refused (exit 2) naming what differs. Other loads are accepted after form finding: from a
 // checkpoint written during form finding, or else from /checkpoint_formfinding (the found shape),
@@ -16,6 +17,7 @@
 #include <memory>
 #include <string>
 
+#include "analysis/continuation_analysis.hpp"
 #include "analysis/dynamic_analysis.hpp"
 #include "analysis/formfinding_analysis.hpp"
 #include "analysis/static_analysis.hpp"
@@ -61,6 +63,8 @@ class Restart {
   PetscErrorCode resumeStatics(RunContext& ctx, StaticAnalysis& statics) const;
   /// Dynamics: progress and rates; energy0/maxDrift of -dynamics_energy.
   PetscErrorCode resumeDynamics(RunContext& ctx, DynamicAnalysis& dyn, double* energy0, double* maxDrift) const;
+  /// Path following: its state after the last point, the last increment.
+  PetscErrorCode resumeContinuation(RunContext& ctx, ContinuationAnalysis& path) const;
   /// loadsteps of the earlier run's ramp (statics checkpoints).
   int rampLoadsteps() const { return static_cast<int>(reader_->scalars()[kCkLoadsteps]); }
 

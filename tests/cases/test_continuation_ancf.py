@@ -8,8 +8,9 @@ The arc length runs in the ANCF unknowns (positions in m and slope vectors, dime
 Checked:
   (1) the path passes the snap-through limit point: the limit load and the mid-span position there
       vs shallow-arch (Marguerre) theory (tests/cases/shallow_beam.py; its error is of the order of
-      the squared slopes, 0.1..0.5% here); measured 1.86926 N (+0.21%; 80 elements: 1.86719 N, the
-      beam elements converge to the same value from below: 1.85716 N at 40, 0.14% low at 80);
+      the squared slopes, 0.1..0.5% here); measured 1.86926 N (+0.22%; 80 elements: 1.86719 N; the
+      beam elements approach from below: 1.85716 N at 40, 0.14% low at 80; the two kinds'
+      second-order extrapolations, about 1.8665 and 1.8645 N, differ by 0.1%);
   (2) negative eigenvalues of the tangent: 0 before the limit point, 1 after it; SLEPc's lowest
       eigenvalue (-continuation_lowest_eigenvalue) negative exactly where the count is one;
   (3) 1 and 2 ranks identical to 1e-9 along the whole path (load factors, positions, slopes)."""

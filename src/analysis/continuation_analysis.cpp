@@ -541,49 +541,49 @@ PetscErrorCode ContinuationAnalysis::run(Vec U, const PointCallback& onPoint, bo
       p = points_.back();
       its = resumeIts_;
     } else {
-    p.step = n;
-    const auto Rsave = asm_.referenceRotations();
-    PetscCall(VecCopy(U, Uprev));
-    bool ok = false;
-    while (true) {
-      PetscCall(step(U, &lambda, ds, dUprev, dlPrev, n == 1, &ok, &its));
-      if (ok) break;
-      asm_.setReferenceRotations(Rsave);
-      if (++p.cuts > maxCuts_) break;
-      ds *= 0.5;
-      PetscCall(PetscPrintf(comm, "  path step %d: corrector failed; retrying with %s %.4g\n", n,
-                            opt_.method == "displacement" ? "displacement increment" : "arc length", ds));
-    }
-    if (!ok) {
-      std::ostringstream msg;
-      msg << "path step " << n << " did not converge after " << maxCuts_ << " halvings of the "
-          << (opt_.method == "displacement" ? "displacement increment" : "arc length") << " (last converged load factor "
-          << lambda << "). Try a smaller ds, -continuation_max_it, or check supports for a mechanism.";
-      failure_ = msg.str();
-      *converged = false;
-      break;
-    }
-    PetscCall(VecWAXPY(dUprev, -1.0, Uprev, U));
-    dlPrev = lambda - (points_.empty() ? 0.0 : points_.back().loadFactor);
-    LoadState ls;
-    ls.loadFactor = ls.time = lambda;
-    PetscCall(asm_.setMixedReference(U, ls));
-    PetscCall(asm_.absorbRotations(U));
-    arc += ds;
-    p.loadFactor = lambda;
-    p.arcLength = ds;
-    p.iterations = its;
-    PetscCall(controlDisplacement(U, lambda, &p.controlValue));
-    if (inertia_) PetscCall(pathSlopes(U, lambda, dUprev, dlPrev, &p));
-    if (inertia_) PetscCall(negativeEigenvalues(U, lambda, &p.negativeEigenvalues, &p.lowestEigenvalue));
-    points_.push_back(p);
-    if (inertia_ && prevNeg >= 0 && p.negativeEigenvalues != prevNeg) classify();
-    prevNeg = p.negativeEigenvalues;
-    ckDs_ = ds;
-    ckDlPrev_ = dlPrev;
-    ckIts_ = its;
-    if (onPoint) PetscCall(onPoint(p, U));
-    if (stop_ && *stop_) break;
+      p.step = n;
+      const auto Rsave = asm_.referenceRotations();
+      PetscCall(VecCopy(U, Uprev));
+      bool ok = false;
+      while (true) {
+        PetscCall(step(U, &lambda, ds, dUprev, dlPrev, n == 1, &ok, &its));
+        if (ok) break;
+        asm_.setReferenceRotations(Rsave);
+        if (++p.cuts > maxCuts_) break;
+        ds *= 0.5;
+        PetscCall(PetscPrintf(comm, "  path step %d: corrector failed; retrying with %s %.4g\n", n,
+                              opt_.method == "displacement" ? "displacement increment" : "arc length", ds));
+      }
+      if (!ok) {
+        std::ostringstream msg;
+        msg << "path step " << n << " did not converge after " << maxCuts_ << " halvings of the "
+            << (opt_.method == "displacement" ? "displacement increment" : "arc length") << " (last converged load factor "
+            << lambda << "). Try a smaller ds, -continuation_max_it, or check supports for a mechanism.";
+        failure_ = msg.str();
+        *converged = false;
+        break;
+      }
+      PetscCall(VecWAXPY(dUprev, -1.0, Uprev, U));
+      dlPrev = lambda - (points_.empty() ? 0.0 : points_.back().loadFactor);
+      LoadState ls;
+      ls.loadFactor = ls.time = lambda;
+      PetscCall(asm_.setMixedReference(U, ls));
+      PetscCall(asm_.absorbRotations(U));
+      arc += ds;
+      p.loadFactor = lambda;
+      p.arcLength = ds;
+      p.iterations = its;
+      PetscCall(controlDisplacement(U, lambda, &p.controlValue));
+      if (inertia_) PetscCall(pathSlopes(U, lambda, dUprev, dlPrev, &p));
+      if (inertia_) PetscCall(negativeEigenvalues(U, lambda, &p.negativeEigenvalues, &p.lowestEigenvalue));
+      points_.push_back(p);
+      if (inertia_ && prevNeg >= 0 && p.negativeEigenvalues != prevNeg) classify();
+      prevNeg = p.negativeEigenvalues;
+      ckDs_ = ds;
+      ckDlPrev_ = dlPrev;
+      ckIts_ = its;
+      if (onPoint) PetscCall(onPoint(p, U));
+      if (stop_ && *stop_) break;
     }
     tailOnly = false;
     if (branchSwitch_ && !switched_ && !critical_.empty() && critical_.back().kind == CriticalPoint::Bifurcation &&

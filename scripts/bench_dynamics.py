@@ -48,16 +48,20 @@ t0 = time.perf_counter()
 import exudyn as exu
 from exudyn.itemInterface import *
 n, steps, h, modified, sparse = int(sys.argv[1]), int(sys.argv[2]), float(sys.argv[3]), sys.argv[4] == "1", sys.argv[5] == "1"
+model = sys.argv[6]
 SC = exu.SystemContainer(); mbs = SC.AddSystem()
-L, EA, EI, rhoA = 2.0, 2.07e9, 1.725e6, 78.0
-f = 3 * EI / L**2
+L, EA, EI, rhoA = (2.0, 2.07e9, 1.725e6, 78.0) if model == "A3" else (2.0, 1e6, 833.3333333333333, 78.0)
+f = 3 * EI / L**2 if model == "A3" else 0.0
 nc0 = mbs.AddNode(Point2DS1(referenceCoordinates=[0, 0, 1, 0]))
 le = L / n
 for i in range(n):
     last = mbs.AddNode(Point2DS1(referenceCoordinates=[le * (i + 1), 0, 1, 0]))
-    mbs.AddObject(Cable2D(physicsLength=le, physicsMassPerLength=rhoA, physicsBendingStiffness=EI,
-                          physicsAxialStiffness=EA, nodeNumbers=[int(nc0) + i, int(nc0) + i + 1]))
-mbs.AddLoad(Force(markerNumber=mbs.AddMarker(MarkerNodePosition(nodeNumber=last)), loadVector=[0, -f, 0]))
+    o = mbs.AddObject(Cable2D(physicsLength=le, physicsMassPerLength=rhoA, physicsBendingStiffness=EI,
+                              physicsAxialStiffness=EA, nodeNumbers=[int(nc0) + i, int(nc0) + i + 1]))
+    if model == "A1g":
+        mbs.AddLoad(Gravity(markerNumber=mbs.AddMarker(MarkerBodyMass(bodyNumber=o)), loadVector=[0, -9.81, 0]))
+if model == "A3":
+    mbs.AddLoad(Force(markerNumber=mbs.AddMarker(MarkerNodePosition(nodeNumber=last)), loadVector=[0, -f, 0]))
 nG = mbs.AddNode(NodePointGround(referenceCoordinates=[0, 0, 0]))
 mG = mbs.AddMarker(MarkerNodeCoordinate(nodeNumber=nG, coordinate=0))
 for c in (0, 1, 3):
@@ -94,11 +98,14 @@ def run_timed(cmd, env=ENV):
     return out, wall, ru.ru_maxrss / 1024.0
 
 
-def sinew(n, steps, h, ranks):
+def sinew(n, steps, h, ranks, model="A3"):
     os.makedirs(WORK, exist_ok=True)
-    scene = cantilever(n, force=F, dynamics={"tend": steps * h, "dt": h, "spectral_radius": 0.6,
-                                             "output_every": steps})
-    name = f"a3_{n}_{steps}_{h:g}_{ranks}"
+    dyn = {"tend": steps * h, "dt": h, "spectral_radius": 0.6, "output_every": steps}
+    if model == "A3":
+        scene = cantilever(n, force=F, dynamics=dyn)
+    else:  # A1 (EA = 1e6, EI = 833.33) swinging down under gravity from the horizontal
+        scene = cantilever(n, EA=1e6, EI=833.3333333333333, gravity=[0, -9.81], dynamics=dyn)
+    name = f"{model.lower()}_{n}_{steps}_{h:g}_{ranks}"
     path = os.path.join(WORK, name + ".yaml")
     with open(path, "w") as f:
         f.write(text(scene))
@@ -112,14 +119,18 @@ def sinew(n, steps, h, ranks):
             "its": int(j.group(1)), "jacobians": int(j.group(2))}
 
 
-def exudyn(exudyn_dir, n, steps, h, modified):
+def exudyn(exudyn_dir, n, steps, h, modified, model="A3"):
     os.makedirs(WORK, exist_ok=True)
     script = os.path.join(WORK, "exudyn_a3.py")
     with open(script, "w") as f:
         f.write(EXUDYN_SCRIPT)
     env = dict(ENV, PYTHONPATH=os.path.join(exudyn_dir, "pythonDev") + os.pathsep + exudyn_dir)
-    out, wall, rss = run_timed(["/usr/bin/python3", script, str(n), str(steps), str(h), "1" if modified else "0",
-                                "1" if n > 8 else "0"], env=env)
+    try:
+        out, wall, rss = run_timed(["/usr/bin/python3", script, str(n), str(steps), str(h), "1" if modified else "0",
+                                    "1" if n > 8 else "0", model], env=env)
+    except RuntimeError as err:  # Exudyn's solver gave up ("DYNAMIC SOLVER FAILED")
+        print(f"  exudyn {n} elements, {'modified' if modified else 'full'} Newton failed: {str(err).splitlines()[0]}")
+        return {"integration": float("nan"), "process": float("nan"), "rss": float("nan"), "failed": True}
     r = json.loads(out.strip().splitlines()[-1])
     r.update(process=wall, rss=rss)
     return r

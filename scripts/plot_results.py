@@ -17,6 +17,9 @@ usage: scripts/plot_results.py result.h5 [-o out.png] [--step K] [--mode N | --m
 Displacements are drawn true to scale when they are visible (at least 2 % of the model size);
 smaller ones, and mode shapes (normalized), are scaled to 10 % of the model size and the factor
 is in the title (--scale S sets it). Node numbers (scene numbering) are drawn up to 200 nodes.
+With SPACAR Light's element look in the scene (eprops color, opacity, hide: /mesh/<kind>_color,
+_opacity, _visible) the deformed shape is drawn in the element colours and opacities, and hidden
+elements are drawn in neither shape.
 Positions are in m (Sinew's scenes are SI). Prints the file written and its title; the PNG also
 carries the title in its metadata ("Title")."""
 import argparse
@@ -59,9 +62,18 @@ class Result:
             # rows after form finding deform the found shape (the last form-finding row, design.md)
             self.nff = len(f["formfinding/residual"]) if "formfinding/residual" in f else 0
             self.cells = []
+            self.colors = None  # per drawn cell (r, g, b, opacity) when the scene gives the element look
+            self.hidden = 0
             for kind in ("lines", "triangles", "quads"):
                 if f"mesh/{kind}" in f and "mesh/p" in f:
-                    self.cells += [np.asarray(c) for c in f[f"mesh/{kind}"][()]]
+                    conn = [np.asarray(c) for c in f[f"mesh/{kind}"][()]]
+                    if f"mesh/{kind}_color" in f:
+                        rgb, alpha = f[f"mesh/{kind}_color"][()], f[f"mesh/{kind}_opacity"][()]
+                        shown = f[f"mesh/{kind}_visible"][()] > 0
+                        self.colors = (self.colors or []) + [(*c, a) for c, a, v in zip(rgb, alpha, shown) if v]
+                        self.hidden += int(np.count_nonzero(~shown))
+                        conn = [c for c, v in zip(conn, shown) if v]
+                    self.cells += conn
             self.stepname = "time" if "time" in f else "load_factor" if "load_factor" in f else None
             self.stepvalue = f[self.stepname][()] if self.stepname else None
             self.freq = f["freq"][()] if "freq" in f else None
@@ -173,16 +185,23 @@ class Canvas:
             a.remove()
         self.artists = []
 
-    def shape(self, mesh_pts, cells, node_pts, **style):
-        segs = []
-        for c in cells:
+    def shape(self, mesh_pts, cells, node_pts, colors=None, **style):
+        """colors: (r, g, b, opacity) per cell (the scene's element look) instead of style's colour."""
+        node_style = dict(color=style.get("color"), alpha=style.get("alpha", 1.0))
+        segs, segcolors = [], []
+        for i, c in enumerate(cells):
             ring = np.append(c, c[0]) if len(c) > 2 else c
             segs += [mesh_pts[ring[m:m + 2]][:, self.idx] for m in range(len(ring) - 1)]
+            if colors is not None:
+                segcolors += [colors[i]] * (len(ring) - 1)
         if segs:
+            if colors is not None:
+                style = {k: v for k, v in style.items() if k not in ("color", "alpha")}
+                style["colors"] = segcolors
             coll = Line3DCollection(segs, **style) if self.view == "3d" else LineCollection(segs, **style)
             self.artists.append(self.ax.add_collection(coll))
         pts = node_pts[:, self.idx]
-        self.artists.append(self.ax.scatter(*pts.T, s=10, color=style.get("color"), alpha=style.get("alpha", 1.0),
+        self.artists.append(self.ax.scatter(*pts.T, s=10, color=node_style["color"], alpha=node_style["alpha"],
                                             zorder=3))
 
     def labels(self, node_pts):
@@ -268,6 +287,8 @@ def main():
     size = res.size()
     labels = a.labels == "on" or (a.labels == "auto" and len(res.node_p0) <= LABEL_LIMIT)
     print(f"node numbers: {'drawn' if labels else 'not drawn'} ({len(res.node_p0)} nodes)")
+    if res.colors is not None:
+        print(f"element look from the scene (color, opacity, hide): {res.hidden} hidden cell(s) not drawn")
     base = os.path.splitext(a.h5)[0]
     grey = dict(color="0.6", lw=1.0, alpha=0.8)
     blue = dict(color="tab:blue", lw=1.6)
@@ -304,7 +325,7 @@ def main():
         canvas = Canvas(choose_view(a.view, [ref, moved]), [ref, moved])
         canvas.shape(ref, res.cells, ref_nodes, **grey)
         moved_nodes = res.mode_nodes(k, s * shape)
-        canvas.shape(moved, res.cells, moved_nodes, **blue)
+        canvas.shape(moved, res.cells, moved_nodes, colors=res.colors, **blue)
         if labels:
             canvas.labels(moved_nodes)
         title = f"{res.title}\n{what} ({res.state(k)}; shape x {s:g})"
@@ -316,10 +337,11 @@ def main():
     deformed_nodes = res.ref_nodes(k) + s * (res.node_p[k] - res.ref_nodes(k))
     canvas = Canvas(choose_view(a.view, [res.mesh_p0[k], deformed]), [res.mesh_p0[k], deformed])
     canvas.shape(res.mesh_p0[k], res.cells, res.ref_nodes(k), **grey)
-    canvas.shape(deformed, res.cells, deformed_nodes, **blue)
+    canvas.shape(deformed, res.cells, deformed_nodes, colors=res.colors, **blue)
     if labels:
         canvas.labels(deformed_nodes)
-    title = f"{res.title}\ndeformed (blue) and {res.ref_name(k)} (grey), {res.state(k)}{scaled(s)}"
+    drawn = "scene colours" if res.colors is not None else "blue"
+    title = f"{res.title}\ndeformed ({drawn}) and {res.ref_name(k)} (grey), {res.state(k)}{scaled(s)}"
     canvas.title(title)
     save_png(canvas, a.output or base + f"_step{k + 1}.png", title)
     return 0
@@ -335,7 +357,7 @@ def write_gif(canvas, out, fps, frames, res, grey, blue, labels, titles, k_ref, 
     with writer.saving(canvas.fig, out, dpi=90):
         for (mesh_pts, node_pts, _), title in zip(frames, titles):
             canvas.clear()
-            canvas.shape(mesh_pts, res.cells, node_pts, **blue)
+            canvas.shape(mesh_pts, res.cells, node_pts, colors=res.colors, **blue)
             if labels:
                 canvas.labels(node_pts)
             canvas.title(title)

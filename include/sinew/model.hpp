@@ -110,6 +110,9 @@ struct ContinuationOptions {
 
 struct Options {
   int loadsteps = 10;
+  /// Sinew: "spacar" (SPACAR Light's load steps: step 1 = initial loads alone, then (k-1)/(n-1)) or
+  /// "uniform" (k/n, Sinew's former steps)
+  std::string load_ramp = "spacar";
   bool calcbuck = false;
   bool calccompl = true;
   std::optional<bool> calcfreq;       ///< Sinew: default = scene has inertia
@@ -120,6 +123,7 @@ struct Options {
   std::string filename;
   bool stressperelement = false, rigidstress = false;
   bool showinputonly = false, silent = false;
+  bool spavisual = false, customvis = false;  ///< SPACAR Light visualization options (accepted; Sinew writes XDMF)
   std::vector<int> compliance_nodes;  ///< 0-based; empty = all nodes
   std::optional<DynamicsOptions> dynamics;
   std::optional<ContinuationOptions> continuation;
@@ -160,6 +164,9 @@ struct Model {
   std::map<int, NodeProps> nprops;     ///< 0-based node -> properties
   std::vector<ElementSet> eprops;
   std::vector<int> elementSet;         ///< per element: eprops index, -1 = rigid (no set)
+  /// Nodes 0 .. connectedNodes-1 reach the last node an element connects; the nodes after it are
+  /// trailing unconnected nodes (allowed as in SPACAR Light: held fixed, no unknowns)
+  std::size_t connectedNodes = 0;
   Options opt;
   std::optional<FormFinding> formfinding;
   std::vector<Sensor> sensors;

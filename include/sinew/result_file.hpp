@@ -27,11 +27,21 @@ struct ResultLayout {
   /// with /mesh/<kind>_element holding the 1-based scene element of each cell.
   std::vector<long> lines, triangles, quads;
   std::vector<long> lineElement, triangleElement, quadElement;
+  /// SPACAR Light's element look (eprops color, opacity, hide), when the scene sets any (the same on
+  /// every rank): per cell of this rank, in the order of lines / triangles / quads, 5 values r, g, b
+  /// (0..1), opacity, visible (0 for hide) -> /mesh/<kind>_color [*, 3], _opacity, _visible [*] and
+  /// the XDMF cell attributes of the same names.
+  bool look = false;
+  std::vector<double> lineLook, triangleLook, quadLook;
   int dimension = 3;
   // root attributes
   std::string version, scene;
-  long ndof = 0;
+  long ndof = 0;           ///< SPACAR Light's ndof: kinematic DOFs = free node coordinates - rigid-mode constraints
+  long nunknowns = 0;      ///< equations solved: free node coordinates + constraint multipliers
+  long nnodedofs = 0;      ///< free node coordinates (supports and prescribed motions eliminated)
+  long nconstraints = 0;   ///< rigid deformation modes held exactly (Lagrange multipliers)
   int nranks = 1;
+  bool inputOnly = false;  ///< opt.showinputonly: root attribute showinputonly = 1
   std::string stepName = "load_factor";  ///< "load_factor" or "time"
 };
 

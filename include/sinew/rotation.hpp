@@ -15,7 +15,7 @@ Mat3 dexpSO3(const Vec3& theta);
 Vec3 logSO3(const Mat3& R);
 /// Unit quaternion [q0, q1, q2, q3] (scalar first, q0 >= 0) of R.
 std::array<double, 4> quaternionOf(const Mat3& R);
-/// Axis-angle [ax, ay, az, angle] of R, angle in [0, pi]; axis [1, 0, 0] for angle 0.
+/// SPACAR Light's `r_axang` order: [angle (rad, in [0, pi]), axis_x, axis_y, axis_z]; identity: [0, 1, 0, 0].
 std::array<double, 4> axisAngleOf(const Mat3& R);
 /// Euler angles ZYX [rz, ry, rx] of R = Rz(rz) Ry(ry) Rx(rx).
 Vec3 eulerZYXOf(const Mat3& R);

@@ -278,6 +278,16 @@ PetscErrorCode StaticAnalysis::solveIncrement(Vec U, double lambda, bool* ok, in
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+// SPACAR Light's load steps: step 1 is the state under the initial loads (`force_initial`,
+// `moment_initial`, `pressure_initial`) and initial prescribed motions (`displ_initial_*`,
+// `rot_initial`) alone; the standard loads and motions ramp linearly over the remaining steps and
+// reach their value at the last one: lambda_k = (k - 1) / (n - 1). One step is the full load.
+// opt.load_ramp uniform: lambda_k = k / n (initial loads and the first increment solved together).
+double StaticAnalysis::stepFactor(int step) const {
+  if (uniform_ || loadsteps_ == 1) return static_cast<double>(step) / loadsteps_;
+  return static_cast<double>(step - 1) / (loadsteps_ - 1);
+}
+
 PetscErrorCode StaticAnalysis::run(Vec U, const StepCallback& onStep, bool* converged) {
   PetscFunctionBeginUser;
   MPI_Comm comm = asm_.mesh().comm;
@@ -290,7 +300,7 @@ PetscErrorCode StaticAnalysis::run(Vec U, const StepCallback& onStep, bool* conv
   // adaptive increments: a halved increment grows back (x2 after an increment that converged in at
   // most -increment_grow_its Newton iterations), never beyond the user's load step; the size carries
   // over to the next load step, so a hard stretch is not retried at full size step after step
-  const double dlMax = 1.0 / loadsteps_;
+  const double dlMax = loadsteps_ == 1 ? 1.0 : stepFactor(2) - stepFactor(1);
   double dlAdapt = resumed_ ? progress_.dlAdapt : dlMax;
   *converged = true;
   double lambda = resumed_ ? progress_.lambda : 0.0;
@@ -300,13 +310,16 @@ PetscErrorCode StaticAnalysis::run(Vec U, const StepCallback& onStep, bool* conv
     PetscCall(asm_.setMixedReference(U, start));
   }
   for (int step = (resumed_ ? progress_.step : 0) + 1; step <= lastStep_; ++step) {
-    const double target = static_cast<double>(step) / loadsteps_;
+    const double target = stepFactor(step);
     StepReport rep;
     rep.step = step;
     double dl = adaptive_ ? std::min(dlAdapt, target - lambda) : target - lambda;
     int cuts = 0;
     bool predictNext = true;
-    while (lambda < target) {
+    // SPACAR Light's step 1 (target 0): one solve under the initial loads and motions alone
+    bool initialSolve = target == 0.0 && !startIsInitial_;
+    while (lambda < target || initialSolve) {
+      initialSolve = false;
       const double next = target - (lambda + dl) < 1e-9 * dlMax ? target : lambda + dl;  // no sliver increments
       PetscCall(VecCopy(U, Usave));
       const auto Rsave = asm_.referenceRotations();
@@ -336,10 +349,11 @@ PetscErrorCode StaticAnalysis::run(Vec U, const StepCallback& onStep, bool* conv
         PetscCall(asm_.residual(U, ls_, F_));  // line searches may end on a trial evaluation
         fintConverged_ = asm_.internalForceNorm();
         PetscCall(asm_.setMixedReference(U, ls_));  // the next increment's stresses start from this state
-        dlPrev = next - lambda;
+        const bool initialIncrement = next == lambda;  // step 1 of SPACAR Light's steps: no increment size to adapt
+        if (!initialIncrement) dlPrev = next - lambda;
         PetscCall(asm_.absorbRotations(U));
         lambda = next;
-        if (adaptive_) {
+        if (adaptive_ && !initialIncrement) {
           if (its <= growIts_) dl = std::min(2.0 * dl, dlMax);
           dlAdapt = dl;
         }
@@ -363,13 +377,19 @@ PetscErrorCode StaticAnalysis::run(Vec U, const StepCallback& onStep, bool* conv
         predictNext = false;
         continue;
       }
-      if (++cuts > maxCuts_) {
+      if (next == lambda || ++cuts > maxCuts_) {  // the initial loads alone (step 1, load factor 0) cannot be cut
         std::ostringstream msg;
         msg << "load step " << step << " of " << lastStep_ << " did not converge: Newton stopped at load factor "
-            << next << " (" << SNESConvergedReasons[why] << ", residual norm " << fnorm << ") after " << maxCuts_
-            << " halvings of the increment (last converged load factor " << lambda
-            << "). Try more load steps (-loadsteps), a line search (-snes_linesearch_type bt|l2), "
-               "-snes_monitor to watch the residual, or check supports and rigid modes for a mechanism.";
+            << next << " (" << SNESConvergedReasons[why] << ", residual norm " << fnorm << ")";
+        if (next == lambda)
+          msg << " under the initial loads and prescribed motions alone (SPACAR Light's step 1: they act in full, "
+                 "in one increment that cannot be cut). Try moving part of them to the ramped loads and motions "
+                 "(force, moment, displ_*, rot instead of *_initial), a line search (-snes_linesearch_type bt|l2), "
+                 "-snes_monitor to watch the residual, or check supports and rigid modes for a mechanism.";
+        else
+          msg << " after " << maxCuts_ << " halvings of the increment (last converged load factor " << lambda
+              << "). Try more load steps (-loadsteps), a line search (-snes_linesearch_type bt|l2), "
+                 "-snes_monitor to watch the residual, or check supports and rigid modes for a mechanism.";
         // a tangent with Inf/NaN entries is no singular model: MUMPS refuses it, PETSc's LU may not, so
         // the constraint check it would trigger could name a mechanism on some rank counts only
         linearFailed_ = why == SNES_DIVERGED_LINEAR_SOLVE && tangentFinite_;

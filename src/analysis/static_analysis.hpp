@@ -40,12 +40,14 @@ class StaticAnalysis {
   /// options prefix "" -> -snes_*, -ksp_*, -pc_* act on this solver.
   StaticAnalysis(Assembler& assembler, int loadsteps);
   ~StaticAnalysis();
-  /// Solves the steps k/loadsteps, k = 1..loadsteps, from U (in: start state, out: last
-  /// converged state). onStep runs after each converged step. Sets converged and, when it fails,
+  /// Solves the load steps from U (in: start state, out: last converged state): SPACAR Light's
+  /// steps by default (step 1 = initial loads and prescribed motions alone, load factor 0; step k
+  /// at (k-1)/(loadsteps-1)), Sinew's uniform ramp k/loadsteps after setUniformRamp(true) (see
+  /// stepFactor). onStep runs after each converged step. Sets converged and, when it fails,
   /// failureMessage (step, residual, what to try).
   using StepCallback = std::function<PetscErrorCode(const StepReport&, Vec U)>;
   PetscErrorCode run(Vec U, const StepCallback& onStep, bool* converged);
-  /// Steps run() goes to (default loadsteps): the load factor of step k stays k / loadsteps, so a
+  /// Steps run() goes to (default loadsteps): the load factor of step k stays stepFactor(k), so a
   /// larger last step continues the ramp beyond load factor 1 with the same increment.
   void setLastStep(int last) { lastStep_ = last; }
   /// Continues after step p.step (a checkpoint; U, the reference rotations and the element states
@@ -66,6 +68,13 @@ class StaticAnalysis {
   /// The loop ends after the step whose onStep set *stop (an interrupt or a failed result file);
   /// the run is then neither converged nor failed here: the caller knows why it stopped.
   void setStopFlag(const bool* stop) { stop_ = stop; }
+  /// opt.load_ramp uniform: step k at load factor k/loadsteps (Sinew's former steps).
+  void setUniformRamp(bool u) { uniform_ = u; }
+  /// Nothing acts at load factor 0 (no initial loads or motions): SPACAR Light's step 1 is the start
+  /// state, reported without a solve.
+  void setStartIsInitialState(bool s) { startIsInitial_ = s; }
+  /// Load factor of 1-based load step k (SPACAR Light: 0 at step 1, 1 at the last step).
+  double stepFactor(int step) const;
 
   SNES snes() const { return snes_; }
   /// The cable coarse space in use (nullptr when none).
@@ -88,6 +97,8 @@ class StaticAnalysis {
   StaticsProgress progress_;
   bool resumed_ = false;
   Vec dU_ = nullptr;  ///< last converged increment (secant predictor)
+  bool uniform_ = false;
+  bool startIsInitial_ = false;
   SNES snes_ = nullptr;
   Mat J_ = nullptr;
   Mat Jop_ = nullptr;  ///< element-wise tangent operator (MATSHELL) when -tangent_operator elementwise

@@ -45,16 +45,38 @@ Plan makePlan(const Model& model) {
   p.compliance = model.opt.calccompl && beams && model.dimension == 3;
   p.transfer = model.opt.transfer;
   if (p.transfer) {
-    // SPACAR Light builds the state-space model about an unloaded equilibrium: refuse load ramps
-    auto loadPath = [](int node, const char* field) { return "nprops." + std::to_string(node + 1) + "." + field; };
+    // SPACAR Light builds the state-space model about the unloaded reference configuration: it
+    // refuses loads and prescribed motions (standard and initial) and buckling with `transfer`
+    if (model.opt.calcbuck)
+      throw SceneError("opt.calcbuck", "buckling together with opt.transfer: SPACAR Light computes the state-space model "
+                                       "of the unloaded structure and no buckling with it; set opt.calcbuck: false or "
+                                       "opt.transfer: false");
+    auto loadPath = [](int node, const std::string& field) { return "nprops." + std::to_string(node + 1) + "." + field; };
     for (const auto& [node, np] : model.nprops) {
-      const char* field = norm(np.force) != 0.0 ? "force" : (norm(np.moment) != 0.0 ? "moment" : nullptr);
-      if (field)
+      std::string field;
+      const char* axes[3] = {"x", "y", "z"};
+      if (norm(np.force) != 0.0) field = "force";
+      else if (norm(np.moment) != 0.0) field = "moment";
+      else if (norm(np.force_initial) != 0.0) field = "force_initial";
+      else if (norm(np.moment_initial) != 0.0) field = "moment_initial";
+      else if (np.rot) field = "rot";
+      else if (np.rot_initial) field = "rot_initial";
+      for (int k = 2; k >= 0; --k) {
+        if (np.displ_initial[k]) field = std::string("displ_initial_") + axes[k];
+        if (np.displ[k]) field = std::string("displ_") + axes[k];
+      }
+      if (!field.empty()) {
+        const bool motion = field.rfind("displ", 0) == 0 || field.rfind("rot", 0) == 0;
         throw SceneError(loadPath(node, field),
-                         std::string("applied load together with opt.transfer: the state-space model is linearized "
-                                     "about an unloaded equilibrium (as in SPACAR Light); remove ") +
+                         std::string(motion ? "prescribed motion" : "applied load") +
+                             " together with opt.transfer: the state-space model is linearized about the unloaded "
+                             "equilibrium (as in SPACAR Light, which refuses loads and prescribed motions with transfer); remove " +
                              loadPath(node, field) + " or set opt.transfer: false");
+      }
     }
+    if (model.opt.gravity && norm(*model.opt.gravity) != 0.0)
+      throw SceneError("opt.gravity", "applied load together with opt.transfer: the state-space model is linearized about "
+                                      "the unloaded equilibrium (as in SPACAR Light); remove opt.gravity or set opt.transfer: false");
     bool in = false, out = false;
     for (const auto& [node, np] : model.nprops) {
       in |= !np.transfer_in.empty();

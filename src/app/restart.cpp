@@ -257,6 +257,13 @@ void Restart::check(MPI_Comm comm, const std::string& src, const std::string& pa
   if (ph == CheckpointPhase::Statics && (!plan.statics || plan.continuation || plan.dynamics))
     throw SceneError("-restart", path + " holds a statics checkpoint; this scene runs " +
                                      (plan.dynamics ? "dynamics (opt.dynamics)" : "path following (opt.continuation)"));
+  if (ph == CheckpointPhase::Statics) {
+    const std::string ramp = sc[kCkLoadRamp] != 0.0 ? "uniform" : "spacar";
+    if (ramp != model.opt.load_ramp)
+      throw SceneError("opt.load_ramp", "the run that wrote " + path + " had opt.load_ramp " + ramp + ", this scene has " +
+                                            model.opt.load_ramp + ": a restart continues the same load steps (give -load_ramp " +
+                                            ramp + ")");
+  }
   if (ph == CheckpointPhase::Continuation && !plan.continuation)
     throw SceneError("-restart", path + " holds a path-following checkpoint; this scene has no opt.continuation");
   if (ph == CheckpointPhase::Continuation &&

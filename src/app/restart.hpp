@@ -2,8 +2,9 @@
 // (output/checkpoint.hpp; docs/results.md "Restart"). The new result file starts with copies of
 // the earlier run's step rows (0 .. rows - 1 of its checkpoint), then the analysis continues:
 //   form finding  from the next URS step (or, when form finding had ended, with the load analysis),
-//   statics       from the next load step; the load factor of step k stays k / loadsteps of the
-//                 earlier run, so -loadsteps N beyond it continues the ramp past load factor 1,
+//   statics       from the next load step; the load factor of step k stays that of the earlier run
+//                 (its loadsteps and opt.load_ramp: StaticAnalysis::stepFactor), so -loadsteps N
+//                 beyond it continues the ramp past load factor 1 (another opt.load_ramp is refused),
 //   dynamics      from the next time step to the scene's (possibly later) tend,
 //   path following after the last path point (its step size, increment, points and critical points).
 // A scene that differs from the earlier one (nodes, elements, eprops, supports, form-finding block) is

@@ -16,6 +16,7 @@
 #include "analysis/step_analysis.hpp"
 #include "analysis/step_results.hpp"
 #include "app/command_line.hpp"
+#include "app/input_summary.hpp"
 #include "app/interrupt.hpp"
 #include "app/plan.hpp"
 #include "app/restart.hpp"
@@ -56,6 +57,15 @@ std::string outputPath(const Model& model, const std::string& scenePath) {
   return stem + ".h5";
 }
 
+/// "3, 5, 8 and 12 more" of 0-based element numbers.
+std::string elementList(const std::vector<int>& elems) {
+  std::string s;
+  const std::size_t shown = std::min<std::size_t>(elems.size(), 5);
+  for (std::size_t i = 0; i < shown; ++i) s += (i ? ", " : "") + std::to_string(elems[i] + 1);
+  if (elems.size() > shown) s += " and " + std::to_string(elems.size() - shown) + " more";
+  return s;
+}
+
 void warnings(MPI_Comm comm, const Model& model) {
   for (const std::string& w : model.warnings) PetscPrintf(comm, "warning: %s\n", w.c_str());
   if (model.formfinding) {  // form-found sets without prestress (issue 10 item 17)
@@ -74,6 +84,25 @@ void warnings(MPI_Comm comm, const Model& model) {
                     set, cable ? "cable" : "membrane", set + 1, cable ? "prestress / prestress_stress" : "prestress [s11, s22, s12]");
     }
   }
+  if (model.nodes.size() > model.connectedNodes) {
+    const std::size_t first = model.connectedNodes + 1, last = model.nodes.size();
+    PetscPrintf(comm,
+                "warning: node%s %zu%s%s %s not connected to any element (trailing nodes, allowed as in SPACAR Light): "
+                "held fixed at %s input position%s, no unknowns\n",
+                first == last ? "" : "s", first, first == last ? "" : "..", first == last ? "" : std::to_string(last).c_str(),
+                first == last ? "is" : "are", first == last ? "its" : "their", first == last ? "" : "s");
+  }
+  for (size_t set = 0; set < model.eprops.size(); ++set) {
+    const ElementSet& s = model.eprops[set];
+    if (s.type == ElementType::Beam && s.cshape == CrossSection::Rect && !s.orien && !s.elems.empty())
+      PetscPrintf(comm,
+                  "warning: eprops[%zu] element%s %s: cshape rect without orien (SPACAR Light requires it); the width "
+                  "dim[0] is taken along the global z axis (global y for an element along z): give orien\n",
+                  set, s.elems.size() > 1 ? "s" : "", elementList(s.elems).c_str());
+  }
+  if (model.opt.customvis)
+    PetscPrintf(comm, "note: opt.customvis (SPACAR Light's custom visualization) is accepted but not drawn by Sinew; "
+                      "the XDMF file beside the result file shows the mesh (eprops color, opacity, hide)\n");
   for (size_t set = 0; set < model.eprops.size(); ++set) {
     const ElementSet& s = model.eprops[set];
     if (s.type != ElementType::Beam) continue;
@@ -91,6 +120,22 @@ void warnings(MPI_Comm comm, const Model& model) {
   }
 }
 
+/// SPACAR Light's element look (eprops color, opacity, hide) per visualization cell, in the order of
+/// StepResults::fillLayout, when any set gives one: /mesh/<kind>_color, _opacity, _visible and the
+/// XDMF cell attributes, drawn by scripts/plot_input.py and plot_results.py. Cells without a colour
+/// are blue (the first colour of the seed's table), rigid elements (in no set) grey.
+void fillLook(const Model& model, const DistributedMesh& mesh, ResultLayout& layout) {
+  for (const ElementSet& s : model.eprops) layout.look |= s.color.has_value() || s.opacity != 1.0 || s.hide;
+  if (!layout.look) return;
+  const std::array<double, 3> blue{0.0, 0.447, 0.741}, grey{0.7, 0.7, 0.7};
+  for (const LocalElement& el : mesh.elements) {
+    auto& look = el.numNodes == 2 ? layout.lineLook : (el.numNodes == 3 ? layout.triangleLook : layout.quadLook);
+    const ElementSet* s = el.set >= 0 ? &model.eprops[static_cast<std::size_t>(el.set)] : nullptr;
+    const std::array<double, 3> c = s ? s->color.value_or(blue) : grey;
+    look.insert(look.end(), {c[0], c[1], c[2], s ? s->opacity : 1.0, s && s->hide ? 0.0 : 1.0});
+  }
+}
+
 /// No external load of any kind: no gravity, massProportionalLoad or pressure (a zero vector, gravity
 /// [0, 0], is none), and zero nodal loads and prescribed motions on every node (collective).
 bool unloaded(const Model& model, const DistributedMesh& mesh, const Assembler& assembler) {
@@ -103,6 +148,25 @@ bool unloaded(const Model& model, const DistributedMesh& mesh, const Assembler& 
   }
   MPI_Allreduce(MPI_IN_PLACE, &loaded, 1, MPI_INT, MPI_LOR, mesh.comm);
   return !loaded;
+}
+
+/// Anything acting at load factor 0 (SPACAR Light's step 1): initial loads, pressures and prescribed
+/// motions, cable and membrane prestress, ANCF reference strains/curvatures and force laws, a
+/// form-found start state. Without any, step 1 is the start state itself and needs no solve.
+bool initiallyLoaded(const Model& model, const DistributedMesh& mesh) {
+  int loaded = model.formfinding.has_value();
+  for (const ElementSet& s : model.eprops) {
+    loaded |= s.pressure_initial != 0.0 || s.physicsReferenceAxialStrain != 0.0 || s.physicsReferenceCurvature != 0.0;
+    loaded |= (s.prestress && *s.prestress != 0.0) || (s.prestress_stress && *s.prestress_stress != 0.0);
+    for (double p : s.membrane_prestress) loaded |= p != 0.0;
+    loaded |= !s.axialForceUserFunction.empty() || !s.bendingMomentUserFunction.empty();
+  }
+  for (const LocalNode& n : mesh.nodes) {
+    for (int k = 0; k < 6; ++k) loaded |= n.loadInitial[k] != 0.0 || n.prescribedInitial[k] != 0.0;
+    for (int k = 0; k < 3; ++k) loaded |= n.rotInitial[k] != 0.0;
+  }
+  MPI_Allreduce(MPI_IN_PLACE, &loaded, 1, MPI_INT, MPI_LOR, mesh.comm);
+  return loaded;
 }
 
 /// -constraint_check (default true) and -constraint_check_max_unknowns: whether the model is checked.
@@ -325,12 +389,31 @@ PetscErrorCode runScene(int argc, char** argv, int* exitCode) {
   StepResults results(assembler, {plan.stress, plan.stressPerElement});
   ResultLayout layout;
   results.fillLayout(layout);
+  fillLook(model, *dmesh, layout);
   layout.version = sinewVersion();
   layout.scene = model.sceneText;
-  layout.ndof = dmesh->numGlobalUnknowns;
+  {  // SPACAR Light's ndof: free node coordinates minus the rigid-mode constraints (no multipliers)
+    long free = 0;
+    for (int i = 0; i < dmesh->numOwnedNodes; ++i) {
+      const LocalNode& n = dmesh->nodes[static_cast<std::size_t>(i)];
+      for (int k = 0; k < n.ndof; ++k) free += n.status[k] == DofStatus::Free;
+    }
+    MPI_Allreduce(MPI_IN_PLACE, &free, 1, MPI_LONG, MPI_SUM, comm);
+    layout.nunknowns = dmesh->numGlobalUnknowns;
+    layout.nnodedofs = free;
+    layout.nconstraints = dmesh->numGlobalUnknowns - free;
+    layout.ndof = free - layout.nconstraints;
+  }
   layout.nranks = dmesh->size;
+  layout.inputOnly = model.opt.showinputonly;
   if (plan.dynamics) layout.stepName = "time";
   int nranks = dmesh->size;
+  std::string inputText;  // opt.showinputonly: what was read (before the global arrays go)
+  if (model.opt.showinputonly) {
+    long feElements = static_cast<long>(dmesh->elements.size());
+    MPI_Allreduce(MPI_IN_PLACE, &feElements, 1, MPI_LONG, MPI_SUM, comm);
+    inputText = inputSummary(model, {dmesh->numFeNodes, feElements, dmesh->numGlobalUnknowns, layout.ndof});
+  }
   // the global model arrays are not needed past set-up
   std::vector<Vec3> initialPositions;
   if (dmesh->rank == 0) initialPositions = model.nodes;
@@ -343,9 +426,9 @@ PetscErrorCode runScene(int argc, char** argv, int* exitCode) {
   model.elementSet.shrink_to_fit();
   times.setup = MPI_Wtime() - t0;
 
-  SummaryHeader header{model.title, scenePath, nranks, dmesh->numGlobalUnknowns, plan.describe(model)};
+  SummaryHeader header{model.title, scenePath, nranks, dmesh->numGlobalUnknowns, plan.describe(model), model.opt.showinputonly};
   if (!model.opt.silent) PetscCall(printHeader(comm, header));
-  if (!model.opt.silent && nranks > 1) {  // partition balance: elements, owned unknowns, ghosts per rank
+  if (!model.opt.silent && nranks > 1 && !model.opt.showinputonly) {  // partition balance: elements, owned unknowns, ghosts per rank
     long mine[3] = {static_cast<long>(dmesh->elements.size()), dmesh->numOwnedUnknowns,
                     static_cast<long>(dmesh->ghostUnknowns.size())};
     long lo[3], hi[3];
@@ -386,7 +469,7 @@ PetscErrorCode runScene(int argc, char** argv, int* exitCode) {
   ctx.guardedWrite([&] { file->writeArray("node/p0", p0, {static_cast<long>(initialPositions.size()), 3}); });
   PetscCall(assembler.createVector(&ctx.U));
   PetscCall(VecSet(ctx.U, 0.0));
-  {
+  if (!model.opt.showinputonly) {  // an input-only run computes nothing
     PhaseScope phase("the set-up of the analyses");
     PetscCall(addStepAnalyses(ctx));
   }
@@ -430,13 +513,8 @@ PetscErrorCode runScene(int argc, char** argv, int* exitCode) {
   if (!ctx.ioError.empty()) {
     // nothing to do: the file error is reported below
   } else if (model.opt.showinputonly) {
-    LoadState ls;
-    PetscErrorCode ierr = PETSC_SUCCESS;
-    ctx.guardedWrite([&] {
-      file->beginStep(ctx.nextStep++, 0.0);
-      ierr = results.write(*file, ctx.U, ls);
-    });
-    PetscCall(ierr);
+    // SPACAR Light's input check: the file holds the input geometry (/node/p0, /mesh/p0, the cells,
+    // the element look), no step rows; converged = 0 and showinputonly = 1 (nothing was solved)
   } else {
     if (runFF) {
       PhaseScope phase("form finding");
@@ -455,12 +533,15 @@ PetscErrorCode runScene(int argc, char** argv, int* exitCode) {
       PhaseScope phase("statics");
       const double tStatics = MPI_Wtime();
       const double outBefore = ctx.times.output, anaBefore = ctx.times.analyses;
-      // a restart keeps the earlier run's ramp (load factor k / its loadsteps); -loadsteps is the last step
+      // a restart keeps the earlier run's ramp (its loadsteps and opt.load_ramp, checked equal by Restart):
+      // -loadsteps is the last step, the load factor of step k stays StaticAnalysis::stepFactor(k)
       const int ramp = resumeStatics ? restart->rampLoadsteps() : model.opt.loadsteps;
       StaticAnalysis statics(assembler, ramp);
       statics.setLastStep(model.opt.loadsteps);
       statics.setUnloaded(unloaded(model, *dmesh, assembler));
       statics.setStopFlag(&ctx.stop);
+      statics.setUniformRamp(model.opt.load_ramp == "uniform");
+      statics.setStartIsInitialState(!initiallyLoaded(model, *dmesh));
       if (resumeStatics) PetscCall(restart->resumeStatics(ctx, statics));
       ctx.checkpointState = [&](CheckpointData& d) -> PetscErrorCode {
         const StaticsProgress& p = statics.progress();
@@ -468,6 +549,7 @@ PetscErrorCode runScene(int argc, char** argv, int* exitCode) {
         d.scalars[kCkStep] = p.step;
         d.scalars[kCkStepValue] = p.lambda;
         d.scalars[kCkLoadsteps] = ramp;
+        d.scalars[kCkLoadRamp] = model.opt.load_ramp == "uniform" ? 1.0 : 0.0;
         d.scalars[kCkLambda] = p.lambda;
         d.scalars[kCkDlPrev] = p.dlPrev;
         d.scalars[kCkDlAdapt] = p.dlAdapt;
@@ -518,7 +600,7 @@ PetscErrorCode runScene(int argc, char** argv, int* exitCode) {
   }
 
   const double tClose = MPI_Wtime();
-  const bool completed = ctx.converged && ctx.interruptSignal == 0 && ctx.ioError.empty();
+  const bool completed = ctx.converged && ctx.interruptSignal == 0 && ctx.ioError.empty() && !model.opt.showinputonly;
   if (ctx.ioError.empty()) ctx.guardedWrite([&] { file->close(completed); });
   else {
     try {
@@ -543,6 +625,14 @@ PetscErrorCode runScene(int argc, char** argv, int* exitCode) {
     PetscCall(PetscPrintf(comm, "%s", msg.c_str()));
     PetscCall(VecDestroy(&ctx.U));
     *exitCode = ctx.ioError.empty() ? 5 : 1;
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  if (model.opt.showinputonly) {
+    if (!model.opt.silent)
+      PetscCall(PetscPrintf(comm, "%s\n  input geometry: %s (ParaView: %s)\n  picture: scripts/plot_input.py %s\n",
+                            inputText.c_str(), file->path().c_str(), file->xdmfPath().c_str(), file->path().c_str()));
+    PetscCall(VecDestroy(&ctx.U));
+    *exitCode = 0;
     PetscFunctionReturn(PETSC_SUCCESS);
   }
   SummaryBody body;

@@ -10,7 +10,7 @@ PetscErrorCode printHeader(MPI_Comm comm, const SummaryHeader& h) {
   PetscCall(PetscPrintf(comm, "Sinew %s\n", h.title.empty() ? "" : ("- " + h.title).c_str()));
   PetscCall(PetscPrintf(comm, "  scene %s, %d rank%s, %ld unknowns\n", h.scene.c_str(), h.nranks, h.nranks > 1 ? "s" : "",
                         h.unknowns));
-  PetscCall(PetscPrintf(comm, "  analyses: %s\n", h.plan.c_str()));
+  if (!h.inputOnly) PetscCall(PetscPrintf(comm, "  analyses: %s\n", h.plan.c_str()));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

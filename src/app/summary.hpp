@@ -23,6 +23,7 @@ struct SummaryHeader {
   int nranks = 1;
   long unknowns = 0;
   std::string plan;
+  bool inputOnly = false;  ///< opt.showinputonly: no analyses line
 };
 
 struct SummaryBody {

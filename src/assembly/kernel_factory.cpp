@@ -18,6 +18,20 @@ double sceneElementLength(const Model& model, int e) {
   const auto& en = model.elements[e];
   return norm(model.nodes[en[1]] - model.nodes[en[0]]);
 }
+
+/// beamSection of set `set` for scene element e; its errors ("eprops.smod") name the set and the
+/// element ("eprops[0].smod", as the scene check does).
+BeamSection sectionOf(const ElementSet& s, int set, const Model& model, int e) {
+  try {
+    return beamSection(s, sceneElementLength(model, e));
+  } catch (const SceneError& ex) {
+    const std::string field = ex.path().rfind("eprops.", 0) == 0 ? ex.path().substr(7) : std::string();
+    const std::string prefix = ex.path() + ": ";
+    const std::string what = std::string(ex.what()).rfind(prefix, 0) == 0 ? std::string(ex.what()).substr(prefix.size()) : ex.what();
+    throw SceneError("eprops[" + std::to_string(set) + "]" + (field.empty() ? "" : "." + field),
+                     what + " (element " + std::to_string(e + 1) + ")");
+  }
+}
 }  // namespace
 
 double constraintScaleOf(const Model& model) {
@@ -27,7 +41,7 @@ double constraintScaleOf(const Model& model) {
     if (set < 0 || model.eprops[set].type != ElementType::Beam) continue;
     const ElementSet& s = model.eprops[set];
     if (s.emod <= 0 || s.dim.empty()) continue;
-    const BeamSection sec = beamSection(s, sceneElementLength(model, static_cast<int>(e)));
+    const BeamSection sec = sectionOf(s, set, model, static_cast<int>(e));
     scale = std::max(scale, sec.EA * s.nbeams / sceneElementLength(model, static_cast<int>(e)));
   }
   return scale > 0 ? scale : 1.0;
@@ -73,12 +87,12 @@ KernelFactory makeKernelFactory(const Model& model) {
           const bool flexible = std::any_of(s.flex.begin(), s.flex.end(), [](bool b) { return b; });
           const bool needsSection = s.dens > 0 || flexible;
           if (needsSection) {
-            sec = beamSection(s, sceneElementLength(m, el.sceneElement));
+            sec = sectionOf(s, set, m, el.sceneElement);
           } else if (m.opt.rigidstress && s.cshape != CrossSection::None) {
             // rigid set reported with rigidstress: section geometry only (stresses from the multipliers)
             ElementSet geometry = s;
             geometry.dens = 1.0;
-            sec = beamSection(geometry, sceneElementLength(m, el.sceneElement));
+            sec = sectionOf(geometry, set, m, el.sceneElement);
             sec.rho = sec.rhoA = sec.rhoIy = sec.rhoIz = sec.rhoIp = 0.0;
           }
           // rigid elements are skipped in the stress output unless opt.rigidstress

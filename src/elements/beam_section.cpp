@@ -89,11 +89,15 @@ BeamSection beamSection(const ElementSet& set, double flexureLength) {
   s.rhoIz = s.rho * s.Iz;
   s.rhoIp = s.rho * s.Ip;
   if (flexible) {
-    requirePositive(set.emod, "emod", why);
-    requirePositive(set.smod, "smod", why);
+    // the same rule as the scene check (src/scene/eprops.cpp): E for elongation and bending (and
+    // cw), G for torsion and the shear deformation of bending
+    const auto& f = set.flex;
+    const bool bending = f[2] || f[3] || f[4] || f[5];
+    if (f[0] || bending || set.cw) requirePositive(set.emod, "emod", why);
+    if (f[1] || bending) requirePositive(set.smod, "smod", why);
     s.E = set.emod;
     s.G = set.smod;
-    s.nu = s.E / (2.0 * s.G) - 1.0;
+    s.nu = s.E > 0.0 && s.G > 0.0 ? s.E / (2.0 * s.G) - 1.0 : 0.0;
     if (!(s.nu > -1.0)) throw SceneError("eprops.smod", "emod/(2 smod) - 1 (Poisson's ratio of the shear coefficient) must be > -1");
     s.kappa = cowperShearCoefficient(s.shape, s.nu);
     s.Asy = s.Asz = s.kappa * s.A;
@@ -115,7 +119,8 @@ BeamSection beamSection(const ElementSet& set, double flexureLength) {
 }
 
 bool beamNeedsWarpingWarning(const ElementSet& set, double L) {
-  return set.type == ElementType::Beam && set.cshape == CrossSection::Rect && !set.cw && anyFlexible(set) &&
+  // only where torsion (deformation mode 2) is flexible: cw changes nothing else
+  return set.type == ElementType::Beam && set.cshape == CrossSection::Rect && !set.cw && set.flex[1] &&
          set.dim.size() == 2 && set.dim[0] > 0.0 && L / set.dim[0] < 3.0;
 }
 

@@ -37,7 +37,8 @@ double constrainedWarpingFactor(double L, double w, double nu);
 /// Throws SceneError when a quantity needed by the set (flexible modes, mass) is missing or <= 0.
 BeamSection beamSection(const ElementSet& set, double flexureLength);
 
-/// True for a rect flexible section without cw whose L / w < 3 (warping restraint matters).
+/// True for a rect section with flexible torsion (mode 2) without cw whose L / w < 3 (warping
+/// restraint matters).
 bool beamNeedsWarpingWarning(const ElementSet& set, double L);
 
 }  // namespace sinew

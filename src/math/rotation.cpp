@@ -83,8 +83,8 @@ std::array<double, 4> axisAngleOf(const Mat3& R) {
   const auto q = quaternionOf(R);
   const Vec3 v{q[1], q[2], q[3]};
   const double s = norm(v);
-  if (s < 1e-300) return {1.0, 0.0, 0.0, 0.0};
-  return {v[0] / s, v[1] / s, v[2] / s, 2.0 * std::atan2(s, q[0])};
+  if (s < 1e-300) return {0.0, 1.0, 0.0, 0.0};
+  return {2.0 * std::atan2(s, q[0]), v[0] / s, v[1] / s, v[2] / s};
 }
 
 // R = Rz(rz) Ry(ry) Rx(rx): R20 = -sin ry, R10/R00 = tan rz, R21/R22 = tan rx.

@@ -182,6 +182,9 @@ DistributedMesh distributeMesh(MPI_Comm comm, const Model& model, const FeMesh& 
     }
   for (int n = 0; n < nn; ++n)
     if (highest[n] >= 0 && (n & 1)) owner[n] = highest[n];
+  // a trailing node no element connects (SPACAR Light allows them): rank 0 owns it, held fixed below
+  for (int n = 0; n < nn; ++n)
+    if (highest[n] < 0) owner[n] = 0;
 
   // Constraint status of every node (set-up only), then a global numbering: per rank, its owned
   // nodes' free DOFs in ascending node order, then its elements' multipliers.
@@ -193,7 +196,12 @@ DistributedMesh distributeMesh(MPI_Comm comm, const Model& model, const FeMesh& 
     ln.kind = fe.kind[n];
     ln.X0 = fe.X[n];
     ln.slope0 = fe.slope[n];
-    applyNodeProps(model, ln);
+    if (n < static_cast<int>(fe.connected.size()) && !fe.connected[n]) {
+      ln.ndof = dofSize(ln.kind);  // unconnected: no stiffness, so no unknowns (its supports, if any, change nothing)
+      ln.status.fill(DofStatus::Fixed);
+    } else {
+      applyNodeProps(model, ln);
+    }
   }
   std::vector<long> freeCount(dm.size, 0), fullCount(dm.size, 0), multCount(dm.size, 0);
   for (int n = 0; n < nn; ++n) {

@@ -62,10 +62,17 @@ FeMesh discretize(const Model& model) {
       prev = next;
     }
   }
+  // trailing unconnected nodes (after the last connected one) are allowed, as in SPACAR Light: they
+  // are held fixed (distributeMesh); any other unconnected node is an error
+  int last = -1;
   for (int n = 0; n < nn; ++n)
+    if (connected[n]) last = n;
+  for (int n = 0; n < last; ++n)
     if (!connected[n])
       throw SceneError("nodes[" + std::to_string(n) + "]",
                        "node " + std::to_string(n + 1) + " is not connected to any element");
+  mesh.connected.assign(mesh.X.size(), 1);
+  for (int n = last + 1; n < nn; ++n) mesh.connected[n] = 0;
 
   // ANCF reference slopes: unit average of the chord directions of the adjacent elements
   // (the tangent of the circle through three consecutive nodes of a regular polygon).

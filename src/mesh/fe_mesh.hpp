@@ -23,13 +23,15 @@ struct FeMesh {
   std::vector<NodeKind> kind;              ///< per FE node
   std::vector<std::array<double, 2>> slope;  ///< ANCF reference slope per node (unit), {1,0} otherwise
   std::vector<FeElement> elements;
+  /// Per FE node: 0 for a trailing scene node no element connects (held fixed, no unknowns).
+  std::vector<char> connected;
   /// First FE element and count of each scene element (nbeams split).
   std::vector<int> sceneElementFirst, sceneElementCount;
 };
 
 ElementType elementTypeOf(const Model& model, int sceneElement);
 /// Splits scene elements, assigns node kinds and ANCF slopes. Throws SceneError for nodes that
-/// no element connects.
+/// no element connects, except trailing ones (after the last connected node, as SPACAR Light allows).
 FeMesh discretize(const Model& model);
 
 }  // namespace sinew

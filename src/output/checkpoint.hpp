@@ -41,7 +41,7 @@ enum CheckpointScalar : int {
   kCkRows,           ///< step rows of the result file this state belongs to
   kCkStep,           ///< steps done in the phase: form-finding steps, load steps, time steps
   kCkStepValue,      ///< load factor or time of the last row
-  kCkLoadsteps,      ///< statics: loadsteps of the ramp (load factor of step k = k / loadsteps)
+  kCkLoadsteps,      ///< statics: loadsteps of the ramp (load factor of step k: StaticAnalysis::stepFactor)
   kCkLambda,         ///< statics: load factor reached
   kCkDlPrev,         ///< statics: last converged increment (secant predictor)
   kCkDlAdapt,        ///< statics: adaptive increment carried to the next step
@@ -54,6 +54,7 @@ enum CheckpointScalar : int {
   kCkEnergy0,        ///< dynamics with -dynamics_energy: initial total energy
   kCkMaxDrift,       ///< dynamics with -dynamics_energy: largest energy change so far
   kCkFormFinding,    ///< 1 when the run had a form-finding phase
+  kCkLoadRamp,       ///< statics: opt.load_ramp of the run (0 spacar: (k-1)/(n-1), 1 uniform: k/n)
   kNumScalars
 };
 

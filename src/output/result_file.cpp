@@ -220,7 +220,15 @@ struct CellKind {
   int nodes;
   const std::vector<long>* conn;     // global FE node ids, `nodes` per cell
   const std::vector<long>* element;  // 1-based scene element per cell
+  const std::vector<double>* look;   // r, g, b, opacity, visible per cell (layout.look)
 };
+
+/// The element-look datasets of a cell kind: name suffix, first of the 5 look values, how many.
+struct LookPart {
+  const char* suffix;
+  int first, count;
+};
+constexpr std::array<LookPart, 3> kLookParts = {{{"_color", 0, 3}, {"_opacity", 3, 1}, {"_visible", 4, 1}}};
 
 // Every rank learns whether an HDF5 call failed on any rank (a full disk may fail the write of
 // one aggregator only); all throw the message of the first failing rank, so none is left waiting
@@ -310,9 +318,9 @@ struct ResultFile::Impl {
   }
 
   std::array<CellKind, 3> cellKinds() const {
-    return {{{"lines", "Polyline", 2, &layout.lines, &layout.lineElement},
-             {"triangles", "Triangle", 3, &layout.triangles, &layout.triangleElement},
-             {"quads", "Quadrilateral", 4, &layout.quads, &layout.quadElement}}};
+    return {{{"lines", "Polyline", 2, &layout.lines, &layout.lineElement, &layout.lineLook},
+             {"triangles", "Triangle", 3, &layout.triangles, &layout.triangleElement, &layout.triangleLook},
+             {"quads", "Quadrilateral", 4, &layout.quads, &layout.quadElement, &layout.quadLook}}};
   }
 
   const RowPlan& plan(Kind k) const {
@@ -554,6 +562,27 @@ struct ResultFile::Impl {
         writeBox(s, dset, H5T_NATIVE_LONG, start, count, data.data(), what);
         h5::check(dset.reset(), what + ": close");
       }
+      if (!layout.look) continue;
+      // SPACAR Light's element look: /mesh/<kind>_color [*, 3], _opacity [*], _visible [*]
+      for (const LookPart& lp : kLookParts) {
+        const std::string name = std::string("mesh/") + kinds[k].name + lp.suffix;
+        const std::string what = "dataset /" + name;
+        std::vector<hsize_t> dims{hsize_t(cellTotals[k])}, start{hsize_t(cellOffsets[k])}, count{hsize_t(local)};
+        if (lp.count > 1) {
+          dims.push_back(hsize_t(lp.count));
+          start.push_back(0);
+          count.push_back(hsize_t(lp.count));
+        }
+        std::vector<double> data;
+        for (long c = 0; c < local; ++c)
+          for (int j = 0; j < lp.count; ++j) data.push_back((*kinds[k].look)[5 * static_cast<std::size_t>(c) + lp.first + j]);
+        h5::Handle space = h5::dataspace(dims, what);
+        const hid_t id = H5Dcreate2(s.file, name.c_str(), H5T_IEEE_F64LE, space, lcpl, H5P_DEFAULT, H5P_DEFAULT);
+        agreeStatus(comm, id, what + ": create", s.name);
+        h5::Handle dset(id, H5Dclose, what + ": create");
+        writeBox(s, dset, H5T_NATIVE_DOUBLE, start, count, data.data(), what);
+        h5::check(dset.reset(), what + ": close");
+      }
     }
   }
 
@@ -583,6 +612,8 @@ struct ResultFile::Impl {
         fail(std::string(c.name) + ": connectivity and element lists do not match");
       for (long id : *c.conn)
         if (id < 0 || id >= layout.numMeshNodes) fail(std::string(c.name) + ": node " + std::to_string(id) + " outside the mesh");
+      if (layout.look && c.look->size() != 5 * c.element->size())
+        fail(std::string(c.name) + ": look values do not match the cells");
     }
     if (!layout.meshReference.empty() && layout.meshReference.size() != 3 * layout.ownedMeshNodes.size())
       fail("meshReference: " + std::to_string(layout.meshReference.size()) + " values for " +
@@ -597,13 +628,20 @@ struct ResultFile::Impl {
     d.numMeshNodes = layout.numMeshNodes;
     d.stepValues = s.stepValues;
     d.stepName = layout.stepName;
+    d.inputOnly = layout.inputOnly;
     if (hasReference) d.geometryDataset = "/mesh/p0";
     if (auto it = s.steps.find("formfinding/step"); it != s.steps.end()) d.formFindingRows = it->second.written;
     const std::array<CellKind, 3> kinds = cellKinds();
     for (int k = 0; k < 3; ++k)
-      if (cellTotals[k] > 0)
+      if (cellTotals[k] > 0) {
         d.cells.push_back({kinds[k].name, kinds[k].topology, kinds[k].nodes, cellTotals[k],
-                           std::string("/mesh/") + kinds[k].name, {}});
+                           std::string("/mesh/") + kinds[k].name, {}, {}});
+        if (layout.look)  // static cell attributes: color (RGB, "Map Scalars" off), opacity, visible
+          for (const LookPart& lp : kLookParts)
+            d.cells.back().staticFields.push_back(
+                {std::string(lp.suffix + 1), std::string("/mesh/") + kinds[k].name + lp.suffix,
+                 lp.count > 1 ? std::vector<long>{lp.count} : std::vector<long>{}, {}});
+      }
     auto field = [](const std::string& name, const std::string& dataset, const StepDataset& sd) {
       XdmfField f;
       f.name = name;
@@ -705,13 +743,17 @@ ResultFile::ResultFile(MPI_Comm comm, const std::string& path, const ResultLayou
   m.createFile(m.sinks[0], m.partPath);
   m.createFile(m.sinks[1], m.sparePath);
   // Attributes are collective: every rank writes rank 0's values.
-  long numbers[2] = {layout.ndof, layout.nranks};
-  MPI_Bcast(numbers, 2, MPI_LONG, 0, m.comm);
+  long numbers[6] = {layout.ndof, layout.nranks, layout.nunknowns, layout.nnodedofs, layout.nconstraints, layout.inputOnly};
+  MPI_Bcast(numbers, 6, MPI_LONG, 0, m.comm);
   const std::string version = broadcastString(m.comm, layout.version), scene = broadcastString(m.comm, layout.scene);
   m.apply([&m, numbers, version, scene, reference](Sink& s) {
     h5::writeAttribute(s.file, "version", version);
     h5::writeAttribute(s.file, "ndof", numbers[0]);
     h5::writeAttribute(s.file, "nranks", static_cast<int>(numbers[1]));
+    h5::writeAttribute(s.file, "nunknowns", numbers[2]);
+    h5::writeAttribute(s.file, "nnodedofs", numbers[3]);
+    h5::writeAttribute(s.file, "nconstraints", numbers[4]);
+    if (numbers[5]) h5::writeAttribute(s.file, "showinputonly", 1);
     h5::writeAttribute(s.file, "scene", scene);
     h5::writeAttribute(s.file, "converged", 0);
     m.writeCells(s);

@@ -82,6 +82,22 @@ std::string attributes(const XdmfDescription& d, const std::vector<XdmfField>& f
   return o.str();
 }
 
+// Attributes that are the same at every step: a plain [rows, inner...] HDF DataItem.
+std::string staticAttributes(const XdmfDescription& d, const std::vector<XdmfField>& fields, long rows, const char* center,
+                             const std::string& indent) {
+  std::ostringstream o;
+  for (const auto& f : fields) {
+    std::vector<long> dims{rows};
+    dims.insert(dims.end(), f.inner.begin(), f.inner.end());
+    o << indent << "<Attribute Name=\"" << escape(f.name) << "\" AttributeType=\"" << attributeType(f.inner)
+      << "\" Center=\"" << center << "\">\n"
+      << indent << "  <DataItem Dimensions=\"" << joined(dims) << "\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">"
+      << escape(d.h5Name) << ":" << escape(f.dataset) << "</DataItem>\n"
+      << indent << "</Attribute>\n";
+  }
+  return o.str();
+}
+
 // A value for the whole grid (ParaView field data).
 std::string gridValue(const std::string& name, double v, const std::string& indent) {
   return indent + "<Attribute Name=\"" + escape(name) + "\" AttributeType=\"Scalar\" Center=\"Grid\">\n" + indent +
@@ -89,7 +105,8 @@ std::string gridValue(const std::string& name, double v, const std::string& inde
          "</DataItem>\n" + indent + "</Attribute>\n";
 }
 
-// One uniform grid: topology of one cell kind, the reference geometry, the attributes of `step`.
+// One uniform grid: topology of one cell kind, the reference geometry, the attributes of `step`
+// (step -1: no step, only the attributes that are the same at every step).
 std::string uniformGrid(const XdmfDescription& d, const XdmfCellBlock* cells, const std::string& name, int step,
                         const double* time, const std::string& indent) {
   std::ostringstream o;
@@ -112,9 +129,10 @@ std::string uniformGrid(const XdmfDescription& d, const XdmfCellBlock* cells, co
     << " 3\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">" << escape(d.h5Name) << ":"
     << escape(d.geometryDataset) << "</DataItem>\n"
     << indent << "  </Geometry>\n";
-  o << attributes(d, d.pointFields, d.numMeshNodes, "Node", step, indent + "  ");
-  if (cells) o << attributes(d, cells->fields, cells->count, "Cell", step, indent + "  ");
-  o << gridValue(d.stepName, d.stepValues[step], indent + "  ") << gridValue("hdf5_row", step, indent + "  ");
+  if (step >= 0) o << attributes(d, d.pointFields, d.numMeshNodes, "Node", step, indent + "  ");
+  if (cells && step >= 0) o << attributes(d, cells->fields, cells->count, "Cell", step, indent + "  ");
+  if (cells) o << staticAttributes(d, cells->staticFields, cells->count, "Cell", indent + "  ");
+  if (step >= 0) o << gridValue(d.stepName, d.stepValues[step], indent + "  ") << gridValue("hdf5_row", step, indent + "  ");
   o << indent << "</Grid>\n";
   return o.str();
 }
@@ -149,8 +167,21 @@ std::string xdmfText(const XdmfDescription& d) {
   std::ostringstream o;
   o << "<?xml version=\"1.0\" encoding=\"utf-8\"?>\n"
     << "<Xdmf xmlns:xi=\"http://www.w3.org/2001/XInclude\" Version=\"3.0\">\n"
-    << "  <Domain>\n"
-    << "    <Grid Name=\"steps\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
+    << "  <Domain>\n";
+  if (d.inputOnly) {
+    // an input-only run (opt.showinputonly) has no step rows: the reference geometry alone, grid "input"
+    if (d.cells.size() <= 1 && !d.geometryDataset.empty()) {
+      o << uniformGrid(d, d.cells.empty() ? nullptr : &d.cells[0], "input", -1, nullptr, "    ");
+    } else if (!d.geometryDataset.empty()) {
+      o << "    <Grid Name=\"input\" GridType=\"Collection\" CollectionType=\"Spatial\">\n";
+      for (const auto& c : d.cells) o << uniformGrid(d, &c, c.name, -1, nullptr, "      ");
+      o << "    </Grid>\n";
+    }
+    o << "  </Domain>\n"
+      << "</Xdmf>\n";
+    return o.str();
+  }
+  o << "    <Grid Name=\"steps\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
   const std::string indent = "      ";
   const std::vector<double> times = xdmfTimes(d.stepValues, d.formFindingRows);
   for (int s = 0; s < static_cast<int>(d.stepValues.size()) && !d.geometryDataset.empty(); ++s) {
@@ -164,8 +195,8 @@ std::string xdmfText(const XdmfDescription& d) {
     for (const auto& c : d.cells) o << uniformGrid(d, &c, c.name, s, nullptr, indent + "  ");
     o << indent << "</Grid>\n";
   }
-  o << "    </Grid>\n"
-    << "  </Domain>\n"
+  o << "    </Grid>\n";
+  o << "  </Domain>\n"
     << "</Xdmf>\n";
   return o.str();
 }

@@ -26,6 +26,7 @@ struct XdmfCellBlock {
   long count = 0;
   std::string dataset;       ///< "/mesh/lines"
   std::vector<XdmfField> fields;  ///< [ns, count, inner...] cell attributes ("/cell/lines/stress")
+  std::vector<XdmfField> staticFields;  ///< [count, inner...] cell attributes, the same at every step ("/mesh/lines_color")
 };
 
 struct XdmfDescription {
@@ -37,6 +38,7 @@ struct XdmfDescription {
   std::string geometryDataset;        ///< "/mesh/p0", [nmesh, 3]; empty: not written yet, no grids
   std::vector<XdmfCellBlock> cells;   ///< kinds with at least one cell
   std::vector<XdmfField> pointFields;
+  bool inputOnly = false;             ///< opt.showinputonly: one grid "input" of the reference geometry, no steps
 };
 
 /// The Time value of every step in the XDMF: distinct and increasing. Form-finding rows i = 0 ..

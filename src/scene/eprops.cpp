@@ -12,7 +12,7 @@ namespace sinew::scene {
 namespace {
 
 const std::vector<std::string> kCommonKeys = {"elems", "type", "physical", "color", "opacity", "hide"};
-const std::vector<std::string> kBeamKeys = {"flex", "nbeams", "cw", "emod", "smod", "dens", "cshape", "dim", "orien"};
+const std::vector<std::string> kBeamKeys = {"flex", "nbeams", "cw", "warping", "emod", "smod", "dens", "cshape", "dim", "orien"};
 const std::vector<std::string> kCableKeys = {"area", "emod", "dens", "prestress", "prestress_stress"};
 const std::vector<std::string> kMembraneKeys = {"thickness", "emod", "nu", "dens", "prestress", "prestress_dir",
                                                 "prestress_radial_axis", "pressure", "pressure_initial"};
@@ -81,6 +81,10 @@ void parseBeam(const YAML::Node& n, const std::string& path, ElementSet& s) {
   std::sort(flexModes.begin(), flexModes.end());
   if (const YAML::Node v = n["nbeams"]; v.IsDefined()) s.nbeams = getIntAtLeast(v, childPath(path, "nbeams"), 1);
   if (const YAML::Node v = n["cw"]; v.IsDefined()) s.cw = getBool(v, childPath(path, "cw"));
+  if (const YAML::Node v = n["warping"]; v.IsDefined()) {  // newer SPACAR Light scripts' name of cw
+    if (n["cw"].IsDefined()) fail(childPath(path, "warping"), "warping is another name of cw; give one of them");
+    s.cw = getBool(v, childPath(path, "warping"));
+  }
   const bool hasE = n["emod"].IsDefined(), hasG = n["smod"].IsDefined(), hasRho = n["dens"].IsDefined();
   if (hasE) s.emod = getNonNegative(n["emod"], childPath(path, "emod"), kMaterial);
   if (hasG) s.smod = getNonNegative(n["smod"], childPath(path, "smod"), kMaterial);
@@ -93,23 +97,48 @@ void parseBeam(const YAML::Node& n, const std::string& path, ElementSet& s) {
       fail(childPath(path, "cshape"), "missing: dim is given, so cshape (rect or circ) is needed to read it");
     const std::size_t want = s.cshape == CrossSection::Rect ? 2 : 1;
     const std::string shape = s.cshape == CrossSection::Rect ? "rect" : "circ";
-    if (!v.IsSequence()) fail(p, "expected a list of " + std::to_string(want) + (want == 1 ? " number" : " numbers") +
-                                     " for cshape " + shape + ", got " + describe(v));
-    if (v.size() != want)
-      fail(p, "expected " + std::to_string(want) + (want == 1 ? " number" : " numbers") + " for cshape " + shape + " (" +
-                  (want == 2 ? "[width, height]" : "[diameter]") + "), got " + std::to_string(v.size()));
-    for (std::size_t i = 0; i < want; ++i) s.dim.push_back(getPositive(v[i], indexPath(p, i), kSectionLength));
+    if (want == 1 && v.IsScalar()) {  // the seed's double: dim: 0.01 is dim: [0.01]
+      s.dim.push_back(getPositive(v, p, kSectionLength));
+    } else {
+      if (!v.IsSequence()) fail(p, "expected a list of " + std::to_string(want) + (want == 1 ? " number" : " numbers") +
+                                       " (or, for circ, one number) for cshape " + shape + ", got " + describe(v));
+      if (v.size() != want)
+        fail(p, "expected " + std::to_string(want) + (want == 1 ? " number" : " numbers") + " for cshape " + shape + " (" +
+                    (want == 2 ? "[width, height]" : "[diameter]") + "), got " + std::to_string(v.size()));
+      for (std::size_t i = 0; i < want; ++i) s.dim.push_back(getPositive(v[i], indexPath(p, i), kSectionLength));
+    }
   }
   if (const YAML::Node v = n["orien"]; v.IsDefined()) s.orien = getDirection(v, childPath(path, "orien"));
 
+  // The materials the flexible modes need, as the element (beamSection) needs them: emod for
+  // elongation (1) and bending (3-6), smod for torsion (2) and for the shear deformation of bending
+  // (3-6, Timoshenko); constrained warping (cw) needs both (Poisson's ratio emod / (2 smod) - 1).
   std::vector<int> needE, needG;
-  for (int m : flexModes) (m == 2 ? needG : needE).push_back(m);
+  for (int m : flexModes) {
+    if (m != 2 || s.cw) needE.push_back(m);
+    if (m != 1) needG.push_back(m);
+  }
+  auto what = [](const std::vector<int>& modes) {
+    std::string w;
+    for (int m : modes) {
+      const char* kind = m == 1 ? "elongation" : m == 2 ? "torsion" : "bending";
+      if (w.find(kind) == std::string::npos) w += std::string(w.empty() ? "" : ", ") + kind;
+    }
+    return w;
+  };
   if (!needE.empty() && (!hasE || s.emod == 0))
     fail(childPath(path, "emod"), std::string(hasE ? "expected emod > 0" : "missing") + ": flexible mode" +
-                                      (needE.size() > 1 ? "s " : " ") + modeList(needE) + " need emod (Young's modulus)");
+                                      (needE.size() > 1 ? "s " : " ") + modeList(needE) + " (" + what(needE) +
+                                      (s.cw && s.flex[1] ? "; torsion with cw" : "") + ") need" +
+                                      (needE.size() > 1 ? " " : "s ") + "emod (Young's modulus)");
   if (!needG.empty() && (!hasG || s.smod == 0))
-    fail(childPath(path, "smod"), std::string(hasG ? "expected smod > 0" : "missing") +
-                                      ": flexible mode 2 (torsion) needs smod (shear modulus)");
+    fail(childPath(path, "smod"), std::string(hasG ? "expected smod > 0" : "missing") + ": flexible mode" +
+                                      (needG.size() > 1 ? "s " : " ") + modeList(needG) + " (" + what(needG) +
+                                      (needG.back() > 2 ? ", with shear deformation" : "") + ") need" +
+                                      (needG.size() > 1 ? " " : "s ") + "smod (shear modulus)");
+  if (s.cw && s.cshape == CrossSection::Circ && !flexModes.empty())
+    fail(childPath(path, n["warping"].IsDefined() ? "warping" : "cw"),
+         "constrained warping (cw) applies to rect sections only (cshape is circ)");
   if (!flexModes.empty() || s.dens > 0) {
     const std::string why = flexModes.empty() ? "a beam with dens > 0" : "a flexible beam";
     if (s.cshape == CrossSection::None) fail(childPath(path, "cshape"), "missing: " + why + " needs cshape (rect or circ) and dim");
@@ -197,11 +226,33 @@ void parseAncf(const YAML::Node& n, const std::string& path, ElementSet& s) {
 void parseLook(const YAML::Node& n, const std::string& path, ElementSet& s) {
   if (const YAML::Node v = n["color"]; v.IsDefined()) {
     const std::string p = childPath(path, "color");
-    if (!v.IsSequence() || v.size() != 3)
-      fail(p, "expected 3 numbers [r, g, b] in [0, 1], got " + (v.IsSequence() ? std::to_string(v.size()) : describe(v)));
-    std::array<double, 3> c{};
-    for (std::size_t i = 0; i < 3; ++i) c[i] = getInRange(v[i], indexPath(p, i), 0.0, 1.0);
-    s.color = c;
+    // SPACAR Light's forms: [r, g, b] in 0..1, or 0..255 when any value is > 1; a name or a 1-based
+    // index of the seed's colour table
+    static const std::vector<std::string> names = {"blue", "grey", "darkblue", "darkgrey", "green", "darkgreen"};
+    static const std::array<std::array<double, 3>, 6> table = {{{0.0, 0.447, 0.741},
+                                                                 {0.7, 0.7, 0.7},
+                                                                 {0.0, 0.2, 0.5},
+                                                                 {0.4, 0.4, 0.4},
+                                                                 {0.466, 0.674, 0.188},
+                                                                 {0.1, 0.4, 0.1}}};
+    const std::string what = "expected [r, g, b] (0..1 or 0..255), a colour name (blue, grey, darkblue, darkgrey, green, "
+                             "darkgreen) or its index 1..6";
+    if (v.IsScalar() && !isNumber(v)) {
+      const auto it = std::find(names.begin(), names.end(), v.Scalar());
+      if (it == names.end()) fail(p, what + ", got '" + v.Scalar() + "'" + suggestion(v.Scalar(), names));
+      s.color = table[static_cast<std::size_t>(it - names.begin())];
+    } else if (v.IsScalar() || (v.IsSequence() && v.size() == 1)) {
+      const int k = getInt(v, p);
+      if (k < 1 || k > 6) fail(p, what + ", got the index " + std::to_string(k));
+      s.color = table[static_cast<std::size_t>(k - 1)];
+    } else {
+      if (!v.IsSequence() || v.size() != 3) fail(p, what + ", got " + (v.IsSequence() ? "a list of " + std::to_string(v.size()) : describe(v)));
+      std::array<double, 3> c{};
+      for (std::size_t i = 0; i < 3; ++i) c[i] = getInRange(v[i], indexPath(p, i), 0.0, 255.0);
+      if (std::any_of(c.begin(), c.end(), [](double x) { return x > 1.0; }))
+        for (double& x : c) x /= 255.0;
+      s.color = c;
+    }
   }
   if (const YAML::Node v = n["opacity"]; v.IsDefined()) s.opacity = getInRange(v, childPath(path, "opacity"), 0.0, 1.0);
   if (const YAML::Node v = n["hide"]; v.IsDefined()) s.hide = getBool(v, childPath(path, "hide"));

@@ -29,7 +29,7 @@ bool isNodeNumber(const std::string& key) {
 
 /// Paths of the entries that gave loads, per node (for conflict messages).
 struct LoadSources {
-  std::string force, force_initial, moment, moment_initial, transfer_in;
+  std::string force, force_initial, moment, moment_initial, transfer_in, transfer_out;
 };
 
 std::array<double, 6> getMominertia(const YAML::Node& v, const std::string& p) {
@@ -62,6 +62,21 @@ std::array<double, 6> getMominertia(const YAML::Node& v, const std::string& p) {
   for (std::size_t k : {0u, 3u, 5u})
     if (I[k] < 0) fail(p, "expected nonnegative moments of inertia on the diagonal, got " + fmt(I[k]));
   return I;
+}
+
+/// Prescribed rotation: SPACAR Light's 1x4 [angle, axis_x, axis_y, axis_z] (axis normalized, a zero
+/// axis is an error), or a rotation vector [rx, ry, rz] = angle * unit axis. Returns the rotation vector.
+Vec3 getRotation(const YAML::Node& v, const std::string& p) {
+  const std::string what = "expected [angle, axis_x, axis_y, axis_z] (SPACAR Light) or a rotation vector [rx, ry, rz]";
+  if (!v.IsSequence() || (v.size() != 3 && v.size() != 4))
+    fail(p, what + ", got " + (v.IsSequence() ? "a list of " + std::to_string(v.size()) : describe(v)));
+  if (v.size() == 3) return getVec3(v, p, false, kRotation);
+  const double angle = getNumber(v[0], indexPath(p, 0), kRotation);
+  Vec3 axis{};
+  for (std::size_t k = 0; k < 3; ++k) axis[k] = getNumber(v[k + 1], indexPath(p, k + 1), kLoad);
+  const double a = norm(axis);
+  if (a == 0.0) fail(p, "the rotation axis [" + fmt(axis[0]) + ", " + fmt(axis[1]) + ", " + fmt(axis[2]) + "] is zero; " + what);
+  return {angle * axis[0] / a, angle * axis[1] / a, angle * axis[2] / a};
 }
 
 /// Moment: 3 numbers; a 2D model also takes one number (about z).
@@ -123,14 +138,14 @@ void applyProps(NodeProps& np, LoadSources& src, const YAML::Node& n, const std:
     else if (k == "mominertia") np.mominertia = getMominertia(v, p);
     else if (k.rfind("displ_initial_", 0) == 0) np.displ_initial[static_cast<std::size_t>(k.back() - 'x')] = getNumber(v, p, kCoordinate);
     else if (k.rfind("displ_", 0) == 0) np.displ[static_cast<std::size_t>(k.back() - 'x')] = getNumber(v, p, kCoordinate);
-    else if (k == "rot") np.rot = getVec3(v, p, false, kRotation);
-    else if (k == "rot_initial") np.rot_initial = getVec3(v, p, false, kRotation);
+    else if (k == "rot") np.rot = getRotation(v, p);
+    else if (k == "rot_initial") np.rot_initial = getRotation(v, p);
     else if (k == "force") { np.force = getVec3(v, p, twoD, kLoad); src.force = p; }
     else if (k == "force_initial") { np.force_initial = getVec3(v, p, twoD, kLoad); src.force_initial = p; }
     else if (k == "moment") { np.moment = getMoment(v, p, twoD); src.moment = p; }
     else if (k == "moment_initial") { np.moment_initial = getMoment(v, p, twoD); src.moment_initial = p; }
     else if (k == "transfer_in") { np.transfer_in = getTransfer(v, p, kTransferIn); src.transfer_in = p; }
-    else if (k == "transfer_out") np.transfer_out = getTransfer(v, p, kTransferOut);
+    else if (k == "transfer_out") { np.transfer_out = getTransfer(v, p, kTransferOut); src.transfer_out = p; }
   }
 }
 
@@ -162,6 +177,12 @@ void checkConflicts(int node, const NodeProps& np, const LoadSources& src) {
                             " (a load on a held direction only changes the reaction; remove it or free the direction)";
     if (np.force[k] != 0) fail(src.force, "force" + msg);
     if (np.force_initial[k] != 0) fail(src.force_initial, "force_initial" + msg);
+    for (const char* kind : {"displ_", "veloc_"}) {
+      const std::string out = kind + std::string(kAxis[k]);
+      if (std::find(np.transfer_out.begin(), np.transfer_out.end(), out) != np.transfer_out.end())
+        fail(src.transfer_out, "transfer output " + out + ", but " + label + " is held in " + kAxis[k] + " by " + held +
+                                   " (a held direction does not move: the output would be zero; remove it or free the direction)");
+    }
     const std::string in = std::string("force_") + kAxis[k];
     if (std::find(np.transfer_in.begin(), np.transfer_in.end(), in) != np.transfer_in.end())
       fail(src.transfer_in, "transfer input " + in + ", but " + label + " is held in " + kAxis[k] + " by " + held);
@@ -204,8 +225,7 @@ void parseNprops(const YAML::Node& nprops, SceneContext& ctx) {
     const std::string path = childPath("nprops", key);
     Entry e{path, it->second, {}};
     if (isNodeNumber(key)) {
-      // a JSON scene's keys are strings ("1": ...): the key's digits are the node number
-      const int node = checkedIndex(it->first.Tag() == "!" ? YAML::Load(key) : it->first, path, "node", m.nodes.size());
+      const int node = checkedKeyIndex(it->first, path, "node", m.nodes.size());
       if (!seen.emplace(node, path).second)
         fail(path, "node " + std::to_string(node + 1) + " is given twice (also at " + seen[node] + ")");
       e.nodes = {node};

@@ -13,6 +13,9 @@ namespace sinew {
 const std::vector<OptionDoc>& sceneOptionDocs() {
   static const std::vector<OptionDoc> docs = {
       {"loadsteps", "integer 1..100000", "10", "number of load steps of the static analysis (more is an error)"},
+      {"load_ramp", "spacar | uniform", "spacar",
+       "load steps: spacar = SPACAR Light's (step 1 under the initial loads and prescribed motions alone, the "
+       "standard loads ramp over the remaining steps, (k-1)/(loadsteps-1)); uniform = Sinew's former k/loadsteps"},
       {"calcbuck", "bool", "false", "compute buckling load multipliers at every load step"},
       {"calccompl", "bool", "true", "compute compliance matrices of the nodes"},
       {"calcfreq", "bool", "auto (true when the scene has mass)", "compute natural frequencies"},
@@ -24,6 +27,8 @@ const std::vector<OptionDoc>& sceneOptionDocs() {
       {"rigidstress", "bool", "false", "also report stresses in rigid deformation modes"},
       {"showinputonly", "bool", "false", "read and check the scene, print it, and stop"},
       {"silent", "bool", "false", "no summary on stdout"},
+      {"spavisual", "bool", "false", "SPACAR Light: open the seed's viewer after the run (Sinew: the XDMF file is always written; accepted)"},
+      {"customvis", "string (file) or map", "none", "SPACAR Light: custom visualization (Sinew: accepted, not drawn)"},
       {"compliance_nodes", "[node numbers]", "all nodes", "nodes whose compliance matrices are computed"},
       {"dynamics", "{tend, dt, spectral_radius, output_every}", "none",
        "time integration (generalized-alpha) to tend with step dt; spectral_radius in [0,1] defaults to 0.9; "
@@ -81,7 +86,7 @@ void parseRls(const YAML::Node& v, const std::string& path, SceneContext& ctx) {
   if (!v.IsMap()) fail(path, "expected a map from element numbers to released modes ({3: [2, 3]}), got " + describe(v));
   for (auto it = v.begin(); it != v.end(); ++it) {
     const std::string p = childPath(path, keyString(it->first, path));
-    const int e = checkedIndex(it->first, p, "element", m.elements.size());
+    const int e = checkedKeyIndex(it->first, p, "element", m.elements.size());
     if (m.opt.rls.count(e)) fail(p, "element " + std::to_string(e + 1) + " is given twice");
     const int set = m.elementSet[static_cast<std::size_t>(e)];
     const ElementSet* s = set >= 0 ? &m.eprops[static_cast<std::size_t>(set)] : nullptr;
@@ -208,6 +213,7 @@ void parseOptions(const YAML::Node& opt, SceneContext& ctx) {
     const YAML::Node v = it->second;
     const std::string p = childPath("opt", k);
     if (k == "loadsteps") o.loadsteps = loadsteps(v, p, m.nodes.size());
+    else if (k == "load_ramp") o.load_ramp = getChoice(v, p, {"spacar", "uniform"});
     else if (k == "calcbuck") o.calcbuck = getBool(v, p);
     else if (k == "calccompl") o.calccompl = getBool(v, p);
     else if (k == "calcfreq") o.calcfreq = getBool(v, p);
@@ -232,6 +238,8 @@ void parseOptions(const YAML::Node& opt, SceneContext& ctx) {
     else if (k == "rigidstress") o.rigidstress = getBool(v, p);
     else if (k == "showinputonly") o.showinputonly = getBool(v, p);
     else if (k == "silent") o.silent = getBool(v, p);
+    else if (k == "spavisual") o.spavisual = getBool(v, p);
+    else if (k == "customvis") o.customvis = true;
     else if (k == "compliance_nodes") {
       if (!v.IsSequence() && !v.IsScalar()) fail(p, "expected a list of node numbers, got " + describe(v));
       std::set<int> seen;

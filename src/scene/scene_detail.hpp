@@ -36,6 +36,9 @@ double elementLength(const Model& m, int e);
 /// 1-based number -> 0-based index, checked against count ("node"/"element"/"eprops set").
 int checkedIndex(const YAML::Node& n, const std::string& path, const std::string& what, std::size_t count);
 
+/// The same for a map key; a quoted integer ("1", a JSON object key) is the number.
+int checkedKeyIndex(const YAML::Node& key, const std::string& path, const std::string& what, std::size_t count);
+
 /// Pre-scan of `eprops` for `physical:` names (needed before adding mesh elements).
 std::vector<std::vector<std::string>> scanPhysicalNames(const YAML::Node& eprops);
 /// Pre-scan of `nprops` for node-group keys (keys that are not node numbers).

@@ -56,6 +56,14 @@ int checkedIndex(const YAML::Node& n, const std::string& path, const std::string
   return v - 1;
 }
 
+int checkedKeyIndex(const YAML::Node& key, const std::string& path, const std::string& what, std::size_t count) {
+  // JSON object keys are strings: {"1": {...}} is node 1 as much as YAML's {1: {...}}
+  const std::string t = key.IsScalar() ? key.Scalar() : std::string();
+  const bool digits = !t.empty() && t.size() < 10 && std::all_of(t.begin(), t.end(), [](char c) { return c >= '0' && c <= '9'; });
+  if (digits && key.Tag() == "!") return checkedIndex(YAML::Load(t), path, what, count);
+  return checkedIndex(key, path, what, count);
+}
+
 namespace {
 
 const std::vector<std::string> kTopKeys = {"title", "nodes", "elements", "mesh", "nprops",
@@ -265,6 +273,44 @@ void checkElementNodes(const std::vector<std::vector<YAML::Node>>& rows, SceneCo
   }
 }
 
+/// SPACAR Light allows unconnected nodes after the last node an element connects (trailing nodes):
+/// they are held fixed (no unknowns; the run warns). An unconnected node before it is an error, so is
+/// anything but a support given to a trailing node, or a trailing node chosen for path following.
+void checkConnectivity(SceneContext& ctx) {
+  Model& m = ctx.model;
+  std::vector<char> connected(m.nodes.size(), 0);
+  for (const auto& el : m.elements)
+    for (int n : el) connected[static_cast<std::size_t>(n)] = 1;
+  std::size_t last = 0;
+  for (std::size_t n = 0; n < connected.size(); ++n)
+    if (connected[n]) last = n;
+  m.connectedNodes = last + 1;
+  for (std::size_t n = 0; n < last; ++n)
+    if (!connected[n])
+      fail(indexPath("nodes", n), "node " + std::to_string(n + 1) + " is not connected to any element (only nodes after " +
+                                      "the last connected node " + std::to_string(last + 1) +
+                                      ", trailing nodes, may be unconnected, as in SPACAR Light)");
+  for (const auto& [node, np] : m.nprops) {
+    if (static_cast<std::size_t>(node) <= last) continue;
+    std::string field;
+    if (np.mass != 0.0 || np.mominertia != std::array<double, 6>{}) field = np.mass != 0.0 ? "mass" : "mominertia";
+    else if (norm(np.force) != 0.0 || norm(np.force_initial) != 0.0) field = norm(np.force) != 0.0 ? "force" : "force_initial";
+    else if (norm(np.moment) != 0.0 || norm(np.moment_initial) != 0.0) field = norm(np.moment) != 0.0 ? "moment" : "moment_initial";
+    else if (np.rot || np.rot_initial) field = np.rot ? "rot" : "rot_initial";
+    else if (!np.transfer_in.empty() || !np.transfer_out.empty()) field = np.transfer_in.empty() ? "transfer_out" : "transfer_in";
+    else if (np.slope) field = "slope";
+    for (int k = 2; k >= 0; --k)
+      if (np.displ[k] || np.displ_initial[k]) field = std::string(np.displ[k] ? "displ_" : "displ_initial_") + "xyz"[k];
+    if (!field.empty())
+      fail("nprops." + std::to_string(node + 1) + "." + field,
+           "node " + std::to_string(node + 1) + " is not connected to any element (a trailing node, held fixed): " + field +
+               " has nothing to act on");
+  }
+  if (m.opt.continuation && m.opt.continuation->node >= 0 && static_cast<std::size_t>(m.opt.continuation->node) > last)
+    fail("opt.continuation.node", "node " + std::to_string(m.opt.continuation->node + 1) +
+                                      " is not connected to any element (a trailing node, held fixed)");
+}
+
 void parseRoot(const YAML::Node& root, const std::string& baseDir, Model& m) {
   if (!root.IsDefined() || root.IsNull()) fail("", "the scene is empty: expected a map with at least nodes and elements");
   if (!root.IsMap()) fail("", "expected a map of top-level keys (title, nodes, elements, ...), got " + describe(root));
@@ -313,6 +359,7 @@ void parseRoot(const YAML::Node& root, const std::string& baseDir, Model& m) {
   if (ff.IsDefined()) parseFormfinding(ff, ctx);
   parseSensors(root["sensors"], ctx);
   checkZeroModulusMembranes(m);
+  checkConnectivity(ctx);
 }
 
 /// A command-line value as a YAML node: "0,0,-9.81" -> [0, 0, -9.81]; "" -> true.

@@ -79,7 +79,11 @@ void checkMagnitude(double v, const std::string& path, const Magnitude& mag, con
 
 namespace {
 
-double finiteNumber(const YAML::Node& n, const std::string& path) {
+/// A MATLAB user's scalar: a 1-element list [x] is the number x (and x is the list [x]).
+bool isSingleton(const YAML::Node& n) { return n.IsDefined() && n.IsSequence() && n.size() == 1 && n[0].IsScalar(); }
+
+double finiteNumber(const YAML::Node& node, const std::string& path) {
+  const YAML::Node n = isSingleton(node) ? node[0] : node;
   if (!isNumber(n)) {
     const std::string why = nonFiniteReason(n);
     fail(path, "expected " + (why.empty() ? std::string("a number") : why) + ", got " + describe(n));
@@ -122,7 +126,8 @@ double getInRange(const YAML::Node& n, const std::string& path, double lo, doubl
   return v;
 }
 
-int getInt(const YAML::Node& n, const std::string& path) {
+int getInt(const YAML::Node& node, const std::string& path) {
+  const YAML::Node n = isSingleton(node) ? node[0] : node;
   if (!isNumber(n)) fail(path, "expected an integer, got " + describe(n));
   const double v = n.as<double>();
   if (v != std::floor(v)) fail(path, "expected an integer, got " + n.Scalar());
@@ -171,6 +176,7 @@ void requireList(const YAML::Node& n, const std::string& path) {
 }
 
 std::vector<double> getNumbers(const YAML::Node& n, const std::string& path, const Magnitude& mag) {
+  if (n.IsDefined() && n.IsScalar() && isNumber(n)) return {getNumber(n, path, mag)};  // x = [x]
   if (!n.IsDefined() || !n.IsSequence()) fail(path, "expected a list of numbers, got " + describe(n));
   std::vector<double> v;
   v.reserve(n.size());
@@ -180,6 +186,7 @@ std::vector<double> getNumbers(const YAML::Node& n, const std::string& path, con
 
 std::vector<double> getNumbers(const YAML::Node& n, const std::string& path, std::size_t count, const Magnitude& mag) {
   const std::string what = "expected " + std::to_string(count) + (count == 1 ? " number" : " numbers");
+  if (count == 1 && n.IsDefined() && n.IsScalar()) return {getNumber(n, path, mag)};  // x = [x]
   if (!n.IsDefined() || !n.IsSequence()) fail(path, what + ", got " + describe(n));
   if (n.size() != count) fail(path, what + ", got " + std::to_string(n.size()));
   return getNumbers(n, path, mag);

@@ -16,7 +16,9 @@ from modal_util import E, beam_x
 
 L, W, T = 1.0, 0.01, 0.001
 EI = E * W * T**3 / 12
-RTOL = ["-force_rtol", "1e-6"]  # see the docstring
+# see the docstring; -load_ramp uniform: the references are at load factors k/n (2 steps: 0.5, 1), Sinew's
+# former steps (SPACAR Light's step 1 would be the unloaded column, load factor 0, mu = +inf)
+RTOL = ["-force_rtol", "1e-6", "-load_ramp", "uniform"]
 arm = {"extra_nodes": [[0, 0.1, 0]], "extra_elements": [[1, 3]]}
 cases = [  # name, P_cr, supports, tip constraints, extra geometry, higher multipliers / first
     ("fixed-free", np.pi**2 * EI / (2 * L) ** 2, {1: {"fix": True}}, {}, {}, [9, 25]),

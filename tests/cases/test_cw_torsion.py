@@ -34,7 +34,7 @@ opt: {{loadsteps: 1, calccompl: false}}
 
 def twist(out):
     with st.h5(out) as f:
-        return f["node/r_axang"][-1, 1, 3] * np.sign(f["node/r_axang"][-1, 1, 0])
+        return f["node/r_axang"][-1, 1, 0] * np.sign(f["node/r_axang"][-1, 1, 1])  # [angle, axis]
 
 
 print(f"  L/w = {L / w}, nu = {nu:.4f}, f_cw = {f_cw:.6f}, I_t = {It:.6e}")

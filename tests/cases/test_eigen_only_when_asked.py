@@ -1,7 +1,9 @@
 """Only what is asked is created (design.md section 4): a scene without density or nodal mass and
 without calcbuck has no mass matrix and no EPS object, so -log_view lists neither SinewMassAsm,
 SinewEigen, EPSSolve nor an "EPS Solver" object. The same beam with density (frequencies) and
-calcbuck lists them, with the expected counts (1 mass assembly and 2 eigensolves per step)."""
+calcbuck lists them, with the expected counts (1 mass assembly per step, 1 frequency solve per step
+and 1 buckling solve per loaded step: SPACAR Light's step 1 is the unloaded beam, stress-free, whose
+buckling multipliers are +inf without a solve; with -load_ramp uniform both steps are loaded)."""
 import re
 
 import sinewtest as st
@@ -28,6 +30,12 @@ _, log = st.run("eigen_asked", beam_x(L, W, T, 4, sup, opt={"loadsteps": 2, "cal
 counts = {ev: event_count(log, ev) for ev in ("SinewMassAsm", "SinewEigen", "SinewSplitTan")}
 print("  with density and calcbuck:", counts)
 st.check(counts["SinewMassAsm"] == 2, "one mass assembly per step")
-st.check(counts["SinewEigen"] == 4, "one frequency and one buckling solve per step")
+st.check(counts["SinewEigen"] == 3, "one frequency solve per step, one buckling solve at the loaded step 2")
 st.check(counts["SinewSplitTan"] == 2, "one split tangent per step")
+
+_, log = st.run("eigen_asked_uniform", beam_x(L, W, T, 4, sup, opt={"loadsteps": 2, "calcbuck": True}),
+                args=["-log_view", "-load_ramp", "uniform"])
+counts = {ev: event_count(log, ev) for ev in ("SinewMassAsm", "SinewEigen", "SinewSplitTan")}
+print("  with density and calcbuck, -load_ramp uniform:", counts)
+st.check(counts["SinewEigen"] == 4, "uniform ramp: one frequency and one buckling solve per step")
 st.done()

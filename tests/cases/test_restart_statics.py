@@ -7,9 +7,10 @@ continued on 1 rank to the end, equals the uninterrupted 2-rank run (norm-wise r
 round-off of the state, within twice their difference between the uninterrupted 1- and 2-rank
 runs, measured and printed; the copied rows bit for bit; the same Newton iterations per step; on the
 same rank count the continued rows equal the uninterrupted ones bit for bit). More load steps
-continue the ramp (load factor k / 10) past 1 and equal a run with the moment scaled by 1.5 in 15
-steps. A changed scene (a moved node, an added node and element, added gravity) is refused with
-exit 2, naming what changed, before any file is written."""
+continue the ramp past 1 (SPACAR Light's steps, issue 10 item 1: load factor (k - 1) / 9, step 1 under
+the initial support load alone) and equal a run with the moment scaled by 14/9 in 15 steps. A changed
+scene (a moved node, an added node and element, added gravity) or another opt.load_ramp is refused
+with exit 2, naming what changed, before any file is written."""
 import os
 
 import numpy as np
@@ -44,18 +45,19 @@ part2 = stopped("rs_ch_part2", ch, 2, 5, opts)
 same, _ = restarted("rs_ch_same2", ch, 2, part2, opts)
 st.check(compare(ref2, same, "statics 2 -> 2") == 0.0, "statics 2 -> 2: bit-for-bit equal rows expected")
 
-# more load steps: the ramp k / 10 continues past 1 = a run with the ramped moment x 1.5 in 15 steps
+# more load steps: the ramp (k - 1) / 9 continues past 1 (step 15 at 14/9) = a run with the ramped moment
+# x 14/9 in 15 steps ((k - 1) / 14 of it; the initial support load is the same in both)
 ext, out_ext = restarted("rs_ch_ext", ch, 2, ref2, opts + ["-loadsteps", "15"])
 its = statics_table(out_ext)
 st.check(sorted(its) == list(range(11, 16)), f"statics extension: steps 11..15 computed, got {sorted(its)}")
 scene = yaml.safe_load(open(ch))
-scene["nprops"][5]["moment"] = [0, 0, 0.75]
+scene["nprops"][5]["moment"] = [0, 0, 0.5 * 14 / 9]
 scene["opt"]["loadsteps"] = 15
 scaled, _ = st.run("rs_ch_scaled", to_yaml(scene), np_=2, args=opts)
 with st.h5(ext) as e, st.h5(ref2) as r, st.h5(scaled) as s:
-    st.close(e["load_factor"][:], np.arange(1, 16) / 10, atol=1e-15, what="statics extension: load factors k/10")
+    st.close(e["load_factor"][:], np.arange(0, 15) / 9, atol=1e-15, what="statics extension: load factors (k-1)/9")
     st.close(e["node/p"][:10], r["node/p"][:], rtol=1e-14, what="statics extension: rows 1..10 = the earlier run")
-    st.close(e["node/p"][10:], s["node/p"][10:], rtol=1e-10, what="statics extension: rows 11..15 = moment x 1.5 in 15 steps")
+    st.close(e["node/p"][10:], s["node/p"][10:], rtol=1e-10, what="statics extension: rows 11..15 = moment x 14/9 in 15 steps")
     st.close(e["node/r_quat"][10:], s["node/r_quat"][10:], rtol=1e-10, what="statics extension: rotations 11..15")
 
 # a changed scene is refused, naming what changed, and writes no file
@@ -72,6 +74,8 @@ st.check("nodes (6 here, 5 in" in out and "elements (5 here, 4 in" in out,
          "added node/element: node and element counts expected in the message")
 _, out = restarted("rs_ch_gravity", ch, 2, part, opts + ["-gravity", "0,-9.81,0"], expect_exit=2)
 st.check("loads" in out and "changed" in out, "added gravity during statics: refused, naming the loads")
+_, out = restarted("rs_ch_ramp", ch, 2, part, opts + ["-load_ramp", "uniform"], expect_exit=2)
+st.check("opt.load_ramp" in out and "spacar" in out, "another opt.load_ramp: refused, naming it")
 _, out = restarted("rs_ch_nofile", ch, 1, part + ".missing", opts, expect_exit=2)
 st.check("no result file" in out, "missing restart file: refused")
 st.done()

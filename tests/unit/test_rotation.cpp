@@ -85,11 +85,12 @@ TEST(Rotation, QuaternionRoundTripAndSign) {
 TEST(Rotation, AxisAngle) {
   const Vec3 ax{0.0, 0.6, -0.8};
   const auto aa = axisAngleOf(expSO3(2.2 * ax));
-  EXPECT_NEAR(aa[3], 2.2, 1e-15);
-  for (int i = 0; i < 3; ++i) EXPECT_NEAR(aa[i], ax[i], 1e-15);
+  // SPACAR Light's order [angle; axis] (issue 10, item 3)
+  EXPECT_NEAR(aa[0], 2.2, 1e-15);
+  for (int i = 0; i < 3; ++i) EXPECT_NEAR(aa[1 + i], ax[i], 1e-15);
   const auto z = axisAngleOf(identity3());
-  EXPECT_EQ(z[0], 1.0);
-  EXPECT_EQ(z[3], 0.0);
+  EXPECT_EQ(z[0], 0.0);
+  EXPECT_EQ(z[1], 1.0);
 }
 
 TEST(Rotation, EulerZYXRoundTripAndGimbalLock) {

@@ -18,7 +18,8 @@ ContinuationAnalysis::ContinuationAnalysis(Assembler& assembler, const Continuat
     : asm_(assembler), opt_(opt) {
   MPI_Comm comm = asm_.mesh().comm;
   SinewCallThrow(comm, asm_.createMatrix(&K_));
-  for (Vec* v : {&R_, &q_, &duR_, &duq_, &dU_, &e_, &work_}) SinewCallThrow(comm, asm_.createVector(v));
+  for (Vec* v : {&R_, &q_, &duR_, &duq_, &dU_, &e_, &work_, &dUprev_}) SinewCallThrow(comm, asm_.createVector(v));
+  SinewCallThrow(comm, VecSet(dUprev_, 0.0));
   SinewCallThrow(comm, KSPCreate(comm, &ksp_));
   SinewCallThrow(comm, KSPSetOptionsPrefix(ksp_, "continuation_"));
   SinewCallThrow(comm, useDirectSolver(ksp_));
@@ -78,7 +79,8 @@ ContinuationAnalysis::ContinuationAnalysis(Assembler& assembler, const Continuat
 ContinuationAnalysis::~ContinuationAnalysis() {
   KSPDestroy(&ksp_);
   MatDestroy(&K_);
-  for (Vec* v : {&R_, &q_, &duR_, &duq_, &dU_, &e_, &work_}) VecDestroy(v);
+  MatDestroy(&Ks_);
+  for (Vec* v : {&R_, &q_, &duR_, &duq_, &dU_, &e_, &work_, &dUprev_}) VecDestroy(v);
 }
 
 // q = -dR/dlambda by a central difference: exact (to round-off) for loads, gravity and pressure that
@@ -98,7 +100,9 @@ PetscErrorCode ContinuationAnalysis::loadDerivative(Vec U, double lambda, Vec q)
 
 // Initial loads (force_initial, moment_initial, displ_initial, rot_initial) act at every load factor,
 // so the path starts from their equilibrium: Newton at load factor 0 with the initial loads ramped in
-// equal increments (a cut increment is halved), rotations absorbed after each.
+// equal increments (a cut increment is halved), rotations absorbed after each. A start state that already
+// carries them (form finding's found shape with the corners lifted) is equilibrated in one increment:
+// ramping from load factor 0 would first pull the prescribed motions back to zero.
 PetscErrorCode ContinuationAnalysis::equilibrateInitial(Vec U, bool* ok) {
   PetscFunctionBeginUser;
   LoadState ls;
@@ -113,7 +117,7 @@ PetscErrorCode ContinuationAnalysis::equilibrateInitial(Vec U, bool* ok) {
   if (fint == 0.0 && r0 == 0.0) PetscFunctionReturn(PETSC_SUCCESS);
   Vec U0;
   PetscCall(VecDuplicate(U, &U0));
-  double mu = 0.0, dmu = 1.0 / initialSteps_;
+  double mu = 0.0, dmu = startCarriesInitial_ ? 1.0 : 1.0 / initialSteps_;
   int cuts = 0;
   while (mu < 1.0 && *ok) {
     const double next = std::min(1.0, mu + dmu);
@@ -202,13 +206,13 @@ PetscErrorCode ContinuationAnalysis::switchBranch(Vec U, double lambda, double t
   asm_.setMixedStressNewton(false);
   PetscCall(asm_.jacobian(U, ls, K_));
   asm_.setMixedStressNewton(mixed);
-  PetscCall(MatSetOption(K_, MAT_SYMMETRIC, PETSC_TRUE));
+  PetscCall(stabilityMatrix());
   Vec phi, Ub;
   PetscCall(VecDuplicate(U, &phi));
   PetscCall(VecDuplicate(U, &Ub));
   double mu = 0;
   PetscCall(lowestEigenvalue(&mu, phi));
-  PetscCall(MatSetOption(K_, MAT_SYMMETRIC, PETSC_FALSE));
+  PetscCall(MatSetOption(K_, MAT_SYMMETRIC, PETSC_FALSE));  // K_ is the Newton matrix again
   PetscReal tt, tp, pn;
   PetscCall(VecDot(dUprev, dUprev, &tt));
   PetscCall(VecDot(dUprev, phi, &tp));
@@ -272,21 +276,39 @@ PetscErrorCode ContinuationAnalysis::negativeEigenvalues(Vec U, double lambda, i
   asm_.setMixedStressNewton(false);  // the true tangent of the converged state
   PetscCall(asm_.jacobian(U, ls, K_));
   asm_.setMixedStressNewton(mixed);
+  PetscCall(stabilityMatrix());
   Mat F;
   MatFactorInfo info;
   PetscCall(MatFactorInfoInitialize(&info));
-  PetscCall(MatSetOption(K_, MAT_SYMMETRIC, PETSC_TRUE));
-  PetscCall(MatGetFactor(K_, MATSOLVERMUMPS, MAT_FACTOR_CHOLESKY, &F));
+  PetscCall(MatGetFactor(stab_, MATSOLVERMUMPS, MAT_FACTOR_CHOLESKY, &F));
   PetscCall(MatMumpsSetIcntl(F, 13, 1));  // root front factored sequentially: the global inertia is exact
   PetscCall(MatMumpsSetIcntl(F, 24, 1));  // null pivots detected (a critical point itself is singular)
-  PetscCall(MatCholeskyFactorSymbolic(F, K_, nullptr, &info));
-  PetscCall(MatCholeskyFactorNumeric(F, K_, &info));
+  PetscCall(MatCholeskyFactorSymbolic(F, stab_, nullptr, &info));
+  PetscCall(MatCholeskyFactorNumeric(F, stab_, &info));
   PetscInt neg = 0, zero = 0, pos = 0;
   PetscCall(MatGetInertia(F, &neg, &zero, &pos));
   PetscCall(MatDestroy(&F));
   if ((lowest_ || branchSwitch_) && lowest) PetscCall(lowestEigenvalue(lowest));
   PetscCall(MatSetOption(K_, MAT_SYMMETRIC, PETSC_FALSE));
   *count = static_cast<int>(neg - multipliers_);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+// The matrix of the stability checks: the tangent K_ itself, or, when follower pressure loads make it
+// unsymmetric (their load stiffness), its symmetric part (K + K^T)/2: the assembled pressure stiffness is
+// symmetric where the pressure's boundary terms vanish (fixed edges, closed surfaces; Schweizerhof & Ramm
+// 1984), and a symmetric LDL^T of K_ itself would read one triangle only. Marked symmetric for MUMPS' Cholesky and SLEPc.
+PetscErrorCode ContinuationAnalysis::stabilityMatrix() {
+  PetscFunctionBeginUser;
+  stab_ = K_;
+  if (asm_.hasPressure()) {
+    PetscCall(MatDestroy(&Ks_));
+    PetscCall(MatTranspose(K_, MAT_INITIAL_MATRIX, &Ks_));
+    PetscCall(MatAXPY(Ks_, 1.0, K_, DIFFERENT_NONZERO_PATTERN));
+    PetscCall(MatScale(Ks_, 0.5));
+    stab_ = Ks_;
+  }
+  PetscCall(MatSetOption(stab_, MAT_SYMMETRIC, PETSC_TRUE));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -301,7 +323,7 @@ PetscErrorCode ContinuationAnalysis::lowestEigenvalue(double* value, Vec phi) {
   KSP ksp;
   PC pc;
   PetscCall(EPSCreate(comm, &eps));
-  PetscCall(EPSSetOperators(eps, K_, nullptr));
+  PetscCall(EPSSetOperators(eps, stab_, nullptr));
   PetscCall(EPSSetProblemType(eps, multipliers_ > 0 ? EPS_NHEP : EPS_HEP));
   PetscCall(EPSSetWhichEigenpairs(eps, EPS_TARGET_MAGNITUDE));
   PetscCall(EPSSetTarget(eps, 0.0));
@@ -480,73 +502,90 @@ PetscErrorCode ContinuationAnalysis::run(Vec U, const PointCallback& onPoint, bo
   PetscFunctionBeginUser;
   MPI_Comm comm = asm_.mesh().comm;
   double lambda = 0.0, arc = 0.0;
-  Vec dUprev, Uprev;
-  PetscCall(VecDuplicate(U, &dUprev));
+  Vec dUprev = dUprev_, Uprev;
   PetscCall(VecDuplicate(U, &Uprev));
-  PetscCall(VecSet(dUprev, 0.0));
   double ds = opt_.ds, dlPrev = 0.0;
   *converged = true;
-  {
+  const bool resumed = resumed_;
+  if (resumed) {
+    lambda = resumeLambda_;
+    ds = resumeDs_;
+    dlPrev = resumeDlPrev_;
+    LoadState ls;
+    ls.loadFactor = ls.time = lambda;
+    PetscCall(asm_.setMixedReference(U, ls));
+  } else {
     LoadState start;
     PetscCall(asm_.setMixedReference(U, start));
   }
-  {
+  if (!resumed) {
     bool ok = true;
     PetscCall(equilibrateInitial(U, &ok));
     if (!ok) {
       failure_ = "the start state under the initial loads (load factor 0) did not converge after " + std::to_string(maxCuts_) +
                  " halvings of its increments; try -continuation_initial_steps with more increments";
       *converged = false;
-      PetscCall(VecDestroy(&dUprev));
       PetscCall(VecDestroy(&Uprev));
       PetscFunctionReturn(PETSC_SUCCESS);
     }
   }
-  int prevNeg = -1;
-  if (inertia_) PetscCall(negativeEigenvalues(U, 0.0, &prevNeg, nullptr));
-  for (int n = 1; n <= opt_.max_steps; ++n) {
+  int prevNeg = resumed ? resumePrevNeg_ : -1;
+  if (inertia_ && !resumed) PetscCall(negativeEigenvalues(U, 0.0, &prevNeg, nullptr));
+  // a resumed path continues after its last point: the end of that point's iteration (branch switch,
+  // step adaptation, stop criteria) first
+  bool tailOnly = resumed && !points_.empty();
+  for (int n = tailOnly ? points_.back().step : 1; n <= opt_.max_steps; ++n) {
     PathPoint p;
-    p.step = n;
-    const auto Rsave = asm_.referenceRotations();
-    PetscCall(VecCopy(U, Uprev));
-    bool ok = false;
     int its = 0;
-    while (true) {
-      PetscCall(step(U, &lambda, ds, dUprev, dlPrev, n == 1, &ok, &its));
-      if (ok) break;
-      asm_.setReferenceRotations(Rsave);
-      if (++p.cuts > maxCuts_) break;
-      ds *= 0.5;
-      PetscCall(PetscPrintf(comm, "  path step %d: corrector failed; retrying with %s %.4g\n", n,
-                            opt_.method == "displacement" ? "displacement increment" : "arc length", ds));
+    if (tailOnly) {
+      p = points_.back();
+      its = resumeIts_;
+    } else {
+      p.step = n;
+      const auto Rsave = asm_.referenceRotations();
+      PetscCall(VecCopy(U, Uprev));
+      bool ok = false;
+      while (true) {
+        PetscCall(step(U, &lambda, ds, dUprev, dlPrev, n == 1, &ok, &its));
+        if (ok) break;
+        asm_.setReferenceRotations(Rsave);
+        if (++p.cuts > maxCuts_) break;
+        ds *= 0.5;
+        PetscCall(PetscPrintf(comm, "  path step %d: corrector failed; retrying with %s %.4g\n", n,
+                              opt_.method == "displacement" ? "displacement increment" : "arc length", ds));
+      }
+      if (!ok) {
+        std::ostringstream msg;
+        msg << "path step " << n << " did not converge after " << maxCuts_ << " halvings of the "
+            << (opt_.method == "displacement" ? "displacement increment" : "arc length") << " (last converged load factor "
+            << lambda << "). Try a smaller ds, -continuation_max_it, or check supports for a mechanism.";
+        failure_ = msg.str();
+        *converged = false;
+        break;
+      }
+      PetscCall(VecWAXPY(dUprev, -1.0, Uprev, U));
+      dlPrev = lambda - (points_.empty() ? 0.0 : points_.back().loadFactor);
+      LoadState ls;
+      ls.loadFactor = ls.time = lambda;
+      PetscCall(asm_.setMixedReference(U, ls));
+      PetscCall(asm_.absorbRotations(U));
+      arc += ds;
+      p.loadFactor = lambda;
+      p.arcLength = ds;
+      p.iterations = its;
+      PetscCall(controlDisplacement(U, lambda, &p.controlValue));
+      if (inertia_) PetscCall(pathSlopes(U, lambda, dUprev, dlPrev, &p));
+      if (inertia_) PetscCall(negativeEigenvalues(U, lambda, &p.negativeEigenvalues, &p.lowestEigenvalue));
+      points_.push_back(p);
+      if (inertia_ && prevNeg >= 0 && p.negativeEigenvalues != prevNeg) classify();
+      prevNeg = p.negativeEigenvalues;
+      ckDs_ = ds;
+      ckDlPrev_ = dlPrev;
+      ckIts_ = its;
+      if (onPoint) PetscCall(onPoint(p, U));
+      if (stop_ && *stop_) break;
     }
-    if (!ok) {
-      std::ostringstream msg;
-      msg << "path step " << n << " did not converge after " << maxCuts_ << " halvings of the "
-          << (opt_.method == "displacement" ? "displacement increment" : "arc length") << " (last converged load factor "
-          << lambda << "). Try a smaller ds, -continuation_max_it, or check supports for a mechanism.";
-      failure_ = msg.str();
-      *converged = false;
-      break;
-    }
-    PetscCall(VecWAXPY(dUprev, -1.0, Uprev, U));
-    dlPrev = lambda - (points_.empty() ? 0.0 : points_.back().loadFactor);
-    LoadState ls;
-    ls.loadFactor = ls.time = lambda;
-    PetscCall(asm_.setMixedReference(U, ls));
-    PetscCall(asm_.absorbRotations(U));
-    arc += ds;
-    p.loadFactor = lambda;
-    p.arcLength = ds;
-    p.iterations = its;
-    PetscCall(controlDisplacement(U, lambda, &p.controlValue));
-    if (inertia_) PetscCall(pathSlopes(U, lambda, dUprev, dlPrev, &p));
-    if (inertia_) PetscCall(negativeEigenvalues(U, lambda, &p.negativeEigenvalues, &p.lowestEigenvalue));
-    points_.push_back(p);
-    if (inertia_ && prevNeg >= 0 && p.negativeEigenvalues != prevNeg) classify();
-    prevNeg = p.negativeEigenvalues;
-    if (onPoint) PetscCall(onPoint(p, U));
-    if (stop_ && *stop_) break;
+    tailOnly = false;
     if (branchSwitch_ && !switched_ && !critical_.empty() && critical_.back().kind == CriticalPoint::Bifurcation &&
         critical_.back().afterStep == static_cast<int>(points_.size()) - 1 && n < opt_.max_steps) {
       switched_ = true;
@@ -571,6 +610,9 @@ PetscErrorCode ContinuationAnalysis::run(Vec U, const PointCallback& onPoint, bo
         prevNeg = b.negativeEigenvalues;
         switchedAt_ = b.step;
         PetscCall(PetscPrintf(comm, "  branch switched at path point %d (load factor %.6g)\n", b.step, lambda));
+        ckDs_ = ds;
+        ckDlPrev_ = dlPrev;
+        ckIts_ = its;
         if (onPoint) PetscCall(onPoint(b, U));
       } else {
         PetscCall(PetscPrintf(comm, "  branch switch at path point %d failed: Newton returned to the primary path\n", n));
@@ -582,8 +624,85 @@ PetscErrorCode ContinuationAnalysis::run(Vec U, const PointCallback& onPoint, bo
     if (opt_.stop_load_factor && lambda >= *opt_.stop_load_factor) break;
     if (opt_.stop_displacement && std::abs(p.controlValue) >= std::abs(*opt_.stop_displacement)) break;
   }
-  PetscCall(VecDestroy(&dUprev));
   PetscCall(VecDestroy(&Uprev));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+// Checkpoint row: [points, lambda, ds, dlPrev, prevNeg, switched, switchedAt, critical points], then
+// kCkPointCols per point, then kCkCritCols per critical point (fixed capacity: max_steps each). ds is
+// the step of the point just reported (adapted after it, in run(), also on resume).
+std::vector<double> ContinuationAnalysis::checkpointState() const {
+  std::vector<double> v(static_cast<size_t>(checkpointSize(opt_.max_steps)), 0.0);
+  const PathPoint* last = points_.empty() ? nullptr : &points_.back();
+  v[0] = static_cast<double>(points_.size());
+  v[1] = last ? last->loadFactor : 0.0;
+  v[2] = ckDs_;
+  v[3] = ckDlPrev_;
+  v[4] = last ? last->negativeEigenvalues : -1;
+  v[5] = switched_ ? 1 : 0;
+  v[6] = switchedAt_;
+  v[7] = static_cast<double>(critical_.size());
+  v[8] = ckIts_;
+  size_t k = kCkHeader;
+  for (size_t i = 0; i < points_.size() && i < static_cast<size_t>(opt_.max_steps); ++i, k += kCkPointCols) {
+    const PathPoint& p = points_[i];
+    const double row[kCkPointCols] = {static_cast<double>(p.step), p.loadFactor, p.arcLength, static_cast<double>(p.iterations),
+                                      static_cast<double>(p.cuts), static_cast<double>(p.negativeEigenvalues), p.controlValue,
+                                      p.slopeLoad, p.slopeControl, p.lowestEigenvalue};
+    std::copy(row, row + kCkPointCols, v.begin() + static_cast<long>(k));
+  }
+  k = kCkHeader + static_cast<size_t>(opt_.max_steps) * kCkPointCols;
+  for (size_t i = 0; i < critical_.size() && i < static_cast<size_t>(opt_.max_steps); ++i, k += kCkCritCols) {
+    const CriticalPoint& c = critical_[i];
+    const double row[kCkCritCols] = {static_cast<double>(c.kind), c.interpolated ? 1.0 : 0.0, static_cast<double>(c.afterStep),
+                                     c.loadFactor, c.controlValue};
+    std::copy(row, row + kCkCritCols, v.begin() + static_cast<long>(k));
+  }
+  return v;
+}
+
+PetscErrorCode ContinuationAnalysis::resume(const std::vector<double>& v, Vec dU) {
+  PetscFunctionBeginUser;
+  PetscCheck(static_cast<long>(v.size()) >= kCkHeader, asm_.mesh().comm, PETSC_ERR_ARG_SIZ, "path checkpoint: too short");
+  const int np = static_cast<int>(v[0]), nc = static_cast<int>(v[7]);
+  const long cap = (static_cast<long>(v.size()) - kCkHeader) / (kCkPointCols + kCkCritCols);
+  PetscCheck(np >= 1 && np <= cap && nc <= cap, asm_.mesh().comm, PETSC_ERR_ARG_SIZ, "path checkpoint: inconsistent");
+  resumeLambda_ = v[1];
+  resumeDs_ = v[2];
+  resumeDlPrev_ = v[3];
+  resumePrevNeg_ = static_cast<int>(v[4]);
+  switched_ = v[5] != 0.0;
+  switchedAt_ = static_cast<int>(v[6]);
+  resumeIts_ = static_cast<int>(v[8]);
+  points_.clear();
+  critical_.clear();
+  for (int i = 0; i < np; ++i) {
+    const double* r = &v[kCkHeader + static_cast<size_t>(i) * kCkPointCols];
+    PathPoint p;
+    p.step = static_cast<int>(r[0]);
+    p.loadFactor = r[1];
+    p.arcLength = r[2];
+    p.iterations = static_cast<int>(r[3]);
+    p.cuts = static_cast<int>(r[4]);
+    p.negativeEigenvalues = static_cast<int>(r[5]);
+    p.controlValue = r[6];
+    p.slopeLoad = r[7];
+    p.slopeControl = r[8];
+    p.lowestEigenvalue = r[9];
+    points_.push_back(p);
+  }
+  for (int i = 0; i < nc; ++i) {
+    const double* r = &v[kCkHeader + static_cast<size_t>(cap) * kCkPointCols + static_cast<size_t>(i) * kCkCritCols];
+    CriticalPoint c;
+    c.kind = static_cast<CriticalPoint::Kind>(static_cast<int>(r[0]));
+    c.interpolated = r[1] != 0.0;
+    c.afterStep = static_cast<int>(r[2]);
+    c.loadFactor = r[3];
+    c.controlValue = r[4];
+    critical_.push_back(c);
+  }
+  PetscCall(VecCopy(dU, dUprev_));
+  resumed_ = true;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -53,6 +53,19 @@ class ContinuationAnalysis {
   std::string summary() const;
   /// The path ends after the current point when *stop is set (an interrupt; equal on every rank).
   void setStopFlag(const bool* stop) { stop_ = stop; }
+  /// The start state already carries the initial loads (a form-found shape: form finding applied the
+  /// prescribed initial motions): equilibrium under them is found from it in one increment, not ramped.
+  void setStartCarriesInitialLoads(bool v) { startCarriesInitial_ = v; }
+
+  /// Checkpoint (-restart): the path's state after the last reported point as a fixed-size row of
+  /// checkpointSize() values (header, the points so far, the critical points), and the last increment
+  /// (the predictor's direction; valid during the point callback).
+  static long checkpointSize(int maxSteps) { return kCkHeader + static_cast<long>(maxSteps) * (kCkPointCols + kCkCritCols); }
+  std::vector<double> checkpointState() const;
+  Vec lastIncrement() const { return dUprev_; }
+  /// Continues the path from a checkpoint: U is the state of its last point (reference rotations
+  /// restored), dU its last increment; run() then goes on after that point.
+  PetscErrorCode resume(const std::vector<double>& state, Vec dU);
 
  private:
   PetscErrorCode loadDerivative(Vec U, double lambda, Vec q);
@@ -64,6 +77,7 @@ class ContinuationAnalysis {
   /// Lowest eigenvalue of K_ (assembled true tangent) by SLEPc: shift-and-invert about 0, a few pairs;
   /// its eigenvector into phi when given.
   PetscErrorCode lowestEigenvalue(double* value, Vec phi = nullptr);
+  PetscErrorCode stabilityMatrix();
   /// Newton at a fixed load factor from U (the branch switch); ok when the residual meets the tolerance.
   PetscErrorCode solveFixedLoad(Vec U, double lambda, double scale, bool* ok);
   /// -branch_switch: from the point just past a bifurcation, onto the branch along the critical
@@ -75,15 +89,25 @@ class ContinuationAnalysis {
   PetscErrorCode step(Vec U, double* lambda, double ds, Vec dUprev, double dlPrev, bool first, bool* ok, int* its);
   void classify();
 
+  static constexpr int kCkHeader = 9, kCkPointCols = 10, kCkCritCols = 5;
   Assembler& asm_;
   ContinuationOptions opt_;
+  Vec dUprev_ = nullptr;  ///< increment of the last converged step
+  bool resumed_ = false;   ///< run() continues after points_.back() (resume)
+  double resumeLambda_ = 0, resumeDs_ = 0, resumeDlPrev_ = 0;
+  int resumePrevNeg_ = -1, resumeIts_ = 0;
+  double ckDs_ = 0, ckDlPrev_ = 0;  ///< step state at the reported point (checkpointState)
+  int ckIts_ = 0;
   Mat K_ = nullptr;
+  Mat Ks_ = nullptr;   ///< symmetric part of K_ (follower pressure makes K_ unsymmetric); see stabilityMatrix
+  Mat stab_ = nullptr; ///< the matrix whose inertia / lowest eigenvalue is taken: K_ or Ks_
   KSP ksp_ = nullptr;
   Vec R_ = nullptr, q_ = nullptr, duR_ = nullptr, duq_ = nullptr, dU_ = nullptr, e_ = nullptr, work_ = nullptr;
   long multipliers_ = 0;      ///< global number of rigid-mode multipliers (each adds one negative pivot)
   bool haveControl_ = false;  ///< e_ selects the control DOF among the unknowns
   double rtol_ = 1e-9;
   int maxIts_ = 15, maxCuts_ = 10, desiredIts_ = 5, initialSteps_ = 10;
+  bool startCarriesInitial_ = false;
   bool inertia_ = true;
   bool lowest_ = false;  ///< -continuation_lowest_eigenvalue
   bool branchSwitch_ = false, switched_ = false;  ///< -branch_switch; done once

@@ -184,8 +184,6 @@ Restart::Restart(MPI_Comm comm, const std::string& path, const std::string& outp
   // being written, inconsistent between two commits, and never read)
   std::string src = path;
   if (!fileExists(comm, src)) throw SceneError("-restart", "no result file " + path);
-  if (plan.continuation)
-    throw SceneError("-restart", "path following (opt.continuation) cannot be continued from a checkpoint");
   int rank = 0;
   MPI_Comm_rank(comm, &rank);
   // the new result file replaces its own source at its first commit: read from a copy
@@ -256,8 +254,9 @@ void Restart::check(MPI_Comm comm, const std::string& src, const std::string& pa
                                      " form finding, this scene has " + (plan.formfinding ? "a" : "no") + " formfinding block");
   if (ph == CheckpointPhase::Dynamics && !plan.dynamics)
     throw SceneError("-restart", path + " holds a dynamics checkpoint; this scene has no opt.dynamics");
-  if (ph == CheckpointPhase::Statics && !plan.statics)
-    throw SceneError("-restart", path + " holds a statics checkpoint; this scene runs dynamics (opt.dynamics)");
+  if (ph == CheckpointPhase::Statics && (!plan.statics || plan.continuation || plan.dynamics))
+    throw SceneError("-restart", path + " holds a statics checkpoint; this scene runs " +
+                                     (plan.dynamics ? "dynamics (opt.dynamics)" : "path following (opt.continuation)"));
   if (ph == CheckpointPhase::Statics) {
     const std::string ramp = sc[kCkLoadRamp] != 0.0 ? "uniform" : "spacar";
     if (ramp != model.opt.load_ramp)
@@ -265,6 +264,12 @@ void Restart::check(MPI_Comm comm, const std::string& src, const std::string& pa
                                             model.opt.load_ramp + ": a restart continues the same load steps (give -load_ramp " +
                                             ramp + ")");
   }
+  if (ph == CheckpointPhase::Continuation && !plan.continuation)
+    throw SceneError("-restart", path + " holds a path-following checkpoint; this scene has no opt.continuation");
+  if (ph == CheckpointPhase::Continuation &&
+      static_cast<long>(reader_->pathState().size()) != ContinuationAnalysis::checkpointSize(model.opt.continuation->max_steps))
+    throw SceneError("-restart", path + ": the path checkpoint was written with another opt.continuation.max_steps; a restart "
+                                        "continues with the same max_steps");
   if (ph == CheckpointPhase::Dynamics) {
     const DynamicsOptions& d = *model.opt.dynamics;
     if (d.dt != sc[kCkDt] || d.spectral_radius != sc[kCkSpectralRadius]) {
@@ -355,7 +360,7 @@ PetscErrorCode Restart::restoredState(RunContext& ctx, CheckpointData& d, std::v
   d.scalars = r.scalars();
   d.vectors.emplace_back("U", ctx.U);
   for (const char* v : {"dU", "V", "A", "Qdd"}) {
-    const bool wanted = (phase() == CheckpointPhase::Statics && std::string(v) == "dU") ||
+    const bool wanted = ((phase() == CheckpointPhase::Statics || phase() == CheckpointPhase::Continuation) && std::string(v) == "dU") ||
                         (phase() == CheckpointPhase::Dynamics && std::string(v) != "dU");
     if (!wanted || !r.hasVector(v)) continue;
     Vec w;
@@ -363,6 +368,10 @@ PetscErrorCode Restart::restoredState(RunContext& ctx, CheckpointData& d, std::v
     PetscCall(r.loadVector(v, ctx.assembler, w));
     work->push_back(w);
     d.vectors.emplace_back(v, w);
+  }
+  if (phase() == CheckpointPhase::Continuation) {
+    d.path = r.pathState();
+    d.pathSize = static_cast<long>(d.path.size());
   }
   if (ctx.model.formfinding) {
     d.formfinding = r.formfinding();
@@ -389,6 +398,16 @@ PetscErrorCode Restart::resumeStatics(RunContext& ctx, StaticAnalysis& statics) 
   PetscCall(VecDuplicate(ctx.U, &dU));
   PetscCall(reader_->loadVector("dU", ctx.assembler, dU));
   PetscCall(statics.resume(p, dU));
+  PetscCall(VecDestroy(&dU));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode Restart::resumeContinuation(RunContext& ctx, ContinuationAnalysis& path) const {
+  PetscFunctionBeginUser;
+  Vec dU;
+  PetscCall(VecDuplicate(ctx.U, &dU));
+  PetscCall(reader_->loadVector("dU", ctx.assembler, dU));
+  PetscCall(path.resume(reader_->pathState(), dU));
   PetscCall(VecDestroy(&dU));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -5,7 +5,8 @@
 //   statics       from the next load step; the load factor of step k stays that of the earlier run
 //                 (its loadsteps and opt.load_ramp: StaticAnalysis::stepFactor), so -loadsteps N
 //                 beyond it continues the ramp past load factor 1 (another opt.load_ramp is refused),
-//   dynamics      from the next time step to the scene's (possibly later) tend.
+//   dynamics      from the next time step to the scene's (possibly later) tend,
+//   path following after the last path point (its step size, increment, points and critical points).
 // A scene that differs from the earlier one (nodes, elements, eprops, supports, form-finding block) is
 // refused (exit 2) naming what differs. Other loads are accepted after form finding: from a
 // checkpoint written during form finding, or else from /checkpoint_formfinding (the found shape),
@@ -17,6 +18,7 @@
 #include <memory>
 #include <string>
 
+#include "analysis/continuation_analysis.hpp"
 #include "analysis/dynamic_analysis.hpp"
 #include "analysis/formfinding_analysis.hpp"
 #include "analysis/static_analysis.hpp"
@@ -62,6 +64,8 @@ class Restart {
   PetscErrorCode resumeStatics(RunContext& ctx, StaticAnalysis& statics) const;
   /// Dynamics: progress and rates; energy0/maxDrift of -dynamics_energy.
   PetscErrorCode resumeDynamics(RunContext& ctx, DynamicAnalysis& dyn, double* energy0, double* maxDrift) const;
+  /// Path following: its state after the last point, the last increment.
+  PetscErrorCode resumeContinuation(RunContext& ctx, ContinuationAnalysis& path) const;
   /// loadsteps of the earlier run's ramp (statics checkpoints).
   int rampLoadsteps() const { return static_cast<int>(reader_->scalars()[kCkLoadsteps]); }
 

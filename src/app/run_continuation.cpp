@@ -3,6 +3,7 @@
 #include <string>
 
 #include "analysis/continuation_analysis.hpp"
+#include "app/restart.hpp"
 #include "app/run_context.hpp"
 
 namespace sinew {
@@ -14,6 +15,20 @@ PetscErrorCode runContinuation(RunContext& ctx) {
   ContinuationAnalysis path(ctx.assembler, *ctx.model.opt.continuation);
   std::vector<double> negative;
   path.setStopFlag(&ctx.stop);
+  path.setStartCarriesInitialLoads(ctx.model.formfinding.has_value());  // runs after form finding
+  if (ctx.restart && ctx.restart->phase() == CheckpointPhase::Continuation) PetscCall(ctx.restart->resumeContinuation(ctx, path));
+  const long ckSize = ContinuationAnalysis::checkpointSize(ctx.model.opt.continuation->max_steps);
+  ctx.checkpointState = [&](CheckpointData& d) -> PetscErrorCode {
+    const std::vector<PathPoint>& pts = path.points();
+    d.scalars[kCkPhase] = static_cast<double>(CheckpointPhase::Continuation);
+    d.scalars[kCkStep] = static_cast<double>(pts.size());
+    d.scalars[kCkStepValue] = pts.empty() ? 0.0 : pts.back().loadFactor;
+    d.scalars[kCkLambda] = d.scalars[kCkStepValue];
+    d.vectors = {{"U", ctx.U}, {"dU", path.lastIncrement()}};
+    d.path = path.checkpointState();
+    d.pathSize = ckSize;
+    return PETSC_SUCCESS;
+  };
   ctx.progress.startPhase("path point", ctx.model.opt.continuation->max_steps);
   auto onPoint = [&](const PathPoint& p, Vec U) -> PetscErrorCode {
     PetscFunctionBeginUser;
@@ -41,6 +56,7 @@ PetscErrorCode runContinuation(RunContext& ctx) {
   };
   bool ok = false;
   PetscCall(path.run(ctx.U, onPoint, &ok));
+  ctx.checkpointState = nullptr;
   // critical points: rows [kind (1 limit, 2 bifurcation), after path point, load factor, control displacement]
   std::vector<double> rows;
   for (const CriticalPoint& c : path.criticalPoints())

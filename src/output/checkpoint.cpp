@@ -80,6 +80,7 @@ const char* phaseName(CheckpointPhase p) {
     case CheckpointPhase::FormFinding: return "form finding";
     case CheckpointPhase::Statics: return "statics";
     case CheckpointPhase::Dynamics: return "dynamics";
+    case CheckpointPhase::Continuation: return "path following";
   }
   return "unknown";
 }
@@ -148,6 +149,11 @@ void CheckpointWriter::write(ResultFile& file, const CheckpointData& d, const st
     std::copy_n(d.formfinding.begin(), std::min(d.formfinding.size(), ff.size()), ff.begin());
     file.writeStateArray(group + "/formfinding", ff, {d.formfindingRows, kFormFindingColumns});
   }
+  if (d.pathSize > 0) {
+    std::vector<double> pv(static_cast<size_t>(d.pathSize), 0.0);
+    std::copy_n(d.path.begin(), std::min(d.path.size(), pv.size()), pv.begin());
+    file.writeStateArray(group + "/path", pv, {d.pathSize});
+  }
   file.writeStateArray(group + "/scalars", d.scalars, {kNumScalars});
 }
 
@@ -215,6 +221,7 @@ std::vector<std::string> checkpointVectors(CheckpointPhase p) {
     case CheckpointPhase::FormFinding: return {"U"};
     case CheckpointPhase::Statics: return {"U", "dU"};
     case CheckpointPhase::Dynamics: return {"U", "V", "A", "Qdd"};
+    case CheckpointPhase::Continuation: return {"U", "dU"};
   }
   return {};
 }
@@ -246,6 +253,12 @@ std::vector<double> CheckpointReader::readRows(const std::string& name, const st
     }
   }
   return readPoints(d, coords, 2, what);
+}
+
+std::vector<double> CheckpointReader::pathState() const {
+  if (!exists(group_ + "/path")) return {};
+  std::vector<long> shape;
+  return readArray(group_ + "/path", &shape);
 }
 
 std::vector<double> CheckpointReader::formfinding() const {

@@ -12,6 +12,8 @@
 //                                              (6 columns), then the element's internal state
 //                                              (ElementKernel::saveCheckpoint, k columns)
 //   /checkpoint/formfinding    [steps, 9]      form-finding history (step reports)
+//   /checkpoint/path           [n]             path following: step state, points, critical points
+//                                              (ContinuationAnalysis::checkpointState)
 // with vs = the phase's vectors joined by "_" (checkpointVectors: U_dU for statics), v = U (state), dU (statics: last increment, the secant predictor), V, A, Qdd (dynamics:
 // velocities, generalized-alpha auxiliary and true accelerations). Attribute `fingerprint` holds
 // the scene's fingerprint (SceneFingerprint) to refuse a restart with another scene.
@@ -56,10 +58,10 @@ enum CheckpointScalar : int {
   kNumScalars
 };
 
-enum class CheckpointPhase : int { FormFinding = 1, Statics = 2, Dynamics = 3 };
+enum class CheckpointPhase : int { FormFinding = 1, Statics = 2, Dynamics = 3, Continuation = 4 };
 const char* phaseName(CheckpointPhase p);
 /// The vectors a phase's checkpoint holds, in column order: U (form finding); U, dU (statics);
-/// U, V, A, Qdd (dynamics).
+/// U, V, A, Qdd (dynamics); U, dU (path following: the last path increment).
 std::vector<std::string> checkpointVectors(CheckpointPhase p);
 
 /// Columns of /checkpoint/formfinding (one form-finding step report per row).
@@ -70,6 +72,8 @@ struct CheckpointData {
   std::vector<std::pair<std::string, Vec>> vectors;  ///< unknowns-layout vectors by name
   std::vector<double> formfinding;                   ///< rank 0: rows of kFormFindingColumns
   long formfindingRows = 0;                          ///< fixed row count (capacity) of /checkpoint/formfinding
+  std::vector<double> path;                          ///< path following: ContinuationAnalysis::checkpointState
+  long pathSize = 0;                                 ///< its fixed size (0: no /checkpoint/path)
 };
 
 /// Writes the checkpoint group of a result file (collective; ResultFileError on HDF5 errors). The
@@ -109,6 +113,8 @@ class CheckpointReader {
   long feElements() const { return feElements_; }
   /// Form-finding history rows (kFormFindingColumns each); empty when none.
   std::vector<double> formfinding() const;
+  /// Path-following state (/checkpoint/path); empty when none.
+  std::vector<double> pathState() const;
   bool hasVector(const std::string& name) const;
 
   /// Sets this rank's entries of the unknowns-layout vector v from /checkpoint/{node,element}_<name>

@@ -85,16 +85,28 @@ print(json.dumps({"integration": t2 - t1, "setup": t1 - t0, "tip": [q[-4], q[-3]
 '''
 
 
-def run_timed(cmd, env=ENV):
-    """(stdout, wall time, peak RSS in MiB of the command and its children)"""
-    t0 = time.perf_counter()
-    p = subprocess.Popen(cmd, env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
-    out = p.stdout.read()
-    _, status, ru = os.wait4(p.pid, 0)
-    wall = time.perf_counter() - t0
-    p.returncode = os.waitstatus_to_exitcode(status)
-    if p.returncode != 0:
-        raise RuntimeError(f"{' '.join(cmd)}: exit {p.returncode}\n{out[-3000:]}")
+def run_timed(cmd, env=ENV, timeout=None):
+    """(stdout, wall time, peak RSS in MiB of the command and its children); RuntimeError on a
+    non-zero exit or when the command runs longer than timeout seconds (then it is killed)."""
+    import tempfile
+    with tempfile.TemporaryFile(mode="w+") as log:
+        t0 = time.perf_counter()
+        p = subprocess.Popen(cmd, env=env, stdout=log, stderr=subprocess.STDOUT, text=True, start_new_session=True)
+        while True:
+            pid, status, ru = os.wait4(p.pid, os.WNOHANG)
+            if pid == p.pid:
+                break
+            if timeout is not None and time.perf_counter() - t0 > timeout:
+                os.killpg(p.pid, 9)
+                os.wait4(p.pid, 0)
+                raise RuntimeError(f"{' '.join(cmd)}: did not finish in {timeout:g} s")
+            time.sleep(0.002)
+        wall = time.perf_counter() - t0
+        log.seek(0)
+        out = log.read()
+    code = os.waitstatus_to_exitcode(status)
+    if code != 0:
+        raise RuntimeError(f"{' '.join(cmd)}: exit {code}\n{out[-3000:]}")
     return out, wall, ru.ru_maxrss / 1024.0
 
 
@@ -119,7 +131,7 @@ def sinew(n, steps, h, ranks, model="A3"):
             "its": int(j.group(1)), "jacobians": int(j.group(2))}
 
 
-def exudyn(exudyn_dir, n, steps, h, modified, model="A3"):
+def exudyn(exudyn_dir, n, steps, h, modified, model="A3", timeout=300):
     os.makedirs(WORK, exist_ok=True)
     script = os.path.join(WORK, "exudyn_a3.py")
     with open(script, "w") as f:
@@ -127,10 +139,11 @@ def exudyn(exudyn_dir, n, steps, h, modified, model="A3"):
     env = dict(ENV, PYTHONPATH=os.path.join(exudyn_dir, "pythonDev") + os.pathsep + exudyn_dir)
     try:
         out, wall, rss = run_timed(["/usr/bin/python3", script, str(n), str(steps), str(h), "1" if modified else "0",
-                                    "1" if n > 8 else "0", model], env=env)
+                                    "1" if n > 8 else "0", model], env=env, timeout=timeout)
     except RuntimeError as err:  # Exudyn's solver gave up ("DYNAMIC SOLVER FAILED")
-        print(f"  exudyn {n} elements, {'modified' if modified else 'full'} Newton failed: {str(err).splitlines()[0]}")
-        return {"integration": float("nan"), "process": float("nan"), "rss": float("nan"), "failed": True}
+        why = "did not finish" if "did not finish" in str(err) else "failed"
+        print(f"  exudyn {model} {n} elements, {'modified' if modified else 'full'} Newton {why}: {str(err).splitlines()[0]}")
+        return {"integration": float("nan"), "process": float("nan"), "rss": float("nan"), "failed": why}
     r = json.loads(out.strip().splitlines()[-1])
     r.update(process=wall, rss=rss)
     return r
@@ -141,13 +154,58 @@ def med(rows, key):
 
 
 def reference_exudyn():
-    """Exudyn's figures of the last side-by-side table in docs/performance.md: {n: (integration, process)}."""
+    """Exudyn's figures of the last side-by-side tables in docs/performance.md: {(model, n): (integration, process)}."""
     path = os.path.join(SOURCE, "docs", "performance.md")
     ref = {}
     if os.path.exists(path):
-        for m in re.finditer(r"^\| (\d+) \| (\d+) \| [^|]+ \| [^|]+ \| ([0-9.]+) \| ([0-9.]+) \|", open(path).read(), re.M):
-            ref[int(m.group(1))] = (float(m.group(3)), float(m.group(4)))
+        for m in re.finditer(r"^\| (A3|A1g) \| (\d+) \| \d+ \| [^|]+ \| [^|]+ \| ([0-9.]+) \| [^|]+ \| ([0-9.]+) \|",
+                             open(path).read(), re.M):
+            ref[(m.group(1), int(m.group(2)))] = (float(m.group(3)), float(m.group(4)))
     return ref
+
+
+def fmt(x, digits=4):
+    return "-" if x != x else f"{x:.{digits}f}"
+
+
+def side_by_side(a, model, sizes, steps, h, repeat, timeout):
+    """Rows of the comparison table for one model (Sinew, then Exudyn full and modified Newton, interleaved)."""
+    rows = {n: {"sinew": [], "full": [], "mod": []} for n in sizes}
+    for rep in range(repeat):
+        for n in sizes:
+            rows[n]["sinew"].append(sinew(n, steps, h, 0, model))
+            if a.exudyn:
+                for kind, modified in (("full", False), ("mod", True)):
+                    if rep > 0 and rows[n][kind][0].get("failed"):
+                        continue  # failed or too slow once: not again
+                    rows[n][kind].append(exudyn(a.exudyn, n, steps, h, modified, model, timeout))
+            print(f"  {model} repeat {rep + 1}/{repeat}, {n} elements: sinew {rows[n]['sinew'][-1]['integration']:.4f} s", flush=True)
+    ref = reference_exudyn()
+    out = []
+    for n in sizes:
+        s = rows[n]["sinew"]
+        si, sp = med(s, "integration"), med(s, "process")
+        note = ""
+        if a.exudyn:
+            cands = [(k, rows[n][k]) for k in ("full", "mod") if rows[n][k] and not rows[n][k][0].get("failed")]
+            if cands:
+                k, best = min(cands, key=lambda kv: med(kv[1], "integration"))
+                ei, ep, which = med(best, "integration"), med(best, "process"), "modified" if k == "mod" else "full"
+            else:
+                ei = ep = float("nan")
+                which = " / ".join(f"{'modified' if k == 'mod' else 'full'}: {rows[n][k][0]['failed']}"
+                                   + (f" in {timeout} s" if rows[n][k][0]["failed"] == "did not finish" else "")
+                                   for k in ("full", "mod"))
+        elif (model, n) in ref:
+            (ei, ep), which = ref[(model, n)], "ref. (earlier run)"
+        else:
+            ei = ep = float("nan")
+            which = "-"
+        out.append(f"| {model} | {n} | {4 * n + 1} | {s[0]['its']} / {s[0]['jacobians']} | {fmt(si)} | {fmt(ei)} | {fmt(sp, 3)} |"
+                   f" {fmt(ep, 3)} | {fmt(1e6 * si / steps, 1)} / {fmt(1e6 * ei / steps, 1)} | {fmt(si / ei, 2)} |"
+                   f" {fmt(sp / ep, 2)} | {which}{note} |")
+        print(out[-1], flush=True)
+    return out
 
 
 def main():
@@ -158,56 +216,36 @@ def main():
     ap.add_argument("--quick", action="store_true", help="1 and 8 elements, 1 repeat, growth to 4096")
     ap.add_argument("--max-elements", type=int, default=65536)
     a = ap.parse_args()
-    sizes = [1, 8] if a.quick else [1, 8, 64, 512]
     repeat = 1 if a.quick else a.repeat
-    steps, h = 1000, 1e-4
     load0 = os.getloadavg()[0]
-    rows = {n: {"sinew": [], "exu_full": [], "exu_mod": []} for n in sizes}
-    for rep in range(repeat):
-        for n in sizes:
-            rows[n]["sinew"].append(sinew(n, steps, h, 0))
-            if a.exudyn:
-                rows[n]["exu_full"].append(exudyn(a.exudyn, n, steps, h, False))
-                rows[n]["exu_mod"].append(exudyn(a.exudyn, n, steps, h, True))
-            print(f"  repeat {rep + 1}/{repeat}, {n} elements: sinew {rows[n]['sinew'][-1]['integration']:.4f} s"
-                  + (f", exudyn {rows[n]['exu_full'][-1]['integration']:.4f} / {rows[n]['exu_mod'][-1]['integration']:.4f} s"
-                     if a.exudyn else ""), flush=True)
-    ref = reference_exudyn()
-    lines = [f"A3 (h = 1e-4, {steps} steps), 1 process, median of {repeat} interleaved repeats"
-             f" (load average {load0:.1f} at the start, {os.getloadavg()[0]:.1f} at the end)."
-             " Integration: per step in us and in total; process: the whole command.", "",
-             "| elements | unknowns | Sinew its / Jacobians | Sinew integration [s] | Exudyn integration [s] | Exudyn process [s] |"
-             " Sinew process [s] | per step Sinew / Exudyn [us] | integration ratio | process ratio | Exudyn Newton |",
-             "|---|---|---|---|---|---|---|---|---|---|---|"]
-    for n in sizes:
-        s = rows[n]["sinew"]
-        si, sp = med(s, "integration"), med(s, "process")
-        if a.exudyn:
-            full, mod = rows[n]["exu_full"], rows[n]["exu_mod"]
-            best = min(("full", full), ("modified", mod), key=lambda kv: med(kv[1], "integration"))
-            ei, ep, which = med(best[1], "integration"), med(best[1], "process"), best[0]
-        elif n in ref:
-            ei, ep, which = ref[n][0], ref[n][1], "ref."
-        else:
-            ei = ep = float("nan"); which = "-"
-        lines.append(f"| {n} | {4 * n + 4 - 3} | {s[0]['its']} / {s[0]['jacobians']} | {si:.4f} | {ei:.4f} | {ep:.3f} | {sp:.3f} |"
-                     f" {1e6 * si / steps:.1f} / {1e6 * ei / steps:.1f} | {si / ei:.2f} | {sp / ep:.2f} | {which} |")
-    table = "\n".join(lines)
-    print(table)
+    t0 = time.time()
+    head = ["| model | elements | unknowns | Sinew its / Jacobians | Sinew integration [s] | Exudyn integration [s] |"
+            " Sinew process [s] | Exudyn process [s] | per step Sinew / Exudyn [us] | integration ratio | process ratio |"
+            " Exudyn Newton (the faster) |",
+            "|---|---|---|---|---|---|---|---|---|---|---|---|"]
+    rows = side_by_side(a, "A3", [1, 8] if a.quick else [1, 8, 64, 512], 1000, 1e-4, repeat, 300)
+    rows += side_by_side(a, "A1g", [64] if a.quick else [64, 512, 4096], 100, 1e-3, 1, 60)
+    lines = [f"Generated by `scripts/bench_dynamics.py{' --exudyn DIR' if a.exudyn else ''}` on {time.strftime('%Y-%m-%d')}"
+             f" (load average {load0:.1f} at the start, 2 cores). A3: h = 1e-4, 1000 steps, median of {repeat} interleaved"
+             " repeats; A1g: the A1 cable (EA = 1e6, EI = 833.33) swinging down under gravity from the horizontal,"
+             " h = 1e-3, 100 steps, one run (Exudyn stopped after 60 s). One process each; ratios are Sinew / Exudyn."
+             + ("" if a.exudyn else " Exudyn columns: figures of an earlier side-by-side run (not measured now)."), ""] + head + rows
 
     # growth in elements: Sinew alone, 2 ranks, 20 steps of h = 1e-5
     gsizes = [n for n in ([512, 4096] if a.quick else [1024, 4096, 16384, 65536]) if n <= a.max_elements]
-    g = ["", f"Growth (Sinew, 2 ranks, A3 load, 20 steps of h = 1e-5; load average {os.getloadavg()[0]:.1f}):", "",
-         "| elements | unknowns | integration [s] | per step and element [us] | Newton its / Jacobians | process [s] | peak memory [MiB] | memory per element [KiB] |",
+    g = ["", f"Growth (Sinew alone, 2 ranks, A3 load, 20 steps of h = 1e-5; load average {os.getloadavg()[0]:.1f}):", "",
+         "| elements | unknowns | integration [s] | per step and element [us] | Newton its / Jacobians | process [s] |"
+         " peak memory [MiB] | memory per element [KiB] |",
          "|---|---|---|---|---|---|---|---|"]
     for n in gsizes:
         r = sinew(n, 20, 1e-5, 2)
         g.append(f"| {n} | {4 * n + 1} | {r['integration']:.3f} | {1e6 * r['integration'] / (20 * n):.2f} |"
                  f" {r['its']} / {r['jacobians']} | {r['process']:.2f} | {r['rss']:.0f} | {1024 * r['rss'] / n:.1f} |")
         print(g[-1], flush=True)
-    g.append("")
-    g.append("Peak memory: the largest process of the mpirun tree (wait4), so one rank's share plus what it holds alone.")
-    text_ = table + "\n" + "\n".join(g)
+    g += ["", "Peak memory: the largest process of the mpirun tree (wait4): one rank with its share of the model.",
+          f"Whole script: {time.time() - t0:.0f} s."]
+    text_ = "\n".join(lines + g)
+    print(text_)
     if a.doc:
         doc_tables.write_block("performance.md", "bench_dynamics", text_)
 

@@ -8,6 +8,18 @@
 
 namespace sinew {
 
+void DynamicAnalysis::checkScheme(const DistributedMesh& mesh) {
+  char scheme[64] = "arnold_bruls";
+  PetscBool set = PETSC_FALSE;
+  SinewCallThrow(mesh.comm, PetscOptionsGetString(nullptr, nullptr, "-dynamics_scheme", scheme, sizeof(scheme), &set));
+  const std::string sch = scheme;
+  if (sch != "tsalpha2" && sch != "arnold_bruls")
+    throw SceneError("-dynamics_scheme", "expected arnold_bruls or tsalpha2, got " + sch);
+  if (sch == "tsalpha2" && mesh.anyRotations)
+    throw SceneError("-dynamics_scheme", "tsalpha2 integrates the unknowns as a vector space; beam rotations need the "
+                                         "Lie-group form of the default scheme (arnold_bruls)");
+}
+
 DynamicAnalysis::DynamicAnalysis(Assembler& assembler, const DynamicsOptions& opts) : asm_(assembler), opts_(opts) {
   const double rho = opts_.spectral_radius;
   alphaM_ = (2.0 * rho - 1.0) / (rho + 1.0);
@@ -26,6 +38,7 @@ DynamicAnalysis::DynamicAnalysis(Assembler& assembler, const DynamicsOptions& op
   useTS_ = std::string(scheme) == "tsalpha2";
   if (!useTS_ && std::string(scheme) != "arnold_bruls")
     throw SceneError("-dynamics_scheme", "expected arnold_bruls or tsalpha2, got " + std::string(scheme));
+  checkScheme(asm_.mesh());
   PetscInt cuts = maxCuts_;
   SinewCallThrow(comm, PetscOptionsGetInt(nullptr, nullptr, "-max_cuts", &cuts, &set));
   maxCuts_ = static_cast<int>(cuts);
@@ -220,6 +233,10 @@ PetscErrorCode DynamicAnalysis::step(double t1, bool* ok, int* its, double* fnor
     PetscCall(VecCopy(V1_, Vn_));
     PetscCall(VecCopy(A1_, An_));
     PetscCall(VecCopy(Q1_, Qn_));
+    // Lie-group form for Frame6 nodes: R_{n+1} = exp(theta) R_n, then theta_{n+1} = 0, so the next
+    // step's rotation unknowns are again the spatial increment h Delta q from R_{n+1}. V and A
+    // hold spatial angular velocities and accelerations (vectors in the fixed frame): no transport.
+    PetscCall(asm_.absorbRotations(Un_));
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -250,6 +267,7 @@ PetscErrorCode DynamicAnalysis::runArnoldBruls(Vec U, const StepCallback& onStep
   bool ok = false;
   if (!resumed_) {
     PetscCall(VecCopy(U, Un_));
+    PetscCall(asm_.absorbRotations(Un_));  // rotation unknowns are increments from R_n (0 at a step start)
     PetscCall(VecSet(Vn_, 0.0));
     PetscCall(initialAccelerations(Un_, Vn_, Qn_, &ok));
     if (!ok) {

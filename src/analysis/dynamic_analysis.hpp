@@ -50,6 +50,9 @@ class DynamicAnalysis {
   /// Called at t = 0 (step 0, after the initial accelerations) and after every time step:
   /// U, V and the accelerations Qdd at time t.
   using StepCallback = std::function<PetscErrorCode(int step, double t, Vec U, Vec V, Vec Qdd)>;
+  /// Checks -dynamics_scheme against the model (SceneError; called at setup, where scene errors exit 2):
+  /// tsalpha2 (a vector space) cannot integrate rotation unknowns.
+  static void checkScheme(const DistributedMesh& mesh);
   /// Integrates from U (in: initial state, at rest; out: state at the last converged time).
   PetscErrorCode run(Vec U, const StepCallback& onStep, bool* converged);
   /// The loop ends after the step whose onStep set *stop (an interrupt or a failed result file);

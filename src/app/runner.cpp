@@ -11,6 +11,7 @@
 
 #include "analysis/constraint_check.hpp"
 #include "analysis/continuation_analysis.hpp"
+#include "analysis/dynamic_analysis.hpp"
 #include "analysis/formfinding_analysis.hpp"
 #include "analysis/static_analysis.hpp"
 #include "analysis/step_analysis.hpp"
@@ -337,6 +338,7 @@ PetscErrorCode runScene(int argc, char** argv, int* exitCode) {
     plan = makePlan(model);
     const FeMesh fe = discretize(model);
     dmesh = std::make_unique<DistributedMesh>(distributeMesh(comm, model, fe, makeKernelFactory(model)));
+    if (plan.dynamics) DynamicAnalysis::checkScheme(*dmesh);
     fingerprint = sceneFingerprint(model, static_cast<long>(fe.X.size()), static_cast<long>(fe.elements.size()));
   } catch (const SceneError& ex) {
     setupError = std::string("error: ") + ex.what();

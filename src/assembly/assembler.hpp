@@ -205,6 +205,10 @@ class Assembler {
   PetscErrorCode addSlopeTorqueTangent(const LoadState& ls, Mat J);
   /// Element velocities (kernel DOF layout) from vLocal_, or nullptr in statics.
   const double* gatherVelocity(const LocalElement& el, const int* idx, double* qdot) const;
+  /// R J0 R^T of node i's mominertia at its current rotation (state_); hasRotaryInertia: a free
+  /// Frame6 node with nonzero mominertia.
+  Mat3 spatialInertia(int i) const;
+  bool hasRotaryInertia(int i) const;
 
   DistributedMesh& mesh_;
   std::optional<Vec3> gravity_;

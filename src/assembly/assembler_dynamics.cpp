@@ -27,6 +27,24 @@ PetscErrorCode restoreLocalRead(Vec X, Vec* xl, const PetscScalar** x) {
 }
 }  // namespace
 
+// Spatial inertia tensor J_s = R J0 R^T of a Frame6 node's mominertia at its current rotation.
+Mat3 Assembler::spatialInertia(int i) const {
+  const LocalNode& n = mesh_.nodes[i];
+  const auto& I = n.mominertia;
+  const Mat3 J0{I[0], I[1], I[2], I[1], I[3], I[4], I[2], I[4], I[5]};
+  const double* s = &state_[12 * static_cast<size_t>(i)];
+  const Mat3 R{s[3], s[4], s[5], s[6], s[7], s[8], s[9], s[10], s[11]};
+  return R * J0 * transpose(R);
+}
+
+bool Assembler::hasRotaryInertia(int i) const {
+  const LocalNode& n = mesh_.nodes[i];
+  if (n.kind != NodeKind::Frame6 || n.rotationPrescribed) return false;
+  for (double v : n.mominertia)
+    if (v != 0.0) return true;
+  return false;
+}
+
 const double* Assembler::gatherVelocity(const LocalElement& el, const int* idx, double* qdot) const {
   if (!vLocal_) return nullptr;
   const int nd = el.kernel->numDofs();
@@ -77,6 +95,16 @@ PetscErrorCode Assembler::dynamicResidual(Vec U, Vec V, Vec A, const LoadState& 
     const int nt = n.kind == NodeKind::Ancf2D ? 2 : 3;
     for (int k = 0; k < nt; ++k)
       if (n.dof[k] >= 0) f[n.dof[k]] += n.mass * a[n.dof[k]];
+  }
+  // nodal rotary inertia (spatial angular velocity w and acceleration wd of the rotation unknowns,
+  // Lie-group form): moment J_s wd + w x (J_s w), J_s = R J0 R^T
+  for (int i = 0; i < mesh_.numOwnedNodes; ++i) {
+    if (!hasRotaryInertia(i)) continue;
+    const LocalNode& n = mesh_.nodes[i];
+    const Mat3 J = spatialInertia(i);
+    const Vec3 w{v[n.dof[3]], v[n.dof[4]], v[n.dof[5]]}, wd{a[n.dof[3]], a[n.dof[4]], a[n.dof[5]]};
+    const Vec3 m = J * wd + cross(w, J * w);
+    for (int k = 0; k < 3; ++k) f[n.dof[3 + k]] += m[k];
   }
   PetscCall(VecRestoreArray(fl, &f));
   PetscCall(VecRestoreArrayRead(ul, &u));
@@ -142,6 +170,19 @@ PetscErrorCode Assembler::dynamicJacobian(Vec U, Vec V, const LoadState& ls, dou
       PetscCall(MatSetValuesLocal(J, 1, &r, 1, &r, &m, ADD_VALUES));
     }
   }
+  // rotary inertia: d/dtheta of J_s wd + w x (J_s w) with dwd/dtheta = shiftA, dw/dtheta = shiftV
+  // (the change of J_s with the rotation is left out: an approximate tangent)
+  for (int i = 0; i < mesh_.numOwnedNodes; ++i) {
+    if (!hasRotaryInertia(i)) continue;
+    const LocalNode& n = mesh_.nodes[i];
+    const Mat3 Js = spatialInertia(i);
+    const Vec3 w{v[n.dof[3]], v[n.dof[4]], v[n.dof[5]]}, Jw = Js * w;
+    const Mat3 G = skew(w) * Js - skew(Jw);  // d(w x J w)/dw
+    std::array<double, 9> B;
+    for (int k = 0; k < 9; ++k) B[k] = shiftA * Js[k] + shiftV * G[k];
+    const PetscInt rows[3] = {n.dof[3], n.dof[4], n.dof[5]};
+    PetscCall(MatSetValuesLocal(J, 3, rows, 3, rows, B.data(), ADD_VALUES));
+  }
   PetscCall(addSlopeTorqueTangent(ls, J));
   PetscCall(VecRestoreArrayRead(ul, &u));
   PetscCall(VecGhostRestoreLocalForm(uWork_, &ul));
@@ -178,6 +219,10 @@ PetscErrorCode Assembler::kineticEnergy(Vec U, Vec V, const LoadState& ls, doubl
     const int nt = n.kind == NodeKind::Ancf2D ? 2 : 3;
     for (int k = 0; k < nt && n.mass > 0; ++k)
       if (n.dof[k] >= 0) t += 0.5 * n.mass * v[n.dof[k]] * v[n.dof[k]];
+    if (hasRotaryInertia(i)) {
+      const Vec3 w{v[n.dof[3]], v[n.dof[4]], v[n.dof[5]]};
+      t += 0.5 * dot(w, spatialInertia(i) * w);
+    }
   }
   PetscCall(restoreLocalRead(V, &vl, &v));
   MPI_Allreduce(MPI_IN_PLACE, &t, 1, MPI_DOUBLE, MPI_SUM, mesh_.comm);

@@ -57,12 +57,24 @@ DynamicAnalysis::DynamicAnalysis(Assembler& assembler, const DynamicsOptions& op
   const std::string mode = modified;
   modifiedNewton_ = mode == "true" || (mode == "auto" && asm_.mesh().numGlobalUnknowns >= 200);
   coordMax_ = asm_.coordinateScale();
+  int mult = 0;
+  for (const LocalElement& e : asm_.mesh().elements) mult |= e.firstMultiplier >= 0;
+  MPI_Allreduce(MPI_IN_PLACE, &mult, 1, MPI_INT, MPI_LOR, comm);
+  if (mult) {
+    SinewCallThrow(comm, VecDuplicate(F_, &keep_));
+    SinewCallThrow(comm, VecSet(keep_, 1.0));
+    PetscScalar* k = nullptr;
+    SinewCallThrow(comm, VecGetArray(keep_, &k));
+    for (const LocalElement& e : asm_.mesh().elements)
+      for (int j = 0; e.firstMultiplier >= 0 && j < e.kernel->numConstraints(); ++j) k[e.firstMultiplier + j] = 0.0;
+    SinewCallThrow(comm, VecRestoreArray(keep_, &k));
+  }
 }
 
 DynamicAnalysis::~DynamicAnalysis() {
   SNESDestroy(&snes_);
   MatDestroy(&J_);
-  for (Vec* v : {&F_, &Un_, &Vn_, &An_, &Qn_, &V1_, &A1_, &Q1_, &Cu_}) VecDestroy(v);
+  for (Vec* v : {&F_, &Un_, &Vn_, &An_, &Qn_, &V1_, &A1_, &Q1_, &Cu_, &keep_}) VecDestroy(v);
 }
 
 // ---------------------------------------------------------------- Arnold-Brüls, own step loop
@@ -186,12 +198,52 @@ PetscErrorCode DynamicAnalysis::initialAccelerations(Vec U, Vec V, Vec Qdd, bool
   KSP ksp;
   PetscCall(KSPCreate(comm, &ksp));
   PetscCall(KSPSetOptionsPrefix(ksp, "init_"));
-  PetscCall(KSPSetOperators(ksp, M, M));
+  Mat K = nullptr, A = nullptr;
+  double s = 1.0;
+  if (keep_) {
+    // Constraints (index 3): M a0 + G^T lambda0 = r, G a0 = 0 (at rest). The tangent at shiftA = s
+    // is A_s = [K + s M, G^T; G, 0]; with x = a0 / s, A_s [x; lambda0] = [r + K x; 0], solved by
+    // fixed-point iteration from x = 0 (rate ||K|| / (s ||M||) = 1e-4 with s below).
+    PetscCall(asm_.createMatrix(&K));
+    PetscCall(asm_.createMatrix(&A));
+    PetscCall(asm_.dynamicJacobian(U, V, ls0, 0.0, 0.0, K));
+    PetscReal nk = 0, nm = 0;
+    PetscCall(MatNorm(K, NORM_INFINITY, &nk));
+    PetscCall(MatNorm(M, NORM_INFINITY, &nm));
+    s = nm > 0 && nk > 0 ? 1e4 * nk / nm : 1.0;
+    PetscCall(asm_.dynamicJacobian(U, V, ls0, 0.0, s, A));
+    PetscCall(KSPSetOperators(ksp, A, A));
+  } else {
+    PetscCall(KSPSetOperators(ksp, M, M));
+  }
   PetscCall(useDirectSolver(ksp));
   PetscCall(KSPSetFromOptions(ksp));
   PetscCall(KSPSolve(ksp, F_, Qdd));
   KSPConvergedReason why;
   PetscCall(KSPGetConvergedReason(ksp, &why));
+  if (keep_) {
+    Vec x, rhs;
+    PetscCall(VecDuplicate(Qdd, &x));
+    PetscCall(VecDuplicate(Qdd, &rhs));
+    for (int it = 0; it < 6 && why >= 0; ++it) {
+      PetscCall(VecPointwiseMult(x, keep_, Qdd));
+      PetscCall(MatMult(K, x, rhs));
+      PetscCall(VecPointwiseMult(rhs, keep_, rhs));  // K x on the coordinate rows, 0 on the constraints
+      PetscCall(VecAXPY(rhs, 1.0, F_));
+      PetscCall(KSPSolve(ksp, rhs, Qdd));
+      PetscCall(KSPGetConvergedReason(ksp, &why));
+    }
+    // Qdd = [x; lambda0]: a0 = s x on the coordinates; lambda0 goes into U (consistent start)
+    PetscCall(VecPointwiseMult(x, keep_, Qdd));
+    PetscCall(VecAXPY(U, 1.0, Qdd));
+    PetscCall(VecAXPY(U, -1.0, x));
+    PetscCall(VecScale(x, s));
+    PetscCall(VecCopy(x, Qdd));
+    PetscCall(VecDestroy(&x));
+    PetscCall(VecDestroy(&rhs));
+    PetscCall(MatDestroy(&K));
+    PetscCall(MatDestroy(&A));
+  }
   PetscReal nrm = 0;
   PetscCall(VecNorm(Qdd, NORM_INFINITY, &nrm));
   *ok = why >= 0 && std::isfinite(nrm);
@@ -233,6 +285,8 @@ PetscErrorCode DynamicAnalysis::step(double t1, bool* ok, int* its, double* fnor
     PetscCall(VecCopy(V1_, Vn_));
     PetscCall(VecCopy(A1_, An_));
     PetscCall(VecCopy(Q1_, Qn_));
+    if (keep_)  // multipliers are algebraic (index 3): no velocity or acceleration; predictor lambda_n
+      for (Vec v : {Vn_, An_, Qn_}) PetscCall(VecPointwiseMult(v, keep_, v));
     // Lie-group form for Frame6 nodes: R_{n+1} = exp(theta) R_n, then theta_{n+1} = 0, so the next
     // step's rotation unknowns are again the spatial increment h Delta q from R_{n+1}. V and A
     // hold spatial angular velocities and accelerations (vectors in the fixed frame): no transport.

@@ -10,6 +10,9 @@
 // prefix: -snes_*, -ksp_*, -pc_*); a failed step is retried with halved steps (-max_cuts).
 // PETSc's TSALPHA2 is the Chung-Hulbert variant (equilibrium at t_{n+1-alpha_f}); it is
 // available with -dynamics_scheme tsalpha2 (docs/ancf_cable2d.md compares both).
+// Beams (docs/dynamics.md): Frame6 rotation unknowns are spatial increments from R_n, absorbed into
+// R_ref after every converged step (Lie-group form; V and A hold spatial angular velocities and
+// accelerations); Lagrange multipliers of rigid modes are index-3 unknowns without rates.
 #pragma once
 #include <petscsnes.h>
 #include <petscts.h>
@@ -102,6 +105,8 @@ class DynamicAnalysis {
   Vec F_ = nullptr;
   Vec Un_ = nullptr, Vn_ = nullptr, An_ = nullptr, Qn_ = nullptr;  // step start: q, qd, a (algorithmic), qdd
   Vec V1_ = nullptr, A1_ = nullptr, Q1_ = nullptr, Cu_ = nullptr;  // iterate rates; Cu = predictor part of q
+  /// 1 on coordinates, 0 on Lagrange multipliers (index-3 constraints: no rates); null without multipliers
+  Vec keep_ = nullptr;
   double forceRtol_ = 1e-10;
   int maxCuts_ = 10;
   int growAfter_ = 3;  ///< after a halving, double the sub-step after this many successes (0: never)

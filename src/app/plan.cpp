@@ -1,7 +1,5 @@
 #include "app/plan.hpp"
 
-#include "mesh/distributed_mesh.hpp"
-
 #include <algorithm>
 #include <sstream>
 #include <string>
@@ -28,19 +26,6 @@ Plan makePlan(const Model& model) {
     beams |= s.type == ElementType::Beam;
     sections |= s.type == ElementType::Beam && s.cshape != CrossSection::None &&
                 std::any_of(s.flex.begin(), s.flex.end(), [](bool b) { return b; });
-  }
-  if (p.dynamics && beams) {
-    // beams integrate with rotation increments on SO(3) (docs/dynamics.md); rigid modes are exact
-    // constraints with Lagrange multipliers, which the time loop does not carry yet (index 3: the
-    // initial accelerations need the multipliers' saddle-point system)
-    for (size_t e = 0; e < model.elements.size(); ++e)
-      if (const int nr = rigidModeCount(model, static_cast<int>(e)); nr > 0)
-        throw SceneError("opt.dynamics",
-                         "time integration supports flexible beams (all six deformation modes in flex or released), "
-                         "ancf_cable2d, cable and membrane elements; element " + std::to_string(e + 1) + " has " +
-                             std::to_string(nr) + " rigid deformation mode(s) (a rigid element or modes missing from "
-                             "eprops flex), whose Lagrange multipliers dynamics does not integrate yet; make them "
-                             "flexible or remove opt.dynamics");
   }
   for (size_t i = 0; i < model.sensors.size(); ++i) {
     const int e = model.sensors[i].element, set = model.elementSet[e];

@@ -1,7 +1,7 @@
 """ANCF cable dynamics on 2 ranks (Sinew's Arnold-Brüls generalized-alpha = Exudyn's solver):
 A3 (step load, 1 element), A5 (user functions + damping), sensors in dynamics, energy of an
 undamped cable pendulum, a slack cable folding under gravity, 'only what is asked' (no damping
-matrices without damping), and the plan-time refusal of beams with rigid modes."""
+matrices without damping). Beams in dynamics: test_beam_dynamics*."""
 import math
 import re
 
@@ -94,11 +94,4 @@ h5, _ = st.run("ancf_slack", text(slack))
 with st.h5(h5) as f:
     st.check(abs(f["time"][-1] - 1.0) < 1e-12 and np.all(np.isfinite(f["mesh/p"][:])), "slack cable reaches t = 1 without NaN")
 
-# Beams with rigid deformation modes (Lagrange multipliers) in dynamics: refused at plan time,
-# naming opt.dynamics (flexible beams integrate: test_beam_dynamics)
-beam = {"title": "beam", "nodes": [[0, 0, 0], [1, 0, 0]], "elements": [[1, 2]], "nprops": {1: {"fix": True}},
-        "eprops": [{"elems": [1], "emod": 2e11, "smod": 8e10, "dens": 7800, "cshape": "rect", "dim": [0.01, 0.01],
-                    "flex": [2, 3, 4, 5, 6]}], "opt": {"dynamics": {"tend": 0.1, "dt": 0.01}}}
-_, out = st.run("ancf_beam_dynamics", text(beam), expect_exit=2)
-st.check("opt.dynamics" in out and "rigid deformation mode" in out, "rigid beam modes in dynamics: refusal names opt.dynamics")
 st.done()

@@ -7,8 +7,8 @@ so the time mean of u is u_s, the first mode oscillates with w1 = 2 pi f1 (the t
 rho = 1, lengthens the period by (w1 dt)^2 / 12 = 8.2e-5 at dt = T1/200), and the peak is 2 u_s
 less the higher modes' phase lag. Measured over 1.5 T1 (every 2nd step written, a 3-mode least-
 squares fit): fitted w1 vs 2 pi f1 -8.4e-5 (predicted -8.2e-5, difference 1.4e-6), fitted mean vs
-u_s -5.7e-6, peak /
-u_s 1.9894. The tip displacement is 1e-5 L, so the geometric nonlinearity is below 1e-9 relative.
+u_s -5.7e-6, peak / u_s 1.9894. The tip displacement is 1e-5 L, so the geometric nonlinearity is
+below 1e-9 relative.
 Also: 1 vs 2 ranks identical (measured 6.5e-14 u_s), and -dynamics_scheme tsalpha2 refused for
 beams (exit 2)."""
 import numpy as np

@@ -2,6 +2,8 @@
 item 1; docs/modal.md, "Eigenvalues on fine meshes"): runs/crosshinge.yaml, leaves split into
 nbeams elements, on 2 ranks.
 
+Figures measured on the scene before `cw: true` was added to it (the test compares runs of the
+current scene with each other).
 - Unloaded, the three lowest frequencies at 1024 elements per leaf agree with those at 256 to the
   discretization error (measured: f1 4e-12, f2 and f3 6.7e-10; 64 vs 256: f1 2e-12, f2 3e-8). The
   assembled stiffness and its LU alone (-eigen_operator assembled, the default for such models

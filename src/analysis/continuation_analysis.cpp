@@ -125,28 +125,7 @@ PetscErrorCode ContinuationAnalysis::equilibrateInitial(Vec U, bool* ok) {
     const auto Rsave = asm_.referenceRotations();
     ls.initialFactor = next;
     bool conv = false;
-    PetscReal jnorm = 0;
-    for (int k = 0; k <= 3 * maxIts_; ++k) {
-      PetscCall(asm_.residual(U, ls, R_));
-      PetscReal rn;
-      PetscCall(VecNorm(R_, NORM_2, &rn));
-      if (!std::isfinite(rn)) break;
-      const double floor = 8.0 * DBL_EPSILON * jnorm * std::max(asm_.coordinateScale(), 1.0);
-      if (k > 0 && rn <= std::max(rtol_ * fint, floor)) {
-        conv = true;
-        break;
-      }
-      if (k == 3 * maxIts_) break;
-      PetscCall(asm_.jacobian(U, ls, K_));
-      PetscCall(MatNorm(K_, NORM_INFINITY, &jnorm));
-      PetscCall(KSPSetOperators(ksp_, K_, K_));
-      PetscCall(VecScale(R_, -1.0));
-      PetscCall(KSPSolve(ksp_, R_, duR_));
-      KSPConvergedReason kr;
-      PetscCall(KSPGetConvergedReason(ksp_, &kr));
-      if (kr < 0) break;
-      PetscCall(VecAXPY(U, 1.0, duR_));
-    }
+    PetscCall(newton(U, ls, rtol_ * fint, 3 * maxIts_, &conv));
     if (conv) {
       PetscCall(asm_.setMixedReference(U, ls));
       PetscCall(asm_.absorbRotations(U));
@@ -166,21 +145,31 @@ PetscErrorCode ContinuationAnalysis::solveFixedLoad(Vec U, double lambda, double
   PetscFunctionBeginUser;
   LoadState ls;
   ls.loadFactor = ls.time = lambda;
+  PetscCall(newton(U, ls, rtol_ * scale, 2 * maxIts_, ok));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+// Newton at a fixed load state (a Jacobian per iteration, MUMPS): converged when the residual is
+// below tol or its round-off floor 8 eps ||K||_inf max(|X|, 1); at most maxIts iterations.
+PetscErrorCode ContinuationAnalysis::newton(Vec U, const LoadState& ls, double tol, int maxIts, bool* ok) {
+  PetscFunctionBeginUser;
   *ok = false;
   PetscReal jnorm = 0;
-  for (int k = 0; k <= 2 * maxIts_; ++k) {
+  for (int k = 0; k <= maxIts; ++k) {
     PetscCall(asm_.residual(U, ls, R_));
     PetscReal rn;
     PetscCall(VecNorm(R_, NORM_2, &rn));
     if (!std::isfinite(rn)) break;
     const double floor = 8.0 * DBL_EPSILON * jnorm * std::max(asm_.coordinateScale(), 1.0);
-    if (k > 0 && rn <= std::max(rtol_ * scale, floor)) {
+    if (k > 0 && rn <= std::max(tol, floor)) {
       *ok = true;
       break;
     }
-    if (k == 2 * maxIts_) break;
-    PetscCall(factor(U, lambda));
+    if (k == maxIts) break;
+    PetscCall(asm_.jacobian(U, ls, K_));
     PetscCall(MatNorm(K_, NORM_INFINITY, &jnorm));
+    PetscCall(KSPSetOperators(ksp_, K_, K_));
+    PetscCall(KSPSetUp(ksp_));
     PetscCall(VecScale(R_, -1.0));
     PetscCall(KSPSolve(ksp_, R_, duR_));
     KSPConvergedReason kr;

@@ -80,6 +80,7 @@ class ContinuationAnalysis {
   PetscErrorCode stabilityMatrix();
   /// Newton at a fixed load factor from U (the branch switch); ok when the residual meets the tolerance.
   PetscErrorCode solveFixedLoad(Vec U, double lambda, double scale, bool* ok);
+  PetscErrorCode newton(Vec U, const LoadState& ls, double tol, int maxIts, bool* ok);
   /// -branch_switch: from the point just past a bifurcation, onto the branch along the critical
   /// eigenvector (orthogonal to the path tangent dUprev), by tau = |ds|; ok when it left the primary path.
   PetscErrorCode switchBranch(Vec U, double lambda, double tau, Vec dUprev, bool* ok);

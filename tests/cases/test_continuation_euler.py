@@ -20,22 +20,13 @@ Checks:
 import numpy as np
 from scipy.special import ellipk
 
-import beamtools as bt
+import path_scenes as ps
 import sinewtest as st
 
 L, d, E, n = 1.0, 0.01, 210e9, 20
 EI = E * np.pi * d ** 4 / 64
 Pcr = np.pi ** 2 * EI / (4 * L ** 2)
-nprops = {i + 1: {"fix_z": True} for i in range(n + 1)}
-nprops[1] = {"fix": True}
-nprops[n + 1] = {"fix_z": True, "force": [0, -Pcr, 0]}
-scene = bt.yaml_text({"title": "perfect Euler column", "nodes": [[0.0, L * i / n, 0.0] for i in range(n + 1)],
-                      "elements": [[i + 1, i + 2] for i in range(n)], "nprops": nprops,
-                      "eprops": [{"elems": list(range(1, n + 1)), "flex": [1, 2, 3, 4, 5, 6], "emod": E, "smod": E / 2.6,
-                                  "cshape": "circ", "dim": [d]}],
-                      "opt": {"calccompl": False,
-                              "continuation": {"method": "arclength", "constraint": "spherical", "psi": float(1 / Pcr),
-                                               "ds": 0.1, "ds_max": 0.3, "node": n + 1, "direction": "x", "max_steps": 20}}})
+scene, _ = ps.euler_column(n, max_steps=20, L=L, d=d, E=E)
 h5_1, _ = st.run("continuation_euler_1", scene, np_=1, args=["-branch_switch"])
 h5, out = st.run("continuation_euler", scene, args=["-branch_switch"])
 with st.h5(h5_1) as f:

@@ -19,30 +19,14 @@ Checks:
   (4) 1 and 2 ranks: the same path to 1e-9 (load factors and deflections)."""
 import numpy as np
 
-import beamtools as bt
+import path_scenes as ps
 import sinewtest as st
 
 L, E, n = 120.0, 720.0, 20
 EI = E * 2.0
 
 
-def scene():
-    nodes = [[0.0, L * i / n, 0.0] for i in range(n + 1)] + [[L * i / n, L, 0.0] for i in range(1, n + 1)]
-    elems = [[i + 1, i + 2] for i in range(len(nodes) - 1)]
-    load = n + 1 + n // 5  # x = 24
-    nprops = {i + 1: {"fix_z": True} for i in range(len(nodes))}
-    nprops[1] = {"fix_pos": True}
-    nprops[len(nodes)] = {"fix_pos": True}
-    nprops[load] = {"fix_z": True, "force": [0, -1, 0]}
-    return bt.yaml_text({"title": "Lee's frame", "nodes": nodes, "elements": elems, "nprops": nprops,
-                         "eprops": [{"elems": list(range(1, len(elems) + 1)), "flex": [1, 2, 3, 4, 5, 6], "emod": E,
-                                     "smod": E / 2.6, "cshape": "rect", "dim": [3.0, 2.0], "orien": [0, 0, 1]}],
-                         "opt": {"calccompl": False,
-                                 "continuation": {"method": "arclength", "ds": 10.0, "ds_max": 20.0, "node": load,
-                                                  "direction": "y", "max_steps": 38}}}), load
-
-
-text, load = scene()
+text, load = ps.lee_frame()
 runs = {}
 for np_ in (2, 1):
     args = ["-continuation_lowest_eigenvalue"] if np_ == 2 else []

@@ -17,32 +17,12 @@ positions, rotations, /path/negative_eigenvalues, /path/control_displacement, /p
       computes the lowest eigenvalue at every point): stopped at the first point past the bifurcation (the
       switch is then done by the restarted run) and at the switched point, restarted on 2 ranks:
       <= 1e-12 (measured 0)."""
-import numpy as np
 
-import beamtools as bt
 import restartutil as ru
+import path_scenes as ps
 import sinewtest as st
 
-L, E, n = 120.0, 720.0, 20
-
-
-def scene(max_steps=38):
-    nodes = [[0.0, L * i / n, 0.0] for i in range(n + 1)] + [[L * i / n, L, 0.0] for i in range(1, n + 1)]
-    elems = [[i + 1, i + 2] for i in range(len(nodes) - 1)]
-    load = n + 1 + n // 5
-    nprops = {i + 1: {"fix_z": True} for i in range(len(nodes))}
-    nprops[1] = {"fix_pos": True}
-    nprops[len(nodes)] = {"fix_pos": True}
-    nprops[load] = {"fix_z": True, "force": [0, -1, 0]}
-    return bt.yaml_text({"title": "Lee's frame", "nodes": nodes, "elements": elems, "nprops": nprops,
-                         "eprops": [{"elems": list(range(1, len(elems) + 1)), "flex": [1, 2, 3, 4, 5, 6], "emod": E,
-                                     "smod": E / 2.6, "cshape": "rect", "dim": [3.0, 2.0], "orien": [0, 0, 1]}],
-                         "opt": {"calccompl": False,
-                                 "continuation": {"method": "arclength", "ds": 10.0, "ds_max": 20.0, "node": load,
-                                                  "direction": "y", "max_steps": max_steps}}})
-
-
-text = scene()
+text = ps.lee_frame()[0]
 ref, _ = st.run("restart_path_ref", text)
 ref1, _ = st.run("restart_path_ref1", text, np_=1)
 with st.h5(ref) as f:
@@ -59,21 +39,10 @@ for k in (25, 37):
     ru.compare(ref, got, f"stopped after {k}, restarted on 2 ranks", tol=1e-12)
 got, _ = ru.restarted("restart_path_go25_1", text, 1, ru.stopped("restart_path_stop25b", text, 2, 25))
 ru.compare(ref, got, "stopped after 25 on 2 ranks, restarted on 1", tol=1e-9, other_ranks=ref1)
-ru.restarted("restart_path_other", scene(40), 2, st.WORK + "/restart_path_stop25.h5", expect_exit=2)
+ru.restarted("restart_path_other", ps.lee_frame(40)[0], 2, st.WORK + "/restart_path_stop25.h5", expect_exit=2)
 
 # (4) branch switching across a restart
-Le, d, Ee, ne = 1.0, 0.01, 210e9, 20
-Pcr = np.pi ** 2 * Ee * np.pi * d ** 4 / 64 / (4 * Le ** 2)
-npe = {i + 1: {"fix_z": True} for i in range(ne + 1)}
-npe[1] = {"fix": True}
-npe[ne + 1] = {"fix_z": True, "force": [0, -Pcr, 0]}
-euler = bt.yaml_text({"title": "perfect Euler column", "nodes": [[0.0, Le * i / ne, 0.0] for i in range(ne + 1)],
-                      "elements": [[i + 1, i + 2] for i in range(ne)], "nprops": npe,
-                      "eprops": [{"elems": list(range(1, ne + 1)), "flex": [1, 2, 3, 4, 5, 6], "emod": Ee, "smod": Ee / 2.6,
-                                  "cshape": "circ", "dim": [d]}],
-                      "opt": {"calccompl": False,
-                              "continuation": {"method": "arclength", "constraint": "spherical", "psi": float(1 / Pcr),
-                                               "ds": 0.1, "ds_max": 0.3, "node": ne + 1, "direction": "x", "max_steps": 12}}})
+euler, Pcr = ps.euler_column(max_steps=12)
 eref, out = st.run("restart_path_euler_ref", euler, args=["-branch_switch"])
 with st.h5(eref) as f:
     ecrit = f["path/critical_points"][:]

@@ -8,7 +8,7 @@
 
 namespace sinew {
 
-void DynamicAnalysis::checkScheme(const DistributedMesh& mesh) {
+bool DynamicAnalysis::checkScheme(const DistributedMesh& mesh) {
   char scheme[64] = "arnold_bruls";
   PetscBool set = PETSC_FALSE;
   SinewCallThrow(mesh.comm, PetscOptionsGetString(nullptr, nullptr, "-dynamics_scheme", scheme, sizeof(scheme), &set));
@@ -18,6 +18,7 @@ void DynamicAnalysis::checkScheme(const DistributedMesh& mesh) {
   if (sch == "tsalpha2" && mesh.anyRotations)
     throw SceneError("-dynamics_scheme", "tsalpha2 integrates the unknowns as a vector space; beam rotations need the "
                                          "Lie-group form of the default scheme (arnold_bruls)");
+  return sch == "tsalpha2";
 }
 
 DynamicAnalysis::DynamicAnalysis(Assembler& assembler, const DynamicsOptions& opts) : asm_(assembler), opts_(opts) {
@@ -32,13 +33,8 @@ DynamicAnalysis::DynamicAnalysis(Assembler& assembler, const DynamicsOptions& op
   SinewCallThrow(comm, asm_.createMatrix(&J_));
   SinewCallThrow(comm, asm_.createVector(&F_));
   for (Vec* v : {&Un_, &Vn_, &An_, &Qn_, &V1_, &A1_, &Q1_, &Cu_}) SinewCallThrow(comm, VecDuplicate(F_, v));
-  char scheme[64] = "arnold_bruls";
+  useTS_ = checkScheme(asm_.mesh());
   PetscBool set = PETSC_FALSE;
-  SinewCallThrow(comm, PetscOptionsGetString(nullptr, nullptr, "-dynamics_scheme", scheme, sizeof(scheme), &set));
-  useTS_ = std::string(scheme) == "tsalpha2";
-  if (!useTS_ && std::string(scheme) != "arnold_bruls")
-    throw SceneError("-dynamics_scheme", "expected arnold_bruls or tsalpha2, got " + std::string(scheme));
-  checkScheme(asm_.mesh());
   PetscInt cuts = maxCuts_;
   SinewCallThrow(comm, PetscOptionsGetInt(nullptr, nullptr, "-max_cuts", &cuts, &set));
   maxCuts_ = static_cast<int>(cuts);

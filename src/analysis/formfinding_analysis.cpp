@@ -25,8 +25,6 @@ double elementArea(int nn, const double* q) {
 }
 }  // namespace
 
-namespace {
-/// The form-found eprops sets: formfinding_elements, or every cable and membrane set when it is empty.
 std::vector<int> formFoundSets(const FormFinding& ff, const std::vector<ElementSet>& eprops) {
   std::vector<int> sets = ff.formfinding_elements;
   if (sets.empty())
@@ -34,6 +32,8 @@ std::vector<int> formFoundSets(const FormFinding& ff, const std::vector<ElementS
       if (eprops[s].type == ElementType::Cable || eprops[s].type == ElementType::Membrane) sets.push_back(static_cast<int>(s));
   return sets;
 }
+
+namespace {
 
 /// Homotopy factor and xURS of form-finding step k (1-based).
 std::pair<double, bool> stepMode(const FormFinding& ff, int k) {

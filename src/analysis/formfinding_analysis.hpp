@@ -57,6 +57,9 @@
 
 namespace sinew {
 
+/// The form-found eprops sets: formfinding_elements, or every cable and membrane set when it is empty.
+std::vector<int> formFoundSets(const FormFinding& ff, const std::vector<ElementSet>& eprops);
+
 struct FormFindingStepReport {
   int step = 0;
   double lambda = 0;          ///< homotopy factor

@@ -15,17 +15,8 @@
 namespace sinew {
 
 namespace {
-/// The eprops sets that are form-found (formfinding_elements, or every cable and membrane set).
-std::vector<int> formFoundSetList(const Model& m) {
-  std::vector<int> sets = m.formfinding->formfinding_elements;
-  if (sets.empty())
-    for (size_t s = 0; s < m.eprops.size(); ++s)
-      if (m.eprops[s].type == ElementType::Cable || m.eprops[s].type == ElementType::Membrane) sets.push_back(static_cast<int>(s));
-  return sets;
-}
-
 bool hasFormFound(const Model& m, ElementType type) {
-  for (int s : formFoundSetList(m))
+  for (int s : formFoundSets(*m.formfinding, m.eprops))
     if (m.eprops[static_cast<size_t>(s)].type == type) return true;
   return false;
 }
@@ -37,7 +28,7 @@ bool hasFormFound(const Model& m, ElementType type) {
 /// supported), form-found edge cables, initial loads. Needs the scene's elements (before set-up
 /// releases them).
 std::string formFindingCollapseCauses(const Model& m) {
-  const std::vector<int> sets = formFoundSetList(m);
+  const std::vector<int> sets = formFoundSets(*m.formfinding, m.eprops);
   bool cables = false, membranes = false, loads = false;
   std::map<std::pair<int, int>, int> edges;
   for (int s : sets) {

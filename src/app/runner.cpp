@@ -70,19 +70,18 @@ std::string elementList(const std::vector<int>& elems) {
 void warnings(MPI_Comm comm, const Model& model) {
   for (const std::string& w : model.warnings) PetscPrintf(comm, "warning: %s\n", w.c_str());
   if (model.formfinding) {  // form-found sets without prestress (issue 10 item 17)
-    const auto& ffe = model.formfinding->formfinding_elements;
-    for (size_t set = 0; set < model.eprops.size(); ++set) {
-      const ElementSet& s = model.eprops[set];
+    for (const int set : formFoundSets(*model.formfinding, model.eprops)) {
+      const ElementSet& s = model.eprops[static_cast<size_t>(set)];
       const bool cable = s.type == ElementType::Cable, membrane = s.type == ElementType::Membrane;
       if (!cable && !membrane) continue;
-      if (!ffe.empty() && std::find(ffe.begin(), ffe.end(), static_cast<int>(set)) == ffe.end()) continue;
       const bool zero = cable ? s.prestress.value_or(0.0) == 0.0 && s.prestress_stress.value_or(0.0) == 0.0
                               : s.membrane_prestress[0] == 0.0 && s.membrane_prestress[1] == 0.0 && s.membrane_prestress[2] == 0.0;
       if (zero)
         PetscPrintf(comm,
                     "warning: eprops[%zu] (%s set %zu) is form-found with zero prestress (%s): it carries no force and "
                     "gives no stiffness in form finding\n",
-                    set, cable ? "cable" : "membrane", set + 1, cable ? "prestress / prestress_stress" : "prestress [s11, s22, s12]");
+                    static_cast<size_t>(set), cable ? "cable" : "membrane", static_cast<size_t>(set) + 1,
+                    cable ? "prestress / prestress_stress" : "prestress [s11, s22, s12]");
     }
   }
   if (model.nodes.size() > model.connectedNodes) {

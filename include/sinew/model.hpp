@@ -38,6 +38,16 @@ struct NodeProps {
 };
 
 enum class ElementType { Beam, Cable, Membrane, AncfCable2D };
+/// The scene's name of an element type (eprops type).
+inline const char* elementTypeName(ElementType t) {
+  switch (t) {
+    case ElementType::Beam: return "beam";
+    case ElementType::Cable: return "cable";
+    case ElementType::Membrane: return "membrane";
+    case ElementType::AncfCable2D: return "ancf_cable2d";
+  }
+  return "beam";
+}
 enum class CrossSection { None, Rect, Circ };
 
 struct ElementSet {

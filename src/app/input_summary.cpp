@@ -5,6 +5,13 @@
 
 namespace sinew {
 
+std::string oneBasedList(const std::vector<int>& v, std::size_t shown) {
+  std::string s;
+  for (std::size_t i = 0; i < v.size() && i < shown; ++i) s += (i ? ", " : "") + std::to_string(v[i] + 1);
+  if (v.size() > shown) s += " and " + std::to_string(v.size() - shown) + " more";
+  return s;
+}
+
 namespace {
 
 constexpr std::size_t kShown = 8;  // entries of a list before "and N more"
@@ -23,13 +30,7 @@ std::string vec(const C& v) {
   return s + "]";
 }
 
-/// "1, 2, 5 and 12 more" of 0-based numbers, shown 1-based.
-std::string numbers(const std::vector<int>& v) {
-  std::string s;
-  for (std::size_t i = 0; i < v.size() && i < kShown; ++i) s += (i ? ", " : "") + std::to_string(v[i] + 1);
-  if (v.size() > kShown) s += " and " + std::to_string(v.size() - kShown) + " more";
-  return s;
-}
+std::string numbers(const std::vector<int>& v) { return oneBasedList(v, kShown); }
 
 /// One line per entry, at most kShown of them, then "... and N more".
 void list(std::ostringstream& o, const std::string& title, const std::vector<std::string>& entries) {
@@ -43,18 +44,9 @@ void list(std::ostringstream& o, const std::string& title, const std::vector<std
   if (entries.size() > kShown) o << "    ... and " << entries.size() - kShown << " more\n";
 }
 
-const char* typeName(ElementType t) {
-  switch (t) {
-    case ElementType::Cable: return "cable";
-    case ElementType::Membrane: return "membrane";
-    case ElementType::AncfCable2D: return "ancf_cable2d";
-    default: return "beam";
-  }
-}
-
 std::string setLine(const ElementSet& s, std::size_t index) {
   std::ostringstream o;
-  o << "eprops[" << index << "] " << typeName(s.type) << ", element" << (s.elems.size() > 1 ? "s " : " ") << numbers(s.elems)
+  o << "eprops[" << index << "] " << elementTypeName(s.type) << ", element" << (s.elems.size() > 1 ? "s " : " ") << numbers(s.elems)
     << ":";
   if (s.type == ElementType::Beam) {
     std::vector<double> flex;

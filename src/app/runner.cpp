@@ -58,15 +58,6 @@ std::string outputPath(const Model& model, const std::string& scenePath) {
   return stem + ".h5";
 }
 
-/// "3, 5, 8 and 12 more" of 0-based element numbers.
-std::string elementList(const std::vector<int>& elems) {
-  std::string s;
-  const std::size_t shown = std::min<std::size_t>(elems.size(), 5);
-  for (std::size_t i = 0; i < shown; ++i) s += (i ? ", " : "") + std::to_string(elems[i] + 1);
-  if (elems.size() > shown) s += " and " + std::to_string(elems.size() - shown) + " more";
-  return s;
-}
-
 void warnings(MPI_Comm comm, const Model& model) {
   for (const std::string& w : model.warnings) PetscPrintf(comm, "warning: %s\n", w.c_str());
   if (model.formfinding) {  // form-found sets without prestress (issue 10 item 17)
@@ -98,7 +89,7 @@ void warnings(MPI_Comm comm, const Model& model) {
       PetscPrintf(comm,
                   "warning: eprops[%zu] element%s %s: cshape rect without orien (SPACAR Light requires it); the width "
                   "dim[0] is taken along the global z axis (global y for an element along z): give orien\n",
-                  set, s.elems.size() > 1 ? "s" : "", elementList(s.elems).c_str());
+                  set, s.elems.size() > 1 ? "s" : "", oneBasedList(s.elems, 5).c_str());
   }
   if (model.opt.customvis)
     PetscPrintf(comm, "note: opt.customvis (SPACAR Light's custom visualization) is accepted but not drawn by Sinew; "

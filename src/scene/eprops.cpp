@@ -46,7 +46,7 @@ void checkSetKeys(const YAML::Node& n, const std::string& path, ElementType type
     for (ElementType other : {ElementType::Beam, ElementType::Cable, ElementType::Membrane, ElementType::AncfCable2D})
       if (other != type && contains(typeKeys(other), k)) {
         const std::string near = nearestName(k, allowed);
-        fail(childPath(path, k), "key '" + k + "' does not apply to type " + typeName(type) + " (it is a " + typeName(other) +
+        fail(childPath(path, k), "key '" + k + "' does not apply to type " + elementTypeName(type) + " (it is a " + elementTypeName(other) +
                                      " field)" + (near.empty() ? "" : " (did you mean '" + near + "'?)"));
       }
   }
@@ -269,7 +269,7 @@ std::string nodeList(const std::vector<int>& nodes) {
 std::string elementKind(const Model& m, int e) {
   const int set = m.elementSet[static_cast<std::size_t>(e)];
   if (set < 0) return "a rigid beam (in no eprops set)";
-  return std::string("a ") + typeName(m.eprops[static_cast<std::size_t>(set)].type) + " element (eprops[" + std::to_string(set) + "])";
+  return std::string("a ") + elementTypeName(m.eprops[static_cast<std::size_t>(set)].type) + " element (eprops[" + std::to_string(set) + "])";
 }
 
 /// Two elements of the same type on the same node set (in any order) are one element given twice;
@@ -415,9 +415,9 @@ void checkElementTypes(SceneContext& ctx) {
     const ElementType t = m.eprops[i].type;
     const std::string p = childPath(indexPath("eprops", i), "type");
     if ((t == ElementType::Cable || t == ElementType::Membrane) && m.dimension == 2)
-      fail(p, std::string(typeName(t)) + " elements need a 3D model, but the nodes have 2 coordinates (x, y)");
+      fail(p, std::string(elementTypeName(t)) + " elements need a 3D model, but the nodes have 2 coordinates (x, y)");
     if (ancfSet >= 0 && t != ElementType::AncfCable2D)
-      fail(p, std::string("cannot mix ") + typeName(t) + " elements with ancf_cable2d (" + ancfPath +
+      fail(p, std::string("cannot mix ") + elementTypeName(t) + " elements with ancf_cable2d (" + ancfPath +
                   "): an ancf_cable2d model is planar and holds only ancf_cable2d elements");
   }
   if (ancfSet >= 0 && m.dimension == 3)
@@ -444,7 +444,7 @@ void checkElementTypes(SceneContext& ctx) {
     const bool ok = t == ElementType::Membrane ? (nn == 3 || nn == 4) : nn == 2;
     if (!ok)
       fail(ctx.elementPath(ei), ctx.elementLabel(ei) + " has " + std::to_string(nn) + " nodes, but eprops[" + std::to_string(set) +
-                                    "] makes it a " + typeName(t) + ", which needs " +
+                                    "] makes it a " + elementTypeName(t) + ", which needs " +
                                     (t == ElementType::Membrane ? "3 or 4" : "2"));
     if (t == ElementType::Membrane) {
       // Zero area: a triangle (or either half of a quad split along 1-3) with collinear nodes.

@@ -91,7 +91,7 @@ void parseRls(const YAML::Node& v, const std::string& path, SceneContext& ctx) {
     const int set = m.elementSet[static_cast<std::size_t>(e)];
     const ElementSet* s = set >= 0 ? &m.eprops[static_cast<std::size_t>(set)] : nullptr;
     if (s && s->type != ElementType::Beam)
-      fail(p, "element " + std::to_string(e + 1) + " is a " + typeName(s->type) +
+      fail(p, "element " + std::to_string(e + 1) + " is a " + elementTypeName(s->type) +
                   " (eprops[" + std::to_string(set) + "]); rls releases deformation modes of beam elements");
     const auto modes = getInts(it->second, p, true);
     std::vector<int> released;

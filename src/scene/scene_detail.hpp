@@ -30,7 +30,6 @@ struct SceneContext {
   bool isMeshElement(int e) const { return static_cast<std::size_t>(e) >= sceneElements; }
 };
 
-const char* typeName(ElementType t);
 double elementLength(const Model& m, int e);
 
 /// 1-based number -> 0-based index, checked against count ("node"/"element"/"eprops set").

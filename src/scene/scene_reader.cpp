@@ -33,16 +33,6 @@ std::string SceneContext::elementLabel(int e) const {
   return s;
 }
 
-const char* typeName(ElementType t) {
-  switch (t) {
-    case ElementType::Beam: return "beam";
-    case ElementType::Cable: return "cable";
-    case ElementType::Membrane: return "membrane";
-    case ElementType::AncfCable2D: return "ancf_cable2d";
-  }
-  return "beam";
-}
-
 double elementLength(const Model& m, int e) {
   const auto& el = m.elements[static_cast<std::size_t>(e)];
   return norm(m.nodes[static_cast<std::size_t>(el[1])] - m.nodes[static_cast<std::size_t>(el[0])]);

@@ -730,11 +730,7 @@ PetscErrorCode Assembler::mass(Vec U, const LoadState& ls, Mat M) {
       }
     }
     if (n.kind == NodeKind::Frame6) {
-      const auto& I = n.mominertia;
-      const Mat3 J0{I[0], I[1], I[2], I[1], I[3], I[4], I[2], I[4], I[5]};
-      const double* s = &state_[12 * static_cast<size_t>(i)];
-      const Mat3 R{s[3], s[4], s[5], s[6], s[7], s[8], s[9], s[10], s[11]};
-      const Mat3 J = R * J0 * transpose(R);
+      const Mat3 J = spatialInertia(i);
       const PetscInt rows[3] = {n.dof[3], n.dof[4], n.dof[5]};
       PetscCall(MatSetValuesLocal(M, 3, rows, 3, rows, J.data(), ADD_VALUES));
     }

@@ -3,12 +3,18 @@ Geometry and material as commonly quoted for Williams' toggle (F. W. Williams 19
 Math. 17, 451: two straight members rigidly joined at the apex, clamped at both supports): half span
 a = 12.943 in, rise h = 0.386 in, E = 10.3e6 psi, section 0.753 x 0.243 in (A = 0.183 in^2,
 I = 9.0e-4 in^4), apex load P (lb); 10 beam elements per member, in-plane (every node fix_z).
-Reference: the published limit load (Williams' analysis and experiment) was not at hand, so the test
-compares with shallow-beam (Marguerre) theory for the same frame (tests/cases/shallow_beam.py: w0 the
+Reference: Williams' published limit load (his 1964 analysis and experiment; also plotted by Wood &
+Zienkiewicz 1977 and in Crisfield's book) is still not at hand: a search of the stored public material
+(web pages, documentation, GitHub code and issues, November 2026: "Williams toggle" with limit load,
+experiment, 0.386 in, 12.943 in, 10.3e6 psi, Wood & Zienkiewicz, Oran & Kassimali 1976) found the frame
+named in benchmark lists (e.g. a Rust corotational validation suite whose toggle test only checks that
+the solver runs) but no number and no digitized curve. So the test compares with shallow-beam
+(Marguerre) theory for the same frame (tests/cases/shallow_beam.py: w0 the
 kinked stress-free shape, clamped ends, uniform axial force; exact to the order of the squared slopes,
 (h/a)^2 = 1e-3), traced through its fold: limit load 33.900 lb at an apex deflection of 0.2321 in,
 then a minimum of 31.306 lb at 0.3915 in (the load rises again after it). Tolerances 0.5% on the
-loads, 1% on the deflections.
+loads, 1% on the deflections. Measured (2 ranks): 33.849 and 31.246 lb (-0.15%, -0.19%) at 0.23200 and
+0.39175 in (-0.05%, +0.08%).
 Checks: both limit points located (kind 1) and compared; the negative-eigenvalue count 0 -> 1 -> 0,
 changing at the two limit points only; SLEPc's lowest eigenvalue of the tangent negative exactly where
 the count is 1."""

@@ -112,6 +112,7 @@ class DynamicAnalysis {
   int growAfter_ = 3;  ///< after a halving, double the sub-step after this many successes (0: never)
   double jacobianNorm_ = 0, coordMax_ = 0, fnorm0_ = 0;  ///< round-off floor of the residual (convergenceTest)
   double snormPrev_ = 0;                      ///< last Newton update norm of this solve (update test)
+  double theta_ = 0;                          ///< contraction |dU_k| / |dU_k-1| of the last two updates
   static constexpr double kUpdateRtol = 1e-6;  ///< update test: estimated error <= this * |U|
   bool useTS_ = false;
   // Modified Newton (as Exudyn's): the factored Jacobian is kept across iterations and time steps

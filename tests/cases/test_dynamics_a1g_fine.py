@@ -17,7 +17,7 @@ The x difference is the former path's: it accepted a step after one iteration at
 this build with -dynamics_predictor acceleration gives (-2.08083020e-06, -4.39164168e-03), 2.0e-11 and
 2.3e-11 from the default, at 101 iterations on 27 Jacobians with 1 retried step.
 The test fails when the predictor is ignored (more than 2.5 iterations per step, retries).
-Runtime: 17 s wall on the shared 2 cores (load average ~9 from other jobs)."""
+Runtime: 17 s wall, 54 s at load average ~10 from other jobs on the shared 2 cores."""
 import re
 
 import numpy as np

@@ -113,6 +113,7 @@ class DynamicAnalysis {
   double jacobianNorm_ = 0, coordMax_ = 0, fnorm0_ = 0;  ///< round-off floor of the residual (convergenceTest)
   double snormPrev_ = 0;                      ///< last Newton update norm of this solve (update test)
   double theta_ = 0;                          ///< contraction |dU_k| / |dU_k-1| of the last two updates
+  double fnormPrevIt_ = 0;                    ///< residual norm of the previous iteration (update test)
   static constexpr double kUpdateRtol = 1e-6;  ///< update test: estimated error <= this * |U|
   bool useTS_ = false;
   // Modified Newton (as Exudyn's): the factored Jacobian is kept across iterations and time steps

@@ -111,6 +111,10 @@ class DynamicAnalysis {
   int maxCuts_ = 10;
   int growAfter_ = 3;  ///< after a halving, double the sub-step after this many successes (0: never)
   double jacobianNorm_ = 0, coordMax_ = 0, fnorm0_ = 0;  ///< round-off floor of the residual (convergenceTest)
+  double snormPrev_ = 0;                      ///< last Newton update norm of this solve (update test)
+  double theta_ = 0;                          ///< contraction |dU_k| / |dU_k-1| of the last two updates
+  double fnormPrevIt_ = 0;                    ///< residual norm of the previous iteration (update test)
+  static constexpr double kUpdateRtol = 1e-6;  ///< update test: estimated error <= this * |U|
   bool useTS_ = false;
   // Modified Newton (as Exudyn's): the factored Jacobian is kept across iterations and time steps
   // while each iteration reduces the residual by at least kContractivity; a slower iteration, a new
@@ -118,6 +122,8 @@ class DynamicAnalysis {
   bool modifiedNewton_ = true;
   bool jacobianValid_ = false;
   bool restPredictor_ = false;  ///< guarded retry: Newton starts at q_n
+  /// Newton's start of a time step (-dynamics_predictor): q_n + h qd_n + h^2/2 a_n or q_n
+  enum class Predictor { Acceleration, State } predictor_ = Predictor::Acceleration;
   double jacobianH_ = 0;       ///< step size the kept Jacobian was built for
   int reuseCount_ = 0;         ///< iterations on the kept Jacobian since it was built
   double prevFnorm_ = 0;       ///< residual norm at the previous Jacobian call of this solve

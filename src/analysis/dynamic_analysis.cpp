@@ -29,6 +29,7 @@ DynamicAnalysis::DynamicAnalysis(Assembler& assembler, const DynamicsOptions& op
   beta_ = 0.25 * (gamma_ + 0.5) * (gamma_ + 0.5);
   ls_.loadFactor = 1.0;  // loads act from t = 0 (step loads); user functions see t
   ls_.gravityRamped = false;
+  ls_.timeFunctions = true;  // loads and prescribed motions given as functions of time act at t
   MPI_Comm comm = asm_.mesh().comm;
   SinewCallThrow(comm, asm_.createMatrix(&J_));
   SinewCallThrow(comm, asm_.createVector(&F_));

@@ -176,6 +176,11 @@ PetscErrorCode DynamicAnalysis::convergenceTest(SNES snes, PetscInt it, PetscRea
   if (*reason == SNES_CONVERGED_ITERATING && it > 0 && fnorm <= 1e-3 * self->fnorm0_ &&
       fnorm <= 8.0 * DBL_EPSILON * self->jacobianNorm_ * self->coordMax_)
     *reason = SNES_CONVERGED_FNORM_ABS;
+  // a model at rest under loads that are still zero (functions of time that start later): the
+  // residual starts at its round-off floor and cannot drop by 1e-3; Newton's update is round-off too
+  if (*reason == SNES_CONVERGED_ITERATING && it > 0 && fnorm <= 8.0 * DBL_EPSILON * self->jacobianNorm_ * self->coordMax_ &&
+      snorm <= 1e3 * DBL_EPSILON * self->coordMax_)
+    *reason = SNES_CONVERGED_SNORM_RELATIVE;
   if (!std::isfinite(fnorm)) *reason = SNES_DIVERGED_FNORM_NAN;
   PetscFunctionReturn(PETSC_SUCCESS);
 }

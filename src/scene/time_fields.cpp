@@ -38,9 +38,9 @@ double getNumberOrTimeFunction(const YAML::Node& n, const std::string& path, con
 
 Vec3 getVec3OrTimeFunctions(const YAML::Node& n, const std::string& path, bool allow2, const Magnitude& mag,
                             std::array<std::string, 3>& texts) {
-  const std::string what = allow2 ? "expected 3 entries (or 2 in a 2D model)" : "expected 3 entries";
+  const std::string what = allow2 ? "expected 3 numbers (or 2 in a 2D model)" : "expected 3 numbers";
   if (!n.IsDefined() || !n.IsSequence())
-    fail(path, what + ", each a number or a function of time (a string such as \"10*sin(2*pi*t)\"), got " + describe(n));
+    fail(path, what + " (each may be a function of time, a string such as \"10*sin(2*pi*t)\"), got " + describe(n));
   if (n.size() != 3 && !(allow2 && n.size() == 2)) fail(path, what + ", got " + std::to_string(n.size()));
   Vec3 v{};
   for (std::size_t k = 0; k < n.size(); ++k) v[k] = getNumberOrTimeFunction(n[k], indexPath(path, k), mag, &texts[k]);

@@ -33,6 +33,17 @@ struct NodeProps {
   Vec3 force{}, force_initial{}, moment{}, moment_initial{};
   std::array<std::optional<double>, 3> displ{}, displ_initial{};  ///< prescribed x/y/z displacement
   std::optional<Vec3> rot, rot_initial;                          ///< prescribed rotation (axis * angle)
+  /// Sinew: components given as functions of time (expression strings of t, docs/scene.md "Loads and
+  /// motions as functions of time"); "" = the number above. The numbers hold the functions' values at
+  /// t = 0, which is what statics applies (ramped by the load factor); dynamics evaluates them at t.
+  std::array<std::string, 3> force_t, moment_t, displ_t;
+  std::string rot_t;  ///< rot: [angle(t), axis_x, axis_y, axis_z]; the axis (unit) is rot_axis
+  Vec3 rot_axis{};
+  bool hasTimeFunctions() const {
+    for (int k = 0; k < 3; ++k)
+      if (!force_t[k].empty() || !moment_t[k].empty() || !displ_t[k].empty()) return true;
+    return !rot_t.empty();
+  }
   std::vector<std::string> transfer_in;   ///< force_x force_y force_z (moment_x ...)
   std::vector<std::string> transfer_out;  ///< displ_x ... veloc_x ...
 };

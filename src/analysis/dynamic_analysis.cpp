@@ -29,6 +29,7 @@ DynamicAnalysis::DynamicAnalysis(Assembler& assembler, const DynamicsOptions& op
   beta_ = 0.25 * (gamma_ + 0.5) * (gamma_ + 0.5);
   ls_.loadFactor = 1.0;  // loads act from t = 0 (step loads); user functions see t
   ls_.gravityRamped = false;
+  ls_.timeFunctions = true;  // loads and prescribed motions given as functions of time act at t
   MPI_Comm comm = asm_.mesh().comm;
   SinewCallThrow(comm, asm_.createMatrix(&J_));
   SinewCallThrow(comm, asm_.createVector(&F_));
@@ -222,6 +223,10 @@ PetscErrorCode DynamicAnalysis::convergenceTest(SNES snes, PetscInt it, PetscRea
     // small updates but residuals of 1..33 N against the noise of 0.09 N, A1g at 65536 elements)
     if (err <= kUpdateRtol * xnorm && fnorm <= 1.5 * self->fnormPrevIt_) *reason = SNES_CONVERGED_SNORM_RELATIVE;
   }
+  // a model at rest under loads that are still zero (functions of time that start later): the
+  // residual starts at its round-off floor and cannot drop by 1e-3; Newton's update is round-off too
+  if (*reason == SNES_CONVERGED_ITERATING && it > 0 && fnorm <= floor && snorm <= 1e3 * DBL_EPSILON * self->coordMax_)
+    *reason = SNES_CONVERGED_SNORM_RELATIVE;
   if (it > 0) self->snormPrev_ = snorm;
   self->fnormPrevIt_ = fnorm;
   if (!std::isfinite(fnorm)) *reason = SNES_DIVERGED_FNORM_NAN;

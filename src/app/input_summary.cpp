@@ -111,16 +111,22 @@ std::string inputSummary(const Model& model, const InputCounts& c) {
     std::string moved;
     for (int k = 0; k < 3; ++k) {
       if (p.displ_initial[k]) add(moved, std::string("displ_initial_") + axes[k] + " " + num(*p.displ_initial[k]));
-      if (p.displ[k]) add(moved, std::string("displ_") + axes[k] + " " + num(*p.displ[k]));
+      if (p.displ[k] && !p.displ_t[k].empty()) add(moved, std::string("displ_") + axes[k] + " = " + p.displ_t[k]);
+      else if (p.displ[k]) add(moved, std::string("displ_") + axes[k] + " " + num(*p.displ[k]));
     }
     if (p.rot_initial) add(moved, "rot_initial " + vec(*p.rot_initial) + " (rotation vector)");
-    if (p.rot) add(moved, "rot " + vec(*p.rot) + " (rotation vector)");
+    if (p.rot && !p.rot_t.empty()) add(moved, "rot angle = " + p.rot_t + " about " + vec(p.rot_axis));
+    else if (p.rot) add(moved, "rot " + vec(*p.rot) + " (rotation vector)");
     if (!moved.empty()) motions.push_back(n + moved);
     std::string load;
     if (norm(p.force_initial) != 0.0) add(load, "force_initial " + vec(p.force_initial));
     if (norm(p.force) != 0.0) add(load, "force " + vec(p.force));
     if (norm(p.moment_initial) != 0.0) add(load, "moment_initial " + vec(p.moment_initial));
     if (norm(p.moment) != 0.0) add(load, "moment " + vec(p.moment));
+    for (int k = 0; k < 3; ++k) {  // functions of time (the values above are those at t = 0)
+      if (!p.force_t[k].empty()) add(load, std::string("force_") + axes[k] + " = " + p.force_t[k]);
+      if (!p.moment_t[k].empty()) add(load, std::string("moment_") + axes[k] + " = " + p.moment_t[k]);
+    }
     if (!p.transfer_in.empty()) add(load, "transfer_in " + std::to_string(p.transfer_in.size()));
     if (!load.empty()) loads.push_back(n + load);
     std::string mass;

@@ -52,8 +52,9 @@ Plan makePlan(const Model& model) {
     for (const auto& [node, np] : model.nprops) {
       std::string field;
       const char* axes[3] = {"x", "y", "z"};
-      if (norm(np.force) != 0.0) field = "force";
-      else if (norm(np.moment) != 0.0) field = "moment";
+      if (norm(np.force) != 0.0 || !np.force_t[0].empty() || !np.force_t[1].empty() || !np.force_t[2].empty()) field = "force";
+      else if (norm(np.moment) != 0.0 || !np.moment_t[0].empty() || !np.moment_t[1].empty() || !np.moment_t[2].empty())
+        field = "moment";
       else if (norm(np.force_initial) != 0.0) field = "force_initial";
       else if (norm(np.moment_initial) != 0.0) field = "moment_initial";
       else if (np.rot) field = "rot";

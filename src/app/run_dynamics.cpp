@@ -165,7 +165,9 @@ PetscErrorCode runDynamics(RunContext& ctx) {
     ls.loadFactor = 1.0;
     ls.time = t;
     ls.gravityRamped = false;
+    ls.timeFunctions = true;
     if (sensors) sensors->setRates(V, Qdd);
+    ctx.assembler.setReactionRates(V, Qdd);  // dynamic reactions: f_int - f_ext + M qdd
     stepU = U;
     stepV = V;
     stepQdd = Qdd;
@@ -173,6 +175,7 @@ PetscErrorCode runDynamics(RunContext& ctx) {
     std::snprintf(detail, sizeof detail, "t = %.6g", t);
     PetscCall(ctx.convergedStep({k, last, t, detail}, U, ls, [&]() { return writeEnergy(k, U, V, ls); }));
     if (sensors) sensors->setRates(nullptr, nullptr);
+    ctx.assembler.setReactionRates(nullptr, nullptr);
     PetscFunctionReturn(PETSC_SUCCESS);
   };
   bool ok = false;

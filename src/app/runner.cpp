@@ -136,6 +136,7 @@ bool unloaded(const Model& model, const DistributedMesh& mesh, const Assembler& 
     for (int k = 0; k < 6; ++k)
       loaded |= n.load[k] != 0.0 || n.loadInitial[k] != 0.0 || n.prescribed[k] != 0.0 || n.prescribedInitial[k] != 0.0;
     for (int k = 0; k < 3; ++k) loaded |= n.rot[k] != 0.0 || n.rotInitial[k] != 0.0;
+    loaded |= n.timeFn != nullptr;  // a function of time may vanish at t = 0
   }
   MPI_Allreduce(MPI_IN_PLACE, &loaded, 1, MPI_INT, MPI_LOR, mesh.comm);
   return !loaded;

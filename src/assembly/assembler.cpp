@@ -250,13 +250,30 @@ PetscErrorCode Assembler::loadLocal(Vec U, Vec local) {
 
 void Assembler::computeStates(const double* u, const LoadState& ls) {
   const double lam = ls.loadFactor, lam0 = ls.initialFactor;
+  presRatesActive_ = false;
   for (size_t i = 0; i < mesh_.nodes.size(); ++i) {
     const LocalNode& n = mesh_.nodes[i];
     double* s = &state_[12 * i];
+    // a prescribed function of time (dynamics): value, velocity and acceleration from its exact derivatives
+    const NodeTimeFunctions* tf = ls.timeFunctions ? n.timeFn.get() : nullptr;
+    double* rate = nullptr;
+    if (tf) {
+      if (presRate_.size() != 12 * mesh_.nodes.size()) presRate_.assign(12 * mesh_.nodes.size(), 0.0);
+      rate = &presRate_[12 * i];
+      std::fill(rate, rate + 12, 0.0);
+      presRatesActive_ = true;
+    }
     auto value = [&](int k) {
       switch (n.status[k]) {
         case DofStatus::Free: return u[n.dof[k]];
-        case DofStatus::Prescribed: return lam * n.prescribed[k] + lam0 * n.prescribedInitial[k];
+        case DofStatus::Prescribed:
+          if (tf && tf->prescribed[k]) {
+            const Expression::TimeJet j = tf->prescribed[k]->timeJet(ls.time);
+            rate[k] = lam * j.df;
+            rate[6 + k] = lam * j.ddf;
+            return lam * j.f + lam0 * n.prescribedInitial[k];
+          }
+          return lam * n.prescribed[k] + lam0 * n.prescribedInitial[k];
         default: return 0.0;
       }
     };
@@ -274,7 +291,15 @@ void Assembler::computeStates(const double* u, const LoadState& ls) {
     }
     if (n.kind != NodeKind::Frame6) continue;
     Mat3 R;
-    if (n.rotationPrescribed) {
+    if (n.rotationPrescribed && tf && tf->rotAngle) {
+      // rot = angle(t) e about a fixed axis e: R = exp(angle e) R0, spatial angular velocity angle' e
+      const Expression::TimeJet j = tf->rotAngle->timeJet(ls.time);
+      R = expSO3(lam * j.f * tf->rotAxis) * expSO3(lam0 * n.rotInitial);
+      for (int k = 0; k < 3; ++k) {
+        rate[3 + k] = lam * j.df * tf->rotAxis[k];
+        rate[9 + k] = lam * j.ddf * tf->rotAxis[k];
+      }
+    } else if (n.rotationPrescribed) {
       R = expSO3(lam * n.rot) * expSO3(lam0 * n.rotInitial);  // rot_initial first, then the ramped rot
     } else {
       const Vec3 theta{u[n.dof[3]], u[n.dof[4]], u[n.dof[5]]};
@@ -383,6 +408,9 @@ PetscErrorCode Assembler::assembleForces(const double* u, const LoadState& ls, T
     const LocalNode& n = mesh_.nodes[i];
     std::array<double, 6> fe{};
     for (int k = 0; k < 6; ++k) fe[k] = ls.initialFactor * n.loadInitial[k] + ls.loadFactor * n.load[k];
+    if (ls.timeFunctions && n.timeFn)  // loads as functions of time (dynamics); statics: their t = 0 values above
+      for (int k = 0; k < 6; ++k)
+        if (n.timeFn->load[k]) fe[k] = ls.initialFactor * n.loadInitial[k] + ls.loadFactor * n.timeFn->load[k]->timeJet(ls.time).f;
     if (n.kind == NodeKind::Ancf2D) {
       // a torque acts on the slope: generalized force tau (-s_y, s_x) / |s|^2
       const double* s = &state_[12 * static_cast<size_t>(i)];
@@ -527,6 +555,23 @@ PetscErrorCode Assembler::fullResidual(Vec U, const LoadState& ls, Vec Ffull) {
   PetscCall(VecGetArray(fl, &f));
   computeStates(u, ls);
   PetscCall(assembleForces(u, ls, Target::Full, f));
+  if (reactionA_) {  // dynamics: reactions include the inertia M qdd
+    Vec vl, al;
+    const PetscScalar *v, *a;
+    PetscCall(VecGhostUpdateBegin(reactionV_, INSERT_VALUES, SCATTER_FORWARD));
+    PetscCall(VecGhostUpdateEnd(reactionV_, INSERT_VALUES, SCATTER_FORWARD));
+    PetscCall(VecGhostUpdateBegin(reactionA_, INSERT_VALUES, SCATTER_FORWARD));
+    PetscCall(VecGhostUpdateEnd(reactionA_, INSERT_VALUES, SCATTER_FORWARD));
+    PetscCall(VecGhostGetLocalForm(reactionV_, &vl));
+    PetscCall(VecGhostGetLocalForm(reactionA_, &al));
+    PetscCall(VecGetArrayRead(vl, &v));
+    PetscCall(VecGetArrayRead(al, &a));
+    addInertia(v, a, Target::Full, f);
+    PetscCall(VecRestoreArrayRead(al, &a));
+    PetscCall(VecRestoreArrayRead(vl, &v));
+    PetscCall(VecGhostRestoreLocalForm(reactionA_, &al));
+    PetscCall(VecGhostRestoreLocalForm(reactionV_, &vl));
+  }
   PetscCall(VecRestoreArray(fl, &f));
   PetscCall(VecRestoreArrayRead(ul, &u));
   PetscCall(VecGhostRestoreLocalForm(fullWork_, &fl));

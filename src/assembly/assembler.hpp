@@ -38,6 +38,10 @@ struct LoadState {
   double time = 0.0;           ///< passed to kernels (user functions)
   bool gravityRamped = true;   ///< gravity scaled by the load factor (statics)
   double initialFactor = 1.0;  ///< scales the initial loads (`force_initial`, `displ_initial`, ...); path following ramps it to 1 first
+  /// Dynamics: nodal loads and prescribed motions given as functions of time are evaluated at `time`
+  /// (and the prescribed velocities/accelerations from their derivatives); otherwise (statics) they
+  /// act with their values at t = 0, ramped by the load factor like constant ones.
+  bool timeFunctions = false;
 };
 
 /// Counters that prove which phases ran (also visible as PetscLogEvents in -log_view).
@@ -119,6 +123,13 @@ class Assembler {
   PetscErrorCode dynamicResidual(Vec U, Vec V, Vec A, const LoadState& ls, Vec F);
   /// J = K(U, V) + shiftV D(U, V) + shiftA M; D only from kernels with hasDamping().
   PetscErrorCode dynamicJacobian(Vec U, Vec V, const LoadState& ls, double shiftV, double shiftA, Mat J);
+  /// Dynamics output: while set (V, Qdd in the unknowns layout), fullResidual() adds the inertia
+  /// M qdd (elements, nodal mass and mominertia; prescribed DOFs with their prescribed accelerations),
+  /// so the reactions at supports and prescribed DOFs are the dynamic ones. nullptr: statics.
+  void setReactionRates(Vec V, Vec Qdd) {
+    reactionV_ = V;
+    reactionA_ = Qdd;
+  }
   /// Kinetic energy 1/2 V^T M V (global).
   PetscErrorCode kineticEnergy(Vec U, Vec V, const LoadState& ls, double* T);
 
@@ -209,6 +220,13 @@ class Assembler {
   /// Frame6 node with nonzero mominertia.
   Mat3 spatialInertia(int i) const;
   bool hasRotaryInertia(int i) const;
+  /// Velocities and accelerations of element el's prescribed DOFs (kernel DOF layout) from the time
+  /// functions evaluated by computeStates (0 elsewhere); false (nothing written) when no node of el moves
+  /// by a function of time.
+  bool prescribedRates(const LocalElement& el, double* v, double* a) const;
+  /// Adds M qdd (elements, nodal inertia) to `out` (local form) by the rows of `target`; a = local
+  /// form of the accelerations of the unknowns, v = of the velocities (gyroscopic moments).
+  void addInertia(const double* v, const double* a, Target target, double* out);
 
   DistributedMesh& mesh_;
   std::optional<Vec3> gravity_;
@@ -233,6 +251,11 @@ class Assembler {
   bool nonFiniteLawsFatal_ = true;
   std::string nonFiniteLaw_;
   const double* vLocal_ = nullptr;  // local form of the velocities while a dynamic evaluation runs
+  // prescribed motions as functions of time (computeStates with ls.timeFunctions): per local node
+  // 6 velocities, then 6 accelerations (dof layout; spatial angular rates for rot)
+  std::vector<double> presRate_;
+  bool presRatesActive_ = false;
+  Vec reactionV_ = nullptr, reactionA_ = nullptr;  // setReactionRates
   AssemblyCounters counters_;
   double fextNorm_ = 0, fintNorm_ = 0;
   double coordMax_ = 0;

@@ -45,11 +45,83 @@ bool Assembler::hasRotaryInertia(int i) const {
   return false;
 }
 
+bool Assembler::prescribedRates(const LocalElement& el, double* v, double* a) const {
+  if (!presRatesActive_) return false;
+  const auto kinds = el.kernel->nodeKinds();
+  bool any = false;
+  for (size_t i = 0; i < kinds.size(); ++i) any = any || mesh_.nodes[el.node[i]].timeFn;
+  if (!any) return false;
+  int d = 0;
+  for (size_t i = 0; i < kinds.size(); ++i) {
+    const LocalNode& n = mesh_.nodes[el.node[i]];
+    const double* r = n.timeFn ? &presRate_[12 * static_cast<size_t>(el.node[i])] : nullptr;
+    for (int k = 0; k < dofSize(kinds[i]); ++k, ++d) {
+      v[d] = r ? r[k] : 0.0;
+      a[d] = r ? r[6 + k] : 0.0;
+    }
+  }
+  return true;
+}
+
 const double* Assembler::gatherVelocity(const LocalElement& el, const int* idx, double* qdot) const {
   if (!vLocal_) return nullptr;
   const int nd = el.kernel->numDofs();
-  for (int k = 0; k < nd; ++k) qdot[k] = idx[k] >= 0 ? vLocal_[idx[k]] : 0.0;
+  std::array<double, kMaxElementRows> pv, pa;
+  const bool moving = prescribedRates(el, pv.data(), pa.data());
+  for (int k = 0; k < nd; ++k) qdot[k] = idx[k] >= 0 ? vLocal_[idx[k]] : (moving ? pv[k] : 0.0);
   return qdot;
+}
+
+void Assembler::addInertia(const double* v, const double* a, Target target, double* out) {
+  // elements: M_e qdd_e, the accelerations of prescribed DOFs from their time functions
+  std::array<double, 48> q;
+  std::array<int, kMaxElementRows> idx, fidx;
+  std::array<double, kMaxElementRows> pv, pa;
+  std::vector<double> Me;
+  for (const LocalElement& el : mesh_.elements) {
+    if (!el.kernel->hasInertia()) continue;
+    gatherElement(el, q.data(), nullptr, idx.data(), fidx.data());
+    const bool moving = prescribedRates(el, pv.data(), pa.data());
+    el.kernel->mass(q.data(), Me);
+    const int n = el.kernel->numDofs();
+    const int* map = target == Target::Residual ? idx.data() : fidx.data();
+    for (int r = 0; r < n; ++r) {
+      if (map[r] < 0) continue;
+      double s = 0.0;
+      for (int c = 0; c < n; ++c) {
+        if (idx[c] >= 0) s += Me[static_cast<size_t>(r) * n + c] * a[idx[c]];
+        else if (moving) s += Me[static_cast<size_t>(r) * n + c] * pa[c];
+      }
+      out[map[r]] += s;
+    }
+  }
+  for (int i = 0; i < mesh_.numOwnedNodes; ++i) {
+    const LocalNode& n = mesh_.nodes[i];
+    const double* pr = presRatesActive_ && n.timeFn ? &presRate_[12 * static_cast<size_t>(i)] : nullptr;
+    const int* map = target == Target::Residual ? n.dof.data() : n.fullDof.data();
+    if (n.mass > 0) {
+      const int nt = n.kind == NodeKind::Ancf2D ? 2 : 3;
+      for (int k = 0; k < nt; ++k) {
+        if (map[k] < 0) continue;
+        const double acc = n.dof[k] >= 0 ? a[n.dof[k]] : (pr ? pr[6 + k] : 0.0);
+        out[map[k]] += n.mass * acc;
+      }
+    }
+    // nodal rotary inertia (spatial angular velocity w and acceleration wd, Lie-group form):
+    // moment J_s wd + w x (J_s w), J_s = R J0 R^T; a prescribed rotation only in the reactions
+    const bool free = hasRotaryInertia(i);
+    const bool presc = !free && target == Target::Full && pr && n.kind == NodeKind::Frame6 &&
+                       n.mominertia != std::array<double, 6>{};
+    if (!free && !presc) continue;
+    const Mat3 J = spatialInertia(i);
+    Vec3 w, wd;
+    for (int k = 0; k < 3; ++k) {
+      w[k] = free ? v[n.dof[3 + k]] : pr[3 + k];
+      wd[k] = free ? a[n.dof[3 + k]] : pr[9 + k];
+    }
+    const Vec3 m = J * wd + cross(w, J * w);
+    for (int k = 0; k < 3; ++k) out[map[3 + k]] += m[k];
+  }
 }
 
 PetscErrorCode Assembler::dynamicResidual(Vec U, Vec V, Vec A, const LoadState& ls, Vec F) {
@@ -72,40 +144,8 @@ PetscErrorCode Assembler::dynamicResidual(Vec U, Vec V, Vec A, const LoadState& 
   const PetscErrorCode ierr = assembleForces(u, ls, Target::Residual, f);
   vLocal_ = nullptr;
   PetscCall(ierr);
-  // inertia M A: element masses and nodal point masses
-  std::array<double, 48> q;
-  std::array<int, kMaxElementRows> idx;
-  std::vector<double> Me;
-  for (const LocalElement& el : mesh_.elements) {
-    if (!el.kernel->hasInertia()) continue;
-    gatherElement(el, q.data(), u, idx.data(), nullptr);
-    el.kernel->mass(q.data(), Me);
-    const int n = el.kernel->numDofs();
-    for (int r = 0; r < n; ++r) {
-      if (idx[r] < 0) continue;
-      double s = 0.0;
-      for (int c = 0; c < n; ++c)
-        if (idx[c] >= 0) s += Me[static_cast<size_t>(r) * n + c] * a[idx[c]];
-      f[idx[r]] += s;
-    }
-  }
-  for (int i = 0; i < mesh_.numOwnedNodes; ++i) {
-    const LocalNode& n = mesh_.nodes[i];
-    if (n.mass <= 0) continue;
-    const int nt = n.kind == NodeKind::Ancf2D ? 2 : 3;
-    for (int k = 0; k < nt; ++k)
-      if (n.dof[k] >= 0) f[n.dof[k]] += n.mass * a[n.dof[k]];
-  }
-  // nodal rotary inertia (spatial angular velocity w and acceleration wd of the rotation unknowns,
-  // Lie-group form): moment J_s wd + w x (J_s w), J_s = R J0 R^T
-  for (int i = 0; i < mesh_.numOwnedNodes; ++i) {
-    if (!hasRotaryInertia(i)) continue;
-    const LocalNode& n = mesh_.nodes[i];
-    const Mat3 J = spatialInertia(i);
-    const Vec3 w{v[n.dof[3]], v[n.dof[4]], v[n.dof[5]]}, wd{a[n.dof[3]], a[n.dof[4]], a[n.dof[5]]};
-    const Vec3 m = J * wd + cross(w, J * w);
-    for (int k = 0; k < 3; ++k) f[n.dof[3 + k]] += m[k];
-  }
+  // inertia M A: element masses and nodal point masses and rotary inertia
+  addInertia(v, a, Target::Residual, f);
   PetscCall(VecRestoreArray(fl, &f));
   PetscCall(VecRestoreArrayRead(ul, &u));
   PetscCall(VecGhostRestoreLocalForm(fWork_, &fl));

@@ -43,6 +43,8 @@ const FunctionInfo kFunctions[] = {
     {"sqrt", Expression::Op::Sqrt, 1},   {"abs", Expression::Op::Abs, 1},
     {"min", Expression::Op::Min, 2},     {"max", Expression::Op::Max, 2},
     {"pow", Expression::Op::Pow, 2},     {"sign", Expression::Op::Sign, 1},
+    {"step", Expression::Op::Step, 1},   {"ramp", Expression::Op::Ramp, 1},
+    {"smoothstep", Expression::Op::SmoothStep, 5},
 };
 
 /// Derivative slot of a state argument, -1 for the others.
@@ -104,6 +106,8 @@ struct DoubleOps {
       case O::Sqrt: return std::sqrt(a);
       case O::Abs: return std::fabs(a);
       case O::Sign: return a > 0 ? 1.0 : (a < 0 ? -1.0 : 0.0);
+      case O::Step: return a >= 0 ? 1.0 : 0.0;
+      case O::Ramp: return a > 0 ? a : 0.0;
       default: return a;
     }
   }
@@ -193,6 +197,94 @@ struct DualOps {
       }
       case O::Abs: return chain(a, std::fabs(x), x >= 0.0 ? 1.0 : -1.0);
       case O::Sign: return constant(x > 0 ? 1.0 : (x < 0 ? -1.0 : 0.0));
+      case O::Step: return constant(x >= 0 ? 1.0 : 0.0);
+      case O::Ramp: return chain(a, x > 0 ? x : 0.0, x > 0 ? 1.0 : 0.0);
+      default: return a;
+    }
+  }
+};
+
+// Second-order jet in t: value, first and second derivative (time functions: loads, prescribed motions).
+struct Jet {
+  double v = 0.0, d1 = 0.0, d2 = 0.0;
+};
+/// f(a(t)): d/dt = f' a1, d2/dt2 = f'' a1^2 + f' a2.
+inline Jet chain2(const Jet& a, double f, double fp, double fpp) { return {f, fp * a.d1, fpp * a.d1 * a.d1 + fp * a.d2}; }
+
+struct JetOps {
+  using T = Jet;
+  static T cst(double v) { return {v, 0.0, 0.0}; }
+  static T var(const UserFunctionArgs& a, int i) { return {a.v[i], i == static_cast<int>(UfVar::t) ? 1.0 : 0.0, 0.0}; }
+  static double val(const T& x) { return x.v; }
+  static T add(const T& a, const T& b) { return {a.v + b.v, a.d1 + b.d1, a.d2 + b.d2}; }
+  static T sub(const T& a, const T& b) { return {a.v - b.v, a.d1 - b.d1, a.d2 - b.d2}; }
+  static T mul(const T& a, const T& b) { return {a.v * b.v, a.d1 * b.v + a.v * b.d1, a.d2 * b.v + 2.0 * a.d1 * b.d1 + a.v * b.d2}; }
+  // r = a / b: r' = (a' - r b') / b, r'' = (a'' - 2 r' b' - r b'') / b
+  static T div(const T& a, const T& b) {
+    const double r = a.v / b.v, r1 = (a.d1 - r * b.d1) / b.v;
+    return {r, r1, (a.d2 - 2.0 * r1 * b.d1 - r * b.d2) / b.v};
+  }
+  static T neg(const T& a) { return {-a.v, -a.d1, -a.d2}; }
+  // a^b: a constant exponent by the power rule, a varying one as exp(b log a)
+  static T pow(const T& a, const T& b) {
+    if (b.d1 == 0.0 && b.d2 == 0.0) {
+      const double p = b.v;
+      const double fp = p == 0.0 ? 0.0 : p * std::pow(a.v, p - 1.0);
+      const double fpp = (p == 0.0 || p == 1.0) ? 0.0 : p * (p - 1.0) * std::pow(a.v, p - 2.0);
+      return chain2(a, std::pow(a.v, p), fp, fpp);
+    }
+    const T l = chain2(a, std::log(a.v), 1.0 / a.v, -1.0 / (a.v * a.v));
+    const T m = mul(b, l);
+    const double e = std::exp(m.v);
+    return chain2(m, e, e, e);
+  }
+  // atan2(y, x) = N / D with N = x y' - y x', D = x^2 + y^2 as its derivative
+  static T atan2(const T& y, const T& x) {
+    const double D = x.v * x.v + y.v * y.v, N = x.v * y.d1 - y.v * x.d1;
+    const double N1 = x.v * y.d2 - y.v * x.d2, D1 = 2.0 * (x.v * x.d1 + y.v * y.d1);
+    return {std::atan2(y.v, x.v), N / D, (N1 * D - N * D1) / (D * D)};
+  }
+  static T unary(Expression::Op op, const T& a) {
+    using O = Expression::Op;
+    const double x = a.v;
+    switch (op) {
+      case O::Sin: return chain2(a, std::sin(x), std::cos(x), -std::sin(x));
+      case O::Cos: return chain2(a, std::cos(x), -std::sin(x), -std::cos(x));
+      case O::Tan: {
+        const double tn = std::tan(x), s2 = 1.0 + tn * tn;
+        return chain2(a, tn, s2, 2.0 * tn * s2);
+      }
+      case O::Asin: {
+        const double q = 1.0 - x * x;
+        return chain2(a, std::asin(x), 1.0 / std::sqrt(q), x / (q * std::sqrt(q)));
+      }
+      case O::Acos: {
+        const double q = 1.0 - x * x;
+        return chain2(a, std::acos(x), -1.0 / std::sqrt(q), -x / (q * std::sqrt(q)));
+      }
+      case O::Atan: {
+        const double q = 1.0 + x * x;
+        return chain2(a, std::atan(x), 1.0 / q, -2.0 * x / (q * q));
+      }
+      case O::Sinh: return chain2(a, std::sinh(x), std::cosh(x), std::sinh(x));
+      case O::Cosh: return chain2(a, std::cosh(x), std::sinh(x), std::cosh(x));
+      case O::Tanh: {
+        const double th = std::tanh(x), s = 1.0 - th * th;
+        return chain2(a, th, s, -2.0 * th * s);
+      }
+      case O::Exp: {
+        const double e = std::exp(x);
+        return chain2(a, e, e, e);
+      }
+      case O::Log: return chain2(a, std::log(x), 1.0 / x, -1.0 / (x * x));
+      case O::Sqrt: {
+        const double s = std::sqrt(x);
+        return chain2(a, s, 0.5 / s, -0.25 / (s * x));
+      }
+      case O::Abs: return chain2(a, std::fabs(x), x >= 0.0 ? 1.0 : -1.0, 0.0);
+      case O::Sign: return cst(x > 0 ? 1.0 : (x < 0 ? -1.0 : 0.0));
+      case O::Step: return cst(x >= 0 ? 1.0 : 0.0);
+      case O::Ramp: return chain2(a, x > 0 ? x : 0.0, x > 0 ? 1.0 : 0.0, 0.0);
       default: return a;
     }
   }
@@ -226,6 +318,20 @@ typename Ops::T run(const std::vector<Expression::Instr>& code, const std::vecto
       case O::Ge: --sp; st[sp - 1] = Ops::cst(Ops::val(st[sp - 1]) >= Ops::val(st[sp]) ? 1.0 : 0.0); break;
       case O::Eq: --sp; st[sp - 1] = Ops::cst(Ops::val(st[sp - 1]) == Ops::val(st[sp]) ? 1.0 : 0.0); break;
       case O::Ne: --sp; st[sp - 1] = Ops::cst(Ops::val(st[sp - 1]) != Ops::val(st[sp]) ? 1.0 : 0.0); break;
+      case O::SmoothStep: {
+        // Exudyn's SmoothStep(x, x0, x1, value0, value1): value0 + (value1 - value0) (1 - cos(pi s)) / 2,
+        // s = (x - x0) / (x1 - x0), between x0 and x1; value0 before, value1 after
+        sp -= 4;
+        const T x = st[sp - 1], x0 = st[sp], x1 = st[sp + 1], v0 = st[sp + 2], v1 = st[sp + 3];
+        if (Ops::val(x) <= Ops::val(x0)) st[sp - 1] = v0;
+        else if (Ops::val(x) >= Ops::val(x1)) st[sp - 1] = v1;
+        else {
+          const T s = Ops::div(Ops::sub(x, x0), Ops::sub(x1, x0));
+          const T c = Ops::unary(O::Cos, Ops::mul(Ops::cst(3.141592653589793238462643383279502884), s));
+          st[sp - 1] = Ops::add(v0, Ops::mul(Ops::sub(v1, v0), Ops::mul(Ops::cst(0.5), Ops::sub(Ops::cst(1.0), c))));
+        }
+        break;
+      }
       case O::JumpIfZero:
         --sp;
         if (Ops::val(st[sp]) == 0.0) pc = in.arg - 1;
@@ -533,5 +639,12 @@ UserFunctionValue Expression::evaluate(const UserFunctionArgs& args) const {
 }
 
 double Expression::value(const UserFunctionArgs& args) const { return run<DoubleOps>(code_, constants_, args); }
+
+Expression::TimeJet Expression::timeJet(double t) const {
+  UserFunctionArgs args;
+  args[UfVar::t] = t;
+  const Jet r = run<JetOps>(code_, constants_, args);
+  return {r.v, r.d1, r.d2};
+}
 
 }  // namespace sinew

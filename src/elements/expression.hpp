@@ -12,7 +12,9 @@
 // The text is compiled once into stack bytecode. Evaluation runs on forward-mode dual numbers
 // carrying the partial derivatives with respect to axialStrain, axialStrain_t, curvature and
 // curvature_t, so the element tangent is exact; min, max and abs differentiate their active branch,
-// comparisons and sign have zero derivative.
+// comparisons, sign and step have zero derivative. step(x) = 1 for x >= 0 (else 0), ramp(x) =
+// max(x, 0), smoothstep(x, x0, x1, value0, value1) = Exudyn's SmoothStep (value0 up to x0, value1
+// from x1, a half cosine between). timeJet() evaluates f, f' and f'' w.r.t. t (second-order jets).
 #pragma once
 #include <array>
 #include <cstdint>
@@ -68,6 +70,12 @@ class Expression {
   UserFunctionValue evaluate(const UserFunctionArgs& args) const;
   /// Value only (same bytecode, plain doubles).
   double value(const UserFunctionArgs& args) const;
+  /// A function of time alone (time-dependent loads and prescribed motions): f(t) and its exact first
+  /// and second derivatives by second-order forward differentiation (every other argument 0).
+  struct TimeJet {
+    double f = 0.0, df = 0.0, ddf = 0.0;
+  };
+  TimeJet timeJet(double t) const;
 
   /// True when the expression reads argument `v`.
   bool uses(UfVar v) const { return (usedMask_ >> static_cast<int>(v)) & 1u; }
@@ -80,7 +88,7 @@ class Expression {
   enum class Op : std::uint8_t {
     Const, Var, Neg, Add, Sub, Mul, Div, Pow, Lt, Gt, Le, Ge, Eq, Ne,
     Sin, Cos, Tan, Asin, Acos, Atan, Atan2, Sinh, Cosh, Tanh, Exp, Log, Sqrt, Abs, Min, Max, Sign,
-    JumpIfZero, Jump
+    Step, Ramp, SmoothStep, JumpIfZero, Jump
   };
   struct Instr {
     Op op;

@@ -47,6 +47,25 @@ std::vector<int> partitionElements(MPI_Comm comm, const FeMesh& fe, int nparts) 
   return epart;
 }
 
+/// The functions of time among a node's nprops (null when it has none).
+std::shared_ptr<const NodeTimeFunctions> nodeTimeFunctions(const NodeProps& p, int s, bool ancf) {
+  if (!p.hasTimeFunctions()) return nullptr;
+  auto f = std::make_shared<NodeTimeFunctions>();
+  const std::string node = "nprops." + std::to_string(s + 1) + ".";
+  auto compile = [&](std::optional<Expression>& slot, const std::string& text, const std::string& field) {
+    if (!text.empty()) slot = Expression::compile(text, node + field);
+  };
+  for (int k = 0; k < (ancf ? 2 : 3); ++k) {
+    compile(f->load[k], p.force_t[k], "force[" + std::to_string(k) + "]");
+    compile(f->prescribed[k], p.displ_t[k], std::string("displ_") + "xyz"[k]);
+    if (!ancf) compile(f->load[3 + k], p.moment_t[k], "moment[" + std::to_string(k) + "]");
+  }
+  if (ancf) compile(f->load[4], p.moment_t[2], "moment");  // the torque about z acts on the slope
+  compile(f->rotAngle, p.rot_t, "rot[0]");
+  f->rotAxis = p.rot_axis;
+  return f;
+}
+
 /// Supports, prescriptions, loads and inertia of one FE node from the scene's nprops.
 void applyNodeProps(const Model& model, LocalNode& n) {
   n.ndof = dofSize(n.kind);
@@ -87,6 +106,7 @@ void applyNodeProps(const Model& model, LocalNode& n) {
     n.load[4] = p.moment[2];  // torque about z, acts on the slope (handled by the assembler)
     n.loadInitial[4] = p.moment_initial[2];
     n.mass = p.mass;
+    n.timeFn = nodeTimeFunctions(p, s, true);
     return;
   }
   const bool frame = n.kind == NodeKind::Frame6;
@@ -102,7 +122,8 @@ void applyNodeProps(const Model& model, LocalNode& n) {
       n.prescribedInitial[k] = p.displ_initial[k].value_or(0.0);
     }
   }
-  const bool anyMoment = norm(p.moment) > 0 || norm(p.moment_initial) > 0;
+  const bool anyMoment =
+      norm(p.moment) > 0 || norm(p.moment_initial) > 0 || !p.moment_t[0].empty() || !p.moment_t[1].empty() || !p.moment_t[2].empty();
   if (!frame) {
     if (p.fix_orien || p.rot || p.rot_initial || anyMoment || p.mominertia != std::array<double, 6>{})
       throw SceneError(nodeField(s, p.fix_orien ? "fix_orien" : (anyMoment ? "moment" : "rot")),
@@ -130,6 +151,7 @@ void applyNodeProps(const Model& model, LocalNode& n) {
   }
   n.mass = p.mass;
   n.mominertia = p.mominertia;
+  n.timeFn = nodeTimeFunctions(p, s, false);
 }
 
 /// Records the first kernel that could not be built on this rank (scene errors and invalid element

@@ -7,8 +7,10 @@
 #include <array>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <vector>
 
+#include "elements/expression.hpp"
 #include "mesh/fe_mesh.hpp"
 #include "sinew/element_kernel.hpp"
 #include "sinew/model.hpp"
@@ -16,6 +18,17 @@
 namespace sinew {
 
 enum class DofStatus : unsigned char { Free = 0, Fixed = 1, Prescribed = 2 };
+
+/// A node's loads and prescribed motions given as functions of time (nprops expressions of t;
+/// docs/dynamics.md "Loads and motions as functions of time"). Dynamics evaluates them at t (with
+/// their exact time derivatives for the prescribed velocities and accelerations); statics uses the
+/// values at t = 0 that LocalNode::load/prescribed/rot hold.
+struct NodeTimeFunctions {
+  std::array<std::optional<Expression>, 6> load;        ///< layout of LocalNode::load
+  std::array<std::optional<Expression>, 6> prescribed;  ///< layout of LocalNode::prescribed
+  std::optional<Expression> rotAngle;                    ///< rot = angle(t) * rotAxis
+  Vec3 rotAxis{};
+};
 
 struct LocalNode {
   long gid = 0;          ///< global FE node id (FeMesh numbering)
@@ -33,6 +46,7 @@ struct LocalNode {
   std::array<double, 6> load{}, loadInitial{};  ///< ramped and initial nodal loads (dof layout)
   double mass = 0;
   std::array<double, 6> mominertia{};
+  std::shared_ptr<const NodeTimeFunctions> timeFn;  ///< null: constant loads and prescriptions
 };
 
 struct LocalElement {

@@ -8,6 +8,7 @@
 
 #include "scene/nearest_name.hpp"
 #include "scene/scene_detail.hpp"
+#include "scene/time_fields.hpp"
 
 namespace sinew::scene {
 namespace {
@@ -66,27 +67,43 @@ std::array<double, 6> getMominertia(const YAML::Node& v, const std::string& p) {
 
 /// Prescribed rotation: SPACAR Light's 1x4 [angle, axis_x, axis_y, axis_z] (axis normalized, a zero
 /// axis is an error), or a rotation vector [rx, ry, rz] = angle * unit axis. Returns the rotation vector.
-Vec3 getRotation(const YAML::Node& v, const std::string& p) {
+/// With `text` (rot only): the angle may be a function of time, [angle(t), axis_x, axis_y, axis_z]
+/// (its text goes to *text, the unit axis to *axis; the rotation vector returned is its value at t = 0).
+Vec3 getRotation(const YAML::Node& v, const std::string& p, std::string* text = nullptr, Vec3* unitAxis = nullptr) {
   const std::string what = "expected [angle, axis_x, axis_y, axis_z] (SPACAR Light) or a rotation vector [rx, ry, rz]";
   if (!v.IsSequence() || (v.size() != 3 && v.size() != 4))
     fail(p, what + ", got " + (v.IsSequence() ? "a list of " + std::to_string(v.size()) : describe(v)));
-  if (v.size() == 3) return getVec3(v, p, false, kRotation);
-  const double angle = getNumber(v[0], indexPath(p, 0), kRotation);
+  if (v.size() == 3) {
+    for (std::size_t k = 0; k < 3; ++k)
+      if (double x = 0; text && v[k].IsScalar() && !YAML::convert<double>::decode(v[k], x))
+        fail(indexPath(p, k), "a rotation as a function of time is [angle(t), axis_x, axis_y, axis_z] (a fixed axis), got '" +
+                                  v[k].Scalar() + "' in a rotation vector");
+    return getVec3(v, p, false, kRotation);
+  }
+  std::string fn;
+  const double angle = text ? getNumberOrTimeFunction(v[0], indexPath(p, 0), kRotation, &fn) : getNumber(v[0], indexPath(p, 0), kRotation);
   Vec3 axis{};
   for (std::size_t k = 0; k < 3; ++k) axis[k] = getNumber(v[k + 1], indexPath(p, k + 1), kLoad);
   const double a = norm(axis);
   if (a == 0.0) fail(p, "the rotation axis [" + fmt(axis[0]) + ", " + fmt(axis[1]) + ", " + fmt(axis[2]) + "] is zero; " + what);
+  if (text) {
+    *text = fn;
+    *unitAxis = {axis[0] / a, axis[1] / a, axis[2] / a};
+  }
   return {angle * axis[0] / a, angle * axis[1] / a, angle * axis[2] / a};
 }
 
 /// Moment: 3 numbers; a 2D model also takes one number (about z).
-Vec3 getMoment(const YAML::Node& v, const std::string& p, bool twoD) {
-  if (twoD && (isNumber(v) || (v.IsSequence() && v.size() == 1))) {
-    return {0, 0, getNumber(v.IsSequence() ? v[0] : v, v.IsSequence() ? indexPath(p, 0) : p, kLoad)};
+/// With `texts` (moment only), entries may be functions of time.
+Vec3 getMoment(const YAML::Node& v, const std::string& p, bool twoD, std::array<std::string, 3>* texts = nullptr) {
+  if (twoD && (v.IsScalar() || (v.IsSequence() && v.size() == 1))) {
+    const YAML::Node m = v.IsSequence() ? v[0] : v;
+    const std::string mp = v.IsSequence() ? indexPath(p, 0) : p;
+    return {0, 0, texts ? getNumberOrTimeFunction(m, mp, kLoad, &(*texts)[2]) : getNumber(m, mp, kLoad)};
   }
   if (twoD && (!v.IsSequence() || v.size() != 3))
     fail(p, "expected 3 numbers (or 1, about z, in a 2D model), got " + (v.IsSequence() ? std::to_string(v.size()) : describe(v)));
-  return getVec3(v, p, false, kLoad);
+  return texts ? getVec3OrTimeFunctions(v, p, false, kLoad, *texts) : getVec3(v, p, false, kLoad);
 }
 
 std::vector<std::string> getTransfer(const YAML::Node& v, const std::string& p, const std::vector<std::string>& valid) {
@@ -137,12 +154,14 @@ void applyProps(NodeProps& np, LoadSources& src, const YAML::Node& n, const std:
     } else if (k == "mass") np.mass = getNonNegative(v, p, kMaterial);
     else if (k == "mominertia") np.mominertia = getMominertia(v, p);
     else if (k.rfind("displ_initial_", 0) == 0) np.displ_initial[static_cast<std::size_t>(k.back() - 'x')] = getNumber(v, p, kCoordinate);
-    else if (k.rfind("displ_", 0) == 0) np.displ[static_cast<std::size_t>(k.back() - 'x')] = getNumber(v, p, kCoordinate);
-    else if (k == "rot") np.rot = getRotation(v, p);
+    else if (k.rfind("displ_", 0) == 0) {
+      const auto a = static_cast<std::size_t>(k.back() - 'x');
+      np.displ[a] = getNumberOrTimeFunction(v, p, kCoordinate, &np.displ_t[a]);
+    } else if (k == "rot") np.rot = getRotation(v, p, &np.rot_t, &np.rot_axis);
     else if (k == "rot_initial") np.rot_initial = getRotation(v, p);
-    else if (k == "force") { np.force = getVec3(v, p, twoD, kLoad); src.force = p; }
+    else if (k == "force") { np.force = getVec3OrTimeFunctions(v, p, twoD, kLoad, np.force_t); src.force = p; }
     else if (k == "force_initial") { np.force_initial = getVec3(v, p, twoD, kLoad); src.force_initial = p; }
-    else if (k == "moment") { np.moment = getMoment(v, p, twoD); src.moment = p; }
+    else if (k == "moment") { np.moment = getMoment(v, p, twoD, &np.moment_t); src.moment = p; }
     else if (k == "moment_initial") { np.moment_initial = getMoment(v, p, twoD); src.moment_initial = p; }
     else if (k == "transfer_in") { np.transfer_in = getTransfer(v, p, kTransferIn); src.transfer_in = p; }
     else if (k == "transfer_out") { np.transfer_out = getTransfer(v, p, kTransferOut); src.transfer_out = p; }
@@ -175,7 +194,7 @@ void checkConflicts(int node, const NodeProps& np, const LoadSources& src) {
     if (held.empty()) continue;
     const std::string msg = " in " + std::string(kAxis[k]) + ", but " + label + " is held in " + kAxis[k] + " by " + held +
                             " (a load on a held direction only changes the reaction; remove it or free the direction)";
-    if (np.force[k] != 0) fail(src.force, "force" + msg);
+    if (np.force[k] != 0 || !np.force_t[k].empty()) fail(src.force, "force" + msg);
     if (np.force_initial[k] != 0) fail(src.force_initial, "force_initial" + msg);
     for (const char* kind : {"displ_", "veloc_"}) {
       const std::string out = kind + std::string(kAxis[k]);
@@ -191,7 +210,8 @@ void checkConflicts(int node, const NodeProps& np, const LoadSources& src) {
   if (!held.empty()) {
     const std::string msg = " on " + label + ", whose rotation is held by " + held +
                             " (a moment on a held rotation only changes the reaction; remove it or free the rotation)";
-    if (norm(np.moment) != 0) fail(src.moment, "moment" + msg);
+    if (norm(np.moment) != 0 || !np.moment_t[0].empty() || !np.moment_t[1].empty() || !np.moment_t[2].empty())
+      fail(src.moment, "moment" + msg);
     if (norm(np.moment_initial) != 0) fail(src.moment_initial, "moment_initial" + msg);
     for (const auto& in : np.transfer_in)
       if (in.rfind("moment_", 0) == 0) fail(src.transfer_in, "transfer input " + in + msg);

@@ -345,6 +345,14 @@ void parseRoot(const YAML::Node& root, const std::string& baseDir, Model& m) {
   checkElementTypes(ctx);
   parseNprops(root["nprops"], ctx);
   parseOptions(root["opt"], ctx);
+  if (!m.opt.dynamics)
+    for (const auto& [node, np] : m.nprops)
+      if (np.hasTimeFunctions()) {
+        m.warnings.push_back("nprops." + std::to_string(node + 1) +
+                             ": loads or prescribed motions given as functions of time act in statics with their value "
+                             "at t = 0 (ramped by the load factor); they follow t only in a time integration (opt.dynamics)");
+        break;
+      }
   const YAML::Node ff = root["formfinding"];
   if (ff.IsDefined()) parseFormfinding(ff, ctx);
   parseSensors(root["sensors"], ctx);

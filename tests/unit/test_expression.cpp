@@ -202,3 +202,38 @@ TEST(Expression, UnknownNamesListValidOnes) {
   EXPECT_NE(m.find("unknown function 'foo' at column 15"), std::string::npos) << m;
   EXPECT_NE(m.find("atan2"), std::string::npos) << m;
 }
+
+// Functions of time (loads, prescribed motions): f' and f'' of timeJet (second-order jets) vs
+// central differences of value(), for every function and operator that a time function may use.
+TEST(Expression, TimeJetMatchesFiniteDifferences) {
+  const char* cases[] = {
+      "0.3*sin(2*pi*t) + cos(3*t)^2", "tan(0.5*t) - asin(0.3*t) + acos(0.2*t) + atan(t)", "atan2(sin(t), 1 + t*t)",
+      "sinh(t) * cosh(0.5*t) / (2 + tanh(t))", "exp(-t) * log(1 + t) + sqrt(1 + t*t)", "t^3 - 2*t**2 + (1 + t)^t",
+      "pow(2 + t, 1.5) * abs(t - 1) + min(t, 0.1) * max(t*t, 0.2)", "ramp(t - 0.1)^2 + 3*step(t - 2)",
+      "smoothstep(t, 0.1, 0.9, 1, 3)", "t < 0.2 ? 2*t^2 : 0.1*sin(t)",
+      "(1.5/15)*(t^2/2 + (15/(2*pi))^2*(cos(2*pi*t/15) - 1))"};
+  for (const char* text : cases) {
+    const Expression e = Expression::compile(text, "f");
+    for (double t : {0.37, 0.6}) {
+      UserFunctionArgs a;
+      const double h = 1e-4;
+      auto f = [&](double x) {
+        a[UfVar::t] = x;
+        return e.value(a);
+      };
+      const Expression::TimeJet j = e.timeJet(t);
+      EXPECT_NEAR(j.f, f(t), 1e-14 * (1 + std::fabs(j.f))) << text;
+      const double d1 = (f(t + h) - f(t - h)) / (2 * h), d2 = (f(t + h) - 2 * f(t) + f(t - h)) / (h * h);
+      EXPECT_NEAR(j.df, d1, 1e-6 * (1 + std::fabs(d1))) << text << " at t = " << t;
+      EXPECT_NEAR(j.ddf, d2, 1e-4 * (1 + std::fabs(d2))) << text << " at t = " << t;
+    }
+  }
+  // Exudyn's SmoothStep: value0 before x0, value1 after x1, half cosine between
+  const Expression s = Expression::compile("smoothstep(t, 1, 2, 5, 7)");
+  EXPECT_EQ(s.timeJet(0.5).f, 5.0);
+  EXPECT_EQ(s.timeJet(2.5).f, 7.0);
+  EXPECT_NEAR(s.timeJet(1.5).f, 6.0, 1e-15);
+  EXPECT_NEAR(s.timeJet(1.5).df, 2.0 * 0.5 * M_PI * std::sin(0.5 * M_PI), 1e-14);
+  EXPECT_EQ(Expression::compile("step(t)").timeJet(0.0).f, 1.0);
+  EXPECT_EQ(Expression::compile("step(t)").timeJet(-1e-300).f, 0.0);
+}

@@ -71,7 +71,7 @@ def sinew(n, steps):
     with open(path, "w") as f:
         f.write(sinew_scene(n, steps))
     h5 = os.path.join(WORK, name + ".h5")
-    out, wall, _ = run_timed([os.path.join(BUILD, "sinew"), path, "-o", h5])
+    out, wall, _, _ = run_timed([os.path.join(BUILD, "sinew"), path, "-o", h5])
     m = re.search(r"dynamics ([0-9.]+) s \((\d+) Newton iterations\)", out)
     import h5py
     with h5py.File(h5, "r") as f:
@@ -127,7 +127,7 @@ def exudyn(exudyn_dir, n, steps, sec, timeout=900):
     p = {"EA": sec["EA"], "kGA": sec["kGA"], "GIt": sec["GIt"], "E": E, "Iy_thin": sec["Iy_thin"],
          "Iz_wide": sec["Iz_wide"], "rhoA": RHO * W * T, "rho": RHO, "L": L, "g": GRAV, "tend": TEND, "rhoinf": RHOINF}
     env = dict(os.environ, PYTHONPATH=os.path.join(exudyn_dir, "pythonDev"))
-    out, wall, _ = run_timed(["/usr/bin/python3", "-c", EXUDYN_SCRIPT, str(n), str(steps), json.dumps(p)], env=env,
+    out, wall, _, _ = run_timed(["/usr/bin/python3", "-c", EXUDYN_SCRIPT, str(n), str(steps), json.dumps(p)], env=env,
                              timeout=timeout)
     r = json.loads(out.strip().splitlines()[-1])
     return {"tip": np.array(r["tip"]), "time": r["time"], "process": wall}

@@ -53,6 +53,13 @@ DynamicAnalysis::DynamicAnalysis(Assembler& assembler, const DynamicsOptions& op
   SinewCallThrow(comm, PetscOptionsGetString(nullptr, nullptr, "-dynamics_modified_newton", modified, sizeof(modified), &set));
   const std::string mode = modified;
   modifiedNewton_ = mode == "true" || (mode == "auto" && asm_.mesh().numGlobalUnknowns >= 200);
+  // Newton with mixed stresses for beams, as in statics (docs/beam.md): a large rotation step moves
+  // the nodes along straight lines and stretches axially stiff elements; the displacement-based
+  // tangent would carry that spurious axial force (residuals alternating by 1e2 per iteration on a
+  // swinging leaf spring at dt = T1/24). Each step's stresses are linearized from q_n.
+  PetscBool mixed = PETSC_TRUE;
+  SinewCallThrow(comm, PetscOptionsGetBool(nullptr, nullptr, "-newton_mixed_stresses", &mixed, &set));
+  asm_.setMixedStressNewton(mixed && asm_.hasMixedStressKernels());
   // Newton's start of a step. The extrapolation q_n + h qd_n + h^2/2 a_n carries the algorithmic
   // accelerations of the modes the step does not resolve (h omega >> 1: the axial and the short
   // bending waves of a fine cable, omega ~ 1/l_e resp. 1/l_e^2). Those are noise of amplitude
@@ -62,13 +69,20 @@ DynamicAnalysis::DynamicAnalysis(Assembler& assembler, const DynamicsOptions& op
   // iterations on 49 Jacobians in 20 steps, 61 retried steps in 100 on one process). q_n has a
   // smooth error (the inertia M qd_n/(beta h) of one step's motion): from a residual of 43..1400
   // Newton converges in 2 iterations per step (the update test of convergenceTest), no retries.
-  // auto: q_n from 200 unknowns (where modified Newton keeps the Jacobian), the extrapolation below
-  // (A3 with 1 element: 2000 iterations against 2779 from q_n).
+  // auto: q_n from 200 unknowns (where modified Newton keeps the Jacobian) and for beams (below); else
+  // the extrapolation (A3 with 1 element: 2000 iterations against 2779 from q_n).
   char pred[16] = "auto";
   SinewCallThrow(comm, PetscOptionsGetString(nullptr, nullptr, "-dynamics_predictor", pred, sizeof(pred), &set));
   const std::string pr = pred;
   const bool fine = asm_.mesh().numGlobalUnknowns >= 200;
-  predictor_ = pr == "state" || (pr == "auto" && fine) ? Predictor::State : Predictor::Acceleration;
+  // Beams (mixed-stress Newton) start from q_n at any size, as statics has no secant predictor for
+  // them: the additive extrapolation of positions and rotation vectors stretches the elements. The
+  // leaf spring swinging under its weight (scripts/study_beam_dynamics.py, 16 elements, dt = T1/24)
+  // took 303 Newton iterations with 5 retried steps from the extrapolation, 36 from q_n; without the
+  // mixed stresses the extrapolation even converged to another root of the step equations (tip
+  // -0.318 m at t = 0.3 s against -0.266 m from q_n and from every smaller step: -0.268 m).
+  predictor_ = pr == "state" || (pr == "auto" && (fine || asm_.mixedStressNewton())) ? Predictor::State
+                                                                                     : Predictor::Acceleration;
   coordMax_ = asm_.coordinateScale();
   int mult = 0;
   for (const LocalElement& e : asm_.mesh().elements) mult |= e.firstMultiplier >= 0;
@@ -309,6 +323,11 @@ PetscErrorCode DynamicAnalysis::initialAccelerations(Vec U, Vec V, Vec Qdd, bool
 PetscErrorCode DynamicAnalysis::step(double t1, bool* ok, int* its, double* fnorm, SNESConvergedReason* why) {
   PetscFunctionBeginUser;
   const double h = h_;
+  if (asm_.mixedStressNewton()) {  // the mixed-stress tangent linearizes from the converged q_n (also on a retry)
+    LoadState lsn = ls_;
+    lsn.time = t1 - h;
+    PetscCall(asm_.setMixedReference(Un_, lsn));
+  }
   ls_.time = t1;
   // Cu = q_n + h qd_n + h^2 (1/2 - beta) a_n; predictor q = q_n + h qd_n + h^2/2 a_n or q_n
   PetscCall(VecCopy(Un_, Cu_));

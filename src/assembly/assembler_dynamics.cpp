@@ -176,6 +176,8 @@ PetscErrorCode Assembler::dynamicJacobian(Vec U, Vec V, const LoadState& ls, dou
   std::array<int, kMaxElementRows> idx;
   std::array<double, kMaxElementRows> qdot;
   std::vector<double> Me;
+  std::array<double, 48> q0;
+  std::array<double, 6> sigmaMixed;
   vLocal_ = v;
   for (const LocalElement& el : mesh_.elements) {
     gatherElement(el, q.data(), u, idx.data(), nullptr);
@@ -186,6 +188,11 @@ PetscErrorCode Assembler::dynamicJacobian(Vec U, Vec V, const LoadState& ls, dou
     KernelInput in{q.data(), gatherVelocity(el, idx.data(), qdot.data()),
                    el.firstMultiplier >= 0 ? u + el.firstMultiplier : nullptr, ls.time};
     in.disp = elemDisp_.data();
+    if (mixedNewton_ && el.kernel->numMixedStresses() > 0) {  // as jacobian(): stresses linearized from the reference
+      if (mixedRefValid_) gatherStates(el, mixedRef_.data(), q0.data());
+      el.kernel->linearizedStresses(mixedRefValid_ ? q0.data() : nullptr, q.data(), sigmaMixed.data());
+      in.sigmaMixed = sigmaMixed.data();
+    }
     evaluateElement(el, in, needs);
     const int nd = el.kernel->numDofs(), n = nd + el.kernel->numConstraints();
     rotationColumns(el, n, out_.K.data());
@@ -200,6 +207,10 @@ PetscErrorCode Assembler::dynamicJacobian(Vec U, Vec V, const LoadState& ls, dou
     PetscCall(MatSetValuesLocal(J, n, idx.data(), n, idx.data(), out_.K.data(), ADD_VALUES));
   }
   vLocal_ = nullptr;
+  if (mixedNewton_) {  // the next Newton iterate linearizes its stresses about this state
+    mixedRef_ = state_;
+    mixedRefValid_ = true;
+  }
   for (int i = 0; i < mesh_.numOwnedNodes; ++i) {
     const LocalNode& n = mesh_.nodes[i];
     if (n.mass <= 0 || shiftA == 0.0) continue;

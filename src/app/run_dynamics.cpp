@@ -116,6 +116,7 @@ PetscErrorCode runDynamics(RunContext& ctx) {
 
   DynamicAnalysis dyn(ctx.assembler, opts);
   dyn.setStopFlag(&ctx.stop);
+  dyn.setResultFile(&ctx.file);
   if (ctx.restart && ctx.restart->phase() == CheckpointPhase::Dynamics)
     PetscCall(ctx.restart->resumeDynamics(ctx, dyn, &energy0, &maxDrift));
   // the checkpoint of a written time step (Arnold-Brüls only: PETSc TS keeps its state inside)

@@ -165,6 +165,7 @@ struct FormFinding {
 };
 
 struct Sensor {
+  int node = -1;    ///< 0-based scene node of a node sensor (beam Frame6 nodes; Exudyn's SensorNode), else -1
   int element = 0;  ///< 0-based scene element
   double x = 0;     ///< axial position along the scene element (length units, 0..L)
   std::string variable, name;

@@ -79,7 +79,7 @@ const std::vector<std::string> kFormfindingKeys = {
     "formfinding_step", "max_iter_equilibrium", "equilibrium_accuracy", "formfinding_elements", "homotopy_curve",
     "stress_adaption",  "lambda_max",           "mue_relax",            "x_urs",                "x_urs_step",
     "elastic_restart_method", "formfinding_tolerance", "max_shape_change", "distortion_max"};
-const std::vector<std::string> kSensorKeys = {"element", "x", "variable", "name"};
+const std::vector<std::string> kSensorKeys = {"element", "node", "x", "variable", "name"};
 const std::vector<std::string> kSensorVariables = {
     "Position",      "Displacement",   "Velocity",  "VelocityLocal", "Rotation",        "Director1",          "StrainLocal",
     "CurvatureLocal", "ForceLocal",     "TorqueLocal", "AngularVelocity", "Acceleration", "AngularAcceleration"};
@@ -367,21 +367,34 @@ void parseSensors(const YAML::Node& sensors, SceneContext& ctx) {
     const YAML::Node n = sensors[i];
     checkKeys(n, path, kSensorKeys);
     Sensor s;
-    if (!n["element"].IsDefined()) fail(childPath(path, "element"), "missing: a sensor needs the element it samples");
-    s.element = checkedIndex(n["element"], childPath(path, "element"), "element", m.elements.size());
-    if (m.elements[static_cast<std::size_t>(s.element)].size() != 2)
-      fail(childPath(path, "element"), "sensors sample along 2-node elements; element " + std::to_string(s.element + 1) + " has " +
-                                           std::to_string(m.elements[static_cast<std::size_t>(s.element)].size()) + " nodes");
-    if (n["x"].IsDefined()) {
-      const double L = elementLength(m, s.element);
-      s.x = getNumber(n["x"], childPath(path, "x"), kCoordinate);
-      if (s.x < -1e-12 * L || s.x > L * (1 + 1e-12))
-        fail(childPath(path, "x"), "expected a position in [0, " + fmt(L) + "] along element " + std::to_string(s.element + 1) +
-                                       " (its length), got " + fmt(s.x));
-      s.x = std::clamp(s.x, 0.0, L);
+    if (n["node"].IsDefined()) {
+      // node sensor (Exudyn's SensorNode): a beam node's position, displacement, rotation and rates
+      if (n["element"].IsDefined() || n["x"].IsDefined())
+        fail(childPath(path, "node"), "a sensor samples either a node (node) or a position along an element (element, x)");
+      s.node = checkedIndex(n["node"], childPath(path, "node"), "node", m.nodes.size());
+      static const std::vector<std::string> nodeVariables = {"Position", "Displacement", "Velocity", "Acceleration",
+                                                             "Rotation", "AngularVelocity", "AngularAcceleration"};
+      if (!n["variable"].IsDefined()) fail(childPath(path, "variable"), "missing: a sensor needs a variable (e.g. Position)");
+      s.variable = getChoice(n["variable"], childPath(path, "variable"), nodeVariables);
+    } else if (!n["element"].IsDefined()) {
+      fail(childPath(path, "element"), "missing: a sensor needs the element it samples (or a node)");
     }
-    if (!n["variable"].IsDefined()) fail(childPath(path, "variable"), "missing: a sensor needs a variable (e.g. Position)");
-    s.variable = getChoice(n["variable"], childPath(path, "variable"), kSensorVariables);
+    if (s.node < 0) {
+      s.element = checkedIndex(n["element"], childPath(path, "element"), "element", m.elements.size());
+      if (m.elements[static_cast<std::size_t>(s.element)].size() != 2)
+        fail(childPath(path, "element"), "sensors sample along 2-node elements; element " + std::to_string(s.element + 1) + " has " +
+                                             std::to_string(m.elements[static_cast<std::size_t>(s.element)].size()) + " nodes");
+      if (n["x"].IsDefined()) {
+        const double L = elementLength(m, s.element);
+        s.x = getNumber(n["x"], childPath(path, "x"), kCoordinate);
+        if (s.x < -1e-12 * L || s.x > L * (1 + 1e-12))
+          fail(childPath(path, "x"), "expected a position in [0, " + fmt(L) + "] along element " + std::to_string(s.element + 1) +
+                                         " (its length), got " + fmt(s.x));
+        s.x = std::clamp(s.x, 0.0, L);
+      }
+      if (!n["variable"].IsDefined()) fail(childPath(path, "variable"), "missing: a sensor needs a variable (e.g. Position)");
+      s.variable = getChoice(n["variable"], childPath(path, "variable"), kSensorVariables);
+    }
     if (!n["name"].IsDefined()) fail(childPath(path, "name"), "missing: a sensor needs a name (its dataset /sensors/<name>)");
     s.name = getString(n["name"], childPath(path, "name"));
     if (s.name.empty() || s.name.find('/') != std::string::npos || s.name == "." )

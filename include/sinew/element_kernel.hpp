@@ -88,6 +88,9 @@ class ElementKernel {
   /// state q1 (translations x1 - x0, spatial rotation vectors log(R1 R0^T)); with q0 == nullptr the
   /// stresses S eps(q1). Writes numMixedStresses() values. Only called when numMixedStresses() > 0.
   virtual void linearizedStresses(const double* /*q0*/, const double* /*q1*/, double* /*sigma*/) const {}
+  /// Strain energy at state q (its gradient is the internal force without the multipliers' part);
+  /// false when the kernel does not provide it (energy output then reports the element kinds).
+  virtual bool strainEnergy(const double* /*q*/, double* /*energy*/) const { return false; }
   /// Element force output (cable axial force, membrane resultants n11 n22 n12); empty when none.
   virtual void elementForce(const double* /*q*/, std::vector<double>& out) const { out.clear(); }
 

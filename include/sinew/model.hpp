@@ -97,6 +97,11 @@ struct ElementSet {
 struct DynamicsOptions {
   double tend = 0, dt = 0, spectral_radius = 0.9;
   int output_every = 1;  ///< Sinew: write every k-th time step (and the last)
+  // damping (docs/dynamics.md "Damping"; Exudyn's massProportionalDamping/stiffnessProportionalDamping)
+  double mass_proportional_damping = 0;       ///< Rayleigh alpha (1/s): C += alpha M0
+  double stiffness_proportional_damping = 0;  ///< Rayleigh beta (s): C += beta K0 (tangent of the start state)
+  std::vector<double> modal_damping;          ///< zeta: one value for the lowest modal_damping_modes modes, or one per mode
+  int modal_damping_modes = 10;               ///< modes a scalar modal_damping applies to
 };
 
 /// Sinew: opt.output_steps, the load / time steps at which results are written and the step
@@ -171,6 +176,7 @@ struct FormFinding {
 };
 
 struct Sensor {
+  int node = -1;    ///< 0-based scene node of a node sensor (beam Frame6 nodes; Exudyn's SensorNode), else -1
   int element = 0;  ///< 0-based scene element
   double x = 0;     ///< axial position along the scene element (length units, 0..L)
   std::string variable, name;

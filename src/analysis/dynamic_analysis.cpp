@@ -21,7 +21,8 @@ bool DynamicAnalysis::checkScheme(const DistributedMesh& mesh) {
   return sch == "tsalpha2";
 }
 
-DynamicAnalysis::DynamicAnalysis(Assembler& assembler, const DynamicsOptions& opts) : asm_(assembler), opts_(opts) {
+DynamicAnalysis::DynamicAnalysis(Assembler& assembler, const DynamicsOptions& opts)
+    : asm_(assembler), opts_(opts), damping_(assembler, opts) {
   const double rho = opts_.spectral_radius;
   alphaM_ = (2.0 * rho - 1.0) / (rho + 1.0);
   alphaF_ = rho / (rho + 1.0);
@@ -153,6 +154,7 @@ PetscErrorCode DynamicAnalysis::formFunction(SNES, Vec U, Vec F, void* ctx) {
   auto* self = static_cast<DynamicAnalysis*>(ctx);
   PetscCall(self->rates(U));
   PetscCall(self->asm_.dynamicResidual(U, self->V1_, self->Q1_, self->ls_, F));
+  PetscCall(self->damping_.addForce(self->V1_, F));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -194,6 +196,7 @@ PetscErrorCode DynamicAnalysis::formJacobian(SNES snes, Vec U, Mat, Mat P, void*
   const double shiftA = (1.0 - self->alphaM_) / ((1.0 - self->alphaF_) * self->beta_ * h * h);
   PetscCall(self->rates(U));
   PetscCall(self->asm_.dynamicJacobian(U, self->V1_, self->ls_, shiftV, shiftA, P));
+  PetscCall(self->damping_.addJacobian(shiftV, P));
   ++self->report_.jacobians;
   self->jacobianValid_ = true;
   self->jacobianH_ = h;
@@ -388,9 +391,11 @@ PetscErrorCode DynamicAnalysis::runArnoldBruls(Vec U, const StepCallback& onStep
   PetscCall(VecDestroy(&Usol));
 
   bool ok = false;
+  if (resumed_) PetscCall(setupDamping(Un_));  // from the resumed state (docs/dynamics.md, Damping)
   if (!resumed_) {
     PetscCall(VecCopy(U, Un_));
     PetscCall(asm_.absorbRotations(Un_));  // rotation unknowns are increments from R_n (0 at a step start)
+    PetscCall(setupDamping(Un_));
     PetscCall(VecSet(Vn_, 0.0));
     PetscCall(initialAccelerations(Un_, Vn_, Qn_, &ok));
     if (!ok) {
@@ -488,6 +493,7 @@ PetscErrorCode DynamicAnalysis::tsI2Function(TS, PetscReal t, Vec U, Vec V, Vec 
   LoadState ls = self->ls_;
   ls.time = t;
   PetscCall(self->asm_.dynamicResidual(U, V, A, ls, F));
+  PetscCall(self->damping_.addForce(V, F));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -498,6 +504,7 @@ PetscErrorCode DynamicAnalysis::tsI2Jacobian(TS, PetscReal t, Vec U, Vec V, Vec,
   LoadState ls = self->ls_;
   ls.time = t;
   PetscCall(self->asm_.dynamicJacobian(U, V, ls, shiftV, shiftA, P));
+  PetscCall(self->damping_.addJacobian(shiftV, P));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -549,6 +556,7 @@ PetscErrorCode DynamicAnalysis::runTSAlpha2(Vec U, const StepCallback& onStep, b
   PetscCall(VecDuplicate(U, &A));
   PetscCall(VecSet(V, 0.0));
   bool ok = false;
+  PetscCall(setupDamping(U));
   PetscCall(initialAccelerations(U, V, A, &ok));
   if (ok) {
     if (onStep) PetscCall(onStep(0, 0.0, U, V, A));
@@ -582,6 +590,16 @@ PetscErrorCode DynamicAnalysis::runTSAlpha2(Vec U, const StepCallback& onStep, b
   PetscCall(VecDestroy(&V));
   PetscCall(VecDestroy(&A));
   PetscCall(TSDestroy(&ts));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode DynamicAnalysis::setupDamping(Vec U) {
+  PetscFunctionBeginUser;
+  if (!damping_.active()) PetscFunctionReturn(PETSC_SUCCESS);
+  if (!file_) SETERRQ(asm_.mesh().comm, PETSC_ERR_ORDER, "DynamicAnalysis::setResultFile must be called before run() with damping");
+  LoadState ls0 = ls_;
+  ls0.time = 0.0;
+  PetscCall(damping_.setup(U, ls0, keep_, *file_));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -20,6 +20,7 @@
 #include <functional>
 #include <string>
 
+#include "analysis/damping.hpp"
 #include "assembly/assembler.hpp"
 #include "sinew/model.hpp"
 
@@ -58,6 +59,10 @@ class DynamicAnalysis {
   static bool checkScheme(const DistributedMesh& mesh);
   /// Integrates from U (in: initial state, at rest; out: state at the last converged time).
   PetscErrorCode run(Vec U, const StepCallback& onStep, bool* converged);
+  /// With opt.dynamics damping: the frequency analysis of the start state (modal damping) sees
+  /// this file (it writes nothing into it). Call before run().
+  void setResultFile(ResultFile* file) { file_ = file; }
+  const Damping& damping() const { return damping_; }
   /// The loop ends after the step whose onStep set *stop (an interrupt or a failed result file);
   /// the run is then neither converged nor failed here: the caller knows why it stopped.
   void setStopFlag(const bool* stop) { stop_ = stop; }
@@ -91,6 +96,8 @@ class DynamicAnalysis {
   PetscErrorCode step(double t1, bool* ok, int* its, double* fnorm, SNESConvergedReason* why);
   PetscErrorCode runArnoldBruls(Vec U, const StepCallback& onStep, bool* converged);
   PetscErrorCode runTSAlpha2(Vec U, const StepCallback& onStep, bool* converged);
+  /// Builds the damping matrix from the start state U (rotations absorbed).
+  PetscErrorCode setupDamping(Vec U);
 
   Assembler& asm_;
   const bool* stop_ = nullptr;
@@ -129,6 +136,8 @@ class DynamicAnalysis {
   double prevFnorm_ = 0;       ///< residual norm at the previous Jacobian call of this solve
   DynamicsReport report_;
   std::string failure_;
+  Damping damping_;
+  ResultFile* file_ = nullptr;
 };
 
 }  // namespace sinew

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "elements/ancf_cable2d.hpp"
+#include "sinew/rotation.hpp"
 
 namespace sinew {
 
@@ -44,6 +45,12 @@ SensorAnalysis::SensorAnalysis(Assembler& assembler, const std::vector<Sensor>& 
   for (const Sensor& s : sensors) {
     Probe p;
     p.sensor = s;
+    if (s.node >= 0) {
+      for (int i = 0; i < asm_.mesh().numOwnedNodes; ++i)
+        if (asm_.mesh().nodes[i].sceneNode == s.node) p.node = i;
+      probes_.push_back(p);
+      continue;
+    }
     for (size_t e = 0; e < elements.size(); ++e) {
       const LocalElement& el = elements[e];
       if (el.sceneElement != s.element) continue;
@@ -61,6 +68,31 @@ SensorAnalysis::SensorAnalysis(Assembler& assembler, const std::vector<Sensor>& 
   }
 }
 
+void SensorAnalysis::nodeValues(const Probe& p, const LocalNode& n, const double* s, const double* v, const double* a,
+                                double* out) {
+  const std::string& var = p.sensor.variable;
+  auto rate = [&](const double* x, int first) {
+    for (int k = 0; k < 3; ++k) out[k] = (x && n.dof[first + k] >= 0) ? x[n.dof[first + k]] : 0.0;
+  };
+  if (var == "Position") {
+    for (int k = 0; k < 3; ++k) out[k] = s[k];
+  } else if (var == "Displacement") {
+    for (int k = 0; k < 3; ++k) out[k] = s[k] - n.X0[k];
+  } else if (var == "Rotation") {
+    const Mat3 R{s[3], s[4], s[5], s[6], s[7], s[8], s[9], s[10], s[11]};
+    const Vec3 w = logSO3(R);
+    for (int k = 0; k < 3; ++k) out[k] = w[k];
+  } else if (var == "Velocity") {
+    rate(v, 0);
+  } else if (var == "Acceleration") {
+    rate(a, 0);
+  } else if (var == "AngularVelocity") {
+    rate(v, 3);
+  } else if (var == "AngularAcceleration") {
+    rate(a, 3);
+  }
+}
+
 PetscErrorCode SensorAnalysis::atStep(Vec U, const LoadState& ls, ResultFile& file, bool* ok) {
   PetscFunctionBeginUser;
   *ok = true;
@@ -75,8 +107,9 @@ PetscErrorCode SensorAnalysis::atStep(Vec U, const LoadState& ls, ResultFile& fi
   std::array<int, 48> idx{};
   std::array<double, 8> qd{}, qdd{};
   for (const Probe& p : probes_) {
-    const int k = valueCount(p.sensor.variable);
+    const int k = p.sensor.node >= 0 ? 3 : valueCount(p.sensor.variable);
     std::vector<double> out(k, 0.0);
+    if (p.node >= 0) nodeValues(p, asm_.mesh().nodes[p.node], asm_.nodeState(p.node), v, a, out.data());
     if (p.element >= 0) {
       const LocalElement& el = asm_.mesh().elements[p.element];
       asm_.gather(el, q.data(), idx.data());
@@ -94,7 +127,7 @@ PetscErrorCode SensorAnalysis::atStep(Vec U, const LoadState& ls, ResultFile& fi
   MPI_Allreduce(MPI_IN_PLACE, values.data(), static_cast<int>(values.size()), MPI_DOUBLE, MPI_SUM, asm_.mesh().comm);
   size_t off = 0;
   for (const Probe& p : probes_) {
-    const int k = valueCount(p.sensor.variable);
+    const int k = p.sensor.node >= 0 ? 3 : valueCount(p.sensor.variable);
     file.writeStepRow("sensors/" + p.sensor.name, std::span<const double>(values.data() + off, k));
     off += k;
   }

@@ -2,7 +2,10 @@
 // axial position x of a scene element at every written step. The FE element that holds x is
 // found from the nbeams split (LocalElement::subIndex/numSub); the value is computed by the
 // rank that owns that element with AncfCable2D::output(q, qdot, qddot) and reduced to rank 0,
-// which writes /sensors/<name> [ns, k].
+// which writes /sensors/<name> [ns, k]. Node sensors (`node`, Exudyn's SensorNode) sample a beam
+// (Frame6) node: Position, Displacement (x - X0), Rotation (rotation vector of R, angle times axis,
+// as /node/r_axang), Velocity, Acceleration, AngularVelocity, AngularAcceleration (spatial: global
+// frame), 3 values each, from the owning rank.
 #pragma once
 #include <string>
 #include <vector>
@@ -33,7 +36,10 @@ class SensorAnalysis : public StepAnalysis {
     int element = -1;  ///< local element index on the owning rank, -1 elsewhere
     double xLocal = 0;
     const AncfCable2D* kernel = nullptr;
+    int node = -1;  ///< node sensor: local owned node index on the owning rank, -1 elsewhere
   };
+  /// A node sensor's 3 values from the node state (s: x, R) and the rates (local forms or null).
+  static void nodeValues(const Probe& p, const LocalNode& n, const double* s, const double* v, const double* a, double* out);
   Assembler& asm_;
   std::vector<Probe> probes_;
   Vec V_ = nullptr, A_ = nullptr;

@@ -76,7 +76,7 @@ const std::vector<Flag>& sinewFlags() {
         {"mat_mumps_icntl_14", anyInteger(), &dynamics, "100 when dynamics factors with MUMPS, else MUMPS' own", "(MUMPS) percentage of extra workspace for pivoting; dynamics reserves 100 so wild Newton iterates do not fail the factorization (INFOG(1) = -9)"},
         {"dynamics_predictor", oneOf({"auto", "acceleration", "state"}), &dynamics, "auto", "Newton's start of a time step: q_n + h qd_n + h^2/2 a_n (acceleration) or q_n (state; the extrapolation of a fine mesh's unresolved stiff modes lands far off); auto: state from 200 unknowns and for beams"},
         {"dt_grow_after", integerAtLeast(0), &dynamics, "3", "after a halving, double the time step after this many successes (0: never)"},
-        {"dynamics_energy", boolean(), &dynamics, "false", "report the energy drift of the time integration"},
+        {"dynamics_energy", boolean(), &dynamics, "false", "write /energy/{kinetic,strain,external_work,total} and /momentum/{linear,angular} per output step (beams, ANCF)"},
         {"ff_mat_mumps_icntl_7", integerIn(0, 7), &formfinding, "3", "(MUMPS) fill-reducing ordering of the form-finding factorization (3: SCOTCH)"},
     };
     // Every scene opt field is a flag of the same name (the scene reader checks its value).

@@ -28,6 +28,20 @@ Plan makePlan(const Model& model) {
                 std::any_of(s.flex.begin(), s.flex.end(), [](bool b) { return b; });
   }
   for (size_t i = 0; i < model.sensors.size(); ++i) {
+    if (model.sensors[i].node >= 0) {
+      // node sensors: beam (Frame6) nodes, i.e. nodes of a beam or rigid element
+      const int nd = model.sensors[i].node;
+      bool frame = false;
+      for (size_t e = 0; e < model.elements.size() && !frame; ++e) {
+        const int set = model.elementSet[e];
+        if (set >= 0 && model.eprops[set].type != ElementType::Beam) continue;
+        for (int k : model.elements[e]) frame |= k == nd;
+      }
+      if (!frame)
+        throw SceneError("sensors[" + std::to_string(i) + "].node",
+                         "node sensors sample beam nodes; node " + std::to_string(nd + 1) + " is on no beam or rigid element");
+      continue;
+    }
     const int e = model.sensors[i].element, set = model.elementSet[e];
     if (set < 0 || model.eprops[set].type != ElementType::AncfCable2D)
       throw SceneError("sensors[" + std::to_string(i) + "].element",

@@ -412,7 +412,8 @@ PetscErrorCode Restart::resumeContinuation(RunContext& ctx, ContinuationAnalysis
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode Restart::resumeDynamics(RunContext& ctx, DynamicAnalysis& dyn, double* energy0, double* maxDrift) const {
+PetscErrorCode Restart::resumeDynamics(RunContext& ctx, DynamicAnalysis& dyn, double* energy0, double* maxDrift, double* work,
+                                      double* power) const {
   PetscFunctionBeginUser;
   const auto& sc = reader_->scalars();
   DynamicsProgress p;
@@ -433,6 +434,8 @@ PetscErrorCode Restart::resumeDynamics(RunContext& ctx, DynamicAnalysis& dyn, do
   PetscCall(VecDestroy(&Q));
   *energy0 = sc[kCkEnergy0];
   *maxDrift = sc[kCkMaxDrift];
+  *work = sc[kCkExternalWork];
+  *power = sc[kCkExternalPower];
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -62,8 +62,9 @@ class Restart {
   void resumeFormFinding(RunContext& ctx, FormFindingAnalysis& analysis) const;
   /// Statics: progress, last increment; the ramp's loadsteps stay those of the earlier run.
   PetscErrorCode resumeStatics(RunContext& ctx, StaticAnalysis& statics) const;
-  /// Dynamics: progress and rates; energy0/maxDrift of -dynamics_energy.
-  PetscErrorCode resumeDynamics(RunContext& ctx, DynamicAnalysis& dyn, double* energy0, double* maxDrift) const;
+  /// Dynamics: progress and rates; energy0/maxDrift/external work and power of -dynamics_energy.
+  PetscErrorCode resumeDynamics(RunContext& ctx, DynamicAnalysis& dyn, double* energy0, double* maxDrift, double* work,
+                                double* power) const;
   /// Path following: its state after the last point, the last increment.
   PetscErrorCode resumeContinuation(RunContext& ctx, ContinuationAnalysis& path) const;
   /// loadsteps of the earlier run's ramp (statics checkpoints).

@@ -571,4 +571,23 @@ std::vector<double> AncfCable2D::output(const std::string& variable, double x, c
   throw std::invalid_argument("ancf_cable2d: unknown output variable '" + variable + "'; valid: " + valid);
 }
 
+bool AncfCable2D::strainEnergy(const double* q, double* energy) const {
+  if (p_.axialForceUserFunction || p_.bendingMomentUserFunction) return false;
+  const int r = p_.useReducedOrderIntegration;
+  const Rule ra = r == 0 ? gauss(5) : (r == 1 ? gauss(4) : lobatto3());
+  const Rule rb = r == 0 ? gauss(3) : gauss(2);
+  const double L = length();
+  double e = 0.0;
+  for (int i = 0; i < ra.n; ++i) {
+    const double x = 0.5 * L * (ra.xi[i] + 1), d = axialStrain(q, x) - axialStrainRef(x);
+    e += 0.25 * L * ra.w[i] * p_.physicsAxialStiffness * d * d;
+  }
+  for (int i = 0; i < rb.n; ++i) {
+    const double x = 0.5 * L * (rb.xi[i] + 1), d = curvature(q, x) - curvatureRef(x);
+    e += 0.25 * L * rb.w[i] * p_.physicsBendingStiffness * d * d;
+  }
+  *energy = e;
+  return true;
+}
+
 }  // namespace sinew

@@ -82,6 +82,9 @@ class AncfCable2D : public ElementKernel {
   double curvatureRef(double x) const;
 
   double length() const { return L_; }
+  /// int EA/2 (eps - eps_ref)^2 + EI/2 (K - K_ref)^2 dx with the rules of evaluate (its gradient is
+  /// the internal force); false with user force laws (no energy given).
+  bool strainEnergy(const double* q, double* energy) const override;
   const AncfCable2DParameters& parameters() const { return p_; }
   const std::array<double, 8>& referenceCoordinates() const { return qRef_; }
 

@@ -402,6 +402,16 @@ std::array<double, 6> BeamCorotational::generalizedStresses(const double* q, con
   return s;
 }
 
+bool BeamCorotational::strainEnergy(const double* q, double* energy) const {
+  Kinematics k;
+  kinematics(q, k);
+  double e = 0.0;
+  for (int i = 0; i < 6; ++i)
+    for (int j = 0; j < 6; ++j) e += 0.5 * k.eps[i] * S_[6 * i + j] * k.eps[j];
+  *energy = e;
+  return true;
+}
+
 double BeamCorotational::vonMisesMax(const double* q, const double* lambda) const {
   if (!(sec_.A > 0.0) || !sec_.stressRecovery) return 0.0;
   Kinematics k;

@@ -43,6 +43,8 @@ class BeamCorotational : public ElementKernel {
   void bodyForce(const double* q, const Vec3& a, std::vector<double>& f) const override;
   /// Max Von Mises stress over both end sections (normal stress from N, My, Mz; shear from torsion).
   double vonMisesMax(const double* q, const double* lambda) const override;
+  /// 1/2 eps^T S eps (flexible modes; f = S eps . grad eps is its gradient).
+  bool strainEnergy(const double* q, double* energy) const override;
   /// The six generalized stresses (rigid and released ones come out 0: rigid modes carry multipliers).
   int numMixedStresses() const override { return 6; }
   void linearizedStresses(const double* q0, const double* q1, double* sigma) const override;

@@ -21,7 +21,7 @@ namespace {
 
 const char* const kScalarNames =
     "phase rows step step_value loadsteps lambda dl_prev dl_adapt fint_converged time substep successes dt "
-    "spectral_radius energy0 max_drift formfinding load_ramp";
+    "spectral_radius energy0 max_drift formfinding load_ramp external_work external_power";
 
 // "_U_dU": the vectors of a table, in column order (the tables of each phase have their own names,
 // since a fixed-size dataset keeps its shape)

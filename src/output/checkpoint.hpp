@@ -51,10 +51,12 @@ enum CheckpointScalar : int {
   kCkSuccesses,      ///< dynamics: successful halved sub-steps in a row (growth rule)
   kCkDt,             ///< dynamics: dt of the run
   kCkSpectralRadius, ///< dynamics: spectral radius of the run
-  kCkEnergy0,        ///< dynamics with -dynamics_energy: initial total energy
+  kCkEnergy0,        ///< dynamics with -dynamics_energy: initial T + S - W
   kCkMaxDrift,       ///< dynamics with -dynamics_energy: largest energy change so far
   kCkFormFinding,    ///< 1 when the run had a form-finding phase
   kCkLoadRamp,       ///< statics: opt.load_ramp of the run (0 spacar: (k-1)/(n-1), 1 uniform: k/n)
+  kCkExternalWork,   ///< dynamics with -dynamics_energy: work of the external loads so far
+  kCkExternalPower,  ///< dynamics with -dynamics_energy: their power at the last time step
   kNumScalars
 };
 

@@ -30,9 +30,12 @@ const std::vector<OptionDoc>& sceneOptionDocs() {
       {"spavisual", "bool", "false", "SPACAR Light: open the seed's viewer after the run (Sinew: the XDMF file is always written; accepted)"},
       {"customvis", "string (file) or map", "none", "SPACAR Light: custom visualization (Sinew: accepted, not drawn)"},
       {"compliance_nodes", "[node numbers]", "all nodes", "nodes whose compliance matrices are computed"},
-      {"dynamics", "{tend, dt, spectral_radius, output_every}", "none",
+      {"dynamics", "{tend, dt, spectral_radius, output_every, mass_proportional_damping, stiffness_proportional_damping, "
+                   "modal_damping, modal_damping_modes}", "none",
        "time integration (generalized-alpha) to tend with step dt; spectral_radius in [0,1] defaults to 0.9; "
-       "output_every k writes every k-th step (default 1)"},
+       "output_every k writes every k-th step (default 1); damping C = alpha M0 + beta K0 (Rayleigh, "
+       "mass_/stiffness_proportional_damping) + modal damping zeta (one value for the lowest modal_damping_modes = 10 "
+       "modes of the start state, or a list, one per mode)"},
       {"nfreq", "integer >= 1", "6", "number of natural frequencies"},
       {"continuation", "{method, ds, max_steps, stop_load_factor, node, direction, stop_displacement, constraint, psi, ds_max}",
        "none",
@@ -76,7 +79,7 @@ const std::vector<std::string> kFormfindingKeys = {
     "formfinding_step", "max_iter_equilibrium", "equilibrium_accuracy", "formfinding_elements", "homotopy_curve",
     "stress_adaption",  "lambda_max",           "mue_relax",            "x_urs",                "x_urs_step",
     "elastic_restart_method", "formfinding_tolerance", "max_shape_change", "distortion_max"};
-const std::vector<std::string> kSensorKeys = {"element", "x", "variable", "name"};
+const std::vector<std::string> kSensorKeys = {"element", "node", "x", "variable", "name"};
 const std::vector<std::string> kSensorVariables = {
     "Position",      "Displacement",   "Velocity",  "VelocityLocal", "Rotation",        "Director1",          "StrainLocal",
     "CurvatureLocal", "ForceLocal",     "TorqueLocal", "AngularVelocity", "Acceleration", "AngularAcceleration"};
@@ -109,8 +112,41 @@ void parseRls(const YAML::Node& v, const std::string& path, SceneContext& ctx) {
   }
 }
 
+// Rayleigh (alpha M0 + beta K0) and modal (zeta per mode) damping of opt.dynamics (src/analysis/damping.hpp)
+void parseDamping(const YAML::Node& v, const std::string& path, DynamicsOptions& d) {
+  auto nonNegative = [&](const char* key) {
+    const std::string p = childPath(path, key);
+    const double x = getNonNegative(v[key], p);
+    if (!(x >= 0) || !std::isfinite(x)) fail(p, "expected a damping coefficient >= 0, got " + fmt(x));
+    return x;
+  };
+  if (v["mass_proportional_damping"].IsDefined()) d.mass_proportional_damping = nonNegative("mass_proportional_damping");
+  if (v["stiffness_proportional_damping"].IsDefined())
+    d.stiffness_proportional_damping = nonNegative("stiffness_proportional_damping");
+  const std::string pz = childPath(path, "modal_damping"), pn = childPath(path, "modal_damping_modes");
+  if (v["modal_damping"].IsDefined()) {
+    const YAML::Node& z = v["modal_damping"];
+    if (z.IsSequence()) {
+      if (z.size() == 0) fail(pz, "expected a damping ratio zeta or a list of one per mode, got an empty list");
+      for (std::size_t i = 0; i < z.size(); ++i) d.modal_damping.push_back(getNonNegative(z[i], indexPath(pz, i)));
+    } else {
+      d.modal_damping.push_back(getNonNegative(z, pz));
+    }
+    for (std::size_t i = 0; i < d.modal_damping.size(); ++i)
+      if (!(d.modal_damping[i] >= 0) || !std::isfinite(d.modal_damping[i]))
+        fail(z.IsSequence() ? indexPath(pz, i) : pz, "expected a damping ratio zeta >= 0, got " + fmt(d.modal_damping[i]));
+  }
+  if (v["modal_damping_modes"].IsDefined()) {
+    if (d.modal_damping.size() != 1)
+      fail(pn, d.modal_damping.empty() ? "given without modal_damping (the ratio zeta)"
+                                       : "modal_damping is a list (one zeta per mode): its length is the number of modes");
+    d.modal_damping_modes = getIntAtLeast(v["modal_damping_modes"], pn, 1);
+  }
+}
+
 void parseDynamics(const YAML::Node& v, const std::string& path, Options& opt) {
-  checkKeys(v, path, {"tend", "dt", "spectral_radius", "output_every"});
+  checkKeys(v, path, {"tend", "dt", "spectral_radius", "output_every", "mass_proportional_damping",
+                      "stiffness_proportional_damping", "modal_damping", "modal_damping_modes"});
   DynamicsOptions d;
   if (!v["tend"].IsDefined()) fail(childPath(path, "tend"), "missing: dynamics needs tend (end time) > 0");
   d.tend = getPositive(v["tend"], childPath(path, "tend"), kTime);
@@ -121,6 +157,7 @@ void parseDynamics(const YAML::Node& v, const std::string& path, Options& opt) {
     fail(childPath(path, "dt"), "tend / dt = " + fmt(d.tend / d.dt) + " time steps; Sinew takes at most " + fmt(kMaxTimeSteps));
   if (v["spectral_radius"].IsDefined()) d.spectral_radius = getInRange(v["spectral_radius"], childPath(path, "spectral_radius"), 0.0, 1.0);
   if (v["output_every"].IsDefined()) d.output_every = getIntAtLeast(v["output_every"], childPath(path, "output_every"), 1);
+  parseDamping(v, path, d);
   opt.dynamics = d;
 }
 
@@ -330,21 +367,34 @@ void parseSensors(const YAML::Node& sensors, SceneContext& ctx) {
     const YAML::Node n = sensors[i];
     checkKeys(n, path, kSensorKeys);
     Sensor s;
-    if (!n["element"].IsDefined()) fail(childPath(path, "element"), "missing: a sensor needs the element it samples");
-    s.element = checkedIndex(n["element"], childPath(path, "element"), "element", m.elements.size());
-    if (m.elements[static_cast<std::size_t>(s.element)].size() != 2)
-      fail(childPath(path, "element"), "sensors sample along 2-node elements; element " + std::to_string(s.element + 1) + " has " +
-                                           std::to_string(m.elements[static_cast<std::size_t>(s.element)].size()) + " nodes");
-    if (n["x"].IsDefined()) {
-      const double L = elementLength(m, s.element);
-      s.x = getNumber(n["x"], childPath(path, "x"), kCoordinate);
-      if (s.x < -1e-12 * L || s.x > L * (1 + 1e-12))
-        fail(childPath(path, "x"), "expected a position in [0, " + fmt(L) + "] along element " + std::to_string(s.element + 1) +
-                                       " (its length), got " + fmt(s.x));
-      s.x = std::clamp(s.x, 0.0, L);
+    if (n["node"].IsDefined()) {
+      // node sensor (Exudyn's SensorNode): a beam node's position, displacement, rotation and rates
+      if (n["element"].IsDefined() || n["x"].IsDefined())
+        fail(childPath(path, "node"), "a sensor samples either a node (node) or a position along an element (element, x)");
+      s.node = checkedIndex(n["node"], childPath(path, "node"), "node", m.nodes.size());
+      static const std::vector<std::string> nodeVariables = {"Position", "Displacement", "Velocity", "Acceleration",
+                                                             "Rotation", "AngularVelocity", "AngularAcceleration"};
+      if (!n["variable"].IsDefined()) fail(childPath(path, "variable"), "missing: a sensor needs a variable (e.g. Position)");
+      s.variable = getChoice(n["variable"], childPath(path, "variable"), nodeVariables);
+    } else if (!n["element"].IsDefined()) {
+      fail(childPath(path, "element"), "missing: a sensor needs the element it samples (or a node)");
     }
-    if (!n["variable"].IsDefined()) fail(childPath(path, "variable"), "missing: a sensor needs a variable (e.g. Position)");
-    s.variable = getChoice(n["variable"], childPath(path, "variable"), kSensorVariables);
+    if (s.node < 0) {
+      s.element = checkedIndex(n["element"], childPath(path, "element"), "element", m.elements.size());
+      if (m.elements[static_cast<std::size_t>(s.element)].size() != 2)
+        fail(childPath(path, "element"), "sensors sample along 2-node elements; element " + std::to_string(s.element + 1) + " has " +
+                                             std::to_string(m.elements[static_cast<std::size_t>(s.element)].size()) + " nodes");
+      if (n["x"].IsDefined()) {
+        const double L = elementLength(m, s.element);
+        s.x = getNumber(n["x"], childPath(path, "x"), kCoordinate);
+        if (s.x < -1e-12 * L || s.x > L * (1 + 1e-12))
+          fail(childPath(path, "x"), "expected a position in [0, " + fmt(L) + "] along element " + std::to_string(s.element + 1) +
+                                         " (its length), got " + fmt(s.x));
+        s.x = std::clamp(s.x, 0.0, L);
+      }
+      if (!n["variable"].IsDefined()) fail(childPath(path, "variable"), "missing: a sensor needs a variable (e.g. Position)");
+      s.variable = getChoice(n["variable"], childPath(path, "variable"), kSensorVariables);
+    }
     if (!n["name"].IsDefined()) fail(childPath(path, "name"), "missing: a sensor needs a name (its dataset /sensors/<name>)");
     s.name = getString(n["name"], childPath(path, "name"));
     if (s.name.empty() || s.name.find('/') != std::string::npos || s.name == "." )

@@ -10,30 +10,20 @@ accelerations) took 220 iterations with 2 retried steps and converged to another
 equations: -0.318 m (5.0e-2 m off); the mixed stresses alone (extrapolated start) took 303
 iterations with 5 retries, the q_n start alone 47 iterations. The test fails if either default is
 lost: the tip bound catches the wrong root, the iteration bound (<= 42) the displacement tangent."""
+import os
 import re
+import sys
 
 import numpy as np
 
 import sinewtest as st
 
-L, W, T, E, G, RHO = 1.0, 0.02, 0.002, 210e9, 80e9, 7800.0
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "scripts"))
+from study_beam_dynamics import sinew_scene  # noqa: E402  (the study's scene: one definition)
 
 
 def scene(steps):
-    return f"""title: leaf cantilever released under gravity
-nodes: [[0, 0, 0], [{L}, 0, 0]]
-elements: [[1, 2]]
-nprops:
-  1: {{fix: true}}
-eprops:
-  - {{elems: [1], flex: [1, 2, 3, 4, 5, 6], emod: {E}, smod: {G}, dens: {RHO}, cshape: rect,
-     dim: [{W}, {T}], orien: [0, 0, 1], nbeams: 16}}
-opt:
-  gravity: [0, -9.81, 0]
-  calccompl: false
-  calcfreq: false
-  dynamics: {{tend: 0.3, dt: {0.3 / steps!r}, spectral_radius: 0.6, output_every: {steps}}}
-"""
+    return sinew_scene(16, steps)
 
 
 tips, its = {}, {}

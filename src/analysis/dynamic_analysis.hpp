@@ -124,8 +124,11 @@ class DynamicAnalysis {
   static constexpr double kUpdateRtol = 1e-6;  ///< update test: estimated error <= this * |U|
   bool useTS_ = false;
   // Modified Newton (as Exudyn's): the factored Jacobian is kept across iterations and time steps
-  // while each iteration reduces the residual by at least kContractivity; a slower iteration, a new
-  // step size or kMaxReuse iterations on one Jacobian make the next iteration assemble a fresh one.
+  // while Newton contracts by at least kContractivity: measured on the residual with the
+  // acceleration predictor; with the state predictor on the residual at the first iteration and on
+  // the Newton updates after it (the residual is at its round-off noise there), and a residual that
+  // grows 1.5x also refactors. A new step size (beyond 1e-9 relative) or kMaxReuse iterations on
+  // one Jacobian make the next iteration assemble a fresh one (DynamicAnalysis::formJacobian).
   bool modifiedNewton_ = true;
   bool jacobianValid_ = false;
   bool restPredictor_ = false;  ///< guarded retry: Newton starts at q_n

@@ -352,10 +352,18 @@ PetscErrorCode Assembler::setMixedReference(Vec U, const LoadState& ls) {
   PetscFunctionBeginUser;
   if (mixedNewton_) {
     PetscCall(updateStates(U, ls));
-    mixedRef_ = state_;
-    mixedRefValid_ = true;
+    keepMixedReference();
   }
   PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+void Assembler::linearizeMixedStresses(const LocalElement& el, const double* q, std::array<double, 6>& sigma,
+                                       KernelInput& in) const {
+  if (!mixedNewton_ || el.kernel->numMixedStresses() == 0) return;
+  std::array<double, 48> q0;
+  if (mixedRefValid_) gatherStates(el, mixedRef_.data(), q0.data());
+  el.kernel->linearizedStresses(mixedRefValid_ ? q0.data() : nullptr, q, sigma.data());
+  in.sigmaMixed = sigma.data();
 }
 
 void Assembler::rotationColumns(const LocalElement& el, int n, double* K) const {
@@ -607,17 +615,12 @@ PetscErrorCode Assembler::jacobian(Vec U, const LoadState& ls, Mat J) {
     rigidInfo_.clear();
     rigidData_.clear();
   }
-  std::array<double, 48> q0;
   std::array<double, 6> sigmaMixed;
   for (const LocalElement& el : mesh_.elements) {
     gatherElement(el, q.data(), u, idx.data(), nullptr);
     KernelInput in{q.data(), nullptr, el.firstMultiplier >= 0 ? u + el.firstMultiplier : nullptr, ls.time};
     in.disp = elemDisp_.data();
-    if (mixedNewton_ && el.kernel->numMixedStresses() > 0) {
-      if (mixedRefValid_) gatherStates(el, mixedRef_.data(), q0.data());
-      el.kernel->linearizedStresses(mixedRefValid_ ? q0.data() : nullptr, q.data(), sigmaMixed.data());
-      in.sigmaMixed = sigmaMixed.data();
-    }
+    linearizeMixedStresses(el, q.data(), sigmaMixed, in);
     evaluateElement(el, in, needs);
     const int n = el.kernel->numDofs() + el.kernel->numConstraints();
     rotationColumns(el, n, out_.K.data());
@@ -635,10 +638,7 @@ PetscErrorCode Assembler::jacobian(Vec U, const LoadState& ls, Mat J) {
     }
   }
   PetscCall(PetscLogEventEnd(SinewEvents::get().jacobianElements, 0, 0, 0, 0));
-  if (mixedNewton_) {  // the next Newton iterate linearizes its stresses about this state
-    mixedRef_ = state_;
-    mixedRefValid_ = true;
-  }
+  if (mixedNewton_) keepMixedReference();  // the next Newton iterate linearizes its stresses about this state
   if (coo) {  // the matrix is assembled by MatSetValuesCOO (repeated entries are summed)
     PetscCall(MatSetValuesCOO(J, cooValues_.data(), INSERT_VALUES));
   } else {

@@ -240,6 +240,14 @@ class Assembler {
   bool mixedNewton_ = false;
   bool mixedRefValid_ = false;
   std::vector<double> mixedRef_;  // node states (12 per local node) of the mixed-stress reference
+  /// Mixed-stress Newton (jacobian(), dynamicJacobian()): when the element has mixed stresses, its
+  /// stresses linearized from the reference (the current state without one) into sigma, set in `in`.
+  void linearizeMixedStresses(const LocalElement& el, const double* q, std::array<double, 6>& sigma, KernelInput& in) const;
+  /// The current node states become the reference of the next linearization.
+  void keepMixedReference() {
+    mixedRef_ = state_;
+    mixedRefValid_ = true;
+  }
   std::vector<double> disp_;   // 3 per local node: translations x - X0 exactly as in the unknowns
   mutable std::array<double, 12> elemDisp_{};  // disp_ of the element being evaluated (kernel order)
   std::vector<Mat3> Rref_, T_;

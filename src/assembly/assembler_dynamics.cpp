@@ -176,7 +176,6 @@ PetscErrorCode Assembler::dynamicJacobian(Vec U, Vec V, const LoadState& ls, dou
   std::array<int, kMaxElementRows> idx;
   std::array<double, kMaxElementRows> qdot;
   std::vector<double> Me;
-  std::array<double, 48> q0;
   std::array<double, 6> sigmaMixed;
   vLocal_ = v;
   for (const LocalElement& el : mesh_.elements) {
@@ -188,11 +187,7 @@ PetscErrorCode Assembler::dynamicJacobian(Vec U, Vec V, const LoadState& ls, dou
     KernelInput in{q.data(), gatherVelocity(el, idx.data(), qdot.data()),
                    el.firstMultiplier >= 0 ? u + el.firstMultiplier : nullptr, ls.time};
     in.disp = elemDisp_.data();
-    if (mixedNewton_ && el.kernel->numMixedStresses() > 0) {  // as jacobian(): stresses linearized from the reference
-      if (mixedRefValid_) gatherStates(el, mixedRef_.data(), q0.data());
-      el.kernel->linearizedStresses(mixedRefValid_ ? q0.data() : nullptr, q.data(), sigmaMixed.data());
-      in.sigmaMixed = sigmaMixed.data();
-    }
+    linearizeMixedStresses(el, q.data(), sigmaMixed, in);
     evaluateElement(el, in, needs);
     const int nd = el.kernel->numDofs(), n = nd + el.kernel->numConstraints();
     rotationColumns(el, n, out_.K.data());
@@ -207,10 +202,7 @@ PetscErrorCode Assembler::dynamicJacobian(Vec U, Vec V, const LoadState& ls, dou
     PetscCall(MatSetValuesLocal(J, n, idx.data(), n, idx.data(), out_.K.data(), ADD_VALUES));
   }
   vLocal_ = nullptr;
-  if (mixedNewton_) {  // the next Newton iterate linearizes its stresses about this state
-    mixedRef_ = state_;
-    mixedRefValid_ = true;
-  }
+  if (mixedNewton_) keepMixedReference();  // the next Newton iterate linearizes its stresses about this state
   for (int i = 0; i < mesh_.numOwnedNodes; ++i) {
     const LocalNode& n = mesh_.nodes[i];
     if (n.mass <= 0 || shiftA == 0.0) continue;

@@ -74,22 +74,11 @@ PetscErrorCode EnergyMomentum::evaluate(Vec U, Vec V, const LoadState& ls, Energ
   // element kinds without strain energy, agreed on every rank
   std::string local;
   for (const auto& k : kinds) local += (local.empty() ? "" : ", ") + k;
-  int has = !local.empty();
-  MPI_Allreduce(MPI_IN_PLACE, &has, 1, MPI_INT, MPI_LOR, mesh.comm);
-  *ok = !has;
-  if (has) {
-    // the longest local list stands for all (the kinds are few)
-    int len = static_cast<int>(local.size()), maxLen = 0, rank = 0;
-    MPI_Allreduce(&len, &maxLen, 1, MPI_INT, MPI_MAX, mesh.comm);
-    int mine = len == maxLen ? 0 : 1 << 30;
-    MPI_Comm_rank(mesh.comm, &rank);
-    mine = mine == 0 ? rank : mine;
-    int root = 0;
-    MPI_Allreduce(&mine, &root, 1, MPI_INT, MPI_MIN, mesh.comm);
-    local.resize(static_cast<size_t>(maxLen));
-    MPI_Bcast(local.data(), maxLen, MPI_CHAR, root, mesh.comm);
-    *missing = local;
-  }
+  // the longest local list stands for all (the kinds are few): agreeOnFailure picks the lowest key
+  const long key = local.empty() ? -1 : (1L << 30) - static_cast<long>(local.size());
+  const RunFailure agreed = agreeOnFailure(mesh.comm, RunFailure{local.empty() ? 0 : 1, local}, key);
+  *ok = !agreed;
+  if (agreed) *missing = agreed.message;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -16,12 +16,11 @@ model).
 usage: scripts/bench_beam_dynamics.py [--doc] [--steps 20] [--max-elements 32768] [--quick]"""
 import argparse
 import os
-import re
 import sys
 import time
 
 import doc_tables
-from bench_dynamics import run_timed
+from bench_dynamics import run_sinew_dynamics
 
 SOURCE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..")
 BUILD = os.path.join(SOURCE, "build")
@@ -50,21 +49,7 @@ opt:
 
 
 def sinew(n, steps, ranks):
-    os.makedirs(WORK, exist_ok=True)
-    name = f"leaf_{n}_{steps}_{ranks}"
-    path = os.path.join(WORK, name + ".yaml")
-    with open(path, "w") as f:
-        f.write(scene(n, steps))
-    h5 = os.path.join(WORK, name + ".h5")
-    binary = os.path.join(BUILD, "sinew")
-    cmd = [binary, path, "-o", h5] if ranks == 1 else ["mpirun", "-n", str(ranks), binary, path, "-o", h5]
-    out, wall, rss, cpu = run_timed(cmd)
-    m = re.search(r"dynamics ([0-9.]+) s \((\d+) Newton iterations\)", out)
-    j = re.search(r"(\d+) Newton iterations on (\d+) Jacobians", out)
-    if not m or not j:
-        raise RuntimeError(f"{name}: no dynamics line in the summary\n{out[-2000:]}")
-    return {"integration": float(m.group(1)), "process": wall, "rss": rss, "cpu": cpu,
-            "its": int(j.group(1)), "jacobians": int(j.group(2))}
+    return run_sinew_dynamics(WORK, f"leaf_{n}_{steps}_{ranks}", scene(n, steps), ranks)
 
 
 def main():

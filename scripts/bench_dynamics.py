@@ -115,25 +115,33 @@ def run_timed(cmd, env=ENV, timeout=None):
     return out, wall, ru.ru_maxrss / 1024.0, ru.ru_utime + ru.ru_stime
 
 
+def run_sinew_dynamics(work, name, scene_text, ranks, timeout=None):
+    """Writes work/name.yaml, runs Sinew on it (ranks <= 1: one process started without mpirun, else
+    mpirun -n ranks) and returns the summary's dynamics figures with the process measurements
+    (run_timed) and the result file's path."""
+    os.makedirs(work, exist_ok=True)
+    path = os.path.join(work, name + ".yaml")
+    with open(path, "w") as f:
+        f.write(scene_text)
+    h5 = os.path.join(work, name + ".h5")
+    binary = os.path.join(BUILD, "sinew")
+    cmd = [binary, path, "-o", h5] if ranks <= 1 else ["mpirun", "-n", str(ranks), binary, path, "-o", h5]
+    out, wall, rss, cpu = run_timed(cmd, timeout=timeout)
+    m = re.search(r"dynamics ([0-9.]+) s \((\d+) Newton iterations\)", out)
+    j = re.search(r"(\d+) Newton iterations on (\d+) Jacobians", out)
+    if not m or not j:
+        raise RuntimeError(f"{name}: no dynamics line in the summary\n{out[-2000:]}")
+    return {"integration": float(m.group(1)), "process": wall, "rss": rss, "cpu": cpu,
+            "its": int(j.group(1)), "jacobians": int(j.group(2)), "h5": h5}
+
+
 def sinew(n, steps, h, ranks, model="A3", timeout=None):
-    os.makedirs(WORK, exist_ok=True)
     dyn = {"tend": steps * h, "dt": h, "spectral_radius": 0.6, "output_every": steps}
     if model == "A3":
         scene = cantilever(n, force=F, dynamics=dyn)
     else:  # A1 (EA = 1e6, EI = 833.33) swinging down under gravity from the horizontal
         scene = cantilever(n, EA=1e6, EI=833.3333333333333, gravity=[0, -9.81], dynamics=dyn)
-    name = f"{model.lower()}_{n}_{steps}_{h:g}_{ranks}"
-    path = os.path.join(WORK, name + ".yaml")
-    with open(path, "w") as f:
-        f.write(text(scene))
-    h5 = os.path.join(WORK, name + ".h5")
-    binary = os.path.join(BUILD, "sinew")
-    cmd = [binary, path, "-o", h5] if ranks == 0 else ["mpirun", "-n", str(ranks), binary, path, "-o", h5]
-    out, wall, rss, cpu = run_timed(cmd, timeout=timeout)
-    m = re.search(r"dynamics ([0-9.]+) s \((\d+) Newton iterations\)", out)
-    j = re.search(r"(\d+) Newton iterations on (\d+) Jacobians", out)
-    return {"integration": float(m.group(1)), "process": wall, "rss": rss, "cpu": cpu,
-            "its": int(j.group(1)), "jacobians": int(j.group(2))}
+    return run_sinew_dynamics(WORK, f"{model.lower()}_{n}_{steps}_{h:g}_{ranks}", text(scene), ranks, timeout)
 
 
 def exudyn(exudyn_dir, n, steps, h, modified, model="A3", timeout=300):

@@ -20,15 +20,13 @@ usage: scripts/study_beam_dynamics.py [--exudyn DIR] [--doc] [--quick]"""
 import argparse
 import json
 import os
-import re
-import subprocess
 import sys
 import time
 
 import numpy as np
 
 import doc_tables
-from bench_dynamics import run_timed
+from bench_dynamics import run_sinew_dynamics, run_timed
 
 SOURCE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..")
 BUILD = os.path.join(SOURCE, "build")
@@ -65,20 +63,13 @@ opt:
 
 
 def sinew(n, steps):
-    os.makedirs(WORK, exist_ok=True)
-    name = f"leaf_{n}_{steps}"
-    path = os.path.join(WORK, name + ".yaml")
-    with open(path, "w") as f:
-        f.write(sinew_scene(n, steps))
-    h5 = os.path.join(WORK, name + ".h5")
-    out, wall, _, _ = run_timed([os.path.join(BUILD, "sinew"), path, "-o", h5])
-    m = re.search(r"dynamics ([0-9.]+) s \((\d+) Newton iterations\)", out)
+    r = run_sinew_dynamics(WORK, f"leaf_{n}_{steps}", sinew_scene(n, steps), 1)
     import h5py
-    with h5py.File(h5, "r") as f:
+    with h5py.File(r["h5"], "r") as f:
         tip = f["node/p"][-1, -1, :] - f["node/p0"][-1, :]
         t = f["time"][-1]
     assert abs(t - TEND) < 1e-12, t
-    return {"tip": tip, "time": float(m.group(1)), "process": wall}
+    return {"tip": tip, "time": r["integration"], "process": r["process"]}
 
 
 EXUDYN_SCRIPT = r'''

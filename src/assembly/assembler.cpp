@@ -523,28 +523,37 @@ PetscErrorCode Assembler::endLocal(const double** u) {
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode Assembler::residual(Vec U, const LoadState& ls, Vec F) {
+PetscErrorCode Assembler::forceVector(Vec U, const LoadState& ls, Vec work, Vec out,
+                                      const std::function<PetscErrorCode(const double* u, double* f)>& add) {
   PetscFunctionBeginUser;
-  PetscCall(PetscLogEventBegin(SinewEvents::get().residual, 0, 0, 0, 0));
-  ++counters_.residuals;
   PetscCall(loadLocal(U, uWork_));
   Vec ul, fl;
   const PetscScalar* u;
   PetscScalar* f;
   PetscCall(VecGhostGetLocalForm(uWork_, &ul));
-  PetscCall(VecGhostGetLocalForm(fWork_, &fl));
+  PetscCall(VecGhostGetLocalForm(work, &fl));
   PetscCall(VecGetArrayRead(ul, &u));
   PetscCall(VecSet(fl, 0.0));
   PetscCall(VecGetArray(fl, &f));
   computeStates(u, ls);
-  PetscCall(assembleForces(u, ls, Target::Residual, f));
+  const PetscErrorCode ierr = add(u, f);
   PetscCall(VecRestoreArray(fl, &f));
   PetscCall(VecRestoreArrayRead(ul, &u));
-  PetscCall(VecGhostRestoreLocalForm(fWork_, &fl));
+  PetscCall(VecGhostRestoreLocalForm(work, &fl));
   PetscCall(VecGhostRestoreLocalForm(uWork_, &ul));
-  PetscCall(VecGhostUpdateBegin(fWork_, ADD_VALUES, SCATTER_REVERSE));
-  PetscCall(VecGhostUpdateEnd(fWork_, ADD_VALUES, SCATTER_REVERSE));
-  PetscCall(VecCopy(fWork_, F));
+  PetscCall(ierr);
+  PetscCall(VecGhostUpdateBegin(work, ADD_VALUES, SCATTER_REVERSE));
+  PetscCall(VecGhostUpdateEnd(work, ADD_VALUES, SCATTER_REVERSE));
+  PetscCall(VecCopy(work, out));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode Assembler::residual(Vec U, const LoadState& ls, Vec F) {
+  PetscFunctionBeginUser;
+  PetscCall(PetscLogEventBegin(SinewEvents::get().residual, 0, 0, 0, 0));
+  ++counters_.residuals;
+  PetscCall(forceVector(U, ls, fWork_, F,
+                        [&](const double* u, double* f) { return assembleForces(u, ls, Target::Residual, f); }));
   PetscCall(PetscLogEventEnd(SinewEvents::get().residual, 0, 0, 0, 0));
   PetscCall(agreeElementValues());
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -552,41 +561,30 @@ PetscErrorCode Assembler::residual(Vec U, const LoadState& ls, Vec F) {
 
 PetscErrorCode Assembler::fullResidual(Vec U, const LoadState& ls, Vec Ffull) {
   PetscFunctionBeginUser;
-  PetscCall(loadLocal(U, uWork_));
-  Vec ul, fl;
-  const PetscScalar* u;
-  PetscScalar* f;
-  PetscCall(VecGhostGetLocalForm(uWork_, &ul));
-  PetscCall(VecGhostGetLocalForm(fullWork_, &fl));
-  PetscCall(VecGetArrayRead(ul, &u));
-  PetscCall(VecSet(fl, 0.0));
-  PetscCall(VecGetArray(fl, &f));
-  computeStates(u, ls);
-  PetscCall(assembleForces(u, ls, Target::Full, f));
-  if (reactionA_) {  // dynamics: reactions include the inertia M qdd
-    Vec vl, al;
-    const PetscScalar *v, *a;
+  if (reactionA_) {  // dynamics: reactions include the inertia M qdd (ghost values needed below)
     PetscCall(VecGhostUpdateBegin(reactionV_, INSERT_VALUES, SCATTER_FORWARD));
     PetscCall(VecGhostUpdateEnd(reactionV_, INSERT_VALUES, SCATTER_FORWARD));
     PetscCall(VecGhostUpdateBegin(reactionA_, INSERT_VALUES, SCATTER_FORWARD));
     PetscCall(VecGhostUpdateEnd(reactionA_, INSERT_VALUES, SCATTER_FORWARD));
-    PetscCall(VecGhostGetLocalForm(reactionV_, &vl));
-    PetscCall(VecGhostGetLocalForm(reactionA_, &al));
-    PetscCall(VecGetArrayRead(vl, &v));
-    PetscCall(VecGetArrayRead(al, &a));
-    addInertia(v, a, Target::Full, f);
-    PetscCall(VecRestoreArrayRead(al, &a));
-    PetscCall(VecRestoreArrayRead(vl, &v));
-    PetscCall(VecGhostRestoreLocalForm(reactionA_, &al));
-    PetscCall(VecGhostRestoreLocalForm(reactionV_, &vl));
   }
-  PetscCall(VecRestoreArray(fl, &f));
-  PetscCall(VecRestoreArrayRead(ul, &u));
-  PetscCall(VecGhostRestoreLocalForm(fullWork_, &fl));
-  PetscCall(VecGhostRestoreLocalForm(uWork_, &ul));
-  PetscCall(VecGhostUpdateBegin(fullWork_, ADD_VALUES, SCATTER_REVERSE));
-  PetscCall(VecGhostUpdateEnd(fullWork_, ADD_VALUES, SCATTER_REVERSE));
-  PetscCall(VecCopy(fullWork_, Ffull));
+  PetscCall(forceVector(U, ls, fullWork_, Ffull, [&](const double* u, double* f) {
+    PetscFunctionBeginUser;
+    PetscCall(assembleForces(u, ls, Target::Full, f));
+    if (reactionA_) {
+      Vec vl, al;
+      const PetscScalar *v, *a;
+      PetscCall(VecGhostGetLocalForm(reactionV_, &vl));
+      PetscCall(VecGhostGetLocalForm(reactionA_, &al));
+      PetscCall(VecGetArrayRead(vl, &v));
+      PetscCall(VecGetArrayRead(al, &a));
+      addInertia(v, a, Target::Full, f);
+      PetscCall(VecRestoreArrayRead(al, &a));
+      PetscCall(VecRestoreArrayRead(vl, &v));
+      PetscCall(VecGhostRestoreLocalForm(reactionA_, &al));
+      PetscCall(VecGhostRestoreLocalForm(reactionV_, &vl));
+    }
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }));
   PetscCall(agreeElementValues());
   PetscFunctionReturn(PETSC_SUCCESS);
 }

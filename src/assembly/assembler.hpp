@@ -8,6 +8,7 @@
 #include <petscvec.h>
 
 #include <array>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -203,6 +204,11 @@ class Assembler {
   /// Element state (kernel layout) from a node-state array laid out like state_.
   void gatherStates(const LocalElement& el, const double* states, double* q) const;
   PetscErrorCode assembleForces(const double* u, const LoadState& ls, Target target, double* out);
+  /// The frame of residual(), fullResidual() and dynamicResidual(): U into uWork_, node states
+  /// computed, `add(u, f)` fills the zeroed local form of `work` (rows of `target`), the ghost
+  /// contributions summed to their owners, copied to `out`; then the element value agreement.
+  PetscErrorCode forceVector(Vec U, const LoadState& ls, Vec work, Vec out,
+                             const std::function<PetscErrorCode(const double* u, double* f)>& add);
   /// el.kernel->evaluate into out_; a force law that is not finite (ElementValueError) is recorded
   /// (the first element of this rank) and out_ holds zeros of the right sizes.
   void evaluateElement(const LocalElement& el, const KernelInput& in, const KernelNeeds& needs);

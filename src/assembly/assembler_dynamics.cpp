@@ -128,33 +128,23 @@ PetscErrorCode Assembler::dynamicResidual(Vec U, Vec V, Vec A, const LoadState& 
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(SinewEvents::get().residual, 0, 0, 0, 0));
   ++counters_.residuals;
-  PetscCall(loadLocal(U, uWork_));
-  Vec ul, fl, vl, al;
-  const PetscScalar *u, *v, *a;
-  PetscScalar* f;
+  Vec vl, al;
+  const PetscScalar *v, *a;
   PetscCall(getLocalRead(V, &vl, &v));
   PetscCall(getLocalRead(A, &al, &a));
-  PetscCall(VecGhostGetLocalForm(uWork_, &ul));
-  PetscCall(VecGhostGetLocalForm(fWork_, &fl));
-  PetscCall(VecGetArrayRead(ul, &u));
-  PetscCall(VecSet(fl, 0.0));
-  PetscCall(VecGetArray(fl, &f));
-  computeStates(u, ls);
-  vLocal_ = v;
-  const PetscErrorCode ierr = assembleForces(u, ls, Target::Residual, f);
-  vLocal_ = nullptr;
-  PetscCall(ierr);
-  // inertia M A: element masses and nodal point masses and rotary inertia
-  addInertia(v, a, Target::Residual, f);
-  PetscCall(VecRestoreArray(fl, &f));
-  PetscCall(VecRestoreArrayRead(ul, &u));
-  PetscCall(VecGhostRestoreLocalForm(fWork_, &fl));
-  PetscCall(VecGhostRestoreLocalForm(uWork_, &ul));
+  const PetscErrorCode ierr = forceVector(U, ls, fWork_, F, [&](const double* u, double* f) {
+    PetscFunctionBeginUser;
+    vLocal_ = v;
+    const PetscErrorCode e = assembleForces(u, ls, Target::Residual, f);
+    vLocal_ = nullptr;
+    PetscCall(e);
+    // inertia M A: element masses and nodal point masses and rotary inertia
+    addInertia(v, a, Target::Residual, f);
+    PetscFunctionReturn(PETSC_SUCCESS);
+  });
   PetscCall(restoreLocalRead(A, &al, &a));
   PetscCall(restoreLocalRead(V, &vl, &v));
-  PetscCall(VecGhostUpdateBegin(fWork_, ADD_VALUES, SCATTER_REVERSE));
-  PetscCall(VecGhostUpdateEnd(fWork_, ADD_VALUES, SCATTER_REVERSE));
-  PetscCall(VecCopy(fWork_, F));
+  PetscCall(ierr);
   PetscCall(PetscLogEventEnd(SinewEvents::get().residual, 0, 0, 0, 0));
   PetscCall(agreeElementValues());
   PetscFunctionReturn(PETSC_SUCCESS);

@@ -74,6 +74,20 @@ long product(const std::vector<long>& v) {
   return p;
 }
 
+// writeArray/writeStateArray: rank 0's shape and number of values reach every rank (the others'
+// arguments are ignored); "" or what is wrong with them (a dimension below minDim, a count that is
+// not the shape's product).
+std::string broadcastShape(MPI_Comm comm, std::size_t numValues, std::vector<long>& shape, long minDim) {
+  long header[2] = {static_cast<long>(shape.size()), static_cast<long>(numValues)};
+  MPI_Bcast(header, 2, MPI_LONG, 0, comm);
+  shape.resize(static_cast<std::size_t>(header[0]));
+  MPI_Bcast(shape.data(), static_cast<int>(shape.size()), MPI_LONG, 0, comm);
+  for (long d : shape)
+    if (d < minDim) return minDim == 0 ? "negative dimension" : "dimension < " + std::to_string(minDim);
+  if (product(shape) != header[1]) return std::to_string(header[1]) + " values on rank 0 for " + std::to_string(product(shape));
+  return "";
+}
+
 std::string normalized(const std::string& name) {
   std::string n = name;
   while (!n.empty() && n.front() == '/') n.erase(n.begin());
@@ -853,15 +867,9 @@ void ResultFile::writeArray(const std::string& rawName, std::span<const double> 
   Impl& m = *impl_;
   const std::string name = normalized(rawName);
   const std::string what = "dataset /" + name;
-  long header[2] = {static_cast<long>(shape.size()), static_cast<long>(values.size())};
-  MPI_Bcast(header, 2, MPI_LONG, 0, m.comm);
-  shape.resize(static_cast<std::size_t>(header[0]));
-  MPI_Bcast(shape.data(), static_cast<int>(shape.size()), MPI_LONG, 0, m.comm);
+  const std::string shapeError = broadcastShape(m.comm, values.size(), shape, 0);
   std::string error = m.stateError(false);
-  for (long d : shape)
-    if (d < 0) error = "negative dimension";
-  if (error.empty() && product(shape) != header[1])
-    error = std::to_string(header[1]) + " values on rank 0 for " + std::to_string(product(shape));
+  if (!shapeError.empty()) error = shapeError;
   if (error.empty()) error = m.nameError(name);
   agree(m.comm, error, signatureOf(name, shape, 4), what);
 
@@ -907,15 +915,9 @@ void ResultFile::writeStateArray(const std::string& rawName, std::span<const dou
   Impl& im = *impl_;
   const std::string name = normalized(rawName);
   const std::string what = "dataset /" + name;
-  long header[2] = {static_cast<long>(shape.size()), static_cast<long>(values.size())};
-  MPI_Bcast(header, 2, MPI_LONG, 0, im.comm);
-  shape.resize(static_cast<std::size_t>(header[0]));
-  MPI_Bcast(shape.data(), static_cast<int>(shape.size()), MPI_LONG, 0, im.comm);
+  const std::string shapeError = broadcastShape(im.comm, values.size(), shape, 1);
   std::string error = im.stateError(false);
-  for (long d : shape)
-    if (d < 1) error = "dimension < 1";
-  if (error.empty() && product(shape) != header[1])
-    error = std::to_string(header[1]) + " values on rank 0 for " + std::to_string(product(shape));
+  if (!shapeError.empty()) error = shapeError;
   if (error.empty() && im.leadSink().steps.count(name)) error = "exists as a step dataset";
   agree(im.comm, error, signatureOf(name, shape, 13), what);
   std::vector<double> data(im.rank == 0 ? values.begin() : values.end(), values.end());

@@ -135,13 +135,11 @@ PetscErrorCode SensorAnalysis::atStep(Vec U, const LoadState& ls, ResultFile& fi
     if (p.element >= 0 && p.beam) {
       const LocalElement& el = asm_.mesh().elements[p.element];
       asm_.gather(el, q.data(), idx.data());
-      const std::string& var = p.sensor.variable;
-      const bool acc = var == "Acceleration" || var == "AngularAcceleration";
-      gatherDofs(acc ? a : v, idx.data(), 12, qd.data());
+      gatherDofs(v, idx.data(), 12, qd.data());
       std::array<double, 6> disp{};  // x - X0 of both nodes, as the node sensors' Displacement
       for (int i = 0; i < 2; ++i)
         for (int c = 0; c < 3; ++c) disp[3 * i + c] = q[12 * i + c] - asm_.mesh().nodes[el.node[i]].X0[c];
-      const std::array<double, 3> r = p.beam->sensorValue(var, p.xLocal, q.data(), disp.data(), (acc ? a : v) ? qd.data() : nullptr,
+      const std::array<double, 3> r = p.beam->sensorValue(p.sensor.variable, p.xLocal, q.data(), disp.data(), v ? qd.data() : nullptr,
                                                          el.firstMultiplier >= 0 ? u + el.firstMultiplier : nullptr);
       out.assign(r.begin(), r.end());
     } else if (p.element >= 0) {

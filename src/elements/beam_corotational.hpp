@@ -66,10 +66,9 @@ class BeamCorotational : public ElementKernel {
   /// variable at s in [0, 1] from node p (s = 0) to node q (s = 1), 3 values. Position,
   /// Displacement (disp: node translations x - X0, 6 values), Rotation (rotation vector of the
   /// section frame) interpolate in the current element frame: chord linear, transverse cubic
-  /// Hermite from the end rotations, torsion linear. Velocity, AngularVelocity, Acceleration,
-  /// AngularAcceleration interpolate nodal rates (rates: velocities for the first two, accelerations
-  /// for the others; translations and spatial spins in the 12-DOF layout, nullptr = 0)
-  /// with the same shape functions (the field the consistent mass integrates). ForceLocal (N, Qy,
+  /// Hermite (Timoshenko: the element's own field) from the end rotations, torsion linear.
+  /// Velocity and AngularVelocity are their time derivatives along the nodal rates (rates:
+  /// velocities and spatial spins in the 12-DOF layout, nullptr = at rest). ForceLocal (N, Qy,
   /// Qz) and TorqueLocal (T, My, Mz) are the section forces from the generalized stresses (lambda:
   /// the rigid modes' multipliers), in the element frame. Throws std::invalid_argument otherwise.
   std::array<double, 3> sensorValue(const std::string& variable, double s, const double* q, const double* disp,
@@ -83,6 +82,8 @@ class BeamCorotational : public ElementKernel {
   /// disp (optional, 6 values): node translations x - X0, for a cancellation-free elongation.
   void kinematics(const double* q, Kinematics& k, const double* disp = nullptr) const;
   void stresses(const Kinematics& k, const double* lambda, double* sig) const;
+  /// Sensor field at s: the section's offset from the chord point and its rotation (sensor file).
+  void sectionField(const double* q, double s, Vec3& offset, Mat3& R) const;
 
   double l0_ = 0;
   Vec3 ex0_{}, ey0_{}, ez0_{};

@@ -370,7 +370,7 @@ void parseSensors(const YAML::Node& sensors, SceneContext& ctx) {
     if (n["node"].IsDefined()) {
       // node sensor (Exudyn's SensorNode): a beam node's position, displacement, rotation and rates
       if (n["element"].IsDefined() || n["x"].IsDefined() || n["xi"].IsDefined())
-        fail(childPath(path, "node"), "a sensor samples either a node (node) or a position along an element (element, x)");
+        fail(childPath(path, "node"), "a sensor samples either a node (node) or a position along an element (element, xi or x)");
       s.node = checkedIndex(n["node"], childPath(path, "node"), "node", m.nodes.size());
       static const std::vector<std::string> nodeVariables = {"Position", "Displacement", "Velocity", "Acceleration",
                                                              "Rotation", "AngularVelocity", "AngularAcceleration"};
@@ -398,7 +398,8 @@ void parseSensors(const YAML::Node& sensors, SceneContext& ctx) {
         if (n["x"].IsDefined()) fail(childPath(path, "xi"), "give the position either as x (length) or as xi (fraction), not both");
         s.xi = getNumber(n["xi"], childPath(path, "xi"));
         if (!(s.xi >= 0.0 && s.xi <= 1.0))
-          fail(childPath(path, "xi"), "expected a fraction in [0, 1] along element " + std::to_string(s.element + 1) + " (0 at its first node, 1 at its second), got " + fmt(s.xi));
+          fail(childPath(path, "xi"), "expected a fraction in [0, 1] along element " + std::to_string(s.element + 1) +
+                                          " (0 at its first node, 1 at its second), got " + fmt(s.xi));
         s.x = s.xi * elementLength(m, s.element);
       }
       if (!n["variable"].IsDefined()) fail(childPath(path, "variable"), "missing: a sensor needs a variable (e.g. Position)");

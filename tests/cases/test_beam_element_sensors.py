@@ -19,8 +19,8 @@ MEASURED (2 ranks): deflection 8.1e-11, section rotation 6.5e-11, My 4.9e-11, (Q
 N (B) 6.6e-12, T (B) 1.3e-11 relative; in A, N = 1.4e-9 N = 1.7e-5 F (second order) and
 u_x, u_z = 5.4e-11 m (5.9e-6 of v); xi = 0 and 1 equal the node sensors (Position, Displacement,
 Rotation) to 4.2e-22 m and 3.4e-21 rad; load factor 0.5 gives half of 1 to 1.5e-5 (the second-order
-N); C: My 2.5e-12, Qz 1.6e-16 relative, no displacement. With xi ignored (the FE element's first node) the deflection check fails by 0.19 relative.
-Five bad sensors exit 2 naming the field."""
+N); C: My 2.5e-12, Qz 1.6e-16 relative, no displacement. With xi ignored (the FE element's first
+node) the deflection check fails by 0.19 relative. Five bad sensors exit 2 naming the field."""
 import numpy as np
 
 import beamtools as bt

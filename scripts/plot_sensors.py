@@ -28,6 +28,12 @@ VARIABLES = {
     "ForceLocal": (("axial force",), "N"),
     "TorqueLocal": (("bending moment",), "N m"),
 }
+# the same variables with 3 components: beam node and beam element sensors (local frame for *Local)
+VARIABLES3 = {
+    "Rotation": (("rx", "ry", "rz"), "rad"),
+    "ForceLocal": (("N", "Qy", "Qz"), "N"),
+    "TorqueLocal": (("T", "My", "Mz"), "N m"),
+}
 
 
 def sensor_variables(f):
@@ -59,6 +65,8 @@ def main():
             v = v.reshape(len(x), -1)
             var = variables.get(name, "")
             comps, unit = VARIABLES.get(var, (tuple(f"[{k}]" for k in range(v.shape[1])), "?"))
+            if v.shape[1] == 3 and var in VARIABLES3:
+                comps, unit = VARIABLES3[var]
             for k in range(v.shape[1]):
                 if v.shape[1] == 1 or abs(v[:, k]).max() > 0:
                     comp = comps[k] if k < len(comps) else f"[{k}]"

@@ -179,6 +179,7 @@ struct Sensor {
   int node = -1;    ///< 0-based scene node of a node sensor (beam Frame6 nodes; Exudyn's SensorNode), else -1
   int element = 0;  ///< 0-based scene element
   double x = 0;     ///< axial position along the scene element (length units, 0..L)
+  double xi = 0;    ///< the same position as a fraction of the element, 0..1 (beam sensors use it)
   std::string variable, name;
 };
 

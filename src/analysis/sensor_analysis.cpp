@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "elements/ancf_cable2d.hpp"
+#include "elements/beam_corotational.hpp"
 #include "sinew/rotation.hpp"
 
 namespace sinew {
@@ -54,6 +55,16 @@ SensorAnalysis::SensorAnalysis(Assembler& assembler, const std::vector<Sensor>& 
     for (size_t e = 0; e < elements.size(); ++e) {
       const LocalElement& el = elements[e];
       if (el.sceneElement != s.element) continue;
+      if (const auto* b = dynamic_cast<const BeamCorotational*>(el.kernel.get())) {
+        // xi along the scene element -> FE element sub = floor(xi numSub), s = xi numSub - sub
+        const double t = s.xi * el.numSub;
+        const int sub = std::clamp(static_cast<int>(std::floor(t)), 0, el.numSub - 1);
+        if (sub != el.subIndex) continue;
+        p.element = static_cast<int>(e);
+        p.xLocal = std::clamp(t - sub, 0.0, 1.0);
+        p.beam = b;
+        continue;
+      }
       const auto* k = dynamic_cast<const AncfCable2D*>(el.kernel.get());
       if (!k) continue;
       // the scene element is split into numSub equal FE elements of length L_fe
@@ -66,6 +77,17 @@ SensorAnalysis::SensorAnalysis(Assembler& assembler, const std::vector<Sensor>& 
     }
     probes_.push_back(p);
   }
+  // values per row: ANCF ForceLocal etc. are scalars, every beam variable is a vector; the owning
+  // rank knows the element kind, the others learn it here
+  std::vector<int> counts(probes_.size(), 0);
+  for (size_t i = 0; i < probes_.size(); ++i) {
+    const Probe& p = probes_[i];
+    if (p.node >= 0 || p.beam) counts[i] = 3;
+    else if (p.kernel) counts[i] = valueCount(p.sensor.variable);
+  }
+  MPI_Allreduce(MPI_IN_PLACE, counts.data(), static_cast<int>(counts.size()), MPI_INT, MPI_MAX, asm_.mesh().comm);
+  for (size_t i = 0; i < probes_.size(); ++i)
+    probes_[i].count = probes_[i].sensor.node >= 0 ? 3 : std::max(counts[i], 1);
 }
 
 void SensorAnalysis::nodeValues(const Probe& p, const LocalNode& n, const double* s, const double* v, const double* a,
@@ -105,12 +127,22 @@ PetscErrorCode SensorAnalysis::atStep(Vec U, const LoadState& ls, ResultFile& fi
   std::vector<double> values;
   std::array<double, 48> q{};
   std::array<int, 48> idx{};
-  std::array<double, 8> qd{}, qdd{};
+  std::array<double, 12> qd{};
+  std::array<double, 8> qdd{};
   for (const Probe& p : probes_) {
-    const int k = p.sensor.node >= 0 ? 3 : valueCount(p.sensor.variable);
-    std::vector<double> out(k, 0.0);
+    std::vector<double> out(p.count, 0.0);
     if (p.node >= 0) nodeValues(p, asm_.mesh().nodes[p.node], asm_.nodeState(p.node), v, a, out.data());
-    if (p.element >= 0) {
+    if (p.element >= 0 && p.beam) {
+      const LocalElement& el = asm_.mesh().elements[p.element];
+      asm_.gather(el, q.data(), idx.data());
+      gatherDofs(v, idx.data(), 12, qd.data());
+      std::array<double, 6> disp{};  // x - X0 of both nodes, as the node sensors' Displacement
+      for (int i = 0; i < 2; ++i)
+        for (int c = 0; c < 3; ++c) disp[3 * i + c] = q[12 * i + c] - asm_.mesh().nodes[el.node[i]].X0[c];
+      const std::array<double, 3> r = p.beam->sensorValue(p.sensor.variable, p.xLocal, q.data(), disp.data(), v ? qd.data() : nullptr,
+                                                         el.firstMultiplier >= 0 ? u + el.firstMultiplier : nullptr);
+      out.assign(r.begin(), r.end());
+    } else if (p.element >= 0) {
       const LocalElement& el = asm_.mesh().elements[p.element];
       asm_.gather(el, q.data(), idx.data());
       gatherDofs(v, idx.data(), 8, qd.data());
@@ -127,9 +159,8 @@ PetscErrorCode SensorAnalysis::atStep(Vec U, const LoadState& ls, ResultFile& fi
   MPI_Allreduce(MPI_IN_PLACE, values.data(), static_cast<int>(values.size()), MPI_DOUBLE, MPI_SUM, asm_.mesh().comm);
   size_t off = 0;
   for (const Probe& p : probes_) {
-    const int k = p.sensor.node >= 0 ? 3 : valueCount(p.sensor.variable);
-    file.writeStepRow("sensors/" + p.sensor.name, std::span<const double>(values.data() + off, k));
-    off += k;
+    file.writeStepRow("sensors/" + p.sensor.name, std::span<const double>(values.data() + off, p.count));
+    off += p.count;
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -5,7 +5,9 @@
 // which writes /sensors/<name> [ns, k]. Node sensors (`node`, Exudyn's SensorNode) sample a beam
 // (Frame6) node: Position, Displacement (x - X0), Rotation (rotation vector of R, angle times axis,
 // as /node/r_axang), Velocity, Acceleration, AngularVelocity, AngularAcceleration (spatial: global
-// frame), 3 values each, from the owning rank.
+// frame), 3 values each, from the owning rank. Beam element sensors (`element` with `xi` or `x` on a
+// beam or rigid element, Exudyn's SensorBody) sample the FE element of the nbeams split that holds
+// xi with BeamCorotational::sensorValue (3 values, docs/dynamics.md "Sensors along beam elements").
 #pragma once
 #include <string>
 #include <vector>
@@ -16,6 +18,7 @@
 namespace sinew {
 
 class AncfCable2D;
+class BeamCorotational;
 
 class SensorAnalysis : public StepAnalysis {
  public:
@@ -36,6 +39,8 @@ class SensorAnalysis : public StepAnalysis {
     int element = -1;  ///< local element index on the owning rank, -1 elsewhere
     double xLocal = 0;
     const AncfCable2D* kernel = nullptr;
+    const BeamCorotational* beam = nullptr;  ///< beam element sensor: its kernel, xLocal = s in [0, 1]
+    int count = 1;                           ///< values per row (agreed over the ranks)
     int node = -1;  ///< node sensor: local owned node index on the owning rank, -1 elsewhere
   };
   /// A node sensor's 3 values from the node state (s: x, R) and the rates (local forms or null).

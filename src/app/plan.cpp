@@ -4,6 +4,8 @@
 #include <sstream>
 #include <string>
 
+#include "elements/beam_corotational.hpp"
+
 namespace sinew {
 
 Plan makePlan(const Model& model) {
@@ -43,9 +45,22 @@ Plan makePlan(const Model& model) {
       continue;
     }
     const int e = model.sensors[i].element, set = model.elementSet[e];
-    if (set < 0 || model.eprops[set].type != ElementType::AncfCable2D)
+    if (set < 0 || model.eprops[set].type == ElementType::Beam) {
+      // element sensors along beam (and rigid) elements: src/elements/beam_corotational_sensor.cpp
+      const auto& vars = BeamCorotational::sensorVariables();
+      if (std::find(vars.begin(), vars.end(), model.sensors[i].variable) == vars.end()) {
+        std::string list;
+        for (const auto& v : vars) list += (list.empty() ? "" : ", ") + v;
+        throw SceneError("sensors[" + std::to_string(i) + "].variable",
+                         "'" + model.sensors[i].variable + "' is not available along beam element " + std::to_string(e + 1) +
+                             "; beam sensors give " + list);
+      }
+      continue;
+    }
+    if (model.eprops[set].type != ElementType::AncfCable2D)
       throw SceneError("sensors[" + std::to_string(i) + "].element",
-                       "sensors sample ancf_cable2d elements; element " + std::to_string(e + 1) + " is not one");
+                       "sensors sample ancf_cable2d and beam elements; element " + std::to_string(e + 1) + " is a " +
+                           elementTypeName(model.eprops[set].type));
   }
   for (const auto& [node, np] : model.nprops) {
     p.inertia |= np.mass > 0;

@@ -394,9 +394,9 @@ std::array<double, 6> BeamCorotational::generalizedStrains(const double* q) cons
   return e;
 }
 
-std::array<double, 6> BeamCorotational::generalizedStresses(const double* q, const double* lambda) const {
+std::array<double, 6> BeamCorotational::generalizedStresses(const double* q, const double* lambda, const double* disp) const {
   Kinematics k;
-  kinematics(q, k);
+  kinematics(q, k, disp);
   std::array<double, 6> s;
   stresses(k, lambda, s.data());
   return s;

@@ -14,6 +14,7 @@
 #include <array>
 #include <optional>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "elements/beam_section.hpp"
@@ -52,7 +53,8 @@ class BeamCorotational : public ElementKernel {
   /// eps_1..eps_6 at state q.
   std::array<double, 6> generalizedStrains(const double* q) const;
   /// sigma_i = dU/d eps_i for flexible modes, constraintScale * lambda_k for rigid ones, 0 for released.
-  std::array<double, 6> generalizedStresses(const double* q, const double* lambda) const;
+  /// disp (optional): node translations x - X0 (6 values), for a cancellation-free elongation.
+  std::array<double, 6> generalizedStresses(const double* q, const double* lambda, const double* disp = nullptr) const;
 
   double l0() const { return l0_; }
   const Vec3& ey0() const { return ey0_; }
@@ -60,11 +62,28 @@ class BeamCorotational : public ElementKernel {
   /// Effective 6x6 stiffness of the generalized strains (released modes condensed out, rigid ones zero).
   const std::array<double, 36>& stiffness() const { return S_; }
 
+  /// Sensors along the element (Exudyn's SensorBody; src/elements/beam_corotational_sensor.cpp):
+  /// variable at s in [0, 1] from node p (s = 0) to node q (s = 1), 3 values. Position,
+  /// Displacement (disp: node translations x - X0, 6 values), Rotation (rotation vector of the
+  /// section frame) interpolate in the current element frame: chord linear, transverse cubic
+  /// Hermite (Timoshenko: the element's own field) from the end rotations, torsion linear.
+  /// Velocity and AngularVelocity are their time derivatives along the nodal rates (rates:
+  /// velocities and spatial spins in the 12-DOF layout, nullptr = at rest). ForceLocal (N, Qy,
+  /// Qz) and TorqueLocal (T, My, Mz) are the section forces from the generalized stresses (lambda:
+  /// the rigid modes' multipliers), in the element frame. Throws std::invalid_argument otherwise.
+  std::array<double, 3> sensorValue(const std::string& variable, double s, const double* q, const double* disp,
+                                    const double* rates, const double* lambda) const;
+  static const std::vector<std::string>& sensorVariables();
+  /// Current element frame (columns: chord, averaged rotated local y made normal to it, their cross product).
+  Mat3 currentFrame(const double* q) const;
+
  private:
   struct Kinematics;
   /// disp (optional, 6 values): node translations x - X0, for a cancellation-free elongation.
   void kinematics(const double* q, Kinematics& k, const double* disp = nullptr) const;
   void stresses(const Kinematics& k, const double* lambda, double* sig) const;
+  /// Sensor field at s: the section's offset from the chord point and its rotation (sensor file).
+  void sectionField(const double* q, double s, Vec3& offset, Mat3& R) const;
 
   double l0_ = 0;
   Vec3 ex0_{}, ey0_{}, ez0_{};

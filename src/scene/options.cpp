@@ -79,7 +79,7 @@ const std::vector<std::string> kFormfindingKeys = {
     "formfinding_step", "max_iter_equilibrium", "equilibrium_accuracy", "formfinding_elements", "homotopy_curve",
     "stress_adaption",  "lambda_max",           "mue_relax",            "x_urs",                "x_urs_step",
     "elastic_restart_method", "formfinding_tolerance", "max_shape_change", "distortion_max"};
-const std::vector<std::string> kSensorKeys = {"element", "node", "x", "variable", "name"};
+const std::vector<std::string> kSensorKeys = {"element", "node", "x", "variable", "name", "xi"};
 const std::vector<std::string> kSensorVariables = {
     "Position",      "Displacement",   "Velocity",  "VelocityLocal", "Rotation",        "Director1",          "StrainLocal",
     "CurvatureLocal", "ForceLocal",     "TorqueLocal", "AngularVelocity", "Acceleration", "AngularAcceleration"};
@@ -369,8 +369,8 @@ void parseSensors(const YAML::Node& sensors, SceneContext& ctx) {
     Sensor s;
     if (n["node"].IsDefined()) {
       // node sensor (Exudyn's SensorNode): a beam node's position, displacement, rotation and rates
-      if (n["element"].IsDefined() || n["x"].IsDefined())
-        fail(childPath(path, "node"), "a sensor samples either a node (node) or a position along an element (element, x)");
+      if (n["element"].IsDefined() || n["x"].IsDefined() || n["xi"].IsDefined())
+        fail(childPath(path, "node"), "a sensor samples either a node (node) or a position along an element (element, xi or x)");
       s.node = checkedIndex(n["node"], childPath(path, "node"), "node", m.nodes.size());
       static const std::vector<std::string> nodeVariables = {"Position", "Displacement", "Velocity", "Acceleration",
                                                              "Rotation", "AngularVelocity", "AngularAcceleration"};
@@ -391,6 +391,16 @@ void parseSensors(const YAML::Node& sensors, SceneContext& ctx) {
           fail(childPath(path, "x"), "expected a position in [0, " + fmt(L) + "] along element " + std::to_string(s.element + 1) +
                                          " (its length), got " + fmt(s.x));
         s.x = std::clamp(s.x, 0.0, L);
+        s.xi = s.x / L;
+      }
+      if (n["xi"].IsDefined()) {
+        // position as a fraction of the element (Exudyn's localPosition divided by the length)
+        if (n["x"].IsDefined()) fail(childPath(path, "xi"), "give the position either as x (length) or as xi (fraction), not both");
+        s.xi = getNumber(n["xi"], childPath(path, "xi"));
+        if (!(s.xi >= 0.0 && s.xi <= 1.0))
+          fail(childPath(path, "xi"), "expected a fraction in [0, 1] along element " + std::to_string(s.element + 1) +
+                                          " (0 at its first node, 1 at its second), got " + fmt(s.xi));
+        s.x = s.xi * elementLength(m, s.element);
       }
       if (!n["variable"].IsDefined()) fail(childPath(path, "variable"), "missing: a sensor needs a variable (e.g. Position)");
       s.variable = getChoice(n["variable"], childPath(path, "variable"), kSensorVariables);

@@ -6,8 +6,8 @@ to 9.8 P_cr, -continuation_lowest_eigenvalue. The column's buckling loads are (2
 (Timoshenko & Gere 1961, section 2.1): the first at P_cr, the second at 9 P_cr.
 At the second bifurcation the count goes 1 -> 2 between the points at 8.4 and 9.1 P_cr; the lowest
 eigenvalue of the tangent (the first mode's) is already negative at both (-76 and -83), so it cannot
-locate it: the earlier rule put it at the midpoint 8.75 P_cr (-2.8%, measured before this test with the
-same scene). The second smallest eigenvalue (with k negative eigenvalues before, the (k+1)-th smallest:
+locate it: the earlier rule put it at the midpoint 8.75 P_cr (-2.8%; this test run once with the
+previous continuation_analysis.cpp: 8.750, checks (3) fail). The second smallest eigenvalue (with k negative eigenvalues before, the (k+1)-th smallest:
 the smallest positive one at 8.4, the largest negative one at 9.1) changes sign there, and its linear
 interpolation over the step gives the bifurcation.
 Checks:

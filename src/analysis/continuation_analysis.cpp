@@ -656,6 +656,19 @@ std::vector<double> ContinuationAnalysis::checkpointState() const {
   return v;
 }
 
+std::vector<double> ContinuationAnalysis::currentCheckpointLayout(const std::vector<double>& v, int maxSteps) {
+  if (static_cast<long>(v.size()) != legacyCheckpointSize(maxSteps)) return v;
+  std::vector<double> out(static_cast<size_t>(checkpointSize(maxSteps)), std::numeric_limits<double>::quiet_NaN());
+  const size_t ms = static_cast<size_t>(maxSteps);
+  std::copy_n(v.begin(), kCkHeader, out.begin());
+  for (size_t i = 0; i < ms; ++i)
+    std::copy_n(v.begin() + static_cast<long>(kCkHeader + i * kCkLegacyPointCols), kCkLegacyPointCols,
+                out.begin() + static_cast<long>(kCkHeader + i * kCkPointCols));
+  std::copy_n(v.begin() + static_cast<long>(kCkHeader + ms * kCkLegacyPointCols), ms * kCkCritCols,
+              out.begin() + static_cast<long>(kCkHeader + ms * kCkPointCols));
+  return out;
+}
+
 PetscErrorCode ContinuationAnalysis::resume(const std::vector<double>& v, Vec dU) {
   PetscFunctionBeginUser;
   PetscCheck(static_cast<long>(v.size()) >= kCkHeader, asm_.mesh().comm, PETSC_ERR_ARG_SIZ, "path checkpoint: too short");

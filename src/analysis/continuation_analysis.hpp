@@ -67,6 +67,10 @@ class ContinuationAnalysis {
   /// checkpointSize() values (header, the points so far, the critical points), and the last increment
   /// (the predictor's direction; valid during the point callback).
   static long checkpointSize(int maxSteps) { return kCkHeader + static_cast<long>(maxSteps) * (kCkPointCols + kCkCritCols); }
+  /// The row of checkpoints written before the points carried their nearest eigenvalues (10 columns
+  /// per point), and that row in the current layout (those eigenvalues unknown: NaN; another row as is).
+  static long legacyCheckpointSize(int maxSteps) { return kCkHeader + static_cast<long>(maxSteps) * (kCkLegacyPointCols + kCkCritCols); }
+  static std::vector<double> currentCheckpointLayout(const std::vector<double>& state, int maxSteps);
   std::vector<double> checkpointState() const;
   Vec lastIncrement() const { return dUprev_; }
   /// Continues the path from a checkpoint: U is the state of its last point (reference rotations
@@ -99,7 +103,7 @@ class ContinuationAnalysis {
   PetscErrorCode step(Vec U, double* lambda, double ds, Vec dUprev, double dlPrev, bool first, bool* ok, int* its);
   void classify();
 
-  static constexpr int kCkHeader = 9, kCkPointCols = 12, kCkCritCols = 5;
+  static constexpr int kCkHeader = 9, kCkPointCols = 12, kCkLegacyPointCols = 10, kCkCritCols = 5;
   Assembler& asm_;
   ContinuationOptions opt_;
   Vec dUprev_ = nullptr;  ///< increment of the last converged step

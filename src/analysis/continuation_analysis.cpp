@@ -257,7 +257,7 @@ PetscErrorCode ContinuationAnalysis::factor(Vec U, double lambda) {
 // Negative eigenvalues of the tangent at a converged point: the inertia of a symmetric (LDL^T)
 // MUMPS factorization. The tangent with rigid-mode multipliers is a saddle-point matrix whose
 // inertia is that of the constrained stiffness plus one negative eigenvalue per multiplier.
-PetscErrorCode ContinuationAnalysis::negativeEigenvalues(Vec U, double lambda, int* count, double* lowest) {
+PetscErrorCode ContinuationAnalysis::negativeEigenvalues(Vec U, double lambda, int* count, PathPoint* p) {
   PetscFunctionBeginUser;
   LoadState ls;
   ls.loadFactor = ls.time = lambda;
@@ -277,7 +277,7 @@ PetscErrorCode ContinuationAnalysis::negativeEigenvalues(Vec U, double lambda, i
   PetscInt neg = 0, zero = 0, pos = 0;
   PetscCall(MatGetInertia(F, &neg, &zero, &pos));
   PetscCall(MatDestroy(&F));
-  if ((lowest_ || branchSwitch_) && lowest) PetscCall(lowestEigenvalue(lowest));
+  if ((lowest_ || branchSwitch_) && p) PetscCall(lowestEigenvalue(&p->lowestEigenvalue, nullptr, &p->nearestNegative, &p->nearestPositive));
   PetscCall(MatSetOption(K_, MAT_SYMMETRIC, PETSC_FALSE));
   *count = static_cast<int>(neg - multipliers_);
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -303,8 +303,9 @@ PetscErrorCode ContinuationAnalysis::stabilityMatrix() {
 
 // An independent check of the inertia: the eigenvalues of K closest to 0 (shift-and-invert with MUMPS
 // LU, K phi = mu phi), the lowest of them returned. Near a critical point the eigenvalue that crosses
-// zero is the one closest to it, so its sign must agree with the negative-pivot count.
-PetscErrorCode ContinuationAnalysis::lowestEigenvalue(double* value, Vec phi) {
+// zero is the one closest to it, so its sign must agree with the negative-pivot count. The nearest
+// below and above 0 are the ones a bifurcation is located with (classify).
+PetscErrorCode ContinuationAnalysis::lowestEigenvalue(double* value, Vec phi, double* below, double* above) {
   PetscFunctionBeginUser;
   MPI_Comm comm = asm_.mesh().comm;
   EPS eps;
@@ -328,7 +329,8 @@ PetscErrorCode ContinuationAnalysis::lowestEigenvalue(double* value, Vec phi) {
   PetscCall(EPSSolve(eps));
   PetscInt nconv = 0;
   PetscCall(EPSGetConverged(eps, &nconv));
-  double low = std::numeric_limits<double>::quiet_NaN();
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  double low = nan, neg = nan, pos = nan;
   PetscInt at = -1;
   for (PetscInt i = 0; i < nconv; ++i) {
     PetscScalar re, im;
@@ -337,7 +339,11 @@ PetscErrorCode ContinuationAnalysis::lowestEigenvalue(double* value, Vec phi) {
       low = re;
       at = i;
     }
+    if (re < 0 && !(neg >= re)) neg = re;
+    if (re >= 0 && !(pos <= re)) pos = re;
   }
+  if (below) *below = neg;
+  if (above) *above = pos;
   if (phi) {
     if (at >= 0) PetscCall(EPSGetEigenvector(eps, at, phi, nullptr));
     else PetscCall(VecSet(phi, 0.0));
@@ -564,7 +570,7 @@ PetscErrorCode ContinuationAnalysis::run(Vec U, const PointCallback& onPoint, bo
       p.iterations = its;
       PetscCall(controlDisplacement(U, lambda, &p.controlValue));
       if (inertia_) PetscCall(pathSlopes(U, lambda, dUprev, dlPrev, &p));
-      if (inertia_) PetscCall(negativeEigenvalues(U, lambda, &p.negativeEigenvalues, &p.lowestEigenvalue));
+      if (inertia_) PetscCall(negativeEigenvalues(U, lambda, &p.negativeEigenvalues, &p));
       points_.push_back(p);
       if (inertia_ && prevNeg >= 0 && p.negativeEigenvalues != prevNeg) classify();
       prevNeg = p.negativeEigenvalues;
@@ -594,7 +600,7 @@ PetscErrorCode ContinuationAnalysis::run(Vec U, const PointCallback& onPoint, bo
         dlPrev = 0.0;
         PetscCall(controlDisplacement(U, lambda, &b.controlValue));
         if (inertia_) PetscCall(pathSlopes(U, lambda, dUprev, dlPrev, &b));
-        if (inertia_) PetscCall(negativeEigenvalues(U, lambda, &b.negativeEigenvalues, &b.lowestEigenvalue));
+        if (inertia_) PetscCall(negativeEigenvalues(U, lambda, &b.negativeEigenvalues, &b));
         points_.push_back(b);
         prevNeg = b.negativeEigenvalues;
         switchedAt_ = b.step;
@@ -637,7 +643,7 @@ std::vector<double> ContinuationAnalysis::checkpointState() const {
     const PathPoint& p = points_[i];
     const double row[kCkPointCols] = {static_cast<double>(p.step), p.loadFactor, p.arcLength, static_cast<double>(p.iterations),
                                       static_cast<double>(p.cuts), static_cast<double>(p.negativeEigenvalues), p.controlValue,
-                                      p.slopeLoad, p.slopeControl, p.lowestEigenvalue};
+                                      p.slopeLoad, p.slopeControl, p.lowestEigenvalue, p.nearestNegative, p.nearestPositive};
     std::copy(row, row + kCkPointCols, v.begin() + static_cast<long>(k));
   }
   k = kCkHeader + static_cast<size_t>(opt_.max_steps) * kCkPointCols;
@@ -648,6 +654,19 @@ std::vector<double> ContinuationAnalysis::checkpointState() const {
     std::copy(row, row + kCkCritCols, v.begin() + static_cast<long>(k));
   }
   return v;
+}
+
+std::vector<double> ContinuationAnalysis::currentCheckpointLayout(const std::vector<double>& v, int maxSteps) {
+  if (static_cast<long>(v.size()) != legacyCheckpointSize(maxSteps)) return v;
+  std::vector<double> out(static_cast<size_t>(checkpointSize(maxSteps)), std::numeric_limits<double>::quiet_NaN());
+  const size_t ms = static_cast<size_t>(maxSteps);
+  std::copy_n(v.begin(), kCkHeader, out.begin());
+  for (size_t i = 0; i < ms; ++i)
+    std::copy_n(v.begin() + static_cast<long>(kCkHeader + i * kCkLegacyPointCols), kCkLegacyPointCols,
+                out.begin() + static_cast<long>(kCkHeader + i * kCkPointCols));
+  std::copy_n(v.begin() + static_cast<long>(kCkHeader + ms * kCkLegacyPointCols), ms * kCkCritCols,
+              out.begin() + static_cast<long>(kCkHeader + ms * kCkPointCols));
+  return out;
 }
 
 PetscErrorCode ContinuationAnalysis::resume(const std::vector<double>& v, Vec dU) {
@@ -678,6 +697,8 @@ PetscErrorCode ContinuationAnalysis::resume(const std::vector<double>& v, Vec dU
     p.slopeLoad = r[7];
     p.slopeControl = r[8];
     p.lowestEigenvalue = r[9];
+    p.nearestNegative = r[10];
+    p.nearestPositive = r[11];
     points_.push_back(p);
   }
   for (int i = 0; i < nc; ++i) {
@@ -697,7 +718,8 @@ PetscErrorCode ContinuationAnalysis::resume(const std::vector<double>& v, Vec dU
 
 // The last two points differ in their negative-eigenvalue count: a limit point when the load factor
 // turned back between them (located by the cubic Hermite interpolant of the load factor over the step),
-// a bifurcation otherwise (between the two points: midpoint).
+// a bifurcation otherwise, located at the zero of the eigenvalue that changes sign (linear over the step)
+// when SLEPc gave it at both points, else at the midpoint.
 void ContinuationAnalysis::classify() {
   const size_t n = points_.size();
   const PathPoint& b = points_[n - 1];
@@ -727,10 +749,15 @@ void ContinuationAnalysis::classify() {
     };
     c.loadFactor = hermite(la, lb, ma, mb);
     c.controlValue = hermite(a.controlValue, b.controlValue, h * a.slopeControl, h * b.slopeControl);
-  } else if (n >= 2 && (lowest_ || branchSwitch_) && std::isfinite(a.lowestEigenvalue) && std::isfinite(b.lowestEigenvalue) &&
-             a.lowestEigenvalue * b.lowestEigenvalue < 0) {
-    // the lowest eigenvalue crosses zero there: linear interpolation of it over the step
-    const double t = a.lowestEigenvalue / (a.lowestEigenvalue - b.lowestEigenvalue);
+  } else if (const double ma = b.negativeEigenvalues > a.negativeEigenvalues ? a.nearestPositive : a.nearestNegative,
+             mb = b.negativeEigenvalues > a.negativeEigenvalues ? b.nearestNegative : b.nearestPositive;
+             n >= 2 && (lowest_ || branchSwitch_) && std::isfinite(ma) && std::isfinite(mb) && ma * mb < 0) {
+    // With k negative eigenvalues at a and k + 1 at b, the (k+1)-th smallest crosses zero: at a it is the
+    // smallest positive one, at b the largest negative one (k + 1 -> k: the other way round). For k = 0
+    // that is the lowest eigenvalue at both points; at a second bifurcation (1 -> 2) the lowest is
+    // already negative at both and says nothing. Linear interpolation of it over the step. (A count
+    // jumping by more than one: the nearest ones, exact for a multiple eigenvalue.)
+    const double t = ma / (ma - mb);
     c.loadFactor = a.loadFactor + t * (b.loadFactor - a.loadFactor);
     c.controlValue = a.controlValue + t * (b.controlValue - a.controlValue);
     c.interpolated = true;
@@ -754,7 +781,7 @@ std::string ContinuationAnalysis::summary() const {
     s << "  " << (c.kind == CriticalPoint::Limit ? "limit point" : "bifurcation point") << " between path points "
       << c.afterStep << " and " << c.afterStep + 1 << ": load factor " << c.loadFactor;
     if (haveControl_) s << ", control displacement " << c.controlValue;
-    if (c.kind == CriticalPoint::Bifurcation) s << (c.interpolated ? " (zero of the lowest eigenvalue)" : " (midpoint)");
+    if (c.kind == CriticalPoint::Bifurcation) s << (c.interpolated ? " (zero of the eigenvalue changing sign)" : " (midpoint)");
     s << "\n";
   }
   if (switchedAt_ > 0) s << "  branch switched: path point " << switchedAt_ << " is on the bifurcated branch\n";

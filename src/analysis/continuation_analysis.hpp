@@ -10,6 +10,7 @@
 #include <petscksp.h>
 
 #include <functional>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -28,12 +29,17 @@ struct PathPoint {
   double controlValue = 0;     ///< the displacement of the control DOF (when a node is given)
   double slopeLoad = 0, slopeControl = 0;  ///< d lambda / ds and d u_control / ds along the path there
   double lowestEigenvalue = 0;  ///< SLEPc: lowest eigenvalue of the tangent (-continuation_lowest_eigenvalue)
+  /// SLEPc: the tangent's eigenvalues nearest to 0 from below and from above (NaN when none converged on
+  /// that side). With k negative eigenvalues they are the k-th and (k+1)-th smallest: the ones that
+  /// change sign when the count changes by one, whatever the lowest eigenvalue does.
+  double nearestNegative = std::numeric_limits<double>::quiet_NaN();
+  double nearestPositive = std::numeric_limits<double>::quiet_NaN();
 };
 
 struct CriticalPoint {
   enum Kind { Limit = 1, Bifurcation = 2 };
   Kind kind = Limit;
-  bool interpolated = false;  ///< a bifurcation located by the lowest eigenvalue's zero (else the midpoint)
+  bool interpolated = false;  ///< a bifurcation located by the zero of the eigenvalue changing sign (else the midpoint)
   int afterStep = 0;    ///< between path points afterStep and afterStep + 1
   double loadFactor = 0;  ///< located load factor (parabola through three points for a limit point)
   double controlValue = 0;
@@ -61,6 +67,10 @@ class ContinuationAnalysis {
   /// checkpointSize() values (header, the points so far, the critical points), and the last increment
   /// (the predictor's direction; valid during the point callback).
   static long checkpointSize(int maxSteps) { return kCkHeader + static_cast<long>(maxSteps) * (kCkPointCols + kCkCritCols); }
+  /// The row of checkpoints written before the points carried their nearest eigenvalues (10 columns
+  /// per point), and that row in the current layout (those eigenvalues unknown: NaN; another row as is).
+  static long legacyCheckpointSize(int maxSteps) { return kCkHeader + static_cast<long>(maxSteps) * (kCkLegacyPointCols + kCkCritCols); }
+  static std::vector<double> currentCheckpointLayout(const std::vector<double>& state, int maxSteps);
   std::vector<double> checkpointState() const;
   Vec lastIncrement() const { return dUprev_; }
   /// Continues the path from a checkpoint: U is the state of its last point (reference rotations
@@ -73,10 +83,13 @@ class ContinuationAnalysis {
   /// (LoadState::initialFactor 0 -> 1 in -continuation_initial_steps Newton-solved increments).
   PetscErrorCode equilibrateInitial(Vec U, bool* ok);
   PetscErrorCode factor(Vec U, double lambda);
-  PetscErrorCode negativeEigenvalues(Vec U, double lambda, int* count, double* lowest);
+  /// The inertia count; with SLEPc on (lowest_ or branchSwitch_) and p given, also p's lowest and nearest
+  /// eigenvalues.
+  PetscErrorCode negativeEigenvalues(Vec U, double lambda, int* count, PathPoint* p);
   /// Lowest eigenvalue of K_ (assembled true tangent) by SLEPc: shift-and-invert about 0, a few pairs;
-  /// its eigenvector into phi when given.
-  PetscErrorCode lowestEigenvalue(double* value, Vec phi = nullptr);
+  /// its eigenvector into phi when given; the converged eigenvalues nearest to 0 below and above it
+  /// into below/above when given (NaN if none on that side).
+  PetscErrorCode lowestEigenvalue(double* value, Vec phi = nullptr, double* below = nullptr, double* above = nullptr);
   PetscErrorCode stabilityMatrix();
   /// Newton at a fixed load factor from U (the branch switch); ok when the residual meets the tolerance.
   PetscErrorCode solveFixedLoad(Vec U, double lambda, double scale, bool* ok);
@@ -90,7 +103,7 @@ class ContinuationAnalysis {
   PetscErrorCode step(Vec U, double* lambda, double ds, Vec dUprev, double dlPrev, bool first, bool* ok, int* its);
   void classify();
 
-  static constexpr int kCkHeader = 9, kCkPointCols = 10, kCkCritCols = 5;
+  static constexpr int kCkHeader = 9, kCkPointCols = 12, kCkLegacyPointCols = 10, kCkCritCols = 5;
   Assembler& asm_;
   ContinuationOptions opt_;
   Vec dUprev_ = nullptr;  ///< increment of the last converged step

@@ -267,7 +267,8 @@ void Restart::check(MPI_Comm comm, const std::string& src, const std::string& pa
   if (ph == CheckpointPhase::Continuation && !plan.continuation)
     throw SceneError("-restart", path + " holds a path-following checkpoint; this scene has no opt.continuation");
   if (ph == CheckpointPhase::Continuation &&
-      static_cast<long>(reader_->pathState().size()) != ContinuationAnalysis::checkpointSize(model.opt.continuation->max_steps))
+      static_cast<long>(reader_->pathState().size()) != ContinuationAnalysis::checkpointSize(model.opt.continuation->max_steps) &&
+      static_cast<long>(reader_->pathState().size()) != ContinuationAnalysis::legacyCheckpointSize(model.opt.continuation->max_steps))
     throw SceneError("-restart", path + ": the path checkpoint was written with another opt.continuation.max_steps; a restart "
                                         "continues with the same max_steps");
   if (ph == CheckpointPhase::Dynamics) {
@@ -370,7 +371,7 @@ PetscErrorCode Restart::restoredState(RunContext& ctx, CheckpointData& d, std::v
     d.vectors.emplace_back(v, w);
   }
   if (phase() == CheckpointPhase::Continuation) {
-    d.path = r.pathState();
+    d.path = ContinuationAnalysis::currentCheckpointLayout(r.pathState(), ctx.model.opt.continuation->max_steps);
     d.pathSize = static_cast<long>(d.path.size());
   }
   if (ctx.model.formfinding) {
@@ -407,7 +408,7 @@ PetscErrorCode Restart::resumeContinuation(RunContext& ctx, ContinuationAnalysis
   Vec dU;
   PetscCall(VecDuplicate(ctx.U, &dU));
   PetscCall(reader_->loadVector("dU", ctx.assembler, dU));
-  PetscCall(path.resume(reader_->pathState(), dU));
+  PetscCall(path.resume(ContinuationAnalysis::currentCheckpointLayout(reader_->pathState(), ctx.model.opt.continuation->max_steps), dU));
   PetscCall(VecDestroy(&dU));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

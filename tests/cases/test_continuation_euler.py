@@ -6,7 +6,7 @@ straight and the tangent loses positive definiteness at P_cr, a bifurcation (the
 Arc length with the spherical constraint (psi = 1/P_cr so that ds = 0.1 is a load-factor step of 0.1 on
 the primary path), -branch_switch.
 Checks:
-  (1) one bifurcation detected, located by the zero of the lowest eigenvalue (interpolated between the
+  (1) one bifurcation detected, located by the zero of the eigenvalue changing sign, here the lowest (interpolated between the
       two points around it, 0.9 and 1.2) at the Euler load: |lambda_c - 1| < 1e-3 (measured 6.4e-5;
       the midpoint would be 1.05);
   (2) branch switched: after the bifurcation the path leaves the straight state (tip deflection) and is
@@ -43,7 +43,7 @@ st.check(conv == 1 and len(lam) == 20, f"20 path points, converged ({len(lam)}, 
 # (1) the bifurcation
 if st.check(crit.shape == (1, 4) and crit[0, 0] == 2, f"one bifurcation point ({crit})"):
     st.close(crit[0, 2], 1.0, atol=1e-3, what="bifurcation load factor vs the Euler load P_cr")
-    st.check("zero of the lowest eigenvalue" in out, "located by the lowest eigenvalue (summary)")
+    st.check("zero of the eigenvalue changing sign" in out, "located by the eigenvalue changing sign (summary)")
 # (2) the switch
 k = int(crit[0, 1]) if crit.shape == (1, 4) else 0  # points k, k + 1 (1-based) straddle it
 st.check("branch switched at path point" in out, "branch switched (progress line)")

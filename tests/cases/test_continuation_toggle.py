@@ -8,7 +8,10 @@ Zienkiewicz 1977 and in Crisfield's book) is still not at hand: a search of the 
 (web pages, documentation, GitHub code and issues, November 2026: "Williams toggle" with limit load,
 experiment, 0.386 in, 12.943 in, 10.3e6 psi, Wood & Zienkiewicz, Oran & Kassimali 1976) found the frame
 named in benchmark lists (e.g. a Rust corotational validation suite whose toggle test only checks that
-the solver runs) but no number and no digitized curve. So the test compares with shallow-beam
+the solver runs) but no number and no digitized curve; a third search (strings 12.943, 0.386, 0.753,
+10.3e6, Williams toggle, williams_toggle; Oran & Kassimali, Kassimali 1983, Crisfield, Wood & Zienkiewicz)
+found only a Rust solver test asserting 34.0392 lb as an unsourced "external" limit (Sinew -0.56 %) and a
+C++ code's own beam-column formula. So the test compares with shallow-beam
 (Marguerre) theory for the same frame (tests/cases/shallow_beam.py: w0 the
 kinked stress-free shape, clamped ends, uniform axial force; exact to the order of the squared slopes,
 (h/a)^2 = 1e-3), traced through its fold: limit load 33.900 lb at an apex deflection of 0.2321 in,

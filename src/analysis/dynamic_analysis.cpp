@@ -23,6 +23,43 @@ bool DynamicAnalysis::checkScheme(const DistributedMesh& mesh) {
   return sch == "tsalpha2";
 }
 
+DynamicAnalysis::StepControlSettings DynamicAnalysis::readStepControl(MPI_Comm comm, const DynamicsOptions& opts,
+                                                                      bool tsalpha2) {
+  // time-step control: opt.dynamics.adaptive, each field overridden by its flag
+  const AdaptiveStepOptions& ad = opts.adaptive;
+  PetscBool set = PETSC_FALSE;
+  char ctl[16] = "";
+  std::snprintf(ctl, sizeof ctl, "%s", ad.control.c_str());
+  SinewCallThrow(comm, PetscOptionsGetString(nullptr, nullptr, "-dynamics_adapt", ctl, sizeof(ctl), &set));
+  const std::string control = ctl;
+  StepControlSettings r;
+  r.control = control == "newton" ? StepControl::Newton : control == "error" ? StepControl::Error : StepControl::None;
+  PetscReal dtMin = ad.dt_min > 0 ? ad.dt_min : 1e-4 * opts.dt;
+  PetscReal dtMax = ad.dt_max > 0 ? ad.dt_max : opts.dt * opts.output_every;
+  PetscReal tol = ad.tolerance;
+  PetscInt its = ad.target_iterations;
+  SinewCallThrow(comm, PetscOptionsGetReal(nullptr, nullptr, "-dynamics_dt_min", &dtMin, &set));
+  SinewCallThrow(comm, PetscOptionsGetReal(nullptr, nullptr, "-dynamics_dt_max", &dtMax, &set));
+  SinewCallThrow(comm, PetscOptionsGetReal(nullptr, nullptr, "-dynamics_adapt_tol", &tol, &set));
+  SinewCallThrow(comm, PetscOptionsGetInt(nullptr, nullptr, "-dynamics_adapt_its", &its, &set));
+  r.dtMin = dtMin;
+  r.dtMax = dtMax;
+  r.tol = tol;
+  r.its = static_cast<int>(its);
+  if (r.control != StepControl::None && r.dtMin > r.dtMax) {
+    std::ostringstream msg;
+    msg << "the smallest adaptive step " << r.dtMin << " exceeds the largest (dt_max " << r.dtMax << ")";
+    throw SceneError("-dynamics_dt_min", msg.str());
+  }
+  if (r.control != StepControl::None && tsalpha2)
+    throw SceneError("-dynamics_adapt", "adaptive steps are Sinew's Arnold-Brüls loop; -dynamics_scheme tsalpha2 takes a fixed dt");
+  return r;
+}
+
+void DynamicAnalysis::checkStepControl(const DistributedMesh& mesh, const DynamicsOptions& opts) {
+  readStepControl(mesh.comm, opts, checkScheme(mesh));
+}
+
 DynamicAnalysis::DynamicAnalysis(Assembler& assembler, const DynamicsOptions& opts)
     : asm_(assembler), opts_(opts), damping_(assembler, opts) {
   const double rho = opts_.spectral_radius;
@@ -46,30 +83,12 @@ DynamicAnalysis::DynamicAnalysis(Assembler& assembler, const DynamicsOptions& op
   SinewCallThrow(comm, PetscOptionsGetInt(nullptr, nullptr, "-dt_grow_after", &grow, &set));
   growAfter_ = static_cast<int>(grow);
   if (growAfter_ < 0) throw SceneError("-dt_grow_after", "expected a count >= 0, got " + std::to_string(growAfter_));
-  // time-step control: opt.dynamics.adaptive, each field overridden by its flag
-  const AdaptiveStepOptions& ad = opts_.adaptive;
-  char ctl[16] = "";
-  std::snprintf(ctl, sizeof ctl, "%s", ad.control.c_str());
-  SinewCallThrow(comm, PetscOptionsGetString(nullptr, nullptr, "-dynamics_adapt", ctl, sizeof(ctl), &set));
-  const std::string control = ctl;
-  control_ = control == "newton" ? StepControl::Newton : control == "error" ? StepControl::Error : StepControl::None;
-  PetscReal dtMin = ad.dt_min > 0 ? ad.dt_min : 1e-4 * opts_.dt;
-  PetscReal dtMax = ad.dt_max > 0 ? ad.dt_max : opts_.dt * opts_.output_every;
-  PetscReal tol = ad.tolerance;
-  PetscInt targetIts = ad.target_iterations;
-  SinewCallThrow(comm, PetscOptionsGetReal(nullptr, nullptr, "-dynamics_dt_min", &dtMin, &set));
-  SinewCallThrow(comm, PetscOptionsGetReal(nullptr, nullptr, "-dynamics_dt_max", &dtMax, &set));
-  SinewCallThrow(comm, PetscOptionsGetReal(nullptr, nullptr, "-dynamics_adapt_tol", &tol, &set));
-  SinewCallThrow(comm, PetscOptionsGetInt(nullptr, nullptr, "-dynamics_adapt_its", &targetIts, &set));
-  dtMin_ = dtMin;
-  dtMax_ = dtMax;
-  adaptTol_ = tol;
-  adaptIts_ = static_cast<int>(targetIts);
-  if (adaptive() && dtMin_ > dtMax_)
-    throw SceneError("-dynamics_dt_min", "the smallest adaptive step " + std::to_string(dtMin_) +
-                                             " exceeds the largest (dt_max " + std::to_string(dtMax_) + ")");
-  if (adaptive() && useTS_)
-    throw SceneError("-dynamics_adapt", "adaptive steps are Sinew's Arnold-Brüls loop; -dynamics_scheme tsalpha2 takes a fixed dt");
+  const StepControlSettings sc = readStepControl(comm, opts_, useTS_);
+  control_ = sc.control;
+  dtMin_ = sc.dtMin;
+  dtMax_ = sc.dtMax;
+  adaptTol_ = sc.tol;
+  adaptIts_ = sc.its;
   PetscReal rtol = forceRtol_;
   SinewCallThrow(comm, PetscOptionsGetReal(nullptr, nullptr, "-force_rtol", &rtol, &set));
   forceRtol_ = rtol;

@@ -69,6 +69,9 @@ class DynamicAnalysis {
   /// Checks -dynamics_scheme against the model (SceneError; called at setup, where scene errors exit 2):
   /// tsalpha2 (a vector space) cannot integrate rotation unknowns. True when tsalpha2 is chosen.
   static bool checkScheme(const DistributedMesh& mesh);
+  /// Checks opt.dynamics.adaptive with its flags (-dynamics_adapt, -dynamics_dt_min/max, ...): SceneError
+  /// (exit 2) for dt_min > dt_max or adaptive steps with tsalpha2. Called at setup, after checkScheme.
+  static void checkStepControl(const DistributedMesh& mesh, const DynamicsOptions& opts);
   /// Integrates from U (in: initial state, at rest; out: state at the last converged time).
   PetscErrorCode run(Vec U, const StepCallback& onStep, bool* converged);
   /// With opt.dynamics damping: the frequency analysis of the start state (modal damping) sees
@@ -160,6 +163,13 @@ class DynamicAnalysis {
   double prevFnorm_ = 0;       ///< residual norm at the previous Jacobian call of this solve
   // time-step control (opt.dynamics.adaptive, -dynamics_adapt; docs/dynamics.md "Time-step control")
   enum class StepControl { None, Newton, Error } control_ = StepControl::None;
+  struct StepControlSettings {
+    StepControl control = StepControl::None;
+    double dtMin = 0, dtMax = 0, tol = 0;
+    int its = 0;
+  };
+  /// The scene's opt.dynamics.adaptive overridden by the flags, checked (SceneError).
+  static StepControlSettings readStepControl(MPI_Comm comm, const DynamicsOptions& opts, bool tsalpha2);
   double dtMin_ = 0, dtMax_ = 0, adaptTol_ = 1e-4;
   int adaptIts_ = 4;
   double lastH_ = 0;

@@ -30,7 +30,8 @@ Checks:
   steps, 67 rejected): stopped after 6 rows (t = 0.1) on 2 ranks, continued on 1 rank, equals the
   uninterrupted run to 1e-9 (measured 8.7e-14; the checkpoint holds the next step h and the error
   scale);
-- Newton control: fewer than half the steps of the fixed dt = 5e-4 run, error below 1e-2."""
+- Newton control: fewer than half the steps of the fixed dt = 5e-4 run, error below 1e-2;
+- scene errors name the field (exit 2): control: fast, dt_min > dt_max."""
 import numpy as np
 
 import sinewtest as st
@@ -114,4 +115,8 @@ n_n, _ = steps(adn)
 print(f"  Newton control (4 iterations): {n_n} steps, error {e_n:.3e}")
 st.check(n_n < NFIX // 2, f"Newton control: {n_n} steps, expected fewer than half the fixed run's {NFIX}")
 st.check(e_n < 1e-2, f"Newton control: error {e_n:.3e} >= 1e-2")
+for bad, field in ((", adaptive: {control: fast}", "opt.dynamics.adaptive.control"),
+                   (", adaptive: {dt_min: 0.1, dt_max: 0.01}", "opt.dynamics.adaptive.dt_min")):
+    _, out = st.run("adapt_bad", scene(5e-4, 40, bad), np_=1, expect_exit=2)
+    st.check(field in out, f"scene error names {field}: {out.strip()[-200:]}")
 st.done()

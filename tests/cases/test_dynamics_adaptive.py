@@ -24,12 +24,13 @@ Checks:
   1.2x); fails when the option is ignored (600 steps); /dynamics/dt and /dynamics/steps written,
   the step grows after the pulse; the rows land on the output times 0.02 k exactly;
 - 1 rank vs 2 ranks: tip history identical to 1e-9 of its peak (measured 2.8e-15);
+  in this test (2 ranks, against dt = 1.25e-4): fixed dt = 1e-3 2.07e-3, dt = 5e-4 4.95e-4,
+  error control 183 steps 5.44e-4, Newton control 135 steps 2.83e-3; 61 s at load average 10;
 - restart: the same scene without damping (a restart rebuilds Rayleigh damping from the resumed
   state: with beta = 1e-3 the fixed-step run of 0.6 s stopped at t = 0.1 and continued differs by
-  0.43 of the peak, a limitation of damping, docs/dynamics.md) to t = 0.2, tolerance 1e-2 (489
-  steps, 67 rejected): stopped after 6 rows (t = 0.1) on 2 ranks, continued on 1 rank, equals the
-  uninterrupted run to 1e-9 (measured 8.7e-14; the checkpoint holds the next step h and the error
-  scale);
+  0.43 of the peak, a limitation of damping, docs/dynamics.md) to t = 0.12, tolerance 1e-2:
+  stopped after 4 rows (t = 0.06) on 2 ranks, continued on 1 rank, equals the uninterrupted run to
+  1e-9 (measured 8.9e-14; the checkpoint holds the next step h and the error scale);
 - Newton control: fewer than half the steps of the fixed dt = 5e-4 run, error below 1e-2;
 - scene errors name the field (exit 2): control: fast, dt_min > dt_max."""
 import numpy as np
@@ -98,15 +99,15 @@ t1, y1 = tip(ad1)
 t2, y2 = tip(ad2)
 st.close(np.max(np.abs(y1 - y2)) / peak, 0.0, atol=1e-9, what="error control, 1 vs 2 ranks (tip y / peak)")
 
-RS = scene(5e-4, 40, ", adaptive: {control: error, tolerance: 1e-2}", tend=0.2, damping="")
+RS = scene(5e-4, 40, ", adaptive: {control: error, tolerance: 1e-2}", tend=0.12, damping="")
 whole, _ = st.run("adapt_whole2", RS)
-part = stopped("adapt_part2", RS, 2, 6)
+part = stopped("adapt_part2", RS, 2, 4)
 rest, _ = restarted("adapt_rest1", RS, 1, part)
 tw, yw = tip(whole)
 tt, yt = tip(rest)
-st.check(len(tt) == len(tw) == 11, "restart: every row")
+st.check(len(tt) == len(tw) == 7, "restart: every row")
 st.close(np.max(np.abs(yt - yw)) / np.max(np.abs(yw)), 0.0, atol=1e-9,
-         what="error control, stopped at t = 0.1 on 2 ranks, continued on 1 (tip y / peak)")
+         what="error control, stopped at t = 0.06 on 2 ranks, continued on 1 (tip y / peak)")
 st.check(steps(rest)[0] == steps(whole)[0], f"restart: {steps(rest)[0]} steps in all, uninterrupted {steps(whole)[0]}")
 
 adn, _ = st.run("adapt_newton2", scene(5e-4, 40, ", adaptive: {control: newton, target_iterations: 4}"))

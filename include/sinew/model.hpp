@@ -94,8 +94,18 @@ struct ElementSet {
   std::optional<Vec3> massProportionalLoad;
 };
 
+/// Sinew: opt.dynamics.adaptive, optional time-step control (docs/dynamics.md "Time-step control").
+struct AdaptiveStepOptions {
+  std::string control = "none";  ///< none (fixed dt) | newton (Newton iteration count) | error (local error estimate)
+  double dt_min = 0;             ///< smallest step (0: dt / 1e4)
+  double dt_max = 0;             ///< largest step (0: the output interval dt * output_every)
+  int target_iterations = 4;     ///< newton: iterations per step the step size aims at
+  double tolerance = 1e-4;       ///< error: local error / largest displacement (inf-norms) accepted per step
+};
+
 struct DynamicsOptions {
   double tend = 0, dt = 0, spectral_radius = 0.9;
+  AdaptiveStepOptions adaptive;  ///< Sinew: off by default
   int output_every = 1;  ///< Sinew: write every k-th time step (and the last)
   // damping (docs/dynamics.md "Damping"; Exudyn's massProportionalDamping/stiffnessProportionalDamping)
   double mass_proportional_damping = 0;       ///< Rayleigh alpha (1/s): C += alpha M0

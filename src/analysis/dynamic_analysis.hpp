@@ -34,14 +34,19 @@ struct DynamicsReport {
   int newtonIterations = 0;
   int jacobians = 0;         ///< Jacobians assembled and factored (modified Newton keeps one for many iterations)
   double time = 0;           ///< last converged time
+  // adaptive time steps (opt.dynamics.adaptive; 0 with a fixed dt)
+  int acceptedSteps = 0;     ///< accepted steps (time steps taken) since t = 0
+  int rejectedSteps = 0;     ///< steps rejected by the error estimate (solved, then repeated smaller)
+  double hMin = 0, hMax = 0; ///< smallest and largest accepted step of this run
 };
 
 /// Where a time integration stands after a converged time step (checkpoints, -restart).
 struct DynamicsProgress {
   int step = 0;        ///< time steps of size dt done
   double time = 0;     ///< time reached
-  double h = 0;        ///< current sub-step size (halved after a failure, grows back)
-  int successes = 0;   ///< successful sub-steps in a row since the last change of h
+  double h = 0;        ///< current sub-step size (halved after a failure, grows back; adaptive: the next step)
+  int successes = 0;   ///< successful sub-steps in a row since the last change of h (adaptive: accepted steps)
+  double scale = 0;    ///< adaptive steps (error): largest displacement |U|_inf so far (errorRatio)
 };
 
 class DynamicAnalysis {
@@ -54,9 +59,19 @@ class DynamicAnalysis {
   /// Called at t = 0 (step 0, after the initial accelerations) and after every time step:
   /// U, V and the accelerations Qdd at time t.
   using StepCallback = std::function<PetscErrorCode(int step, double t, Vec U, Vec V, Vec Qdd)>;
+  /// Adaptive steps: called after every accepted step (t, U, V), written or not (external work).
+  using SubstepCallback = std::function<PetscErrorCode(double t, Vec U, Vec V)>;
+  void setSubstepCallback(SubstepCallback cb) { onSubstep_ = std::move(cb); }
+  /// True with opt.dynamics.adaptive / -dynamics_adapt newton|error.
+  bool adaptive() const { return control_ != StepControl::None; }
+  /// The last accepted step size (adaptive runs: /dynamics/dt).
+  double lastStep() const { return lastH_; }
   /// Checks -dynamics_scheme against the model (SceneError; called at setup, where scene errors exit 2):
   /// tsalpha2 (a vector space) cannot integrate rotation unknowns. True when tsalpha2 is chosen.
   static bool checkScheme(const DistributedMesh& mesh);
+  /// Checks opt.dynamics.adaptive with its flags (-dynamics_adapt, -dynamics_dt_min/max, ...): SceneError
+  /// (exit 2) for dt_min > dt_max or adaptive steps with tsalpha2. Called at setup, after checkScheme.
+  static void checkStepControl(const DistributedMesh& mesh, const DynamicsOptions& opts);
   /// Integrates from U (in: initial state, at rest; out: state at the last converged time).
   PetscErrorCode run(Vec U, const StepCallback& onStep, bool* converged);
   /// With opt.dynamics damping: the frequency analysis of the start state (modal damping) sees
@@ -93,7 +108,16 @@ class DynamicAnalysis {
   PetscErrorCode initialAccelerations(Vec U, Vec V, Vec Qdd, bool* ok);
   /// a_{n+1}, qd_{n+1}, qdd_{n+1} of the iterate U (step size h_).
   PetscErrorCode rates(Vec U);
-  PetscErrorCode step(double t1, bool* ok, int* its, double* fnorm, SNESConvergedReason* why);
+  /// Solves the step to t1 (size h_); with commit, a converged step becomes the new step start.
+  PetscErrorCode step(double t1, bool* ok, int* its, double* fnorm, SNESConvergedReason* why, bool commit = true);
+  /// Makes the converged iterate U (rates computed) the step start q_n, qd_n, a_n, qdd_n.
+  PetscErrorCode commitStep(Vec U);
+  /// Local error of the converged step (rates of U computed), relative to tolerance * largest displacement:
+  /// eta = h^2 |beta - 1/6| ||a_{n+1} - a_n||_inf / (tol * scale); accepted at eta <= 1. scale: the
+  /// largest ||U||_inf of the run so far and of U, at least 1e-3 of the model size; *scale out.
+  PetscErrorCode errorRatio(Vec U, double* eta, double* scale);
+  /// The time loop with adaptive steps (after the start of runArnoldBruls).
+  PetscErrorCode runAdaptive(const StepCallback& onStep, bool* converged);
   PetscErrorCode runArnoldBruls(Vec U, const StepCallback& onStep, bool* converged);
   PetscErrorCode runTSAlpha2(Vec U, const StepCallback& onStep, bool* converged);
   /// Builds the damping matrix from the start state U (rotations absorbed).
@@ -137,6 +161,20 @@ class DynamicAnalysis {
   double jacobianH_ = 0;       ///< step size the kept Jacobian was built for
   int reuseCount_ = 0;         ///< iterations on the kept Jacobian since it was built
   double prevFnorm_ = 0;       ///< residual norm at the previous Jacobian call of this solve
+  // time-step control (opt.dynamics.adaptive, -dynamics_adapt; docs/dynamics.md "Time-step control")
+  enum class StepControl { None, Newton, Error } control_ = StepControl::None;
+  struct StepControlSettings {
+    StepControl control = StepControl::None;
+    double dtMin = 0, dtMax = 0, tol = 0;
+    int its = 0;
+  };
+  /// The scene's opt.dynamics.adaptive overridden by the flags, checked (SceneError).
+  static StepControlSettings readStepControl(MPI_Comm comm, const DynamicsOptions& opts, bool tsalpha2);
+  double dtMin_ = 0, dtMax_ = 0, adaptTol_ = 1e-4;
+  int adaptIts_ = 4;
+  double lastH_ = 0;
+  double adaptScale_ = 0;  ///< largest ||U||_inf of the accepted steps so far (errorRatio)
+  SubstepCallback onSubstep_;
   DynamicsReport report_;
   std::string failure_;
   Damping damping_;

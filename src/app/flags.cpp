@@ -76,6 +76,11 @@ const std::vector<Flag>& sinewFlags() {
         {"mat_mumps_icntl_14", anyInteger(), &dynamics, "100 when dynamics factors with MUMPS, else MUMPS' own", "(MUMPS) percentage of extra workspace for pivoting; dynamics reserves 100 so wild Newton iterates do not fail the factorization (INFOG(1) = -9)"},
         {"dynamics_predictor", oneOf({"auto", "acceleration", "state"}), &dynamics, "auto", "Newton's start of a time step: q_n + h qd_n + h^2/2 a_n (acceleration) or q_n (state; the extrapolation of a fine mesh's unresolved stiff modes lands far off); auto: state from 200 unknowns and for beams"},
         {"dt_grow_after", integerAtLeast(0), &dynamics, "3", "after a halving, double the time step after this many successes (0: never)"},
+        {"dynamics_adapt", oneOf({"none", "newton", "error"}), &dynamics, "opt.dynamics.adaptive.control (none)", "time-step control: fixed dt (none), from the Newton iteration count (newton) or a local error estimate (error); docs/dynamics.md"},
+        {"dynamics_dt_min", realIn(0, 1e300, true, false), &dynamics, "opt.dynamics.adaptive.dt_min (dt/1e4)", "adaptive steps: smallest step"},
+        {"dynamics_dt_max", realIn(0, 1e300, true, false), &dynamics, "opt.dynamics.adaptive.dt_max (dt * output_every)", "adaptive steps: largest step"},
+        {"dynamics_adapt_its", integerAtLeast(1), &dynamics, "opt.dynamics.adaptive.target_iterations (4)", "adaptive steps (newton): Newton iterations per step aimed at"},
+        {"dynamics_adapt_tol", realIn(0, 1e300, true, false), &dynamics, "opt.dynamics.adaptive.tolerance (1e-4)", "adaptive steps (error): local error estimate / largest displacement accepted per step"},
         {"dynamics_energy", boolean(), &dynamics, "false", "write /energy/{kinetic,strain,external_work,total} and /momentum/{linear,angular} per output step (beams, ANCF)"},
         {"ff_mat_mumps_icntl_7", integerIn(0, 7), &formfinding, "3", "(MUMPS) fill-reducing ordering of the form-finding factorization (3: SCOTCH)"},
     };

@@ -422,6 +422,7 @@ PetscErrorCode Restart::resumeDynamics(RunContext& ctx, DynamicAnalysis& dyn, do
   p.time = sc[kCkTime];
   p.h = sc[kCkSubstep];
   p.successes = static_cast<int>(sc[kCkSuccesses]);
+  p.scale = sc[kCkAdaptScale];
   Vec V, A, Q;
   PetscCall(VecDuplicate(ctx.U, &V));
   PetscCall(VecDuplicate(ctx.U, &A));

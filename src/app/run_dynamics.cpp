@@ -59,6 +59,7 @@ PetscErrorCode runDynamics(RunContext& ctx) {
       d.scalars[kCkMaxDrift] = maxDrift;
       d.scalars[kCkExternalWork] = work;
       d.scalars[kCkExternalPower] = power;
+      d.scalars[kCkAdaptScale] = p.scale;
       d.vectors = {{"U", stepU}, {"V", stepV}, {"A", dyn.auxiliaryAccelerations()}, {"Qdd", stepQdd}};
       return PETSC_SUCCESS;
     };
@@ -107,7 +108,7 @@ PetscErrorCode runDynamics(RunContext& ctx) {
     ls.time = t;
     ls.gravityRamped = false;
     ls.timeFunctions = true;
-    if (energy && energyOk) PetscCall(addWork(k, t, U, V, ls));
+    if (energy && energyOk && (k == 0 || !dyn.adaptive())) PetscCall(addWork(k, t, U, V, ls));  // adaptive: onSubstep
     if (k != 0 && !last && k % opts.output_every != 0) PetscFunctionReturn(PETSC_SUCCESS);
     if (sensors) sensors->setRates(V, Qdd);
     ctx.assembler.setReactionRates(V, Qdd);  // dynamic reactions: f_int - f_ext + M qdd
@@ -116,11 +117,30 @@ PetscErrorCode runDynamics(RunContext& ctx) {
     stepQdd = Qdd;
     char detail[64];
     std::snprintf(detail, sizeof detail, "t = %.6g", t);
-    PetscCall(ctx.convergedStep({k, last, t, detail}, U, ls, [&]() { return writeEnergy(k, U, V, ls); }));
+    PetscCall(ctx.convergedStep({k, last, t, detail}, U, ls, [&]() -> PetscErrorCode {
+      PetscFunctionBeginUser;
+      if (dyn.adaptive()) {  // the step size that reached this row and the steps taken since t = 0
+        ctx.file.writeStepRow("dynamics/dt", std::array<double, 1>{k == 0 ? 0.0 : dyn.lastStep()});
+        ctx.file.writeStepRow("dynamics/steps", std::array<double, 1>{static_cast<double>(dyn.report().acceptedSteps)});
+      }
+      PetscCall(writeEnergy(k, U, V, ls));
+      PetscFunctionReturn(PETSC_SUCCESS);
+    }));
     if (sensors) sensors->setRates(nullptr, nullptr);
     ctx.assembler.setReactionRates(nullptr, nullptr);
     PetscFunctionReturn(PETSC_SUCCESS);
   };
+  if (dyn.adaptive() && energy)  // the external work integrates over every accepted step
+    dyn.setSubstepCallback([&](double t, Vec U, Vec V) -> PetscErrorCode {
+      PetscFunctionBeginUser;
+      LoadState ls;
+      ls.loadFactor = 1.0;
+      ls.time = t;
+      ls.gravityRamped = false;
+      ls.timeFunctions = true;
+      if (energyOk) PetscCall(addWork(1, t, U, V, ls));
+      PetscFunctionReturn(PETSC_SUCCESS);
+    });
   bool ok = false;
   PetscCall(dyn.run(ctx.U, onStep, &ok));
   ctx.lastStepName = "time step";
@@ -139,6 +159,9 @@ PetscErrorCode runDynamics(RunContext& ctx) {
   if (r.guardedSteps > 0) s << ", " << r.guardedSteps << " steps retried from the last state";
   if (r.reducedSteps > 0) s << ", " << r.reducedSteps << " steps with halved sub-steps (" << r.substeps << " solves)";
   s << "\n";
+  if (dyn.adaptive())
+    s << "  adaptive steps: " << r.acceptedSteps << " accepted steps of h = " << r.hMin << " .. " << r.hMax << ", "
+      << r.rejectedSteps << " rejected by the error estimate\n";
   if (energy && energyOk) s << "  energy: T + S - W initially " << energy0 << ", largest change " << maxDrift << "\n";
   ctx.summaryLines += s.str();
   ctx.times.dynamics += MPI_Wtime() - tStart - (ctx.times.output - outBefore) - (ctx.times.analyses - anaBefore);

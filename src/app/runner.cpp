@@ -330,6 +330,7 @@ PetscErrorCode runScene(int argc, char** argv, int* exitCode) {
     const FeMesh fe = discretize(model);
     dmesh = std::make_unique<DistributedMesh>(distributeMesh(comm, model, fe, makeKernelFactory(model)));
     if (plan.dynamics) DynamicAnalysis::checkScheme(*dmesh);
+    if (plan.dynamics && model.opt.dynamics) DynamicAnalysis::checkStepControl(*dmesh, *model.opt.dynamics);
     fingerprint = sceneFingerprint(model, static_cast<long>(fe.X.size()), static_cast<long>(fe.elements.size()));
   } catch (const SceneError& ex) {
     setupError = std::string("error: ") + ex.what();

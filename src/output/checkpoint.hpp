@@ -57,6 +57,7 @@ enum CheckpointScalar : int {
   kCkLoadRamp,       ///< statics: opt.load_ramp of the run (0 spacar: (k-1)/(n-1), 1 uniform: k/n)
   kCkExternalWork,   ///< dynamics with -dynamics_energy: work of the external loads so far
   kCkExternalPower,  ///< dynamics with -dynamics_energy: their power at the last time step
+  kCkAdaptScale,     ///< dynamics with adaptive steps: displacement scale of the error estimate (largest |U| so far)
   kNumScalars
 };
 

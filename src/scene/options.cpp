@@ -31,11 +31,12 @@ const std::vector<OptionDoc>& sceneOptionDocs() {
       {"customvis", "string (file) or map", "none", "SPACAR Light: custom visualization (Sinew: accepted, not drawn)"},
       {"compliance_nodes", "[node numbers]", "all nodes", "nodes whose compliance matrices are computed"},
       {"dynamics", "{tend, dt, spectral_radius, output_every, mass_proportional_damping, stiffness_proportional_damping, "
-                   "modal_damping, modal_damping_modes}", "none",
+                   "modal_damping, modal_damping_modes, adaptive}", "none",
        "time integration (generalized-alpha) to tend with step dt; spectral_radius in [0,1] defaults to 0.9; "
        "output_every k writes every k-th step (default 1); damping C = alpha M0 + beta K0 (Rayleigh, "
        "mass_/stiffness_proportional_damping) + modal damping zeta (one value for the lowest modal_damping_modes = 10 "
-       "modes of the start state, or a list, one per mode)"},
+       "modes of the start state, or a list, one per mode); adaptive: {control: none|newton|error, dt_min, dt_max, "
+       "target_iterations, tolerance} varies the step (dt = first step, rows at multiples of dt * output_every)"},
       {"nfreq", "integer >= 1", "6", "number of natural frequencies"},
       {"continuation", "{method, ds, max_steps, stop_load_factor, node, direction, stop_displacement, constraint, psi, ds_max}",
        "none",
@@ -144,9 +145,23 @@ void parseDamping(const YAML::Node& v, const std::string& path, DynamicsOptions&
   }
 }
 
+void parseAdaptive(const YAML::Node& v, const std::string& path, AdaptiveStepOptions& a) {
+  checkKeys(v, path, {"control", "dt_min", "dt_max", "target_iterations", "tolerance"});
+  a.control = v["control"].IsDefined() ? getString(v["control"], childPath(path, "control")) : "error";
+  if (a.control != "none" && a.control != "newton" && a.control != "error")
+    fail(childPath(path, "control"), "expected none, newton or error, got '" + a.control + "'");
+  if (v["dt_min"].IsDefined()) a.dt_min = getPositive(v["dt_min"], childPath(path, "dt_min"), kTime);
+  if (v["dt_max"].IsDefined()) a.dt_max = getPositive(v["dt_max"], childPath(path, "dt_max"), kTime);
+  if (a.dt_min > 0 && a.dt_max > 0 && a.dt_min > a.dt_max)
+    fail(childPath(path, "dt_min"), "expected dt_min <= dt_max (" + fmt(a.dt_max) + "), got " + fmt(a.dt_min));
+  if (v["target_iterations"].IsDefined())
+    a.target_iterations = getIntAtLeast(v["target_iterations"], childPath(path, "target_iterations"), 1);
+  if (v["tolerance"].IsDefined()) a.tolerance = getPositive(v["tolerance"], childPath(path, "tolerance"));
+}
+
 void parseDynamics(const YAML::Node& v, const std::string& path, Options& opt) {
   checkKeys(v, path, {"tend", "dt", "spectral_radius", "output_every", "mass_proportional_damping",
-                      "stiffness_proportional_damping", "modal_damping", "modal_damping_modes"});
+                      "stiffness_proportional_damping", "modal_damping", "modal_damping_modes", "adaptive"});
   DynamicsOptions d;
   if (!v["tend"].IsDefined()) fail(childPath(path, "tend"), "missing: dynamics needs tend (end time) > 0");
   d.tend = getPositive(v["tend"], childPath(path, "tend"), kTime);
@@ -158,6 +173,7 @@ void parseDynamics(const YAML::Node& v, const std::string& path, Options& opt) {
   if (v["spectral_radius"].IsDefined()) d.spectral_radius = getInRange(v["spectral_radius"], childPath(path, "spectral_radius"), 0.0, 1.0);
   if (v["output_every"].IsDefined()) d.output_every = getIntAtLeast(v["output_every"], childPath(path, "output_every"), 1);
   parseDamping(v, path, d);
+  if (v["adaptive"].IsDefined()) parseAdaptive(v["adaptive"], childPath(path, "adaptive"), d.adaptive);
   opt.dynamics = d;
 }
 

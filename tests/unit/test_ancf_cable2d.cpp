@@ -613,3 +613,81 @@ TEST(AncfCable2D, RefinedCantileverStaticStepIsFast) {
   const double sec1 = std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count();
   std::printf("  16384 element evaluations with tangent: %.4f s\n", sec1);
 }
+
+// Mixed-stress Newton (Assembler::setMixedStressNewton): the axial forces at the axial integration
+// points are the independent stresses. Their linearization N = EA (eps(q0) + grad eps(q0) . d - eps_ref)
+// agrees with EA (eps(q1) - eps_ref) to second order in the step d; with the stresses of q itself the
+// tangent is the ordinary one, which matches central differences of f; other stresses change only
+// the stress (geometric) part of the tangent, never f. User axial laws have no mixed stresses.
+TEST(AncfCable2D, MixedAxialStressesLinearizeAndKeepTheTangent) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> U(-1.0, 1.0);
+  const double L = 0.5;
+  const std::array<double, 8> qRef = {0.0, 0.0, 0.95, 0.2, 0.48, 0.07, 0.99, -0.1};
+  for (int rule = 0; rule < 3; ++rule) {
+    AncfCable2DParameters p = cableParams(2.0, 1e4, 30.0, rule);
+    p.physicsAxialDamping = 40.0;
+    p.physicsReferenceAxialStrain = 0.01;
+    p.strainIsRelativeToReference = 0.5;
+    const AncfCable2D el(qRef, L, p);
+    const int nAxial = rule == 0 ? 5 : (rule == 1 ? 4 : 3);
+    ASSERT_EQ(el.numMixedStresses(), nAxial);
+    std::array<double, 8> q0, qd, dir;
+    for (int k = 0; k < 8; ++k) {
+      q0[k] = qRef[k] + 0.05 * U(rng);
+      qd[k] = U(rng);
+      dir[k] = U(rng);
+    }
+    // (a) second order: halving the step quarters |N_lin - N(q1)|
+    double errPrev = 0;
+    for (double h : {1e-2, 5e-3, 2.5e-3}) {
+      std::array<double, 8> q1;
+      for (int k = 0; k < 8; ++k) q1[k] = q0[k] + h * dir[k];
+      double exact[5], lin[5], err = 0;
+      el.linearizedStresses(nullptr, q1.data(), exact);
+      el.linearizedStresses(q0.data(), q1.data(), lin);
+      for (int i = 0; i < nAxial; ++i) err = std::max(err, std::abs(lin[i] - exact[i]));
+      if (errPrev > 0) {
+        EXPECT_NEAR(errPrev / err, 4.0, 0.4) << "rule " << rule << " h " << h;
+      }
+      errPrev = err;
+    }
+    // (b) the stresses of q: the ordinary tangent, which central differences confirm
+    double sig[5];
+    el.linearizedStresses(nullptr, q0.data(), sig);
+    KernelInput in{q0.data(), qd.data(), nullptr, 0.3};
+    KernelNeeds needs;
+    needs.tangent = needs.damping = true;
+    KernelOutput plain, mixed;
+    el.evaluate(in, needs, plain);
+    in.sigmaMixed = sig;
+    el.evaluate(in, needs, mixed);
+    std::vector<double> Kfd, Dfd;
+    fdTangents(el, q0.data(), qd.data(), 0.3, Kfd, Dfd);
+    const double eK = relErr(mixed.K, Kfd);
+    // Measured: 1.8e-11 .. 3.7e-11 over the three rules.
+    EXPECT_LT(eK, 1e-6) << "rule " << rule;
+    EXPECT_LT(relErr(mixed.K, plain.K), 1e-13) << "rule " << rule;
+    EXPECT_EQ(mixed.f, plain.f);
+    std::printf("  rule %d, mixed stresses of q: rel err K vs FD %.2e\n", rule, eK);
+    // (c) other stresses: f and the material part stay, the stress part changes
+    double other[5];
+    for (int i = 0; i < nAxial; ++i) other[i] = 2.0 * sig[i] + 100.0;
+    in.sigmaMixed = other;
+    KernelNeeds split = needs;
+    split.splitGeometric = true;
+    KernelOutput po, mo;
+    in.sigmaMixed = nullptr;
+    el.evaluate(in, split, po);
+    in.sigmaMixed = other;
+    el.evaluate(in, split, mo);
+    EXPECT_EQ(mo.f, po.f);
+    EXPECT_EQ(mo.K, po.K);
+    EXPECT_GT(relErr(mo.Kg, po.Kg), 1e-3) << "rule " << rule;
+  }
+  // a user axial law: no mixed stresses (the assembler then never passes sigmaMixed)
+  AncfCable2DParameters pu = cableParams(2.0, 1e4, 30.0);
+  pu.axialForceUserFunction = std::make_shared<const Expression>(
+      Expression::compile("physicsAxialStiffness*axialStrain", "axialForceUserFunction"));
+  EXPECT_EQ(AncfCable2D(qRef, L, pu).numMixedStresses(), 0);
+}

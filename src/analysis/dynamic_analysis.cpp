@@ -82,8 +82,8 @@ DynamicAnalysis::DynamicAnalysis(Assembler& assembler, const DynamicsOptions& op
   // took 303 Newton iterations with 5 retried steps from the extrapolation, 36 from q_n; without the
   // mixed stresses the extrapolation even converged to another root of the step equations (tip
   // -0.318 m at t = 0.3 s against -0.266 m from q_n and from every smaller step: -0.268 m).
-  const bool beams = asm_.mixedStressNewton() && asm_.hasMixedStressKernels(NodeKind::Frame6);
-  predictor_ = pr == "state" || (pr == "auto" && (fine || beams)) ? Predictor::State : Predictor::Acceleration;
+  predictor_ = pr == "state" || (pr == "auto" && (fine || asm_.mixedStressNewton())) ? Predictor::State
+                                                                                     : Predictor::Acceleration;
   coordMax_ = asm_.coordinateScale();
   int mult = 0;
   for (const LocalElement& e : asm_.mesh().elements) mult |= e.firstMultiplier >= 0;

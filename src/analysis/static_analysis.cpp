@@ -60,7 +60,7 @@ StaticAnalysis::StaticAnalysis(Assembler& assembler, int loadsteps)
   // tangent, but not out of the residual), and every roll-up measured converged in fewer
   // iterations without it (docs/beam.md). Default: off for models with beams under the
   // mixed-stress Newton, on otherwise.
-  const bool beamsMixed = mixed && asm_.hasMixedStressKernels(NodeKind::Frame6);
+  const bool beamsMixed = mixed && asm_.hasMixedStressKernels();
   PetscBool predictor = beamsMixed ? PETSC_FALSE : PETSC_TRUE;
   SinewCallThrow(comm, PetscOptionsGetBool(nullptr, nullptr, "-predictor", &predictor, &set));
   predictor_ = predictor;

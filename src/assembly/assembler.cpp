@@ -341,13 +341,9 @@ void Assembler::gatherStates(const LocalElement& el, const double* states, doubl
   }
 }
 
-bool Assembler::hasMixedStressKernels(std::optional<NodeKind> on) const {
+bool Assembler::hasMixedStressKernels() const {
   int any = 0;
-  for (const LocalElement& el : mesh_.elements) {
-    bool kind = !on;
-    for (NodeKind k : el.kernel->nodeKinds()) kind |= on && k == *on;
-    any |= el.kernel->numMixedStresses() > 0 && kind;
-  }
+  for (const LocalElement& el : mesh_.elements) any |= el.kernel->numMixedStresses() > 0;
   MPI_Allreduce(MPI_IN_PLACE, &any, 1, MPI_INT, MPI_LOR, mesh_.comm);
   return any != 0;
 }

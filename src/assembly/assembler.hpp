@@ -98,9 +98,8 @@ class Assembler {
   /// beam. The reference is the state of the previous jacobian(), or the one set below.
   void setMixedStressNewton(bool on) { mixedNewton_ = on; }
   bool mixedStressNewton() const { return mixedNewton_; }
-  /// Some rank has an element kernel with mixed stresses (beams, ANCF cables); with `on`, one with
-  /// a node of that kind (NodeKind::Frame6: beams). Collective.
-  bool hasMixedStressKernels(std::optional<NodeKind> on = std::nullopt) const;
+  /// Some rank has an element kernel with mixed stresses (beams). Collective.
+  bool hasMixedStressKernels() const;
   /// The reference state for the next jacobian(): the node states of U under ls (a converged state).
   PetscErrorCode setMixedReference(Vec U, const LoadState& ls);
 

@@ -235,7 +235,6 @@ AncfCable2D::AncfCable2D(const std::array<double, 8>& qRef, double L, const Ancf
       ua && (ua->uses(UfVar::curvature) || ua->uses(UfVar::curvature_t) || ua->uses(UfVar::curvatureRef));
   bendingNeedsStrain_ =
       ub && (ub->uses(UfVar::axialStrain) || ub->uses(UfVar::axialStrain_t) || ub->uses(UfVar::axialStrainRef));
-  mixedAxial_ = !ua;
 
   // M = rhoA int S^T S dx, Gauss order 7 (exact for the cubic shape functions).
   const Rule rm = gauss(4);
@@ -391,12 +390,8 @@ void AncfCable2D::evaluate(const KernelInput& in, const KernelNeeds& needs, Kern
       }
       for (int a = 0; a < 8; ++a)
         for (int b = 0; b < 8; ++b) Km[8 * a + b] += w * s.g[a] * dN[b];
-      // N d2eps/dq2 = N S'_j S'_k (I - t t^T)/|r'|; mixed-stress Newton: the independent N_i
-      // replaces the elastic part EA (eps - eps_ref) of N here (the damping part stays)
-      const double Ns = in.sigmaMixed && mixedAxial_
-                            ? in.sigmaMixed[ip] + (N.value - p_.physicsAxialStiffness * (s.eps - P.strainRef))
-                            : N.value;
-      const double c = w * Ns / s.n;
+      // N d2eps/dq2 = N S'_j S'_k (I - t t^T)/|r'|
+      const double c = w * N.value / s.n;
       const double P00 = c * (1.0 - s.t[0] * s.t[0]), P01 = -c * s.t[0] * s.t[1], P11 = c * (1.0 - s.t[1] * s.t[1]);
       for (int j = 0; j < 4; ++j)
         for (int k = 0; k < 4; ++k) {
@@ -460,20 +455,6 @@ void AncfCable2D::evaluate(const KernelInput& in, const KernelNeeds& needs, Kern
   if (needs.damping) {
     if (wantD) out.D.assign(D.begin(), D.end());
     else out.D.assign(64, 0.0);
-  }
-}
-
-// sigma_i = EA (eps(q0) + grad eps(q0) . (q1 - q0) - eps_ref): the stress update of the mixed
-// (Hellinger-Reissner) Newton iteration at axial point i (Magisano, Leonetti & Garcea 2017).
-void AncfCable2D::linearizedStresses(const double* q0, const double* q1, double* sigma) const {
-  PointState s;
-  for (int ip = 0; ip < nAxial_; ++ip) {
-    const IntegrationPoint& P = axialIp_[ip];
-    axialState(P.Sx, q0 ? q0 : q1, nullptr, s);
-    double eps = s.eps;
-    if (q0)
-      for (int a = 0; a < 8; ++a) eps += s.g[a] * (q1[a] - q0[a]);
-    sigma[ip] = p_.physicsAxialStiffness * (eps - P.strainRef);
   }
 }
 

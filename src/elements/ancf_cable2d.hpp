@@ -61,16 +61,6 @@ class AncfCable2D : public ElementKernel {
   void mass(const double* q, std::vector<double>& M) const override;
   /// Consistent load of a mass-proportional body force: rhoA int S^T a dx (Exudyn LoadMassProportional).
   void bodyForce(const double* q, const Vec3& a, std::vector<double>& f) const override;
-  /// Newton with mixed stresses (Magisano, Leonetti & Garcea 2017; Assembler::setMixedStressNewton):
-  /// the elastic axial forces N_i at the axial integration points are the independent stresses (none
-  /// with an axialForceUserFunction). A Newton step moves the slope vectors of a turning element
-  /// linearly and stretches it (eps = |r'| - 1 grows quadratically in the rotation): N of that
-  /// iterate is spurious, and so is the stress part N d2eps/dq2 of its tangent.
-  int numMixedStresses() const override { return mixedAxial_ ? nAxial_ : 0; }
-  /// N_i = EA (eps(q0) + d eps/dq(q0) . (q1 - q0) - eps_ref) at the axial points (q0 = nullptr: EA
-  /// (eps(q1) - eps_ref)). With KernelInput::sigmaMixed, evaluate() uses these N_i (plus the damping
-  /// part d_eps eps_t of q) in the stress part of the tangent; f always uses the N of q.
-  void linearizedStresses(const double* q0, const double* q1, double* sigma) const override;
   /// Axial force N (static part, no damping, user function at t = 0) at x = 0, L/2, L.
   void elementForce(const double* q, std::vector<double>& out) const override;
 
@@ -128,7 +118,6 @@ class AncfCable2D : public ElementKernel {
   AncfCable2DParameters p_;
   bool hasDamping_ = false;
   bool axialNeedsCurvature_ = false, bendingNeedsStrain_ = false;
-  bool mixedAxial_ = false;  ///< built-in axial law: mixed axial stresses available
   int nAxial_ = 0, nBending_ = 0;
   std::array<IntegrationPoint, kMaxIp> axialIp_{}, bendingIp_{};
   std::array<double, 64> M_{};

@@ -112,6 +112,10 @@ struct DynamicsOptions {
   double stiffness_proportional_damping = 0;  ///< Rayleigh beta (s): C += beta K0 (tangent of the start state)
   std::vector<double> modal_damping;          ///< zeta: one value for the lowest modal_damping_modes modes, or one per mode
   int modal_damping_modes = 10;               ///< modes a scalar modal_damping applies to
+  /// Sinew: where the time loop starts (docs/dynamics.md "Starting from a loaded state"): false
+  /// (`start: rest`, default) the unloaded or form-found state at rest; true (`start: static`) the
+  /// end of the static load steps (opt.loadsteps, loads at t = 0), at rest
+  bool start_static = false;
 };
 
 /// Sinew: opt.output_steps, the load / time steps at which results are written and the step

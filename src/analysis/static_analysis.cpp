@@ -262,7 +262,7 @@ PetscErrorCode StaticAnalysis::solveIncrement(Vec U, double lambda, bool* ok, in
                                               SNESConvergedReason* why) {
   PetscFunctionBeginUser;
   ls_.loadFactor = lambda;
-  ls_.time = lambda;
+  ls_.time = timeAt(lambda);
   PetscCall(SNESSolve(snes_, nullptr, U));
   PetscCall(SNESGetConvergedReason(snes_, why));
   PetscInt n;
@@ -306,7 +306,8 @@ PetscErrorCode StaticAnalysis::run(Vec U, const StepCallback& onStep, bool* conv
   double lambda = resumed_ ? progress_.lambda : 0.0;
   {
     LoadState start;  // the converged state the run starts from
-    start.loadFactor = start.time = lambda;
+    start.loadFactor = lambda;
+    start.time = timeAt(lambda);
     PetscCall(asm_.setMixedReference(U, start));
   }
   for (int step = (resumed_ ? progress_.step : 0) + 1; step <= lastStep_; ++step) {
@@ -326,7 +327,7 @@ PetscErrorCode StaticAnalysis::run(Vec U, const StepCallback& onStep, bool* conv
       // residual of the load increment at the start state: -snes_rtol is relative to it (not to
       // the residual of the predicted state, which the stiff axial modes can make much larger)
       ls_.loadFactor = next;
-      ls_.time = next;
+      ls_.time = timeAt(next);
       PetscCall(asm_.residual(U, ls_, F_));
       PetscCall(VecNorm(F_, NORM_2, &fnormStart_));
       // predictor: extrapolate the last increment (rotation increments included)
@@ -363,7 +364,8 @@ PetscErrorCode StaticAnalysis::run(Vec U, const StepCallback& onStep, bool* conv
       asm_.setReferenceRotations(Rsave);
       {
         LoadState last = ls_;
-        last.loadFactor = last.time = lambda;
+        last.loadFactor = lambda;
+        last.time = timeAt(lambda);
         PetscCall(asm_.setMixedReference(U, last));
       }
       {  // a failed LU factorization (MUMPS) must not be reused by the retry: refactor from scratch

@@ -73,6 +73,10 @@ class StaticAnalysis {
   /// Nothing acts at load factor 0 (no initial loads or motions): SPACAR Light's step 1 is the start
   /// state, reported without a solve.
   void setStartIsInitialState(bool s) { startIsInitial_ = s; }
+  /// The time the kernels see (ANCF force laws of t): the load factor (default, as before), or
+  /// t = 0 at every load step when a time integration continues from the last one (opt.dynamics
+  /// start: static), so that its start at t = 0 is the equilibrium found here.
+  void setTimeZero(bool z) { timeZero_ = z; }
   /// Load factor of 1-based load step k (SPACAR Light: 0 at step 1, 1 at the last step).
   double stepFactor(int step) const;
 
@@ -99,6 +103,8 @@ class StaticAnalysis {
   Vec dU_ = nullptr;  ///< last converged increment (secant predictor)
   bool uniform_ = false;
   bool startIsInitial_ = false;
+  bool timeZero_ = false;
+  double timeAt(double lambda) const { return timeZero_ ? 0.0 : lambda; }
   SNES snes_ = nullptr;
   Mat J_ = nullptr;
   Mat Jop_ = nullptr;  ///< element-wise tangent operator (MATSHELL) when -tangent_operator elementwise

@@ -11,11 +11,15 @@ namespace sinew {
 Plan makePlan(const Model& model) {
   Plan p;
   p.dynamics = model.opt.dynamics.has_value();
-  p.statics = !p.dynamics;
+  p.preload = p.dynamics && model.opt.dynamics->start_static;
+  p.statics = !p.dynamics || p.preload;
   p.formfinding = model.formfinding.has_value();
-  p.continuation = p.statics && model.opt.continuation.has_value();
   if (model.opt.continuation && p.dynamics)
-    throw SceneError("opt.continuation", "path following is a static analysis; remove opt.dynamics or opt.continuation");
+    throw SceneError(p.preload ? "opt.dynamics.start" : "opt.continuation",
+                     p.preload ? "start: static runs the load steps (opt.loadsteps) before the time loop; path following "
+                                 "(opt.continuation) cannot precede it: remove opt.continuation or give start: rest"
+                               : "path following is a static analysis; remove opt.dynamics or opt.continuation");
+  p.continuation = p.statics && model.opt.continuation.has_value();
   bool beams = false, sections = false;
   for (size_t e = 0; e < model.elements.size(); ++e) {
     const int set = model.elementSet[e];
@@ -136,7 +140,7 @@ std::string Plan::describe(const Model& model) const {
     add("statics, path following (" + model.opt.continuation->method + ", up to " +
         std::to_string(model.opt.continuation->max_steps) + " points)");
   else if (statics) add("statics (" + std::to_string(model.opt.loadsteps) + " load steps)");
-  if (dynamics) add("dynamics");
+  if (dynamics) add(preload ? "dynamics from the end of the load steps" : "dynamics");
   if (frequencies) add("natural frequencies");
   if (buckling) add("buckling");
   if (compliance) add("compliance");

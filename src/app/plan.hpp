@@ -9,6 +9,7 @@ namespace sinew {
 struct Plan {
   bool statics = true;        ///< load-stepped statics (loadsteps)
   bool dynamics = false;      ///< opt.dynamics
+  bool preload = false;       ///< opt.dynamics.start: static: the load steps first, the time loop from their end
   bool continuation = false;  ///< opt.continuation: path following instead of load steps
   bool formfinding = false;   ///< formfinding block
   bool inertia = false;       ///< some element density or nodal mass

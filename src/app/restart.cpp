@@ -254,9 +254,22 @@ void Restart::check(MPI_Comm comm, const std::string& src, const std::string& pa
                                      " form finding, this scene has " + (plan.formfinding ? "a" : "no") + " formfinding block");
   if (ph == CheckpointPhase::Dynamics && !plan.dynamics)
     throw SceneError("-restart", path + " holds a dynamics checkpoint; this scene has no opt.dynamics");
-  if (ph == CheckpointPhase::Statics && (!plan.statics || plan.continuation || plan.dynamics))
+  if (ph == CheckpointPhase::Statics && (!plan.statics || plan.continuation || (plan.dynamics && !plan.preload)))
     throw SceneError("-restart", path + " holds a statics checkpoint; this scene runs " +
-                                     (plan.dynamics ? "dynamics (opt.dynamics)" : "path following (opt.continuation)"));
+                                     (plan.dynamics ? "dynamics (opt.dynamics) from rest" : "path following (opt.continuation)"));
+  {
+    // a run with opt.dynamics start: static has /time rows and, on its load steps, /load_factor;
+    // its statics and dynamics checkpoints continue only such a run (and the reverse)
+    const auto names = reader_->stepDatasets();
+    const bool srcPreload = std::find(names.begin(), names.end(), "time") != names.end() &&
+                            std::find(names.begin(), names.end(), "load_factor") != names.end();
+    if ((ph == CheckpointPhase::Statics || ph == CheckpointPhase::Dynamics) && srcPreload != plan.preload)
+      throw SceneError(plan.dynamics ? "opt.dynamics.start" : "-restart",
+                       "the run that wrote " + path + (srcPreload ? " started its dynamics from the load steps (start: static)"
+                                                                  : " had no load steps before its time loop") +
+                           ", this scene " + (plan.preload ? "has opt.dynamics.start: static" : plan.dynamics ? "starts at rest" : "has no opt.dynamics") +
+                           ": a restart continues the same analyses");
+  }
   if (ph == CheckpointPhase::Statics) {
     const std::string ramp = sc[kCkLoadRamp] != 0.0 ? "uniform" : "spacar";
     if (ramp != model.opt.load_ramp)
@@ -307,14 +320,17 @@ void Restart::restore(RunContext& ctx, const ResultLayout& layout) {
   ResultFile& file = ctx.file;
   // ---- step rows: every dataset with an unlimited step axis, row by row; a row that the earlier
   // run never wrote (all NaN on every rank) stays unwritten
-  const std::string stepName = ctx.plan.dynamics ? "time" : "load_factor";
   std::vector<long> inner;
   const auto names = r.stepDatasets();
+  // the earlier run's step values (its form-finding rows are 0 in either layout; a statics or
+  // dynamics checkpoint comes from a run of this layout, Restart::check); with opt.dynamics start:
+  // static, /load_factor is copied as any other row dataset
+  const std::string stepName = std::find(names.begin(), names.end(), "time") != names.end() ? "time" : "load_factor";
   for (int s = 0; s < rows; ++s) {
     const std::vector<double> v = r.readStepRow(stepName, s, nullptr, &inner);
     file.beginStep(ctx.nextStep++, v.at(0));
     for (const std::string& name : names) {
-      if (name == "load_factor" || name == "time") continue;
+      if (name == stepName || name == layout.stepName) continue;
       const std::vector<long> shape = r.datasetShape(name);
       const TableKind kind = tableKind(name, shape.size());
       // cell/<cells>/<quantity>: the rows of this rank's cells of that kind

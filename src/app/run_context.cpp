@@ -1,5 +1,7 @@
 #include "app/run_context.hpp"
 
+#include <array>
+
 #include "app/interrupt.hpp"
 #include "mesh/collective_error.hpp"
 
@@ -41,6 +43,12 @@ PetscErrorCode RunContext::writeCheckpoint(const std::string& group) {
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+PetscErrorCode RunContext::writeLoadFactorRow(const std::optional<double>& loadFactor) {
+  PetscFunctionBeginUser;
+  if (loadFactor) file.writeStepRow("load_factor", std::array<double, 1>{*loadFactor});
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 bool RunContext::guardedWrite(const std::function<void()>& write) {
   if (!ioError.empty()) return false;
   try {
@@ -71,6 +79,7 @@ PetscErrorCode RunContext::convergedStep(const Step& s, Vec Ustate, const LoadSt
     PetscErrorCode ierr = PETSC_SUCCESS;
     guardedWrite([&] {
       ierr = writeStep(s.value, Ustate, ls);
+      if (!ierr) ierr = writeLoadFactorRow(s.loadFactorRow);
       if (!ierr && afterWrite) ierr = afterWrite();
       if (!ierr) ierr = writeCheckpoint();  // same commit as the step: no flush of its own
       if (!ierr) {
@@ -82,7 +91,7 @@ PetscErrorCode RunContext::convergedStep(const Step& s, Vec Ustate, const LoadSt
     PetscCall(ierr);
     skipped_.any = false;
   } else {
-    skipped_ = {true, s.value, ls};
+    skipped_ = {true, s.value, ls, s.loadFactorRow};
   }
   if (ioError.empty()) progress.step(s.index, s.detail);  // a step whose write failed is not reported as done
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -95,6 +104,7 @@ PetscErrorCode RunContext::writeSkippedLast(Vec Ustate) {
   PetscErrorCode ierr = PETSC_SUCCESS;
   guardedWrite([&] {
     ierr = writeStep(skipped_.value, Ustate, skipped_.ls);
+    if (!ierr) ierr = writeLoadFactorRow(skipped_.loadFactorRow);
     if (!ierr) ierr = writeCheckpoint();
     if (!ierr) file.commit();
   });

@@ -3,6 +3,7 @@
 #pragma once
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -65,6 +66,9 @@ struct RunContext {
     double value = 0;         ///< load factor or time (row of /load_factor or /time)
     std::string detail;       ///< middle of the progress line
     bool selectable = true;   ///< false: always written (form-finding steps)
+    /// A load step of a dynamics run that starts from the static load steps (opt.dynamics start:
+    /// static): its load factor, written as the row of /load_factor (NaN on the other rows)
+    std::optional<double> loadFactorRow = std::nullopt;
   };
   /// Called by every step loop after a converged step: agrees on a pending interrupt (one
   /// allreduce), writes the step when opt.output_steps selects it (always the last one, and the
@@ -90,7 +94,9 @@ struct RunContext {
     bool any = false;
     double value = 0;
     LoadState ls;
+    std::optional<double> loadFactorRow;
   } skipped_;
+  PetscErrorCode writeLoadFactorRow(const std::optional<double>& loadFactor);
 };
 
 /// Per-step analyses the plan asks for (frequencies, buckling, compliance, state-space).

@@ -517,13 +517,16 @@ PetscErrorCode runScene(int argc, char** argv, int* exitCode) {
       if (!ctx.stop) PetscCall(checkLoadedModelAfterFormFinding(ctx, check, &modelError));
     }
     const bool go = ctx.converged && !ctx.stop;  // not after an interrupted form finding
-    if (go && plan.dynamics) {
+    // opt.dynamics start: static runs the load steps first (a restart from a dynamics checkpoint
+    // continues the time loop), then the dynamics from their end (after this if-chain)
+    const bool resumeDynamics = restart && restart->phase() == CheckpointPhase::Dynamics;
+    if (go && plan.dynamics && !plan.preload) {
       PhaseScope phase("dynamics");
       PetscCall(runDynamics(ctx));
     } else if (go && plan.continuation) {
       PhaseScope phase("path following");
       PetscCall(runContinuation(ctx));
-    } else if (go && plan.statics) {
+    } else if (go && plan.statics && !resumeDynamics) {
       PhaseScope phase("statics");
       const double tStatics = MPI_Wtime();
       const double outBefore = ctx.times.output, anaBefore = ctx.times.analyses;
@@ -536,6 +539,7 @@ PetscErrorCode runScene(int argc, char** argv, int* exitCode) {
       statics.setStopFlag(&ctx.stop);
       statics.setUniformRamp(model.opt.load_ramp == "uniform");
       statics.setStartIsInitialState(!initiallyLoaded(model, *dmesh));
+      statics.setTimeZero(plan.preload);  // the time loop starts at t = 0 from the last load step
       if (resumeStatics) PetscCall(restart->resumeStatics(ctx, statics));
       ctx.checkpointState = [&](CheckpointData& d) -> PetscErrorCode {
         const StaticsProgress& p = statics.progress();
@@ -555,11 +559,16 @@ PetscErrorCode runScene(int argc, char** argv, int* exitCode) {
       auto onStep = [&](const StepReport& rep, Vec Ustep) -> PetscErrorCode {
         LoadState ls;
         ls.loadFactor = rep.loadFactor;
-        ls.time = rep.loadFactor;
+        ls.time = plan.preload ? 0.0 : rep.loadFactor;
         char detail[160];
         std::snprintf(detail, sizeof detail, "load factor %.4g  Newton %d  increments %d  residual %.3e", rep.loadFactor,
                       rep.newtonIterations, rep.increments, rep.residualNorm);
-        return ctx.convergedStep({rep.step, rep.step == model.opt.loadsteps, rep.loadFactor, detail}, Ustep, ls);
+        RunContext::Step st{rep.step, rep.step == model.opt.loadsteps, rep.loadFactor, detail};
+        if (plan.preload) {  // a row of /time (0: before the time loop) with its load factor in /load_factor
+          st.value = 0.0;
+          st.loadFactorRow = rep.loadFactor;
+        }
+        return ctx.convergedStep(st, Ustep, ls);
       };
       bool ok = false;
       PetscCall(statics.run(ctx.U, onStep, &ok));
@@ -590,6 +599,10 @@ PetscErrorCode runScene(int argc, char** argv, int* exitCode) {
       ctx.times.statics = MPI_Wtime() - tStatics - (ctx.times.output - outBefore) - (ctx.times.analyses - anaBefore);
       ctx.times.staticsIts = 0;
       for (const StepReport& r : ctx.reports) ctx.times.staticsIts += r.newtonIterations;
+    }
+    if (plan.preload && go && ctx.converged && !ctx.stop) {  // from the last load step's equilibrium, at rest
+      PhaseScope phase("dynamics");
+      PetscCall(runDynamics(ctx));
     }
   }
 

@@ -645,6 +645,13 @@ struct ResultFile::Impl {
     d.inputOnly = layout.inputOnly;
     if (hasReference) d.geometryDataset = "/mesh/p0";
     if (auto it = s.steps.find("formfinding/step"); it != s.steps.end()) d.formFindingRows = it->second.written;
+    // a time integration from the end of the load steps (opt.dynamics start: static): the load-step
+    // rows (/load_factor written, /time 0) come before the time rows, numbered as form-finding rows
+    if (auto it = s.steps.find("load_factor"); layout.stepName == "time" && it != s.steps.end()) {
+      const std::vector<char>& w = it->second.written;
+      if (d.formFindingRows.size() < w.size()) d.formFindingRows.resize(w.size(), 0);
+      for (std::size_t i = 0; i < w.size(); ++i) d.formFindingRows[i] = d.formFindingRows[i] || w[i];
+    }
     const std::array<CellKind, 3> kinds = cellKinds();
     for (int k = 0; k < 3; ++k)
       if (cellTotals[k] > 0) {

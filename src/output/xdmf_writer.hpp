@@ -34,7 +34,8 @@ struct XdmfDescription {
   long numMeshNodes = 0;
   std::vector<double> stepValues;     ///< per step written: load factor or time
   std::string stepName = "load_factor";  ///< "load_factor" or "time": field data name of the step value
-  std::vector<char> formFindingRows;  ///< per step: a form-finding row (/formfinding/step written)
+  std::vector<char> formFindingRows;  ///< per step: a row before the load or time steps (/formfinding/step written;
+                                      ///< in a /time file also a load step of opt.dynamics start: static)
   std::string geometryDataset;        ///< "/mesh/p0", [nmesh, 3]; empty: not written yet, no grids
   std::vector<XdmfCellBlock> cells;   ///< kinds with at least one cell
   std::vector<XdmfField> pointFields;

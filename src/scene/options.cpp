@@ -31,12 +31,14 @@ const std::vector<OptionDoc>& sceneOptionDocs() {
       {"customvis", "string (file) or map", "none", "SPACAR Light: custom visualization (Sinew: accepted, not drawn)"},
       {"compliance_nodes", "[node numbers]", "all nodes", "nodes whose compliance matrices are computed"},
       {"dynamics", "{tend, dt, spectral_radius, output_every, mass_proportional_damping, stiffness_proportional_damping, "
-                   "modal_damping, modal_damping_modes, adaptive}", "none",
+                   "modal_damping, modal_damping_modes, adaptive, start}", "none",
        "time integration (generalized-alpha) to tend with step dt; spectral_radius in [0,1] defaults to 0.9; "
        "output_every k writes every k-th step (default 1); damping C = alpha M0 + beta K0 (Rayleigh, "
        "mass_/stiffness_proportional_damping) + modal damping zeta (one value for the lowest modal_damping_modes = 10 "
        "modes of the start state, or a list, one per mode); adaptive: {control: none|newton|error, dt_min, dt_max, "
-       "target_iterations, tolerance} varies the step (dt = first step, rows at multiples of dt * output_every)"},
+       "target_iterations, tolerance} varies the step (dt = first step, rows at multiples of dt * output_every); "
+       "start: rest (default: from the unloaded or form-found state) or static (from the end of the static load "
+       "steps, loads at t = 0)"},
       {"nfreq", "integer >= 1", "6", "number of natural frequencies"},
       {"continuation", "{method, ds, max_steps, stop_load_factor, node, direction, stop_displacement, constraint, psi, ds_max}",
        "none",
@@ -161,7 +163,8 @@ void parseAdaptive(const YAML::Node& v, const std::string& path, AdaptiveStepOpt
 
 void parseDynamics(const YAML::Node& v, const std::string& path, Options& opt) {
   checkKeys(v, path, {"tend", "dt", "spectral_radius", "output_every", "mass_proportional_damping",
-                      "stiffness_proportional_damping", "modal_damping", "modal_damping_modes", "adaptive"});
+                      "stiffness_proportional_damping", "modal_damping", "modal_damping_modes", "adaptive",
+                      "start"});
   DynamicsOptions d;
   if (!v["tend"].IsDefined()) fail(childPath(path, "tend"), "missing: dynamics needs tend (end time) > 0");
   d.tend = getPositive(v["tend"], childPath(path, "tend"), kTime);
@@ -174,6 +177,7 @@ void parseDynamics(const YAML::Node& v, const std::string& path, Options& opt) {
   if (v["output_every"].IsDefined()) d.output_every = getIntAtLeast(v["output_every"], childPath(path, "output_every"), 1);
   parseDamping(v, path, d);
   if (v["adaptive"].IsDefined()) parseAdaptive(v["adaptive"], childPath(path, "adaptive"), d.adaptive);
+  if (v["start"].IsDefined()) d.start_static = getChoice(v["start"], childPath(path, "start"), {"rest", "static"}) == "static";
   opt.dynamics = d;
 }
 
@@ -308,6 +312,9 @@ void parseOptions(const YAML::Node& opt, SceneContext& ctx) {
     else if (k == "nbuck") o.nbuck = getIntAtLeast(v, p, 1);
     else if (k == "output_steps") o.output_steps = parseOutputSteps(v, p);
   }
+  if (opt["loadsteps"].IsDefined() && o.dynamics && !o.dynamics->start_static)
+    m.warnings.push_back("opt.loadsteps is not used: opt.dynamics starts at rest from the unloaded (or form-found) state; "
+                         "give opt.dynamics.start: static to run the load steps first and start the time loop from their end");
 }
 
 void parseFormfinding(const YAML::Node& ff, SceneContext& ctx) {

@@ -5,6 +5,7 @@
 #include <array>
 
 #include "assembly/assembler.hpp"
+#include "sinew/rotation.hpp"
 
 namespace sinew {
 
@@ -113,6 +114,17 @@ void Assembler::addInertia(const double* v, const double* a, Target target, doub
     const bool presc = !free && target == Target::Full && pr && n.kind == NodeKind::Frame6 &&
                        n.mominertia != std::array<double, 6>{};
     if (!free && !presc) continue;
+    if (free && momentum_.h > 0) {  // midpoint rule: the change of the spin momentum (J_s w)_{n+1} - (J_s w)_n over h
+      const auto& I = n.mominertia;
+      const Mat3 J0{I[0], I[1], I[2], I[1], I[3], I[4], I[2], I[4], I[5]};
+      const Mat3 R0 = Rref_[i];
+      const Mat3 R1 = expSO3(Vec3{momentum_.u1[n.dof[3]], momentum_.u1[n.dof[4]], momentum_.u1[n.dof[5]]}) * R0;
+      const Vec3 w0{momentum_.w0[n.dof[3]], momentum_.w0[n.dof[4]], momentum_.w0[n.dof[5]]};
+      const Vec3 w1{momentum_.w1[n.dof[3]], momentum_.w1[n.dof[4]], momentum_.w1[n.dof[5]]};
+      const Vec3 m = (1.0 / momentum_.h) * (R1 * (J0 * (transpose(R1) * w1)) - R0 * (J0 * (transpose(R0) * w0)));
+      for (int k = 0; k < 3; ++k) out[map[3 + k]] += m[k];
+      continue;
+    }
     const Mat3 J = spatialInertia(i);
     Vec3 w, wd;
     for (int k = 0; k < 3; ++k) {
@@ -122,6 +134,24 @@ void Assembler::addInertia(const double* v, const double* a, Target target, doub
     const Vec3 m = J * wd + cross(w, J * w);
     for (int k = 0; k < 3; ++k) out[map[3 + k]] += m[k];
   }
+}
+
+PetscErrorCode Assembler::rotateSpins(Vec U, Vec W) const {
+  PetscFunctionBeginUser;
+  if (!mesh_.anyRotations) PetscFunctionReturn(PETSC_SUCCESS);
+  const PetscScalar* u;
+  PetscScalar* w;
+  PetscCall(VecGetArrayRead(U, &u));
+  PetscCall(VecGetArray(W, &w));
+  for (int i = 0; i < mesh_.numOwnedNodes; ++i) {
+    const LocalNode& n = mesh_.nodes[i];
+    if (n.kind != NodeKind::Frame6 || n.rotationPrescribed) continue;
+    const Vec3 wr = expSO3(Vec3{u[n.dof[3]], u[n.dof[4]], u[n.dof[5]]}) * Vec3{w[n.dof[3]], w[n.dof[4]], w[n.dof[5]]};
+    for (int k = 0; k < 3; ++k) w[n.dof[3 + k]] = wr[k];
+  }
+  PetscCall(VecRestoreArray(W, &w));
+  PetscCall(VecRestoreArrayRead(U, &u));
+  PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 PetscErrorCode Assembler::dynamicResidual(Vec U, Vec V, Vec A, const LoadState& ls, Vec F) {

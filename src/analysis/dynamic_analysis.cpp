@@ -18,6 +18,15 @@ bool DynamicAnalysis::checkScheme(const DistributedMesh& mesh) {
   if (sch == "tsalpha2" && mesh.anyRotations)
     throw SceneError("-dynamics_scheme", "tsalpha2 integrates the unknowns as a vector space; beam rotations need the "
                                          "Lie-group form of the default scheme (arnold_bruls)");
+  if (sch == "midpoint") {
+    int mult = 0;
+    for (const LocalElement& e : mesh.elements) mult |= e.firstMultiplier >= 0;
+    MPI_Allreduce(MPI_IN_PLACE, &mult, 1, MPI_INT, MPI_LOR, mesh.comm);
+    if (mult)
+      throw SceneError("-dynamics_scheme", "midpoint evaluates the forces at the mid configuration, where the constraints of "
+                                           "rigid elements and rigid beam modes would hold instead of at the step's end; "
+                                           "use arnold_bruls for scenes with rigid modes (or make them flexible)");
+  }
   return sch == "tsalpha2";
 }
 
@@ -92,10 +101,6 @@ DynamicAnalysis::DynamicAnalysis(Assembler& assembler, const DynamicsOptions& op
   int mult = 0;
   for (const LocalElement& e : asm_.mesh().elements) mult |= e.firstMultiplier >= 0;
   MPI_Allreduce(MPI_IN_PLACE, &mult, 1, MPI_INT, MPI_LOR, comm);
-  if (mult && midpoint_)
-    throw SceneError("-dynamics_scheme", "midpoint evaluates the forces at the mid configuration, where the constraints of "
-                                         "rigid elements and rigid beam modes would hold instead of at the step's end; "
-                                         "use arnold_bruls for scenes with rigid modes (or make them flexible)");
   if (mult) {
     SinewCallThrow(comm, VecDuplicate(F_, &keep_));
     SinewCallThrow(comm, VecSet(keep_, 1.0));

@@ -57,7 +57,8 @@ class DynamicAnalysis {
   /// U, V and the accelerations Qdd at time t.
   using StepCallback = std::function<PetscErrorCode(int step, double t, Vec U, Vec V, Vec Qdd)>;
   /// Checks -dynamics_scheme against the model (SceneError; called at setup, where scene errors exit 2):
-  /// tsalpha2 (a vector space) cannot integrate rotation unknowns. True when tsalpha2 is chosen.
+  /// tsalpha2 (a vector space) cannot integrate rotation unknowns, midpoint not rigid-mode multipliers.
+  /// True when tsalpha2 is chosen.
   static bool checkScheme(const DistributedMesh& mesh);
   /// Integrates from U (in: initial state, at rest; out: state at the last converged time).
   PetscErrorCode run(Vec U, const StepCallback& onStep, bool* converged);

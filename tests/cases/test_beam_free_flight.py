@@ -69,4 +69,8 @@ ab, _ = load("free_flight_alpha", [])
 aH, ap, aE, _ = drifts(ab)
 print(f"  generalized alpha rho = 1: H drift {aH:.2e}, p - impulse {ap:.2e}, T + S drift {aE:.2e}")
 st.check(aH > 1e-3, "free flight: generalized alpha drifts H (the check above is sensitive to the scheme)")
+# rigid modes (torsion rigid here) are refused with midpoint: their constraints would hold at mid-step
+rigid = dict(scene, eprops=[dict(scene["eprops"][0], flex=[1, 3, 4, 5, 6])])
+_, out = st.run("free_flight_rigid", bt.yaml_text(rigid), args=args + ["-dynamics_scheme", "midpoint"], expect_exit=2)
+st.check("error: -dynamics_scheme: midpoint" in out, "free flight: midpoint refuses rigid modes (exit 2, naming the flag)")
 st.done()

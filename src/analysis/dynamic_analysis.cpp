@@ -222,11 +222,20 @@ PetscErrorCode DynamicAnalysis::formJacobian(SNES snes, Vec U, Mat, Mat P, void*
     }
   }
   if (self->midpoint_) {
-    // d/dq_{n+1} of the midpoint residual: (K + (2/h) C + (4/h^2) M) / 2 at the mid state
+    // d/dq_{n+1} of the midpoint residual: (K + (2/h) C + (4/h^2) M) / 2 at the mid state, the rotary
+    // inertia's block exact (rotaryMomentumStep; the elements' rotation columns are those of the mid state)
     PetscCall(self->rates(U));
     LoadState lsm = self->ls_;
     lsm.time -= 0.5 * h;
-    PetscCall(self->asm_.dynamicJacobian(self->Um_, self->Vm_, lsm, 2.0 / h, 4.0 / (h * h), P));
+    const PetscScalar *u, *w0;
+    PetscCall(VecGetArrayRead(U, &u));
+    PetscCall(VecGetArrayRead(self->Vn_, &w0));
+    self->asm_.setRotaryMomentum({u, w0, h});
+    const PetscErrorCode ierr = self->asm_.dynamicJacobian(self->Um_, self->Vm_, lsm, 2.0 / h, 4.0 / (h * h), P);
+    self->asm_.setRotaryMomentum({});
+    PetscCall(VecRestoreArrayRead(self->Vn_, &w0));
+    PetscCall(VecRestoreArrayRead(U, &u));
+    PetscCall(ierr);
     PetscCall(self->damping_.addJacobian(2.0 / h, P));
     PetscCall(MatScale(P, 0.5));
   } else {
@@ -540,14 +549,12 @@ PetscErrorCode DynamicAnalysis::midpointResidual(Vec U, Vec F) {
   PetscFunctionBeginUser;
   LoadState lsm = ls_;
   lsm.time -= 0.5 * h_;
-  const PetscScalar *u, *w0, *w1;
+  const PetscScalar *u, *w0;
   PetscCall(VecGetArrayRead(U, &u));
   PetscCall(VecGetArrayRead(Vn_, &w0));
-  PetscCall(VecGetArrayRead(V1_, &w1));
-  asm_.setRotaryMomentum({u, w0, w1, h_});
+  asm_.setRotaryMomentum({u, w0, h_});
   const PetscErrorCode ierr = asm_.dynamicResidual(Um_, Vm_, A1_, lsm, F);
   asm_.setRotaryMomentum({});
-  PetscCall(VecRestoreArrayRead(V1_, &w1));
   PetscCall(VecRestoreArrayRead(Vn_, &w0));
   PetscCall(VecRestoreArrayRead(U, &u));
   PetscCall(ierr);

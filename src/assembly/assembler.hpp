@@ -89,9 +89,10 @@ class Assembler {
   PetscErrorCode rotateSpins(Vec U, Vec W) const;
   /// Midpoint rule (DynamicAnalysis): while set (h > 0), the rotary inertia of free nodes in
   /// dynamicResidual is the momentum change ((J_s w)_{n+1} - (J_s w)_n) / h, R_n = the reference
-  /// rotations, R_{n+1} = exp(theta(u1)) R_n; u1, w0, w1: owned arrays of U_{n+1}, V_n, V_{n+1}.
+  /// rotations, R_{n+1} = exp(theta(u1)) R_n (elements/rotary_momentum.hpp), and dynamicJacobian's
+  /// rotary block twice its exact derivative; u1, w0: owned arrays of U_{n+1} and V_n.
   struct RotaryMomentum {
-    const double *u1 = nullptr, *w0 = nullptr, *w1 = nullptr;
+    const double *u1 = nullptr, *w0 = nullptr;
     double h = 0;
   };
   void setRotaryMomentum(const RotaryMomentum& m) { momentum_ = m; }

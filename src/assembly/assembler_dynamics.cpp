@@ -5,6 +5,7 @@
 #include <array>
 
 #include "assembly/assembler.hpp"
+#include "elements/rotary_momentum.hpp"
 #include "sinew/rotation.hpp"
 
 namespace sinew {
@@ -117,11 +118,9 @@ void Assembler::addInertia(const double* v, const double* a, Target target, doub
     if (free && momentum_.h > 0) {  // midpoint rule: the change of the spin momentum (J_s w)_{n+1} - (J_s w)_n over h
       const auto& I = n.mominertia;
       const Mat3 J0{I[0], I[1], I[2], I[1], I[3], I[4], I[2], I[4], I[5]};
-      const Mat3 R0 = Rref_[i];
-      const Mat3 R1 = expSO3(Vec3{momentum_.u1[n.dof[3]], momentum_.u1[n.dof[4]], momentum_.u1[n.dof[5]]}) * R0;
+      const Vec3 theta{momentum_.u1[n.dof[3]], momentum_.u1[n.dof[4]], momentum_.u1[n.dof[5]]};
       const Vec3 w0{momentum_.w0[n.dof[3]], momentum_.w0[n.dof[4]], momentum_.w0[n.dof[5]]};
-      const Vec3 w1{momentum_.w1[n.dof[3]], momentum_.w1[n.dof[4]], momentum_.w1[n.dof[5]]};
-      const Vec3 m = (1.0 / momentum_.h) * (R1 * (J0 * (transpose(R1) * w1)) - R0 * (J0 * (transpose(R0) * w0)));
+      const Vec3 m = rotaryMomentumStep(J0, Rref_[i], theta, w0, momentum_.h).r;
       for (int k = 0; k < 3; ++k) out[map[3 + k]] += m[k];
       continue;
     }
@@ -253,6 +252,14 @@ PetscErrorCode Assembler::dynamicJacobian(Vec U, Vec V, const LoadState& ls, dou
     const Mat3 G = skew(w) * Js - skew(Jw);  // d(w x J w)/dw
     std::array<double, 9> B;
     for (int k = 0; k < 9; ++k) B[k] = shiftA * Js[k] + shiftV * G[k];
+    if (momentum_.h > 0) {  // midpoint rule: the exact derivative of its momentum change (times 2: the caller halves J)
+      const auto& I = n.mominertia;
+      const Mat3 J0{I[0], I[1], I[2], I[1], I[3], I[4], I[2], I[4], I[5]};
+      const Vec3 theta{momentum_.u1[n.dof[3]], momentum_.u1[n.dof[4]], momentum_.u1[n.dof[5]]};
+      const Vec3 w0{momentum_.w0[n.dof[3]], momentum_.w0[n.dof[4]], momentum_.w0[n.dof[5]]};
+      const Mat3 dr = rotaryMomentumStep(J0, Rref_[i], theta, w0, momentum_.h).dr;
+      for (int k = 0; k < 9; ++k) B[k] = 2.0 * dr[k];
+    }
     const PetscInt rows[3] = {n.dof[3], n.dof[4], n.dof[5]};
     PetscCall(MatSetValuesLocal(J, 3, rows, 3, rows, B.data(), ADD_VALUES));
   }

@@ -79,6 +79,10 @@ class ElementKernel {
   virtual void mass(const double* q, std::vector<double>& M) const;
   /// Equivalent nodal load [numDofs] of the body force density rho * a (gravity). Only when hasInertia().
   virtual void bodyForce(const double* q, const Vec3& a, std::vector<double>& f) const;
+  /// Lumped inertia of the nodes instead of a mass matrix (then hasInertia() is false): per node 7
+  /// values, the mass on its translations and its rotary inertia (J00 J01 J02 J11 J12 J22, reference
+  /// axes, as nodal mominertia); false when the kernel has none.
+  virtual bool lumpedInertia(double* /*mJ*/) const { return false; }
   /// Largest Von Mises stress in the element at state q (0 when the element has no stress measure).
   virtual double vonMisesMax(const double* /*q*/, const double* /*lambda*/) const { return 0.0; }
   /// Mixed-stress Newton (Magisano, Leonetti & Garcea 2017, "MIP"): number of generalized stresses

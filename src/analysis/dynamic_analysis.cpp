@@ -15,11 +15,20 @@ bool DynamicAnalysis::checkScheme(const DistributedMesh& mesh) {
   PetscBool set = PETSC_FALSE;
   SinewCallThrow(mesh.comm, PetscOptionsGetString(nullptr, nullptr, "-dynamics_scheme", scheme, sizeof(scheme), &set));
   const std::string sch = scheme;
-  if (sch != "tsalpha2" && sch != "arnold_bruls")
-    throw SceneError("-dynamics_scheme", "expected arnold_bruls or tsalpha2, got " + sch);
+  if (sch != "tsalpha2" && sch != "arnold_bruls" && sch != "midpoint")
+    throw SceneError("-dynamics_scheme", "expected arnold_bruls, midpoint or tsalpha2, got " + sch);
   if (sch == "tsalpha2" && mesh.anyRotations)
     throw SceneError("-dynamics_scheme", "tsalpha2 integrates the unknowns as a vector space; beam rotations need the "
                                          "Lie-group form of the default scheme (arnold_bruls)");
+  if (sch == "midpoint") {
+    int mult = 0;
+    for (const LocalElement& e : mesh.elements) mult |= e.firstMultiplier >= 0;
+    MPI_Allreduce(MPI_IN_PLACE, &mult, 1, MPI_INT, MPI_LOR, mesh.comm);
+    if (mult)
+      throw SceneError("-dynamics_scheme", "midpoint evaluates the forces at the mid configuration, where the constraints of "
+                                           "rigid elements and rigid beam modes would hold instead of at the step's end; "
+                                           "use arnold_bruls for scenes with rigid modes (or make them flexible)");
+  }
   return sch == "tsalpha2";
 }
 
@@ -53,6 +62,11 @@ DynamicAnalysis::StepControlSettings DynamicAnalysis::readStepControl(MPI_Comm c
   }
   if (r.control != StepControl::None && tsalpha2)
     throw SceneError("-dynamics_adapt", "adaptive steps are Sinew's Arnold-Brüls loop; -dynamics_scheme tsalpha2 takes a fixed dt");
+  char scheme[64] = "arnold_bruls";
+  SinewCallThrow(comm, PetscOptionsGetString(nullptr, nullptr, "-dynamics_scheme", scheme, sizeof(scheme), &set));
+  if (r.control != StepControl::None && std::string(scheme) == "midpoint")
+    throw SceneError("-dynamics_adapt", "adaptive steps are Sinew's Arnold-Brüls loop (its error estimate and step "
+                                        "restart); -dynamics_scheme midpoint takes a fixed dt");
   return r;
 }
 
@@ -75,6 +89,10 @@ DynamicAnalysis::DynamicAnalysis(Assembler& assembler, const DynamicsOptions& op
   SinewCallThrow(comm, asm_.createVector(&F_));
   for (Vec* v : {&Un_, &Vn_, &An_, &Qn_, &V1_, &A1_, &Q1_, &Cu_}) SinewCallThrow(comm, VecDuplicate(F_, v));
   useTS_ = checkScheme(asm_.mesh());
+  char scheme[64] = "arnold_bruls";
+  SinewCallThrow(comm, PetscOptionsGetString(nullptr, nullptr, "-dynamics_scheme", scheme, sizeof(scheme), nullptr));
+  midpoint_ = std::string(scheme) == "midpoint";
+  if (midpoint_) for (Vec* v : {&Um_, &Vm_}) SinewCallThrow(comm, VecDuplicate(F_, v));
   PetscBool set = PETSC_FALSE;
   PetscInt cuts = maxCuts_;
   SinewCallThrow(comm, PetscOptionsGetInt(nullptr, nullptr, "-max_cuts", &cuts, &set));
@@ -147,7 +165,7 @@ DynamicAnalysis::DynamicAnalysis(Assembler& assembler, const DynamicsOptions& op
 DynamicAnalysis::~DynamicAnalysis() {
   SNESDestroy(&snes_);
   MatDestroy(&J_);
-  for (Vec* v : {&F_, &Un_, &Vn_, &An_, &Qn_, &V1_, &A1_, &Q1_, &Cu_, &keep_}) VecDestroy(v);
+  for (Vec* v : {&F_, &Un_, &Vn_, &An_, &Qn_, &V1_, &A1_, &Q1_, &Cu_, &keep_, &Um_, &Vm_}) VecDestroy(v);
 }
 
 // ---------------------------------------------------------------- Arnold-Brüls, own step loop
@@ -180,6 +198,22 @@ PetscErrorCode DynamicAnalysis::useDynamicsSolver(KSP ksp) {
 
 PetscErrorCode DynamicAnalysis::rates(Vec U) {
   PetscFunctionBeginUser;
+  if (midpoint_) {
+    // qd_{n+1} = 2 (q_{n+1} - q_n) / h - qd_n; spins (Simo & Wong 1991, spatial form):
+    // w_{n+1} = 2 theta / h - exp(theta) w_n, theta = log(R_{n+1} R_n^T) (q_n = 0 there)
+    PetscCall(VecCopy(Vn_, Cu_));
+    PetscCall(asm_.rotateSpins(U, Cu_));
+    PetscCall(VecWAXPY(V1_, -1.0, Un_, U));
+    PetscCall(VecAXPBY(V1_, -1.0, 2.0 / h_, Cu_));
+    // (qd_{n+1} - qd_n) / h: the inertia of the translations (and output accelerations)
+    PetscCall(VecWAXPY(A1_, -1.0, Vn_, V1_));
+    PetscCall(VecScale(A1_, 1.0 / h_));
+    PetscCall(VecCopy(A1_, Q1_));
+    // mid configuration and velocity: q_n + (q_{n+1} - q_n) / 2 (rotations exp(theta / 2) R_n)
+    PetscCall(VecAXPBYPCZ(Um_, 0.5, 0.5, 0.0, Un_, U));
+    PetscCall(VecAXPBYPCZ(Vm_, 0.5, 0.5, 0.0, Vn_, V1_));
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
   const double h = h_, bh2 = beta_ * h * h;
   // a_{n+1} = (q_{n+1} - Cu) / (beta h^2)
   PetscCall(VecWAXPY(A1_, -1.0, Cu_, U));
@@ -198,6 +232,7 @@ PetscErrorCode DynamicAnalysis::formFunction(SNES, Vec U, Vec F, void* ctx) {
   PetscFunctionBeginUser;
   auto* self = static_cast<DynamicAnalysis*>(ctx);
   PetscCall(self->rates(U));
+  if (self->midpoint_) PetscFunctionReturn(self->midpointResidual(U, F));
   PetscCall(self->asm_.dynamicResidual(U, self->V1_, self->Q1_, self->ls_, F));
   PetscCall(self->damping_.addForce(self->V1_, F));
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -236,12 +271,31 @@ PetscErrorCode DynamicAnalysis::formJacobian(SNES snes, Vec U, Mat, Mat P, void*
       PetscFunctionReturn(PETSC_SUCCESS);
     }
   }
+  if (self->midpoint_) {
+    // d/dq_{n+1} of the midpoint residual: (K + (2/h) C + (4/h^2) M) / 2 at the mid state, the rotary
+    // inertia's block exact (rotaryMomentumStep; the elements' rotation columns are those of the mid state)
+    PetscCall(self->rates(U));
+    LoadState lsm = self->ls_;
+    lsm.time -= 0.5 * h;
+    const PetscScalar *u, *w0;
+    PetscCall(VecGetArrayRead(U, &u));
+    PetscCall(VecGetArrayRead(self->Vn_, &w0));
+    self->asm_.setRotaryMomentum({u, w0, h});
+    const PetscErrorCode ierr = self->asm_.dynamicJacobian(self->Um_, self->Vm_, lsm, 2.0 / h, 4.0 / (h * h), P);
+    self->asm_.setRotaryMomentum({});
+    PetscCall(VecRestoreArrayRead(self->Vn_, &w0));
+    PetscCall(VecRestoreArrayRead(U, &u));
+    PetscCall(ierr);
+    PetscCall(self->damping_.addJacobian(2.0 / h, P));
+    PetscCall(MatScale(P, 0.5));
+  } else {
   // dqd/dq = gamma/(beta h), dqdd/dq = (1 - alpha_m)/((1 - alpha_f) beta h^2)
   const double shiftV = self->gamma_ / (self->beta_ * h);
   const double shiftA = (1.0 - self->alphaM_) / ((1.0 - self->alphaF_) * self->beta_ * h * h);
   PetscCall(self->rates(U));
   PetscCall(self->asm_.dynamicJacobian(U, self->V1_, self->ls_, shiftV, shiftA, P));
   PetscCall(self->damping_.addJacobian(shiftV, P));
+  }
   ++self->report_.jacobians;
   self->jacobianValid_ = true;
   self->jacobianH_ = h;
@@ -289,6 +343,11 @@ PetscErrorCode DynamicAnalysis::convergenceTest(SNES snes, PetscInt it, PetscRea
   // residual starts at its round-off floor and cannot drop by 1e-3; Newton's update is round-off too
   if (*reason == SNES_CONVERGED_ITERATING && it > 0 && fnorm <= floor && snorm <= 1e3 * DBL_EPSILON * self->coordMax_)
     *reason = SNES_CONVERGED_SNORM_RELATIVE;
+  // midpoint: momentum is exact only for a solved step (the residual is the momentum balance's
+  // error times 1/h; the floor estimate above is loose: 8 eps ||J|| max|X|), so a step ends when
+  // Newton's update is at round-off of the coordinates
+  if (self->midpoint_ && *reason > 0 && !(it > 0 && snorm <= kMidpointUpdateRtol * std::max(xnorm, self->coordMax_)))
+    *reason = SNES_CONVERGED_ITERATING;
   if (it > 0) self->snormPrev_ = snorm;
   self->fnormPrevIt_ = fnorm;
   if (!std::isfinite(fnorm)) *reason = SNES_DIVERGED_FNORM_NAN;
@@ -385,6 +444,7 @@ PetscErrorCode DynamicAnalysis::step(double t1, bool* ok, int* its, double* fnor
   // guarded: start Newton at q_n (an extrapolation by the accelerations of a step load on a fine
   // mesh lands far outside Newton's reach: stiff axial waves)
   if (restPredictor_ || predictor_ == Predictor::State) PetscCall(VecCopy(Un_, U));
+  else if (midpoint_) PetscCall(VecWAXPY(U, h, Vn_, Un_));
   else PetscCall(VecWAXPY(U, h * h * beta_, An_, Cu_));
   PetscCall(SNESSolve(snes_, nullptr, U));
   PetscCall(SNESGetConvergedReason(snes_, why));
@@ -665,6 +725,28 @@ PetscErrorCode DynamicAnalysis::runArnoldBruls(Vec U, const StepCallback& onStep
     if (stop_ && *stop_) break;
   }
   PetscCall(VecCopy(Un_, U));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+// Implicit midpoint rule: (p_{n+1} - p_n) / h + f_int(q_{n+1/2}, qd_{n+1/2}) = f_ext(t_{n+1/2}), with the
+// momenta p = m qd of nodal masses (M qd for constant element masses) and J_s w of rotary inertia,
+// the forces at the mid configuration q_n + (q_{n+1} - q_n) / 2 (rotations exp(theta / 2) R_n).
+// Internal forces of any configuration have zero resultant force and moment, so p and
+// H = sum x x p + J_s w change only by the external impulse: exactly, for a converged step.
+PetscErrorCode DynamicAnalysis::midpointResidual(Vec U, Vec F) {
+  PetscFunctionBeginUser;
+  LoadState lsm = ls_;
+  lsm.time -= 0.5 * h_;
+  const PetscScalar *u, *w0;
+  PetscCall(VecGetArrayRead(U, &u));
+  PetscCall(VecGetArrayRead(Vn_, &w0));
+  asm_.setRotaryMomentum({u, w0, h_});
+  const PetscErrorCode ierr = asm_.dynamicResidual(Um_, Vm_, A1_, lsm, F);
+  asm_.setRotaryMomentum({});
+  PetscCall(VecRestoreArrayRead(Vn_, &w0));
+  PetscCall(VecRestoreArrayRead(U, &u));
+  PetscCall(ierr);
+  PetscCall(damping_.addForce(Vm_, F));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -8,6 +8,8 @@
 // beta = (gamma + 1/2)^2 / 4 (rho = spectral radius at infinity), a_0 = qdd_0 from M qdd_0 =
 // f_ext(0) - f_int(q_0, qd_0, 0). Each step is one SNES solve for q_{n+1} (options without
 // prefix: -snes_*, -ksp_*, -pc_*); a failed step is retried with halved steps (-max_cuts).
+// -dynamics_scheme midpoint: the implicit midpoint rule, spins by Simo & Wong (1991), which keeps
+// linear and angular momentum exactly (midpointResidual).
 // PETSc's TSALPHA2 is the Chung-Hulbert variant (equilibrium at t_{n+1-alpha_f}); it is
 // available with -dynamics_scheme tsalpha2 (docs/ancf_cable2d.md compares both).
 // Beams (docs/dynamics.md): Frame6 rotation unknowns are spatial increments from R_n, absorbed into
@@ -67,7 +69,8 @@ class DynamicAnalysis {
   /// The last accepted step size (adaptive runs: /dynamics/dt).
   double lastStep() const { return lastH_; }
   /// Checks -dynamics_scheme against the model (SceneError; called at setup, where scene errors exit 2):
-  /// tsalpha2 (a vector space) cannot integrate rotation unknowns. True when tsalpha2 is chosen.
+  /// tsalpha2 (a vector space) cannot integrate rotation unknowns, midpoint not rigid-mode multipliers.
+  /// True when tsalpha2 is chosen.
   static bool checkScheme(const DistributedMesh& mesh);
   /// Checks opt.dynamics.adaptive with its flags (-dynamics_adapt, -dynamics_dt_min/max, ...): SceneError
   /// (exit 2) for dt_min > dt_max or adaptive steps with tsalpha2. Called at setup, after checkScheme.
@@ -93,6 +96,7 @@ class DynamicAnalysis {
   /// True for -dynamics_scheme tsalpha2 (PETSc TS; it cannot be resumed from a checkpoint).
   bool usesPetscTS() const { return useTS_; }
   const std::string& failureMessage() const { return failure_; }
+  bool midpoint() const { return midpoint_; }
   double alphaM() const { return alphaM_; }
   double alphaF() const { return alphaF_; }
 
@@ -108,6 +112,8 @@ class DynamicAnalysis {
   PetscErrorCode initialAccelerations(Vec U, Vec V, Vec Qdd, bool* ok);
   /// a_{n+1}, qd_{n+1}, qdd_{n+1} of the iterate U (step size h_).
   PetscErrorCode rates(Vec U);
+  /// -dynamics_scheme midpoint: residual of the implicit midpoint rule at the iterate U (after rates(U)).
+  PetscErrorCode midpointResidual(Vec U, Vec F);
   /// Solves the step to t1 (size h_); with commit, a converged step becomes the new step start.
   PetscErrorCode step(double t1, bool* ok, int* its, double* fnorm, SNESConvergedReason* why, bool commit = true);
   /// Makes the converged iterate U (rates computed) the step start q_n, qd_n, a_n, qdd_n.
@@ -146,7 +152,10 @@ class DynamicAnalysis {
   double theta_ = 0;                          ///< contraction |dU_k| / |dU_k-1| of the last two updates
   double fnormPrevIt_ = 0;                    ///< residual norm of the previous iteration (update test)
   static constexpr double kUpdateRtol = 1e-6;  ///< update test: estimated error <= this * |U|
+  static constexpr double kMidpointUpdateRtol = 1e-14;  ///< midpoint: a step ends at an update <= this * |U|
   bool useTS_ = false;
+  bool midpoint_ = false;                 ///< -dynamics_scheme midpoint (momentum-conserving; docs/dynamics.md)
+  Vec Um_ = nullptr, Vm_ = nullptr;       ///< midpoint: mid state and velocity of the iterate
   // Modified Newton (as Exudyn's): the factored Jacobian is kept across iterations and time steps
   // while Newton contracts by at least kContractivity: measured on the residual with the
   // acceleration predictor; with the state predictor on the residual at the first iteration and on

@@ -71,7 +71,7 @@ const std::vector<Flag>& sinewFlags() {
         {"compliance_method", oneOf({"selinv", "sparse", "dense"}), &compliance, "selinv", "how the compliance blocks of the inverse tangent are computed"},
         {"compliance_batch", integerAtLeast(1), &compliance, "96", "unit-load columns per solve (sparse, dense)"},
         {"compl_mat_mumps_icntl_27", anyInteger(), &compliance, "2048", "(MUMPS) right-hand-side columns per block of the compliance solve"},
-        {"dynamics_scheme", oneOf({"arnold_bruls", "tsalpha2"}), &dynamics, "arnold_bruls", "Exudyn's generalized-alpha loop or PETSc TS alpha2"},
+        {"dynamics_scheme", oneOf({"arnold_bruls", "tsalpha2", "midpoint"}), &dynamics, "arnold_bruls", "Exudyn's generalized-alpha loop, PETSc TS alpha2, or the implicit midpoint rule (Lie group; linear and angular momentum exact, no numerical damping)"},
         {"dynamics_modified_newton", oneOf({"auto", "true", "false"}), &dynamics, "auto", "keep the factored Jacobian across Newton iterations and time steps while each iteration halves the residual (false: a new Jacobian at every iteration; auto: true from 200 unknowns)"},
         {"mat_mumps_icntl_14", anyInteger(), &dynamics, "100 when dynamics factors with MUMPS, else MUMPS' own", "(MUMPS) percentage of extra workspace for pivoting; dynamics reserves 100 so wild Newton iterates do not fail the factorization (INFOG(1) = -9)"},
         {"dynamics_predictor", oneOf({"auto", "acceleration", "state"}), &dynamics, "auto", "Newton's start of a time step: q_n + h qd_n + h^2/2 a_n (acceleration) or q_n (state; the extrapolation of a fine mesh's unresolved stiff modes lands far off); auto: state from 200 unknowns and for beams"},
@@ -81,6 +81,7 @@ const std::vector<Flag>& sinewFlags() {
         {"dynamics_dt_max", realIn(0, 1e300, true, false), &dynamics, "opt.dynamics.adaptive.dt_max (dt * output_every)", "adaptive steps: largest step"},
         {"dynamics_adapt_its", integerAtLeast(1), &dynamics, "opt.dynamics.adaptive.target_iterations (4)", "adaptive steps (newton): Newton iterations per step aimed at"},
         {"dynamics_adapt_tol", realIn(0, 1e300, true, false), &dynamics, "opt.dynamics.adaptive.tolerance (1e-4)", "adaptive steps (error): local error estimate / largest displacement accepted per step"},
+        {"beam_mass", oneOf({"consistent", "lumped"}), &dynamics, "consistent", "beam inertia: the consistent mass in the current element frame, or lumped on the nodes (rhoA l/2 and the section's rotary inertia with its exact gyroscopic moment: momentum-exact with -dynamics_scheme midpoint)"},
         {"dynamics_energy", boolean(), &dynamics, "false", "write /energy/{kinetic,strain,external_work,total} and /momentum/{linear,angular} per output step (beams, ANCF)"},
         {"ff_mat_mumps_icntl_7", integerIn(0, 7), &formfinding, "3", "(MUMPS) fill-reducing ordering of the form-finding factorization (3: SCOTCH)"},
     };

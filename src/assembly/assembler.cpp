@@ -64,6 +64,7 @@ Assembler::Assembler(DistributedMesh& mesh, const std::optional<Vec3>& gravity) 
   T_.assign(nl, identity3());
   hasTheta_.assign(nl, 0);
   setAccel_ = accelerationTable();
+  SinewCallThrow(mesh_.comm, addLumpedInertia());
   int inertia = 0;
   for (const LocalElement& e : mesh_.elements) inertia |= e.kernel->hasInertia();
   for (int i = 0; i < mesh_.numOwnedNodes; ++i) {
@@ -116,6 +117,66 @@ PetscErrorCode Assembler::createFullVector(Vec* v) const {
   std::vector<PetscInt> ghosts(mesh_.ghostFull.begin(), mesh_.ghostFull.end());
   PetscCall(VecCreateGhost(mesh_.comm, mesh_.numOwnedFull, static_cast<PetscInt>(mesh_.numGlobalFull),
                            static_cast<PetscInt>(ghosts.size()), ghosts.data(), v));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+// Kernels with lumped inertia (-beam_mass lumped) add their nodal masses and rotary inertias to the
+// nodes' mass and mominertia, summed over the ranks onto owned and ghost nodes (two all-node-DOF
+// vectors carry the 7 values per node), once per mesh.
+PetscErrorCode Assembler::addLumpedInertia() {
+  PetscFunctionBeginUser;
+  int any = 0;
+  double mJ[7 * 4];
+  for (const LocalElement& el : mesh_.elements) any |= el.kernel->lumpedInertia(mJ);
+  MPI_Allreduce(MPI_IN_PLACE, &any, 1, MPI_INT, MPI_LOR, mesh_.comm);
+  if (!any || mesh_.lumpedInertiaAdded) PetscFunctionReturn(PETSC_SUCCESS);
+  Vec a, b, al, bl;
+  PetscCall(createFullVector(&a));
+  PetscCall(VecDuplicate(a, &b));
+  PetscScalar *fa, *fb;
+  PetscCall(VecGhostGetLocalForm(a, &al));
+  PetscCall(VecGhostGetLocalForm(b, &bl));
+  PetscCall(VecSet(al, 0.0));
+  PetscCall(VecSet(bl, 0.0));
+  PetscCall(VecGetArray(al, &fa));
+  PetscCall(VecGetArray(bl, &fb));
+  for (const LocalElement& el : mesh_.elements) {
+    if (!el.kernel->lumpedInertia(mJ)) continue;
+    for (int i = 0; i < el.numNodes; ++i) {
+      const LocalNode& n = mesh_.nodes[el.node[i]];
+      if (n.kind != NodeKind::Frame6) continue;
+      for (int k = 0; k < 6; ++k) fa[n.fullDof[k]] += mJ[7 * i + k];
+      fb[n.fullDof[0]] += mJ[7 * i + 6];
+    }
+  }
+  PetscCall(VecRestoreArray(al, &fa));
+  PetscCall(VecRestoreArray(bl, &fb));
+  PetscCall(VecGhostRestoreLocalForm(a, &al));
+  PetscCall(VecGhostRestoreLocalForm(b, &bl));
+  const PetscScalar *ra, *rb;
+  for (Vec v : {a, b}) {
+    PetscCall(VecGhostUpdateBegin(v, ADD_VALUES, SCATTER_REVERSE));
+    PetscCall(VecGhostUpdateEnd(v, ADD_VALUES, SCATTER_REVERSE));
+    PetscCall(VecGhostUpdateBegin(v, INSERT_VALUES, SCATTER_FORWARD));
+    PetscCall(VecGhostUpdateEnd(v, INSERT_VALUES, SCATTER_FORWARD));
+  }
+  PetscCall(VecGhostGetLocalForm(a, &al));
+  PetscCall(VecGhostGetLocalForm(b, &bl));
+  PetscCall(VecGetArrayRead(al, &ra));
+  PetscCall(VecGetArrayRead(bl, &rb));
+  for (LocalNode& n : mesh_.nodes) {
+    if (n.kind != NodeKind::Frame6) continue;
+    n.mass += ra[n.fullDof[0]];
+    for (int k = 0; k < 5; ++k) n.mominertia[k] += ra[n.fullDof[1 + k]];
+    n.mominertia[5] += rb[n.fullDof[0]];
+  }
+  PetscCall(VecRestoreArrayRead(bl, &rb));
+  PetscCall(VecRestoreArrayRead(al, &ra));
+  PetscCall(VecGhostRestoreLocalForm(b, &bl));
+  PetscCall(VecGhostRestoreLocalForm(a, &al));
+  PetscCall(VecDestroy(&a));
+  PetscCall(VecDestroy(&b));
+  mesh_.lumpedInertiaAdded = true;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

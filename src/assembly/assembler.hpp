@@ -86,6 +86,17 @@ class Assembler {
   PetscErrorCode updateStates(Vec U, const LoadState& ls);
   /// Moves rotation increments into the reference rotations: R_ref = exp(theta) R_ref, theta = 0.
   PetscErrorCode absorbRotations(Vec U);
+  /// W <- exp(theta) W on the spins of the free Frame6 nodes (theta from U; owned entries).
+  PetscErrorCode rotateSpins(Vec U, Vec W) const;
+  /// Midpoint rule (DynamicAnalysis): while set (h > 0), the rotary inertia of free nodes in
+  /// dynamicResidual is the momentum change ((J_s w)_{n+1} - (J_s w)_n) / h, R_n = the reference
+  /// rotations, R_{n+1} = exp(theta(u1)) R_n (elements/rotary_momentum.hpp), and dynamicJacobian's
+  /// rotary block twice its exact derivative; u1, w0: owned arrays of U_{n+1} and V_n.
+  struct RotaryMomentum {
+    const double *u1 = nullptr, *w0 = nullptr;
+    double h = 0;
+  };
+  void setRotaryMomentum(const RotaryMomentum& m) { momentum_ = m; }
   /// Restores/saves the reference rotations (for retrying a failed load increment).
   std::vector<Mat3> referenceRotations() const { return Rref_; }
   void setReferenceRotations(const std::vector<Mat3>& r) { Rref_ = r; }
@@ -234,6 +245,8 @@ class Assembler {
   /// form of the accelerations of the unknowns, v = of the velocities (gyroscopic moments).
   void addInertia(const double* v, const double* a, Target target, double* out);
 
+  /// -beam_mass lumped: the kernels' lumpedInertia into the nodes' mass and mominertia (once per mesh)
+  PetscErrorCode addLumpedInertia();
   DistributedMesh& mesh_;
   std::optional<Vec3> gravity_;
   bool hasInertia_ = false;
@@ -264,6 +277,7 @@ class Assembler {
   bool elementValueErrorKnown_ = false, anyElementValueError_ = false;  // set by assembleForces' reduction
   bool nonFiniteLawsFatal_ = true;
   std::string nonFiniteLaw_;
+  RotaryMomentum momentum_;
   const double* vLocal_ = nullptr;  // local form of the velocities while a dynamic evaluation runs
   // prescribed motions as functions of time (computeStates with ls.timeFunctions): per local node
   // 6 velocities, then 6 accelerations (dof layout; spatial angular rates for rot)

@@ -5,6 +5,8 @@
 #include <array>
 
 #include "assembly/assembler.hpp"
+#include "elements/rotary_momentum.hpp"
+#include "sinew/rotation.hpp"
 
 namespace sinew {
 
@@ -113,6 +115,15 @@ void Assembler::addInertia(const double* v, const double* a, Target target, doub
     const bool presc = !free && target == Target::Full && pr && n.kind == NodeKind::Frame6 &&
                        n.mominertia != std::array<double, 6>{};
     if (!free && !presc) continue;
+    if (free && momentum_.h > 0) {  // midpoint rule: the change of the spin momentum (J_s w)_{n+1} - (J_s w)_n over h
+      const auto& I = n.mominertia;
+      const Mat3 J0{I[0], I[1], I[2], I[1], I[3], I[4], I[2], I[4], I[5]};
+      const Vec3 theta{momentum_.u1[n.dof[3]], momentum_.u1[n.dof[4]], momentum_.u1[n.dof[5]]};
+      const Vec3 w0{momentum_.w0[n.dof[3]], momentum_.w0[n.dof[4]], momentum_.w0[n.dof[5]]};
+      const Vec3 m = rotaryMomentumStep(J0, Rref_[i], theta, w0, momentum_.h).r;
+      for (int k = 0; k < 3; ++k) out[map[3 + k]] += m[k];
+      continue;
+    }
     const Mat3 J = spatialInertia(i);
     Vec3 w, wd;
     for (int k = 0; k < 3; ++k) {
@@ -122,6 +133,24 @@ void Assembler::addInertia(const double* v, const double* a, Target target, doub
     const Vec3 m = J * wd + cross(w, J * w);
     for (int k = 0; k < 3; ++k) out[map[3 + k]] += m[k];
   }
+}
+
+PetscErrorCode Assembler::rotateSpins(Vec U, Vec W) const {
+  PetscFunctionBeginUser;
+  if (!mesh_.anyRotations) PetscFunctionReturn(PETSC_SUCCESS);
+  const PetscScalar* u;
+  PetscScalar* w;
+  PetscCall(VecGetArrayRead(U, &u));
+  PetscCall(VecGetArray(W, &w));
+  for (int i = 0; i < mesh_.numOwnedNodes; ++i) {
+    const LocalNode& n = mesh_.nodes[i];
+    if (n.kind != NodeKind::Frame6 || n.rotationPrescribed) continue;
+    const Vec3 wr = expSO3(Vec3{u[n.dof[3]], u[n.dof[4]], u[n.dof[5]]}) * Vec3{w[n.dof[3]], w[n.dof[4]], w[n.dof[5]]};
+    for (int k = 0; k < 3; ++k) w[n.dof[3 + k]] = wr[k];
+  }
+  PetscCall(VecRestoreArray(W, &w));
+  PetscCall(VecRestoreArrayRead(U, &u));
+  PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 PetscErrorCode Assembler::dynamicResidual(Vec U, Vec V, Vec A, const LoadState& ls, Vec F) {
@@ -213,6 +242,14 @@ PetscErrorCode Assembler::dynamicJacobian(Vec U, Vec V, const LoadState& ls, dou
     const Mat3 G = skew(w) * Js - skew(Jw);  // d(w x J w)/dw
     std::array<double, 9> B;
     for (int k = 0; k < 9; ++k) B[k] = shiftA * Js[k] + shiftV * G[k];
+    if (momentum_.h > 0) {  // midpoint rule: the exact derivative of its momentum change (times 2: the caller halves J)
+      const auto& I = n.mominertia;
+      const Mat3 J0{I[0], I[1], I[2], I[1], I[3], I[4], I[2], I[4], I[5]};
+      const Vec3 theta{momentum_.u1[n.dof[3]], momentum_.u1[n.dof[4]], momentum_.u1[n.dof[5]]};
+      const Vec3 w0{momentum_.w0[n.dof[3]], momentum_.w0[n.dof[4]], momentum_.w0[n.dof[5]]};
+      const Mat3 dr = rotaryMomentumStep(J0, Rref_[i], theta, w0, momentum_.h).dr;
+      for (int k = 0; k < 9; ++k) B[k] = 2.0 * dr[k];
+    }
     const PetscInt rows[3] = {n.dof[3], n.dof[4], n.dof[5]};
     PetscCall(MatSetValuesLocal(J, 3, rows, 3, rows, B.data(), ADD_VALUES));
   }

@@ -68,7 +68,11 @@ KernelFactory makeKernelFactory(const Model& model) {
       throw SceneError("eprops[" + std::to_string(set) + "]", ex.what());
     }
   }
-  return [scale, ancf](const Model& m, const FeMesh& fe, int e) -> std::unique_ptr<ElementKernel> {
+  // -beam_mass lumped: beams give their inertia to their nodes (docs/dynamics.md, "Free-floating beams")
+  char beamMass[16] = "consistent";
+  PetscOptionsGetString(nullptr, nullptr, "-beam_mass", beamMass, sizeof(beamMass), nullptr);
+  const bool lumped = std::string(beamMass) == "lumped";
+  return [scale, ancf, lumped](const Model& m, const FeMesh& fe, int e) -> std::unique_ptr<ElementKernel> {
     const FeElement& el = fe.elements[e];
     const int set = el.set;
     const Vec3& Xp = fe.X[el.nodes[0]];
@@ -102,7 +106,9 @@ KernelFactory makeKernelFactory(const Model& model) {
         if (auto it = m.opt.rls.find(el.sceneElement); it != m.opt.rls.end())
           for (int mode : it->second) modes[mode - 1] = BeamMode::Released;
         const bool inertia = set >= 0 && m.eprops[set].dens > 0;
-        return std::make_unique<BeamCorotational>(Xp, Xq, orien, sec, modes, inertia, scale);
+        auto beam = std::make_unique<BeamCorotational>(Xp, Xq, orien, sec, modes, inertia, scale);
+        beam->setLumpedMass(lumped);
+        return beam;
       }
       case ElementType::Cable: {
         const ElementSet& s = m.eprops[set];

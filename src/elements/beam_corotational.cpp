@@ -377,6 +377,20 @@ void BeamCorotational::mass(const double* q, std::vector<double>& M) const {
     }
 }
 
+bool BeamCorotational::lumpedInertia(double* mJ) const {
+  if (!lumped_ || !hasInertia_) return false;
+  // half the element on each node: translations rhoA l0 / 2, the section's rotary inertia per length
+  // (torsion rho Ip about ex0, bending rho Iy about ey0 and rho Iz about ez0) times l0 / 2
+  const double h = 0.5 * l0_;
+  const Mat3 J = h * (sec_.rhoIp * outer(ex0_, ex0_) + sec_.rhoIy * outer(ey0_, ey0_) + sec_.rhoIz * outer(ez0_, ez0_));
+  for (int n = 0; n < 2; ++n) {
+    double* v = mJ + 7 * n;
+    v[0] = h * sec_.rhoA;
+    v[1] = J[0], v[2] = J[1], v[3] = J[2], v[4] = J[4], v[5] = J[5], v[6] = J[8];
+  }
+  return true;
+}
+
 void BeamCorotational::bodyForce(const double* /*q*/, const Vec3& a, std::vector<double>& f) const {
   f.assign(kDofs, 0.0);
   const double h = 0.5 * sec_.rhoA * l0_;

@@ -35,7 +35,11 @@ class BeamCorotational : public ElementKernel {
   const char* name() const override { return "beam_corotational"; }
   std::span<const NodeKind> nodeKinds() const override;
   int numConstraints() const override { return nRigid_; }
-  bool hasInertia() const override { return hasInertia_; }
+  bool hasInertia() const override { return hasInertia_ && !lumped_; }
+  /// -beam_mass lumped: no element mass matrix; each node gets rhoA l0 / 2 on its translations and
+  /// l0 / 2 (rho Ip ex0 ex0^T + rho Iy ey0 ey0^T + rho Iz ez0 ez0^T) as its rotary inertia.
+  void setLumpedMass(bool lumped) { lumped_ = lumped; }
+  bool lumpedInertia(double* mJ) const override;
 
   void evaluate(const KernelInput& in, const KernelNeeds& needs, KernelOutput& out) const override;
   /// Consistent mass at the current configuration in the current element frame (chord, averaged triad).
@@ -90,6 +94,7 @@ class BeamCorotational : public ElementKernel {
   BeamSection sec_;
   std::array<BeamMode, 6> modes_{};
   bool hasInertia_ = false;
+  bool lumped_ = false;
   double scale_ = 1.0;
   int nRigid_ = 0;
   std::array<int, 6> rigidIndex_{};  ///< mode index of constraint k

@@ -82,6 +82,7 @@ class DistributedMesh {
   long numSceneNodes = 0, numSceneElements = 0, numFeNodes = 0;
   int dimension = 3;
   bool anyRotations = false, anyAncf = false;
+  bool lumpedInertiaAdded = false;  ///< the kernels' lumpedInertia is in the nodes' mass/mominertia (Assembler)
 
   int numLocalUnknowns() const { return numOwnedUnknowns + static_cast<int>(ghostUnknowns.size()); }
   long localToGlobalUnknown(int i) const {

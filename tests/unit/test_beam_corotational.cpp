@@ -387,6 +387,31 @@ TEST(BeamCorotational, MassMatrix) {
   EXPECT_EQ(fb[5], 0.0);
 }
 
+// -beam_mass lumped: no mass matrix; each node rhoA l0 / 2 and l0 / 2 (rho Ip, rho Iy, rho Iz) about
+// the reference axes (ex0, ey0, ez0)
+TEST(BeamCorotational, LumpedInertia) {
+  const BeamSection s = testSection();
+  BeamCorotational b(kXp, kXq, Vec3{0, 0, 1}, s, {F, F, F, F, F, F}, true, 1.0);
+  double mJ[14];
+  EXPECT_FALSE(b.lumpedInertia(mJ));  // consistent mass by default
+  b.setLumpedMass(true);
+  EXPECT_FALSE(b.hasInertia());
+  ASSERT_TRUE(b.lumpedInertia(mJ));
+  Vec3 ex = kXq - kXp;
+  ex = (1.0 / norm(ex)) * ex;
+  const Vec3 axes[3] = {ex, b.ey0(), b.ez0()};
+  const double rot[3] = {s.rhoIp, s.rhoIy, s.rhoIz};
+  const double h = 0.5 * b.l0();
+  for (int n = 0; n < 2; ++n) {
+    const double* v = mJ + 7 * n;
+    EXPECT_NEAR(v[0], h * s.rhoA, 1e-15 * s.rhoA);
+    const Mat3 J{v[1], v[2], v[3], v[2], v[4], v[5], v[3], v[5], v[6]};
+    for (int a = 0; a < 3; ++a)
+      for (int c = 0; c < 3; ++c)
+        EXPECT_NEAR(dot(axes[a], J * axes[c]), a == c ? h * rot[a] : 0.0, 1e-14 * h * s.rhoIp);
+  }
+}
+
 TEST(BeamCorotational, VonMisesPureBendingAndTorsion) {
   // Rect w x t along x, local y = global y. Bending about y by theta: sigma = E t/2 theta/l0.
   ElementSet set;

@@ -505,6 +505,20 @@ PetscErrorCode DynamicAnalysis::errorRatio(Vec U, double* eta, double* scale) {
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+void DynamicAnalysis::setGuarded(bool on) {
+  restPredictor_ = on;
+  modifiedNewton_ = on ? false : modifiedDefault_;
+}
+
+PetscErrorCode DynamicAnalysis::retryGuarded(double t1, SNESConvergedReason why) {
+  PetscFunctionBeginUser;
+  setGuarded(true);
+  ++report_.guardedSteps;
+  PetscCall(PetscPrintf(asm_.mesh().comm, "  t = %.6g: Newton failed (%s); retrying with full Newton from the last state\n",
+                        t1, SNESConvergedReasons[why]));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 // Adaptive steps: output rows stay at k dt (k a multiple of output_every, and tend); the steps
 // between them are chosen by the controller and land on each row time exactly (the remaining
 // interval is split into equal steps no longer than the proposed h), so rows need no interpolation.
@@ -519,11 +533,7 @@ PetscErrorCode DynamicAnalysis::runAdaptive(const StepCallback& onStep, bool* co
   report_.acceptedSteps = resumed_ ? progress_.successes : 0;
   adaptScale_ = resumed_ ? progress_.scale : 0.0;
   *converged = true;
-  const bool modifiedDefault = modifiedNewton_;
-  auto setGuarded = [&](bool on) {
-    restPredictor_ = on;
-    modifiedNewton_ = on ? false : modifiedDefault;
-  };
+  modifiedDefault_ = modifiedNewton_;
   Vec U;
   PetscCall(SNESGetSolution(snes_, &U));
   for (int k = resumed_ ? progress_.step : 0; k < nsteps;) {
@@ -544,10 +554,7 @@ PetscErrorCode DynamicAnalysis::runAdaptive(const StepCallback& onStep, bool* co
       ++report_.substeps;
       if (!ok) {  // as with a fixed dt: full Newton from q_n at the same step, then halving
         if (!restPredictor_) {
-          setGuarded(true);
-          ++report_.guardedSteps;
-          PetscCall(PetscPrintf(comm, "  t = %.6g: Newton failed (%s); retrying with full Newton from the last state\n", t1,
-                                SNESConvergedReasons[why]));
+          PetscCall(retryGuarded(t1, why));
           continue;
         }
         if (h_ <= dtMin_ * (1 + 1e-9)) {
@@ -663,11 +670,7 @@ PetscErrorCode DynamicAnalysis::runArnoldBruls(Vec U, const StepCallback& onStep
   // Guarded mode: a failed solve is first retried at the same step size with full Newton started
   // at q_n instead of the extrapolated predictor, then by halving (still guarded); the next time
   // step starts plain again (a diverging extrapolation is caught early: DIVERGED_DTOL).
-  const bool modifiedDefault = modifiedNewton_;
-  auto setGuarded = [&](bool on) {
-    restPredictor_ = on;
-    modifiedNewton_ = on ? false : modifiedDefault;
-  };
+  modifiedDefault_ = modifiedNewton_;
   for (int k = (resumed_ ? progress_.step : 0) + 1; k <= nsteps; ++k) {
     const double target = k == nsteps ? tend : k * dt;
     int cuts = 0;
@@ -694,10 +697,7 @@ PetscErrorCode DynamicAnalysis::runArnoldBruls(Vec U, const StepCallback& onStep
       }
       successes = 0;
       if (!restPredictor_) {
-        setGuarded(true);
-        ++report_.guardedSteps;
-        PetscCall(PetscPrintf(comm, "  t = %.6g: Newton failed (%s); retrying with full Newton from the last state\n", t1,
-                              SNESConvergedReasons[why]));
+        PetscCall(retryGuarded(t1, why));
         continue;
       }
       if (++cuts > maxCuts_) {

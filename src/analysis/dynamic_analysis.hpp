@@ -165,6 +165,12 @@ class DynamicAnalysis {
   bool modifiedNewton_ = true;
   bool jacobianValid_ = false;
   bool restPredictor_ = false;  ///< guarded retry: Newton starts at q_n
+  bool modifiedDefault_ = true;  ///< modifiedNewton_ outside guarded retries (set at the start of a time loop)
+  /// Guarded mode: a failed solve is retried at the same step with full Newton started at q_n (on);
+  /// the next step starts plain again (off).
+  void setGuarded(bool on);
+  /// setGuarded(true), counted and reported: "Newton failed at t1 (why); retrying ...".
+  PetscErrorCode retryGuarded(double t1, SNESConvergedReason why);
   /// Newton's start of a time step (-dynamics_predictor): q_n + h qd_n + h^2/2 a_n or q_n
   enum class Predictor { Acceleration, State } predictor_ = Predictor::Acceleration;
   double jacobianH_ = 0;       ///< step size the kept Jacobian was built for

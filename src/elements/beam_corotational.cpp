@@ -335,19 +335,7 @@ void BeamCorotational::linearizedStresses(const double* q0, const double* q1, do
 
 void BeamCorotational::mass(const double* q, std::vector<double>& M) const {
   M.assign(kDofs * kDofs, 0.0);
-  const Vec3 xp = load3(q), xq = load3(q + 12);
-  const Mat3 Rp = load9(q + 3), Rq = load9(q + 15);
-  // Current element frame: chord, averaged rotated y axis projected perpendicular to it.
-  Vec3 ex = xq - xp;
-  ex = (1.0 / norm(ex)) * ex;
-  Vec3 ey = Rp * ey0_ + Rq * ey0_;
-  ey = ey - dot(ey, ex) * ex;
-  if (norm(ey) < 1e-8) {  // ends twisted by ~pi relative to each other: use node p's axis
-    ey = Rp * ez0_;
-    ey = ey - dot(ey, ex) * ex;
-  }
-  ey = (1.0 / norm(ey)) * ey;
-  const Mat3 Lam = fromColumns(ex, ey, cross(ex, ey));
+  const Mat3 Lam = currentFrame(q);  // chord, averaged rotated y axis projected perpendicular to it
   const double l = l0_, m = sec_.rhoA * l;
   double Ml[kDofs * kDofs] = {};
   auto set = [&](int i, int j, double v) { Ml[i * kDofs + j] = v; Ml[j * kDofs + i] = v; };

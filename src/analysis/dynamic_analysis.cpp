@@ -569,7 +569,9 @@ PetscErrorCode DynamicAnalysis::runArnoldBruls(Vec U, const StepCallback& onStep
   PetscCall(VecDestroy(&Usol));
 
   bool ok = false;
-  if (resumed_) PetscCall(setupDamping(Un_));  // from the resumed state (docs/dynamics.md, Damping)
+  // a resumed run: the damping of the start state (setupResumedDamping), or, from a checkpoint
+  // without that state (older files, Restart::resumeDynamics warns), of the resumed state
+  if (resumed_ && !dampingReady_) PetscCall(setupDamping(Un_));
   if (!resumed_) {
     PetscCall(VecCopy(U, Un_));
     PetscCall(asm_.absorbRotations(Un_));  // rotation unknowns are increments from R_n (0 at a step start)
@@ -798,6 +800,13 @@ PetscErrorCode DynamicAnalysis::resume(const DynamicsProgress& p, Vec U, Vec V, 
   PetscCall(VecCopy(V, Vn_));
   PetscCall(VecCopy(A, An_));
   PetscCall(VecCopy(Qdd, Qn_));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode DynamicAnalysis::setupResumedDamping(Vec U0) {
+  PetscFunctionBeginUser;
+  PetscCall(setupDamping(U0));
+  dampingReady_ = true;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

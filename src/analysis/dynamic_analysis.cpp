@@ -147,7 +147,7 @@ DynamicAnalysis::DynamicAnalysis(Assembler& assembler, const DynamicsOptions& op
 DynamicAnalysis::~DynamicAnalysis() {
   SNESDestroy(&snes_);
   MatDestroy(&J_);
-  for (Vec* v : {&F_, &Un_, &Vn_, &An_, &Qn_, &V1_, &A1_, &Q1_, &Cu_, &keep_}) VecDestroy(v);
+  for (Vec* v : {&F_, &Un_, &Vn_, &An_, &Qn_, &V1_, &A1_, &Q1_, &Cu_, &keep_, &U0_}) VecDestroy(v);
 }
 
 // ---------------------------------------------------------------- Arnold-Brüls, own step loop
@@ -785,6 +785,8 @@ PetscErrorCode DynamicAnalysis::setupDamping(Vec U) {
   LoadState ls0 = ls_;
   ls0.time = 0.0;
   PetscCall(damping_.setup(U, ls0, keep_, *file_));
+  if (!U0_) PetscCall(VecDuplicate(U, &U0_));
+  PetscCall(VecCopy(U, U0_));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

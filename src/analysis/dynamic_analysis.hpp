@@ -93,6 +93,9 @@ class DynamicAnalysis {
   PetscErrorCode setupResumedDamping(Vec U0);
   /// Some damping (Rayleigh or modal) is asked for.
   bool damped() const { return damping_.active(); }
+  /// The state the damping was built at (rotations absorbed; the multipliers as they were then,
+  /// before the initial accelerations set lambda0); null before run() or without damping.
+  Vec dampingState() const { return U0_; }
   /// State after the last converged time step (valid inside the step callback).
   const DynamicsProgress& progress() const { return progress_; }
   /// Auxiliary (algorithmic) accelerations a_n of the last converged step.
@@ -146,6 +149,7 @@ class DynamicAnalysis {
   Vec V1_ = nullptr, A1_ = nullptr, Q1_ = nullptr, Cu_ = nullptr;  // iterate rates; Cu = predictor part of q
   /// 1 on coordinates, 0 on Lagrange multipliers (index-3 constraints: no rates); null without multipliers
   Vec keep_ = nullptr;
+  Vec U0_ = nullptr;  ///< dampingState()
   double forceRtol_ = 1e-10;
   int maxCuts_ = 10;
   int growAfter_ = 3;  ///< after a halving, double the sub-step after this many successes (0: never)

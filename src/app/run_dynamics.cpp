@@ -115,8 +115,10 @@ PetscErrorCode runDynamics(RunContext& ctx) {
     stepQdd = Qdd;
     if (k == 0 && dyn.damped() && !dyn.usesPetscTS()) {  // the damping's start state, for a -restart
       PetscErrorCode ierr = PETSC_SUCCESS;
+      stepU = dyn.dampingState();  // U as the damping saw it (multipliers before lambda0)
       ctx.guardedWrite([&] { ierr = ctx.writeCheckpoint(kDynamicsStartGroup); });
       PetscCall(ierr);
+      stepU = U;
     }
     if (sensors) sensors->setRates(V, Qdd);
     ctx.assembler.setReactionRates(V, Qdd);  // dynamic reactions: f_int - f_ext + M qdd

@@ -22,7 +22,11 @@ fail without the stored start state).
 Start rotations other than the identity: the leaf bent first by 1 N at the tip in 4 load steps
 (start: static, tip rotation 0.18 rad), beta damping, stopped after 10 rows on 1 rank, continued
 on 2: measured 5.8e-14 of the peak (modal damping, tried by hand: 9.4e-13, not in the test).
-37 s on the shared machine (load ~8)."""
+Rigid elements (multipliers in U): the crosshinge of test_restart_beam_dynamics with beta = 1e-3 s,
+2 -> 1 ranks: state datasets 7.0e-15 (with the multipliers of U after the initial accelerations
+instead of those the damping saw, 2.3e-6: the start state must be the damping's own).
+45 s on the shared machine (load ~8)."""
+import os
 import shutil
 
 import h5py
@@ -104,4 +108,21 @@ d = tip_diff(bref2, brest)
 print(f"  bent leaf, beta: continued 1 -> 2 ranks, tip history difference {d:.2e} of the peak")
 st.check(d < 1e-12, f"bent leaf: continued run's tip differs by {d:.2e} of the peak")
 compare(bref2, brest, "bent leaf, beta damping 1 -> 2 (stopped at t = 0.1)", other_ranks=bref1)
+
+# rigid elements (Lagrange multipliers in U): the cross-flexure hinge of runs/crosshinge.yaml in
+# motion (as test_restart_beam_dynamics) with beta = 1e-3 s; the stored start state holds the
+# multipliers the damping was built with (before the initial accelerations set lambda0: K0 has
+# lambda terms); stopped after 6 rows on 2 ranks, continued on 1
+with open(os.path.join(os.environ["SINEW_SOURCE_DIR"], "runs", "crosshinge.yaml")) as f:
+    hinge = f.read().split("\nopt:")[0] + """
+opt:
+  calcfreq: false
+  calccompl: false
+  dynamics: {tend: 0.05, dt: 0.0005, spectral_radius: 0.9, output_every: 10, stiffness_proportional_damping: 1e-3}
+"""
+href2, _ = st.run("rsdamp_hinge_ref2", hinge, np_=2)
+href1, _ = st.run("rsdamp_hinge_ref1", hinge, np_=1)
+hpart = stopped("rsdamp_hinge_part2", hinge, 2, 6)
+hrest, _ = restarted("rsdamp_hinge_rest1", hinge, 1, hpart)
+compare(href2, hrest, "crosshinge, beta damping 2 -> 1 (stopped at t = 0.025)", other_ranks=href1)
 st.done()

@@ -165,7 +165,7 @@ DynamicAnalysis::DynamicAnalysis(Assembler& assembler, const DynamicsOptions& op
 DynamicAnalysis::~DynamicAnalysis() {
   SNESDestroy(&snes_);
   MatDestroy(&J_);
-  for (Vec* v : {&F_, &Un_, &Vn_, &An_, &Qn_, &V1_, &A1_, &Q1_, &Cu_, &keep_, &Um_, &Vm_}) VecDestroy(v);
+  for (Vec* v : {&F_, &Un_, &Vn_, &An_, &Qn_, &V1_, &A1_, &Q1_, &Cu_, &keep_, &Um_, &Vm_, &U0_}) VecDestroy(v);
 }
 
 // ---------------------------------------------------------------- Arnold-Brüls, own step loop
@@ -636,7 +636,9 @@ PetscErrorCode DynamicAnalysis::runArnoldBruls(Vec U, const StepCallback& onStep
   PetscCall(VecDestroy(&Usol));
 
   bool ok = false;
-  if (resumed_) PetscCall(setupDamping(Un_));  // from the resumed state (docs/dynamics.md, Damping)
+  // a resumed run: the damping of the start state (setupResumedDamping), or, from a checkpoint
+  // without that state (older files, Restart::resumeDynamics warns), of the resumed state
+  if (resumed_ && !dampingReady_) PetscCall(setupDamping(Un_));
   if (!resumed_) {
     PetscCall(VecCopy(U, Un_));
     PetscCall(asm_.absorbRotations(Un_));  // rotation unknowns are increments from R_n (0 at a step start)
@@ -865,6 +867,8 @@ PetscErrorCode DynamicAnalysis::setupDamping(Vec U) {
   LoadState ls0 = ls_;
   ls0.time = 0.0;
   PetscCall(damping_.setup(U, ls0, keep_, *file_));
+  if (!U0_) PetscCall(VecDuplicate(U, &U0_));
+  PetscCall(VecCopy(U, U0_));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -880,6 +884,13 @@ PetscErrorCode DynamicAnalysis::resume(const DynamicsProgress& p, Vec U, Vec V, 
   PetscCall(VecCopy(V, Vn_));
   PetscCall(VecCopy(A, An_));
   PetscCall(VecCopy(Qdd, Qn_));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode DynamicAnalysis::setupResumedDamping(Vec U0) {
+  PetscFunctionBeginUser;
+  PetscCall(setupDamping(U0));
+  dampingReady_ = true;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -89,6 +89,16 @@ class DynamicAnalysis {
   /// Continues after time step p.step (a checkpoint; Arnold-Brüls scheme only): U, V, the
   /// generalized-alpha auxiliary accelerations A and the accelerations Qdd at p.time (copied).
   PetscErrorCode resume(const DynamicsProgress& p, Vec U, Vec V, Vec A, Vec Qdd);
+  /// A resumed run's damping, built from the start state of the interrupted run: U0 (rotations
+  /// absorbed) with the assembler holding that state's reference rotations and element states
+  /// (Restart::resumeDynamics loads them from /checkpoint_dynamics_start, then restores the resumed
+  /// ones). Without this call a resumed run rebuilds the damping from the resumed state.
+  PetscErrorCode setupResumedDamping(Vec U0);
+  /// Some damping (Rayleigh or modal) is asked for.
+  bool damped() const { return damping_.active(); }
+  /// The state the damping was built at (rotations absorbed; the multipliers as they were then,
+  /// before the initial accelerations set lambda0); null before run() or without damping.
+  Vec dampingState() const { return U0_; }
   /// State after the last converged time step (valid inside the step callback).
   const DynamicsProgress& progress() const { return progress_; }
   /// Auxiliary (algorithmic) accelerations a_n of the last converged step.
@@ -132,6 +142,7 @@ class DynamicAnalysis {
   Assembler& asm_;
   const bool* stop_ = nullptr;
   bool resumed_ = false;
+  bool dampingReady_ = false;  ///< setupResumedDamping was called
   DynamicsProgress progress_;
   DynamicsOptions opts_;
   double alphaM_, alphaF_, gamma_, beta_;
@@ -144,6 +155,7 @@ class DynamicAnalysis {
   Vec V1_ = nullptr, A1_ = nullptr, Q1_ = nullptr, Cu_ = nullptr;  // iterate rates; Cu = predictor part of q
   /// 1 on coordinates, 0 on Lagrange multipliers (index-3 constraints: no rates); null without multipliers
   Vec keep_ = nullptr;
+  Vec U0_ = nullptr;  ///< dampingState()
   double forceRtol_ = 1e-10;
   int maxCuts_ = 10;
   int growAfter_ = 3;  ///< after a halving, double the sub-step after this many successes (0: never)

@@ -429,6 +429,44 @@ PetscErrorCode Restart::resumeContinuation(RunContext& ctx, ContinuationAnalysis
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+PetscErrorCode Restart::resumeDamping(RunContext& ctx, DynamicAnalysis& dyn, Vec V, Vec A, Vec Q) const {
+  PetscFunctionBeginUser;
+  const std::string group = kDynamicsStartGroup;
+  if (!reader_->exists(group + "/scalars")) {
+    PetscCall(PetscPrintf(ctx.comm,
+                          "  warning: %s has no /%s (written before Sinew stored the start state of damped runs): the "
+                          "damping is rebuilt from the resumed state, so the continued run differs from an uninterrupted one "
+                          "(docs/dynamics.md, Damping)\n",
+                          source().c_str(), kDynamicsStartGroup));
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  // the damping of the uninterrupted run: built at its start state (U0 and, for rotation nodes, the
+  // start reference rotations; element states), then the resumed state is put back
+  const CheckpointReader start(ctx.comm, reader_->path(), group);
+  Vec U0;
+  PetscCall(VecDuplicate(ctx.U, &U0));
+  PetscCall(start.loadVector("U", ctx.assembler, U0));
+  PetscCall(start.loadVector("V", ctx.assembler, V));
+  PetscCall(start.loadVector("A", ctx.assembler, A));
+  PetscCall(start.loadVector("Qdd", ctx.assembler, Q));
+  start.loadNodes(ctx.assembler);
+  start.loadKernels(ctx.assembler);
+  PetscCall(dyn.setupResumedDamping(U0));
+  if (ctx.checkpoint) {  // the new file keeps the start state: it can be continued in turn
+    CheckpointData d;
+    d.scalars = start.scalars();
+    d.vectors = {{"U", U0}, {"V", V}, {"A", A}, {"Qdd", Q}};
+    ctx.guardedWrite([&] {
+      ctx.checkpoint->write(ctx.file, d, group);
+      ctx.file.commit();
+    });
+  }
+  PetscCall(VecDestroy(&U0));
+  reader_->loadNodes(ctx.assembler);
+  reader_->loadKernels(ctx.assembler);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode Restart::resumeDynamics(RunContext& ctx, DynamicAnalysis& dyn, double* energy0, double* maxDrift, double* work,
                                       double* power) const {
   PetscFunctionBeginUser;
@@ -447,6 +485,7 @@ PetscErrorCode Restart::resumeDynamics(RunContext& ctx, DynamicAnalysis& dyn, do
   PetscCall(reader_->loadVector("A", ctx.assembler, A));
   PetscCall(reader_->loadVector("Qdd", ctx.assembler, Q));
   PetscCall(dyn.resume(p, ctx.U, V, A, Q));
+  if (dyn.damped()) PetscCall(resumeDamping(ctx, dyn, V, A, Q));
   PetscCall(VecDestroy(&V));
   PetscCall(VecDestroy(&A));
   PetscCall(VecDestroy(&Q));

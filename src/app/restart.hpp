@@ -65,6 +65,10 @@ class Restart {
   /// Dynamics: progress and rates; energy0/maxDrift/external work and power of -dynamics_energy.
   PetscErrorCode resumeDynamics(RunContext& ctx, DynamicAnalysis& dyn, double* energy0, double* maxDrift, double* work,
                                 double* power) const;
+  /// Dynamics with damping: the damping rebuilt at the start state of the interrupted run
+  /// (/checkpoint_dynamics_start; copied into the new file); older files: a warning, the damping
+  /// of the resumed state. V, A, Q: work vectors (overwritten).
+  PetscErrorCode resumeDamping(RunContext& ctx, DynamicAnalysis& dyn, Vec V, Vec A, Vec Q) const;
   /// Path following: its state after the last point, the last increment.
   PetscErrorCode resumeContinuation(RunContext& ctx, ContinuationAnalysis& path) const;
   /// loadsteps of the earlier run's ramp (statics checkpoints).

@@ -110,11 +110,18 @@ PetscErrorCode runDynamics(RunContext& ctx) {
     ls.timeFunctions = true;
     if (energy && energyOk && (k == 0 || !dyn.adaptive())) PetscCall(addWork(k, t, U, V, ls));  // adaptive: onSubstep
     if (k != 0 && !last && k % opts.output_every != 0) PetscFunctionReturn(PETSC_SUCCESS);
-    if (sensors) sensors->setRates(V, Qdd);
-    ctx.assembler.setReactionRates(V, Qdd);  // dynamic reactions: f_int - f_ext + M qdd
     stepU = U;
     stepV = V;
     stepQdd = Qdd;
+    if (k == 0 && dyn.damped() && !dyn.usesPetscTS()) {  // the damping's start state, for a -restart
+      PetscErrorCode ierr = PETSC_SUCCESS;
+      stepU = dyn.dampingState();  // U as the damping saw it (multipliers before lambda0)
+      ctx.guardedWrite([&] { ierr = ctx.writeCheckpoint(kDynamicsStartGroup); });
+      PetscCall(ierr);
+      stepU = U;
+    }
+    if (sensors) sensors->setRates(V, Qdd);
+    ctx.assembler.setReactionRates(V, Qdd);  // dynamic reactions: f_int - f_ext + M qdd
     char detail[64];
     std::snprintf(detail, sizeof detail, "t = %.6g", t);
     PetscCall(ctx.convergedStep({k, last, t, detail}, U, ls, [&]() -> PetscErrorCode {

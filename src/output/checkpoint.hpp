@@ -19,6 +19,8 @@
 // the scene's fingerprint (SceneFingerprint) to refuse a restart with another scene.
 // /checkpoint_formfinding has the same layout: the state at the end of form finding (the found shape
 // before the elastic restart), written once, so that a load analysis with other loads can restart there.
+// /checkpoint_dynamics_start has the same layout too: the state a damped dynamics run started from
+// (time step 0: U with the start rotations R_ref, written once; a -restart rebuilds the damping there).
 // Every dataset has a fixed size and is overwritten in place at every written step: the group
 // costs (3 + 9 + 6 nv) doubles per FE node and 6 nv (+ k) per FE element, nv = vectors of the phase.
 #pragma once
@@ -60,6 +62,9 @@ enum CheckpointScalar : int {
   kCkAdaptScale,     ///< dynamics with adaptive steps: displacement scale of the error estimate (largest |U| so far)
   kNumScalars
 };
+
+/// Group of the start state of a damped dynamics run (opt.dynamics damping, docs/dynamics.md "Damping").
+inline constexpr const char* kDynamicsStartGroup = "checkpoint_dynamics_start";
 
 enum class CheckpointPhase : int { FormFinding = 1, Statics = 2, Dynamics = 3, Continuation = 4 };
 const char* phaseName(CheckpointPhase p);

@@ -26,9 +26,9 @@ Checks:
 - 1 rank vs 2 ranks: tip history identical to 1e-9 of its peak (measured 2.8e-15);
   in this test (2 ranks, against dt = 1.25e-4): fixed dt = 1e-3 2.07e-3, dt = 5e-4 4.95e-4,
   error control 183 steps 5.44e-4, Newton control 135 steps 2.83e-3; 61 s at load average 10;
-- restart: the same scene without damping (a restart rebuilds Rayleigh damping from the resumed
-  state: with beta = 1e-3 the fixed-step run of 0.6 s stopped at t = 0.1 and continued differs by
-  0.43 of the peak, a limitation of damping, docs/dynamics.md) to t = 0.12, tolerance 1e-2:
+- restart: the same scene without damping (written when a restart rebuilt Rayleigh damping from
+  the resumed state, 0.43 of the peak off; fixed since, test_restart_dynamics_damping.py) to
+  t = 0.12, tolerance 1e-2:
   stopped after 4 rows (t = 0.06) on 2 ranks, continued on 1 rank, equals the uninterrupted run to
   1e-9 (measured 8.9e-14; the checkpoint holds the next step h and the error scale);
 - Newton control: fewer than half the steps of the fixed dt = 5e-4 run, error below 1e-2;

@@ -20,15 +20,6 @@ bool DynamicAnalysis::checkScheme(const DistributedMesh& mesh) {
   if (sch == "tsalpha2" && mesh.anyRotations)
     throw SceneError("-dynamics_scheme", "tsalpha2 integrates the unknowns as a vector space; beam rotations need the "
                                          "Lie-group form of the default scheme (arnold_bruls)");
-  if (sch == "midpoint") {
-    int mult = 0;
-    for (const LocalElement& e : mesh.elements) mult |= e.firstMultiplier >= 0;
-    MPI_Allreduce(MPI_IN_PLACE, &mult, 1, MPI_INT, MPI_LOR, mesh.comm);
-    if (mult)
-      throw SceneError("-dynamics_scheme", "midpoint evaluates the forces at the mid configuration, where the constraints of "
-                                           "rigid elements and rigid beam modes would hold instead of at the step's end; "
-                                           "use arnold_bruls for scenes with rigid modes (or make them flexible)");
-  }
   return sch == "tsalpha2";
 }
 
@@ -159,13 +150,19 @@ DynamicAnalysis::DynamicAnalysis(Assembler& assembler, const DynamicsOptions& op
     for (const LocalElement& e : asm_.mesh().elements)
       for (int j = 0; e.firstMultiplier >= 0 && j < e.kernel->numConstraints(); ++j) k[e.firstMultiplier + j] = 0.0;
     SinewCallThrow(comm, VecRestoreArray(keep_, &k));
+    if (midpoint_) {  // the constraint rows of the midpoint rule: notKeep_ = 1 - keep_
+      SinewCallThrow(comm, VecDuplicate(F_, &notKeep_));
+      SinewCallThrow(comm, VecDuplicate(F_, &Fend_));
+      SinewCallThrow(comm, VecSet(notKeep_, 1.0));
+      SinewCallThrow(comm, VecAXPY(notKeep_, -1.0, keep_));
+    }
   }
 }
 
 DynamicAnalysis::~DynamicAnalysis() {
   SNESDestroy(&snes_);
   MatDestroy(&J_);
-  for (Vec* v : {&F_, &Un_, &Vn_, &An_, &Qn_, &V1_, &A1_, &Q1_, &Cu_, &keep_, &Um_, &Vm_, &U0_}) VecDestroy(v);
+  for (Vec* v : {&F_, &Un_, &Vn_, &An_, &Qn_, &V1_, &A1_, &Q1_, &Cu_, &keep_, &Um_, &Vm_, &U0_, &notKeep_, &Fend_}) VecDestroy(v);
 }
 
 // ---------------------------------------------------------------- Arnold-Brüls, own step loop
@@ -212,6 +209,11 @@ PetscErrorCode DynamicAnalysis::rates(Vec U) {
     // mid configuration and velocity: q_n + (q_{n+1} - q_n) / 2 (rotations exp(theta / 2) R_n)
     PetscCall(VecAXPBYPCZ(Um_, 0.5, 0.5, 0.0, Un_, U));
     PetscCall(VecAXPBYPCZ(Vm_, 0.5, 0.5, 0.0, Vn_, V1_));
+    if (notKeep_) {  // the multipliers are those of the mid-step forces themselves (no average)
+      PetscCall(VecPointwiseMult(Um_, keep_, Um_));
+      PetscCall(VecPointwiseMult(Cu_, notKeep_, U));
+      PetscCall(VecAXPY(Um_, 1.0, Cu_));
+    }
     PetscFunctionReturn(PETSC_SUCCESS);
   }
   const double h = h_, bh2 = beta_ * h * h;
@@ -288,6 +290,13 @@ PetscErrorCode DynamicAnalysis::formJacobian(SNES snes, Vec U, Mat, Mat P, void*
     PetscCall(ierr);
     PetscCall(self->damping_.addJacobian(2.0 / h, P));
     PetscCall(MatScale(P, 0.5));
+    if (self->notKeep_) {
+      // constraint rows d g(q_{n+1}) / d q_{n+1} ~ G(q_{n+1/2}) (twice the halved mid rows) and
+      // multiplier columns G^T (lambda is the mid-step multiplier itself): scale both by 2
+      PetscCall(VecWAXPY(self->Fend_, 1.0, self->notKeep_, self->keep_));
+      PetscCall(VecAXPY(self->Fend_, 1.0, self->notKeep_));
+      PetscCall(MatDiagonalScale(P, self->Fend_, self->Fend_));
+    }
   } else {
   // dqd/dq = gamma/(beta h), dqdd/dq = (1 - alpha_m)/((1 - alpha_f) beta h^2)
   const double shiftV = self->gamma_ / (self->beta_ * h);
@@ -749,6 +758,16 @@ PetscErrorCode DynamicAnalysis::midpointResidual(Vec U, Vec F) {
   PetscCall(VecRestoreArrayRead(U, &u));
   PetscCall(ierr);
   PetscCall(damping_.addForce(Vm_, F));
+  if (notKeep_) {
+    // Rigid elements and rigid deformation modes: their constraints g(q_{n+1}) = 0 hold at the step's
+    // end (the rows of the residual at U), while their forces G(q_{n+1/2})^T lambda act at the mid
+    // configuration with the other forces. g is invariant under rigid motions, so those forces have
+    // no resultant moment there either: the momentum balance stays exact.
+    PetscCall(asm_.residual(U, ls_, Fend_));
+    PetscCall(VecPointwiseMult(F, keep_, F));
+    PetscCall(VecPointwiseMult(Fend_, notKeep_, Fend_));
+    PetscCall(VecAXPY(F, 1.0, Fend_));
+  }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -168,6 +168,7 @@ class DynamicAnalysis {
   bool useTS_ = false;
   bool midpoint_ = false;                 ///< -dynamics_scheme midpoint (momentum-conserving; docs/dynamics.md)
   Vec Um_ = nullptr, Vm_ = nullptr;       ///< midpoint: mid state and velocity of the iterate
+  Vec notKeep_ = nullptr, Fend_ = nullptr;  ///< midpoint with multipliers: 1 on their rows; work vector
   // Modified Newton (as Exudyn's): the factored Jacobian is kept across iterations and time steps
   // while Newton contracts by at least kContractivity: measured on the residual with the
   // acceleration predictor; with the state predictor on the residual at the first iteration and on

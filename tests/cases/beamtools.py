@@ -78,3 +78,23 @@ def yaml_text(scene):
     """Scene dict -> YAML text (node numbers as integer keys, numpy values as plain numbers)."""
     import yaml
     return yaml.safe_dump(_plain(scene), default_flow_style=None, sort_keys=False)
+
+
+def leaf_pulse_scene(dynamics, title="leaf, tip force pulse then free vibration"):
+    """The steel leaf (1 m x 20 mm x 2 mm, 4 elements) clamped at node 1 and struck at its tip by
+    40 sin^2(pi t / 0.005) N for 5 ms (test_dynamics_adaptive, test_restart_dynamics_damping);
+    `dynamics` is the body of opt.dynamics (e.g. "tend: 0.3, dt: 1e-3, spectral_radius: 0.6")."""
+    return f"""title: {title}
+nodes: [[0, 0, 0], [1, 0, 0]]
+elements: [[1, 2]]
+nprops:
+  1: {{fix: true}}
+  2: {{force: [0, "40*sin(pi*t/0.005)^2*step(0.005 - t)", 0]}}
+eprops:
+  - {{elems: [1], flex: [1, 2, 3, 4, 5, 6], emod: 210e9, smod: 80e9, dens: 7800, cshape: rect,
+     dim: [0.02, 0.002], orien: [0, 0, 1], nbeams: 4}}
+opt:
+  calccompl: false
+  calcfreq: false
+  dynamics: {{{dynamics}}}
+"""

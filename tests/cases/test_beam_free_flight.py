@@ -96,13 +96,6 @@ st.close(Hb, np.outer(tb, M0), atol=1e-12 * np.linalg.norm(M0 * tb[-1]), what="r
 # ends (g(q_{n+1}) = 0) with their forces at the mid configuration, so the momentum stays exact and the
 # twist stays zero. Twist measure per element (SPACAR's torsion deformation / (l/2)):
 # (R_p ez0) . (R_q ey0) - (R_p ey0) . (R_q ez0), 0 at the start.
-def quat_matrix(q):
-    w, x, y, z = q
-    return np.array([[1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)],
-                     [2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)],
-                     [2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)]])
-
-
 def max_twist(path):
     ex, ey = np.array([0.6, 0.0, 0.8]), np.array([0.0, 1.0, 0.0])
     ez = np.cross(ex, ey)
@@ -110,7 +103,7 @@ def max_twist(path):
         quats = f["node/r_quat"][:]
     worst = 0.0
     for row in quats:
-        R = [quat_matrix(q) for q in row]
+        R = [bt.quat_matrix(q) for q in row]
         for Rp, Rq in zip(R[:-1], R[1:]):
             worst = max(worst, abs((Rp @ ez) @ (Rq @ ey) - (Rp @ ey) @ (Rq @ ez)))
     return worst
@@ -144,8 +137,8 @@ with st.h5(h5e) as f:
 after = te >= tp - 1e-12
 eH = np.abs(He[after] - He[after][0]).max() / np.linalg.norm(He[after][0])
 d0 = pe[0, n + 1] - pe[0, n]
-eOff = max(np.abs(quat_matrix(qe[k, n]).T @ (pe[k, n + 1] - pe[k, n]) - d0).max() for k in range(len(te)))
-eRot = max(np.abs(quat_matrix(qe[k, n]).T @ quat_matrix(qe[k, n + 1]) - np.eye(3)).max() for k in range(len(te)))
+eOff = max(np.abs(bt.quat_matrix(qe[k, n]).T @ (pe[k, n + 1] - pe[k, n]) - d0).max() for k in range(len(te)))
+eRot = max(np.abs(bt.quat_matrix(qe[k, n]).T @ bt.quat_matrix(qe[k, n + 1]) - np.eye(3)).max() for k in range(len(te)))
 print(f"  midpoint, rigid element: H drift {eH:.2e}, offset {eOff:.1e} m, relative rotation {eRot:.1e}, "
       f"motion {np.abs(pe[-1] - pe[0]).max():.2f} m")
 st.check(eH < 1e-11, "free flight, rigid element, midpoint: angular momentum constant to round-off")

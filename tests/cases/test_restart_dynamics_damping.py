@@ -32,25 +32,14 @@ import shutil
 import h5py
 import numpy as np
 
+import beamtools as bt
 import sinewtest as st
 from restartutil import compare, restarted, stopped
 
 
 def scene(damp):
-    return f"""title: leaf, tip force pulse then free vibration, damped
-nodes: [[0, 0, 0], [1, 0, 0]]
-elements: [[1, 2]]
-nprops:
-  1: {{fix: true}}
-  2: {{force: [0, "40*sin(pi*t/0.005)^2*step(0.005 - t)", 0]}}
-eprops:
-  - {{elems: [1], flex: [1, 2, 3, 4, 5, 6], emod: 210e9, smod: 80e9, dens: 7800, cshape: rect,
-     dim: [0.02, 0.002], orien: [0, 0, 1], nbeams: 4}}
-opt:
-  calccompl: false
-  calcfreq: false
-  dynamics: {{tend: 0.3, dt: 1e-3, spectral_radius: 0.6, output_every: 20, {damp}}}
-"""
+    return bt.leaf_pulse_scene(f"tend: 0.3, dt: 1e-3, spectral_radius: 0.6, output_every: 20, {damp}",
+                               title="leaf, tip force pulse then free vibration, damped")
 
 
 def tip_diff(a_path, b_path):

@@ -56,6 +56,18 @@ def rotvec_matrix(v):
     return np.eye(3) + math.sin(th) * K + (1 - math.cos(th)) * K @ K
 
 
+def rotation_vector(Rm):
+    """The rotation vector of a rotation matrix (inverse of rotvec_matrix, angles below pi)."""
+    a = np.arccos(np.clip((np.trace(Rm) - 1) / 2, -1, 1))
+    vv = np.array([Rm[2, 1] - Rm[1, 2], Rm[0, 2] - Rm[2, 0], Rm[1, 0] - Rm[0, 1]])
+    return vv / 2 if a < 1e-12 else a / (2 * np.sin(a)) * vv
+
+
+def max_relative(a, b):
+    """max |a - b| / max |b|."""
+    return np.max(np.abs(a - b)) / np.max(np.abs(b))
+
+
 def quat_matrix(q):
     """Rotation matrix of a unit quaternion [w, x, y, z]."""
     w, x, y, z = q

@@ -36,16 +36,6 @@ scene = {"title": "element sensors in dynamics", "nodes": nodes, "elements": ele
          "eprops": [bt.beam_set(range(1, nel + 1), w, t, dens=7800)],
          "sensors": sensors,
          "opt": {"calccompl": False, "calcfreq": False, "dynamics": {"tend": 0.12, "dt": dt, "spectral_radius": 1.0}}}
-def logm(Rm):
-    a = np.arccos(np.clip((np.trace(Rm) - 1) / 2, -1, 1))
-    vv = np.array([Rm[2, 1] - Rm[1, 2], Rm[0, 2] - Rm[2, 0], Rm[1, 0] - Rm[0, 1]])
-    return vv / 2 if a < 1e-12 else a / (2 * np.sin(a)) * vv
-
-
-def rel(a, b):
-    return np.max(np.abs(a - b)) / np.max(np.abs(b))
-
-
 def identities(dt, name):
     """Runs the scene at step dt; returns (sensor rows, {sensor: (position, rotation) identity errors})."""
     sc = dict(scene, opt=dict(scene["opt"], dynamics=dict(scene["opt"]["dynamics"], dt=dt)))
@@ -56,9 +46,9 @@ def identities(dt, name):
     for k in ("mid1", "e2"):
         P, V, Rv, W = s[f"{k}_Position"], s[f"{k}_Velocity"], s[f"{k}_Rotation"], s[f"{k}_AngularVelocity"]
         n = len(P)
-        e_x = rel(np.diff(P, axis=0), dt / 2 * (V[1:] + V[:-1]))
-        inc = np.array([logm(bt.rotvec_matrix(Rv[j + 1]) @ bt.rotvec_matrix(Rv[j]).T) for j in range(n - 1)])
-        e_r = rel(inc, dt / 2 * (W[1:] + W[:-1]))
+        e_x = bt.max_relative(np.diff(P, axis=0), dt / 2 * (V[1:] + V[:-1]))
+        inc = np.array([bt.rotation_vector(bt.rotvec_matrix(Rv[j + 1]) @ bt.rotvec_matrix(Rv[j]).T) for j in range(n - 1)])
+        e_r = bt.max_relative(inc, dt / 2 * (W[1:] + W[:-1]))
         print(f"  dt = {dt}: {k}: {n} rows, max |v| {np.max(np.abs(V)):.3e} m/s, turns up to "
               f"{np.max(np.linalg.norm(Rv, axis=1)):.3f} rad; position {e_x:.2e}, rotation {e_r:.2e}")
         st.check(np.max(np.abs(V[:, 1])) > 1e-3, f"{k}: the section moves")

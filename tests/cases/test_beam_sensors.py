@@ -47,21 +47,11 @@ def rotm(v):
     return bt.rotvec_matrix(v)
 
 
-def logm(Rm):
-    a = np.arccos(np.clip((np.trace(Rm) - 1) / 2, -1, 1))
-    vv = np.array([Rm[2, 1] - Rm[1, 2], Rm[0, 2] - Rm[2, 0], Rm[1, 0] - Rm[0, 1]])
-    return vv / 2 if a < 1e-12 else a / (2 * np.sin(a)) * vv
-
-
-def rel(a, b):
-    return np.max(np.abs(a - b)) / np.max(np.abs(b))
-
-
-e_x = rel(np.diff(s["Position"], axis=0), dt / 2 * (s["Velocity"][1:] + s["Velocity"][:-1]))
-e_v = rel(np.diff(s["Velocity"], axis=0), dt / 2 * (s["Acceleration"][1:] + s["Acceleration"][:-1]))
-inc = np.array([logm(rotm(s["Rotation"][k + 1]) @ rotm(s["Rotation"][k]).T) for k in range(n - 1)])
-e_r = rel(inc, dt / 2 * (s["AngularVelocity"][1:] + s["AngularVelocity"][:-1]))
-e_w = rel(np.diff(s["AngularVelocity"], axis=0), dt / 2 * (s["AngularAcceleration"][1:] + s["AngularAcceleration"][:-1]))
+e_x = bt.max_relative(np.diff(s["Position"], axis=0), dt / 2 * (s["Velocity"][1:] + s["Velocity"][:-1]))
+e_v = bt.max_relative(np.diff(s["Velocity"], axis=0), dt / 2 * (s["Acceleration"][1:] + s["Acceleration"][:-1]))
+inc = np.array([bt.rotation_vector(rotm(s["Rotation"][k + 1]) @ rotm(s["Rotation"][k]).T) for k in range(n - 1)])
+e_r = bt.max_relative(inc, dt / 2 * (s["AngularVelocity"][1:] + s["AngularVelocity"][:-1]))
+e_w = bt.max_relative(np.diff(s["AngularVelocity"], axis=0), dt / 2 * (s["AngularAcceleration"][1:] + s["AngularAcceleration"][:-1]))
 print(f"  scheme identities: position {e_x:.1e}, velocity {e_v:.1e}, rotation {e_r:.1e}, angular velocity {e_w:.1e}")
 for name, e in (("Velocity", e_x), ("Acceleration", e_v), ("AngularVelocity", e_r), ("AngularAcceleration", e_w)):
     st.check(e < 1e-8, f"sensors: {name} consistent with the scheme (to 1e-8)")

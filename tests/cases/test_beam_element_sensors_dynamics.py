@@ -36,6 +36,8 @@ scene = {"title": "element sensors in dynamics", "nodes": nodes, "elements": ele
          "eprops": [bt.beam_set(range(1, nel + 1), w, t, dens=7800)],
          "sensors": sensors,
          "opt": {"calccompl": False, "calcfreq": False, "dynamics": {"tend": 0.12, "dt": dt, "spectral_radius": 1.0}}}
+
+
 def identities(dt, name):
     """Runs the scene at step dt; returns (sensor rows, {sensor: (position, rotation) identity errors})."""
     sc = dict(scene, opt=dict(scene["opt"], dynamics=dict(scene["opt"]["dynamics"], dt=dt)))

@@ -10,7 +10,7 @@
 
 namespace sinew {
 
-bool DynamicAnalysis::checkScheme(const DistributedMesh& mesh) {
+DynamicAnalysis::Scheme DynamicAnalysis::checkScheme(const DistributedMesh& mesh) {
   char scheme[64] = "arnold_bruls";
   PetscBool set = PETSC_FALSE;
   SinewCallThrow(mesh.comm, PetscOptionsGetString(nullptr, nullptr, "-dynamics_scheme", scheme, sizeof(scheme), &set));
@@ -20,11 +20,11 @@ bool DynamicAnalysis::checkScheme(const DistributedMesh& mesh) {
   if (sch == "tsalpha2" && mesh.anyRotations)
     throw SceneError("-dynamics_scheme", "tsalpha2 integrates the unknowns as a vector space; beam rotations need the "
                                          "Lie-group form of the default scheme (arnold_bruls)");
-  return sch == "tsalpha2";
+  return sch == "tsalpha2" ? Scheme::TSAlpha2 : sch == "midpoint" ? Scheme::Midpoint : Scheme::ArnoldBruls;
 }
 
 DynamicAnalysis::StepControlSettings DynamicAnalysis::readStepControl(MPI_Comm comm, const DynamicsOptions& opts,
-                                                                      bool tsalpha2) {
+                                                                      Scheme scheme) {
   // time-step control: opt.dynamics.adaptive, each field overridden by its flag
   const AdaptiveStepOptions& ad = opts.adaptive;
   PetscBool set = PETSC_FALSE;
@@ -51,11 +51,9 @@ DynamicAnalysis::StepControlSettings DynamicAnalysis::readStepControl(MPI_Comm c
     msg << "the smallest adaptive step " << r.dtMin << " exceeds the largest (dt_max " << r.dtMax << ")";
     throw SceneError("-dynamics_dt_min", msg.str());
   }
-  if (r.control != StepControl::None && tsalpha2)
+  if (r.control != StepControl::None && scheme == Scheme::TSAlpha2)
     throw SceneError("-dynamics_adapt", "adaptive steps are Sinew's Arnold-Brüls loop; -dynamics_scheme tsalpha2 takes a fixed dt");
-  char scheme[64] = "arnold_bruls";
-  SinewCallThrow(comm, PetscOptionsGetString(nullptr, nullptr, "-dynamics_scheme", scheme, sizeof(scheme), &set));
-  if (r.control != StepControl::None && std::string(scheme) == "midpoint")
+  if (r.control != StepControl::None && scheme == Scheme::Midpoint)
     throw SceneError("-dynamics_adapt", "adaptive steps are Sinew's Arnold-Brüls loop (its error estimate and step "
                                         "restart); -dynamics_scheme midpoint takes a fixed dt");
   return r;
@@ -79,10 +77,9 @@ DynamicAnalysis::DynamicAnalysis(Assembler& assembler, const DynamicsOptions& op
   SinewCallThrow(comm, asm_.createMatrix(&J_));
   SinewCallThrow(comm, asm_.createVector(&F_));
   for (Vec* v : {&Un_, &Vn_, &An_, &Qn_, &V1_, &A1_, &Q1_, &Cu_}) SinewCallThrow(comm, VecDuplicate(F_, v));
-  useTS_ = checkScheme(asm_.mesh());
-  char scheme[64] = "arnold_bruls";
-  SinewCallThrow(comm, PetscOptionsGetString(nullptr, nullptr, "-dynamics_scheme", scheme, sizeof(scheme), nullptr));
-  midpoint_ = std::string(scheme) == "midpoint";
+  const Scheme scheme = checkScheme(asm_.mesh());
+  useTS_ = scheme == Scheme::TSAlpha2;
+  midpoint_ = scheme == Scheme::Midpoint;
   if (midpoint_) for (Vec* v : {&Um_, &Vm_}) SinewCallThrow(comm, VecDuplicate(F_, v));
   PetscBool set = PETSC_FALSE;
   PetscInt cuts = maxCuts_;
@@ -92,7 +89,7 @@ DynamicAnalysis::DynamicAnalysis(Assembler& assembler, const DynamicsOptions& op
   SinewCallThrow(comm, PetscOptionsGetInt(nullptr, nullptr, "-dt_grow_after", &grow, &set));
   growAfter_ = static_cast<int>(grow);
   if (growAfter_ < 0) throw SceneError("-dt_grow_after", "expected a count >= 0, got " + std::to_string(growAfter_));
-  const StepControlSettings sc = readStepControl(comm, opts_, useTS_);
+  const StepControlSettings sc = readStepControl(comm, opts_, scheme);
   control_ = sc.control;
   dtMin_ = sc.dtMin;
   dtMax_ = sc.dtMax;
@@ -150,11 +147,14 @@ DynamicAnalysis::DynamicAnalysis(Assembler& assembler, const DynamicsOptions& op
     for (const LocalElement& e : asm_.mesh().elements)
       for (int j = 0; e.firstMultiplier >= 0 && j < e.kernel->numConstraints(); ++j) k[e.firstMultiplier + j] = 0.0;
     SinewCallThrow(comm, VecRestoreArray(keep_, &k));
-    if (midpoint_) {  // the constraint rows of the midpoint rule: notKeep_ = 1 - keep_
+    if (midpoint_) {  // the constraint rows of the midpoint rule: notKeep_ = 1 - keep_, scale 1 + notKeep_
       SinewCallThrow(comm, VecDuplicate(F_, &notKeep_));
       SinewCallThrow(comm, VecDuplicate(F_, &Fend_));
+      SinewCallThrow(comm, VecDuplicate(F_, &constraintScale_));
       SinewCallThrow(comm, VecSet(notKeep_, 1.0));
       SinewCallThrow(comm, VecAXPY(notKeep_, -1.0, keep_));
+      SinewCallThrow(comm, VecWAXPY(constraintScale_, 1.0, notKeep_, keep_));
+      SinewCallThrow(comm, VecAXPY(constraintScale_, 1.0, notKeep_));
     }
   }
 }
@@ -162,7 +162,8 @@ DynamicAnalysis::DynamicAnalysis(Assembler& assembler, const DynamicsOptions& op
 DynamicAnalysis::~DynamicAnalysis() {
   SNESDestroy(&snes_);
   MatDestroy(&J_);
-  for (Vec* v : {&F_, &Un_, &Vn_, &An_, &Qn_, &V1_, &A1_, &Q1_, &Cu_, &keep_, &Um_, &Vm_, &U0_, &notKeep_, &Fend_}) VecDestroy(v);
+  for (Vec* v : {&F_, &Un_, &Vn_, &An_, &Qn_, &V1_, &A1_, &Q1_, &Cu_, &keep_, &Um_, &Vm_, &U0_, &notKeep_, &Fend_, &constraintScale_})
+    VecDestroy(v);
 }
 
 // ---------------------------------------------------------------- Arnold-Brüls, own step loop
@@ -293,9 +294,7 @@ PetscErrorCode DynamicAnalysis::formJacobian(SNES snes, Vec U, Mat, Mat P, void*
     if (self->notKeep_) {
       // constraint rows d g(q_{n+1}) / d q_{n+1} ~ G(q_{n+1/2}) (twice the halved mid rows) and
       // multiplier columns G^T (lambda is the mid-step multiplier itself): scale both by 2
-      PetscCall(VecWAXPY(self->Fend_, 1.0, self->notKeep_, self->keep_));
-      PetscCall(VecAXPY(self->Fend_, 1.0, self->notKeep_));
-      PetscCall(MatDiagonalScale(P, self->Fend_, self->Fend_));
+      PetscCall(MatDiagonalScale(P, self->constraintScale_, self->constraintScale_));
     }
   } else {
   // dqd/dq = gamma/(beta h), dqdd/dq = (1 - alpha_m)/((1 - alpha_f) beta h^2)

@@ -68,12 +68,12 @@ class DynamicAnalysis {
   bool adaptive() const { return control_ != StepControl::None; }
   /// The last accepted step size (adaptive runs: /dynamics/dt).
   double lastStep() const { return lastH_; }
-  /// Checks -dynamics_scheme against the model (SceneError; called at setup, where scene errors exit 2):
-  /// tsalpha2 (a vector space) cannot integrate rotation unknowns, midpoint not rigid-mode multipliers.
-  /// True when tsalpha2 is chosen.
-  static bool checkScheme(const DistributedMesh& mesh);
+  enum class Scheme { ArnoldBruls, Midpoint, TSAlpha2 };
+  /// Reads -dynamics_scheme and checks it against the model (SceneError; called at setup, where scene
+  /// errors exit 2): tsalpha2 (a vector space) cannot integrate rotation unknowns.
+  static Scheme checkScheme(const DistributedMesh& mesh);
   /// Checks opt.dynamics.adaptive with its flags (-dynamics_adapt, -dynamics_dt_min/max, ...): SceneError
-  /// (exit 2) for dt_min > dt_max or adaptive steps with tsalpha2. Called at setup, after checkScheme.
+  /// (exit 2) for dt_min > dt_max or adaptive steps with tsalpha2 or midpoint. Called at setup, after checkScheme.
   static void checkStepControl(const DistributedMesh& mesh, const DynamicsOptions& opts);
   /// Integrates from U (in: initial state, at rest; out: state at the last converged time).
   PetscErrorCode run(Vec U, const StepCallback& onStep, bool* converged);
@@ -168,7 +168,8 @@ class DynamicAnalysis {
   bool useTS_ = false;
   bool midpoint_ = false;                 ///< -dynamics_scheme midpoint (momentum-conserving; docs/dynamics.md)
   Vec Um_ = nullptr, Vm_ = nullptr;       ///< midpoint: mid state and velocity of the iterate
-  Vec notKeep_ = nullptr, Fend_ = nullptr;  ///< midpoint with multipliers: 1 on their rows; work vector
+  /// midpoint with multipliers: 1 on their rows; work vector; 2 on their rows, 1 elsewhere (Jacobian scale)
+  Vec notKeep_ = nullptr, Fend_ = nullptr, constraintScale_ = nullptr;
   // Modified Newton (as Exudyn's): the factored Jacobian is kept across iterations and time steps
   // while Newton contracts by at least kContractivity: measured on the residual with the
   // acceleration predictor; with the state predictor on the residual at the first iteration and on
@@ -197,7 +198,7 @@ class DynamicAnalysis {
     int its = 0;
   };
   /// The scene's opt.dynamics.adaptive overridden by the flags, checked (SceneError).
-  static StepControlSettings readStepControl(MPI_Comm comm, const DynamicsOptions& opts, bool tsalpha2);
+  static StepControlSettings readStepControl(MPI_Comm comm, const DynamicsOptions& opts, Scheme scheme);
   double dtMin_ = 0, dtMax_ = 0, adaptTol_ = 1e-4;
   int adaptIts_ = 4;
   double lastH_ = 0;

@@ -10,6 +10,15 @@
 
 namespace sinew {
 
+LoadState DynamicAnalysis::loadsAt(double t) {
+  LoadState ls;
+  ls.loadFactor = 1.0;       // loads act from t = 0 (step loads); user functions see t
+  ls.gravityRamped = false;
+  ls.timeFunctions = true;   // loads and prescribed motions given as functions of time act at t
+  ls.time = t;
+  return ls;
+}
+
 DynamicAnalysis::Scheme DynamicAnalysis::checkScheme(const DistributedMesh& mesh) {
   char scheme[64] = "arnold_bruls";
   PetscBool set = PETSC_FALSE;
@@ -70,9 +79,7 @@ DynamicAnalysis::DynamicAnalysis(Assembler& assembler, const DynamicsOptions& op
   alphaF_ = rho / (rho + 1.0);
   gamma_ = 0.5 + alphaF_ - alphaM_;
   beta_ = 0.25 * (gamma_ + 0.5) * (gamma_ + 0.5);
-  ls_.loadFactor = 1.0;  // loads act from t = 0 (step loads); user functions see t
-  ls_.gravityRamped = false;
-  ls_.timeFunctions = true;  // loads and prescribed motions given as functions of time act at t
+  ls_ = loadsAt(0.0);
   MPI_Comm comm = asm_.mesh().comm;
   SinewCallThrow(comm, asm_.createMatrix(&J_));
   SinewCallThrow(comm, asm_.createVector(&F_));

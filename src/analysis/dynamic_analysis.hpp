@@ -68,6 +68,8 @@ class DynamicAnalysis {
   bool adaptive() const { return control_ != StepControl::None; }
   /// The last accepted step size (adaptive runs: /dynamics/dt).
   double lastStep() const { return lastH_; }
+  /// The loads of the time loop at t: in full from t = 0, functions of time evaluated at t.
+  static LoadState loadsAt(double t);
   enum class Scheme { ArnoldBruls, Midpoint, TSAlpha2 };
   /// Reads -dynamics_scheme and checks it against the model (SceneError; called at setup, where scene
   /// errors exit 2): tsalpha2 (a vector space) cannot integrate rotation unknowns.

@@ -37,8 +37,7 @@ PetscErrorCode runDynamics(RunContext& ctx) {
   DynamicAnalysis dyn(ctx.assembler, opts);
   dyn.setStopFlag(&ctx.stop);
   dyn.setResultFile(&ctx.file);
-  if (ctx.restart && ctx.restart->phase() == CheckpointPhase::Dynamics)
-    {
+  if (ctx.restart && ctx.restart->phase() == CheckpointPhase::Dynamics) {
     PetscCall(ctx.restart->resumeDynamics(ctx, dyn, &energy0, &maxDrift, &work, &power));
     tPrev = dyn.progress().time;
   }
@@ -103,11 +102,7 @@ PetscErrorCode runDynamics(RunContext& ctx) {
   auto onStep = [&](int k, double t, Vec U, Vec V, Vec Qdd) -> PetscErrorCode {
     PetscFunctionBeginUser;
     const bool last = k == nsteps;
-    LoadState ls;
-    ls.loadFactor = 1.0;
-    ls.time = t;
-    ls.gravityRamped = false;
-    ls.timeFunctions = true;
+    const LoadState ls = DynamicAnalysis::loadsAt(t);
     if (energy && energyOk && (k == 0 || !dyn.adaptive())) PetscCall(addWork(k, t, U, V, ls));  // adaptive: onSubstep
     if (k != 0 && !last && k % opts.output_every != 0) PetscFunctionReturn(PETSC_SUCCESS);
     stepU = U;
@@ -140,12 +135,7 @@ PetscErrorCode runDynamics(RunContext& ctx) {
   if (dyn.adaptive() && energy)  // the external work integrates over every accepted step
     dyn.setSubstepCallback([&](double t, Vec U, Vec V) -> PetscErrorCode {
       PetscFunctionBeginUser;
-      LoadState ls;
-      ls.loadFactor = 1.0;
-      ls.time = t;
-      ls.gravityRamped = false;
-      ls.timeFunctions = true;
-      if (energyOk) PetscCall(addWork(1, t, U, V, ls));
+      if (energyOk) PetscCall(addWork(1, t, U, V, DynamicAnalysis::loadsAt(t)));
       PetscFunctionReturn(PETSC_SUCCESS);
     });
   bool ok = false;

@@ -59,6 +59,7 @@ class AncfCable2D : public ElementKernel {
   void evaluate(const KernelInput& in, const KernelNeeds& needs, KernelOutput& out) const override;
   /// Constant consistent mass rhoA int S^T S dx (8x8).
   void mass(const double* q, std::vector<double>& M) const override;
+  const double* constantMass() const override { return M_.data(); }
   /// Consistent load of a mass-proportional body force: rhoA int S^T a dx (Exudyn LoadMassProportional).
   void bodyForce(const double* q, const Vec3& a, std::vector<double>& f) const override;
   /// Axial force N (static part, no damping, user function at t = 0) at x = 0, L/2, L.
@@ -105,6 +106,7 @@ class AncfCable2D : public ElementKernel {
   static constexpr int kMaxIp = 5;
   struct IntegrationPoint {
     double x = 0, w = 0;              ///< axial position and weight (includes L/2)
+    double xiNorm = 0;                ///< x / L (axialPositionNormalized)
     std::array<double, 4> Sx{}, Sxx{};
     double strainRef = 0, curvatureRef = 0;  ///< eps_ref, K_ref at this point
   };
@@ -121,6 +123,7 @@ class AncfCable2D : public ElementKernel {
   int nAxial_ = 0, nBending_ = 0;
   std::array<IntegrationPoint, kMaxIp> axialIp_{}, bendingIp_{};
   std::array<double, 64> M_{};
+  std::array<double, 4> massShapeIntegral_{};  ///< rhoA int S_j dx (bodyForce)
 };
 
 }  // namespace sinew

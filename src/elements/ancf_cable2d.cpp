@@ -4,6 +4,9 @@
 #include <atomic>
 #include <cmath>
 #include <cstdio>
+#include <map>
+#include <mutex>
+#include <tuple>
 #include <stdexcept>
 #include <string>
 
@@ -270,15 +273,16 @@ std::array<double, 4> AncfCable2D::shape_xx(double x, double L) {
   return {12.0 * x / L3 - 6.0 / L2, 6.0 * x / L2 - 4.0 / L, 6.0 / L2 - 12.0 * x / L3, 6.0 * x / L2 - 2.0 / L};
 }
 
-AncfCable2D::AncfCable2D(const std::array<double, 8>& qRef, double L, const AncfCable2DParameters& p)
-    : qRef_(qRef), L_(L), p_(p) {
-  if (!(L > 0.0)) throw std::invalid_argument("ancf_cable2d: reference length must be positive");
-  if (p.useReducedOrderIntegration < 0 || p.useReducedOrderIntegration > 2)
-    throw std::invalid_argument("ancf_cable2d: useReducedOrderIntegration must be 0, 1 or 2");
-  const Rule ra = p.useReducedOrderIntegration == 0 ? gauss(5)
-                  : p.useReducedOrderIntegration == 1 ? gauss(4)
-                                                      : lobatto3();
-  const Rule rb = p.useReducedOrderIntegration == 0 ? gauss(3) : gauss(2);
+std::shared_ptr<const AncfCable2D::Geometry> AncfCable2D::geometry(double L, int rule, double rhoA) {
+  static std::mutex mutex;
+  static std::map<std::tuple<double, int, double>, std::weak_ptr<const Geometry>> cache;
+  const std::lock_guard<std::mutex> lock(mutex);
+  std::weak_ptr<const Geometry>* slot = std::isfinite(rhoA) ? &cache[{L, rule, rhoA}] : nullptr;
+  if (slot)
+    if (std::shared_ptr<const Geometry> g = slot->lock()) return g;
+  auto g = std::make_shared<Geometry>();
+  const Rule ra = rule == 0 ? gauss(5) : rule == 1 ? gauss(4) : lobatto3();
+  const Rule rb = rule == 0 ? gauss(3) : gauss(2);
   auto fill = [&](const Rule& r, std::array<IntegrationPoint, kMaxIp>& ips) {
     for (int i = 0; i < r.n; ++i) {
       IntegrationPoint& ip = ips[i];
@@ -287,14 +291,47 @@ AncfCable2D::AncfCable2D(const std::array<double, 8>& qRef, double L, const Ancf
       ip.xiNorm = ip.x / L;
       ip.Sx = shape_x(ip.x, L);
       ip.Sxx = shape_xx(ip.x, L);
-      ip.strainRef = axialStrainRef(ip.x);
-      ip.curvatureRef = curvatureRef(ip.x);
     }
   };
-  nAxial_ = ra.n;
-  nBending_ = rb.n;
-  fill(ra, axialIp_);
-  fill(rb, bendingIp_);
+  g->nAxial = ra.n;
+  g->nBending = rb.n;
+  fill(ra, g->axial);
+  fill(rb, g->bending);
+
+  // M = rhoA int S^T S dx, Gauss order 7 (exact for the cubic shape functions).
+  const Rule rm = gauss(4);
+  for (int ipn = 0; ipn < rm.n; ++ipn) {
+    const double x = 0.5 * L * rm.xi[ipn] + 0.5 * L;
+    const double w = 0.5 * L * rm.w[ipn] * rhoA;
+    const std::array<double, 4> S = shape(x, L);
+    for (int i = 0; i < 4; ++i)
+      for (int j = 0; j < 4; ++j) {
+        g->M[8 * (2 * i) + 2 * j] += w * S[i] * S[j];
+        g->M[8 * (2 * i + 1) + 2 * j + 1] += w * S[i] * S[j];
+      }
+  }
+  // rhoA int S dx with 2-point Gauss (exact for cubics), as Exudyn's DisplacementMassIntegral_q:
+  // the body force is this times the acceleration (bodyForce).
+  const Rule r2 = gauss(2);
+  for (int i = 0; i < r2.n; ++i) {
+    const std::array<double, 4> S = shape(0.5 * L * r2.xi[i] + 0.5 * L, L);
+    const double w = rhoA * 0.5 * L * r2.w[i];
+    for (int j = 0; j < 4; ++j) g->massShapeIntegral[j] += w * S[j];
+  }
+  if (slot) *slot = g;
+  return g;
+}
+
+AncfCable2D::AncfCable2D(const std::array<double, 8>& qRef, double L, const AncfCable2DParameters& p)
+    : qRef_(qRef), L_(L), p_(p) {
+  if (!(L > 0.0)) throw std::invalid_argument("ancf_cable2d: reference length must be positive");
+  if (p.useReducedOrderIntegration < 0 || p.useReducedOrderIntegration > 2)
+    throw std::invalid_argument("ancf_cable2d: useReducedOrderIntegration must be 0, 1 or 2");
+  geo_ = geometry(L, p.useReducedOrderIntegration, p.physicsMassPerLength);
+  for (int i = 0; i < geo_->nAxial; ++i)
+    axialRef_[i] = {axialStrainRef(geo_->axial[i].x), curvatureRef(geo_->axial[i].x)};
+  for (int i = 0; i < geo_->nBending; ++i)
+    bendingRef_[i] = {axialStrainRef(geo_->bending[i].x), curvatureRef(geo_->bending[i].x)};
 
   const Expression* ua = p_.axialForceUserFunction.get();
   const Expression* ub = p_.bendingMomentUserFunction.get();
@@ -305,27 +342,6 @@ AncfCable2D::AncfCable2D(const std::array<double, 8>& qRef, double L, const Ancf
       ua && (ua->uses(UfVar::curvature) || ua->uses(UfVar::curvature_t) || ua->uses(UfVar::curvatureRef));
   bendingNeedsStrain_ =
       ub && (ub->uses(UfVar::axialStrain) || ub->uses(UfVar::axialStrain_t) || ub->uses(UfVar::axialStrainRef));
-
-  // M = rhoA int S^T S dx, Gauss order 7 (exact for the cubic shape functions).
-  const Rule rm = gauss(4);
-  for (int ipn = 0; ipn < rm.n; ++ipn) {
-    const double x = 0.5 * L * rm.xi[ipn] + 0.5 * L;
-    const double w = 0.5 * L * rm.w[ipn] * p_.physicsMassPerLength;
-    const std::array<double, 4> S = shape(x, L);
-    for (int i = 0; i < 4; ++i)
-      for (int j = 0; j < 4; ++j) {
-        M_[8 * (2 * i) + 2 * j] += w * S[i] * S[j];
-        M_[8 * (2 * i + 1) + 2 * j + 1] += w * S[i] * S[j];
-      }
-  }
-  // rhoA int S dx with 2-point Gauss (exact for cubics), as Exudyn's DisplacementMassIntegral_q:
-  // the body force is this times the acceleration (bodyForce).
-  const Rule r2 = gauss(2);
-  for (int i = 0; i < r2.n; ++i) {
-    const std::array<double, 4> S = shape(0.5 * L * r2.xi[i] + 0.5 * L, L);
-    const double w = p_.physicsMassPerLength * 0.5 * L * r2.w[i];
-    for (int j = 0; j < 4; ++j) massShapeIntegral_[j] += w * S[j];
-  }
 }
 
 std::span<const NodeKind> AncfCable2D::nodeKinds() const {
@@ -482,15 +498,16 @@ void AncfCable2D::evaluate(const KernelInput& in, const KernelNeeds& needs, Kern
   std::array<PointState, kMaxIp> states;
 
   // Axial part: Q += w N d eps/dq
-  for (int ip = 0; ip < nAxial_; ++ip) {
-    const IntegrationPoint& P = axialIp_[ip];
+  const Geometry& geo = *geo_;
+  for (int ip = 0; ip < geo.nAxial; ++ip) {
+    const IntegrationPoint& P = geo.axial[ip];
     axialState(P.Sx, q, qd, states[ip]);
     if (axialNeedsCurvature_) bendingState(P.Sx, P.Sxx, q, qd, states[ip]);
   }
-  for (int ip = 0; ip < nAxial_; ++ip) {
-    const IntegrationPoint& P = axialIp_[ip];
+  for (int ip = 0; ip < geo.nAxial; ++ip) {
+    const IntegrationPoint& P = geo.axial[ip];
     const PointState& s = states[ip];
-    const UserFunctionValue N = Law::axial(p_, in.t, P.xiNorm, s, P.strainRef, P.curvatureRef);
+    const UserFunctionValue N = Law::axial(p_, in.t, P.xiNorm, s, axialRef_[ip].strain, axialRef_[ip].curvature);
     Law::check(p_, N, true, in.t, s, true, axialNeedsCurvature_, derivatives);
     const double w = P.w;
     for (int a = 0; a < 8; ++a) f[a] += w * N.value * s.g[a];
@@ -529,15 +546,15 @@ void AncfCable2D::evaluate(const KernelInput& in, const KernelNeeds& needs, Kern
 
   // Bending part: Q += w M dK/dq
   double* dM = dN;
-  for (int ip = 0; ip < nBending_; ++ip) {
-    const IntegrationPoint& P = bendingIp_[ip];
+  for (int ip = 0; ip < geo.nBending; ++ip) {
+    const IntegrationPoint& P = geo.bending[ip];
     bendingState(P.Sx, P.Sxx, q, qd, states[ip]);
     if (bendingNeedsStrain_) axialState(P.Sx, q, qd, states[ip]);
   }
-  for (int ip = 0; ip < nBending_; ++ip) {
-    const IntegrationPoint& P = bendingIp_[ip];
+  for (int ip = 0; ip < geo.nBending; ++ip) {
+    const IntegrationPoint& P = geo.bending[ip];
     const PointState& s = states[ip];
-    const UserFunctionValue M = Law::bending(p_, in.t, P.xiNorm, s, P.strainRef, P.curvatureRef);
+    const UserFunctionValue M = Law::bending(p_, in.t, P.xiNorm, s, bendingRef_[ip].strain, bendingRef_[ip].curvature);
     Law::check(p_, M, false, in.t, s, bendingNeedsStrain_, true, derivatives);
     const double w = P.w;
     for (int a = 0; a < 8; ++a) f[a] += w * M.value * s.h[a];
@@ -582,13 +599,13 @@ void AncfCable2D::evaluate(const KernelInput& in, const KernelNeeds& needs, Kern
   out.f.assign(f, f + 8);
 }
 
-void AncfCable2D::mass(const double* /*q*/, std::vector<double>& M) const { M.assign(M_.begin(), M_.end()); }
+void AncfCable2D::mass(const double* /*q*/, std::vector<double>& M) const { M.assign(geo_->M.begin(), geo_->M.end()); }
 
 void AncfCable2D::bodyForce(const double* /*q*/, const Vec3& a, std::vector<double>& f) const {
   f.resize(8);
   for (int j = 0; j < 4; ++j) {
-    f[2 * j] = massShapeIntegral_[j] * a[0];
-    f[2 * j + 1] = massShapeIntegral_[j] * a[1];
+    f[2 * j] = geo_->massShapeIntegral[j] * a[0];
+    f[2 * j + 1] = geo_->massShapeIntegral[j] * a[1];
   }
 }
 

@@ -5,6 +5,7 @@
 //        src/elements/ancf_cable2d.cpp tests/unit/bench_ancf_kernel.cpp -o /tmp/bench_ancf
 #include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <ctime>
 #include <random>
 #include <vector>

@@ -77,6 +77,9 @@ class ElementKernel {
   virtual void evaluate(const KernelInput& in, const KernelNeeds& needs, KernelOutput& out) const = 0;
   /// Consistent mass matrix [numDofs^2] at state q (row-major). Only called when hasInertia().
   virtual void mass(const double* q, std::vector<double>& M) const;
+  /// The mass matrix when it does not depend on the state ([numDofs^2], row-major, owned by the
+  /// kernel, equal to what mass() writes), read by the assemblies without a copy; nullptr: call mass().
+  virtual const double* constantMass() const { return nullptr; }
   /// Equivalent nodal load [numDofs] of the body force density rho * a (gravity). Only when hasInertia().
   virtual void bodyForce(const double* q, const Vec3& a, std::vector<double>& f) const;
   /// Lumped inertia of the nodes instead of a mass matrix (then hasInertia() is false): per node 7

@@ -244,6 +244,8 @@ class Assembler {
   /// Adds M qdd (elements, nodal inertia) to `out` (local form) by the rows of `target`; a = local
   /// form of the accelerations of the unknowns, v = of the velocities (gyroscopic moments).
   void addInertia(const double* v, const double* a, Target target, double* out);
+  /// The element's mass matrix at q: the kernel's constantMass() when it has one, else mass(q) into buf.
+  const double* elementMass(const LocalElement& el, const double* q, std::vector<double>& buf) const;
 
   /// -beam_mass lumped: the kernels' lumpedInertia into the nodes' mass and mominertia (once per mesh)
   PetscErrorCode addLumpedInertia();

@@ -65,6 +65,12 @@ bool Assembler::prescribedRates(const LocalElement& el, double* v, double* a) co
   return true;
 }
 
+const double* Assembler::elementMass(const LocalElement& el, const double* q, std::vector<double>& buf) const {
+  if (const double* M = el.kernel->constantMass()) return M;  // no copy per element and assembly
+  el.kernel->mass(q, buf);
+  return buf.data();
+}
+
 const double* Assembler::gatherVelocity(const LocalElement& el, const int* idx, double* qdot) const {
   if (!vLocal_) return nullptr;
   const int nd = el.kernel->numDofs();
@@ -79,12 +85,12 @@ void Assembler::addInertia(const double* v, const double* a, Target target, doub
   std::array<double, 48> q;
   std::array<int, kMaxElementRows> idx, fidx;
   std::array<double, kMaxElementRows> pv, pa;
-  std::vector<double> Me;
+  std::vector<double> MeBuf;
   for (const LocalElement& el : mesh_.elements) {
     if (!el.kernel->hasInertia()) continue;
     gatherElement(el, q.data(), nullptr, idx.data(), fidx.data());
     const bool moving = prescribedRates(el, pv.data(), pa.data());
-    el.kernel->mass(q.data(), Me);
+    const double* Me = elementMass(el, q.data(), MeBuf);
     const int n = el.kernel->numDofs();
     const int* map = target == Target::Residual ? idx.data() : fidx.data();
     for (int r = 0; r < n; ++r) {
@@ -194,7 +200,7 @@ PetscErrorCode Assembler::dynamicJacobian(Vec U, Vec V, const LoadState& ls, dou
   std::array<double, 48> q;
   std::array<int, kMaxElementRows> idx;
   std::array<double, kMaxElementRows> qdot;
-  std::vector<double> Me;
+  std::vector<double> MeBuf;
   std::array<double, 6> sigmaMixed;
   vLocal_ = v;
   for (const LocalElement& el : mesh_.elements) {
@@ -214,7 +220,7 @@ PetscErrorCode Assembler::dynamicJacobian(Vec U, Vec V, const LoadState& ls, dou
       for (int r = 0; r < nd; ++r)
         for (int c = 0; c < nd; ++c) out_.K[static_cast<size_t>(r) * n + c] += shiftV * out_.D[static_cast<size_t>(r) * nd + c];
     if (shiftA != 0.0 && el.kernel->hasInertia()) {
-      el.kernel->mass(q.data(), Me);
+      const double* Me = elementMass(el, q.data(), MeBuf);
       for (int r = 0; r < nd; ++r)
         for (int c = 0; c < nd; ++c) out_.K[static_cast<size_t>(r) * n + c] += shiftA * Me[static_cast<size_t>(r) * nd + c];
     }

@@ -4,6 +4,9 @@
 #include <atomic>
 #include <cmath>
 #include <cstdio>
+#include <map>
+#include <mutex>
+#include <tuple>
 #include <stdexcept>
 #include <string>
 
@@ -65,22 +68,26 @@ inline void map2(const std::array<double, 4>& S, const double* q, double v[2]) {
   v[1] = S[0] * q[1] + S[1] * q[3] + S[2] * q[5] + S[3] * q[7];
 }
 
-/// Strain measures and their derivatives at one point.
+/// Strain measures and their first derivatives at one point. Element vectors use a = 2 j + i
+/// (Hermite function j = 0..3, direction i = x, y). Only what the caller asks for is filled: no
+/// array is zeroed per call, and the Hessian of K is never stored (addBendingBlocks adds it).
 struct PointState {
   // axial: eps = |r'| - 1
   double eps = 0, eps_t = 0;
-  double t[2] = {0, 0};  // unit tangent
+  double t[2] = {1, 0};  // unit tangent r'/|r'|
   double n = 1;          // |r'|
-  double g[8] = {};      // d eps / dq  (= d eps_t / d qdot)
-  double geps_t[8] = {}; // d eps_t / dq
-  // bending: K = (r' x r'')_z / |r'|^2
+  double p[2] = {0, 0};  // (I - t t^T) r'_t / |r'|: d eps_t/dq = S'_j p_i
+  double g[8];           // d eps / dq (= d eps_t / d qdot) = S'_j t_i
+  // bending: K = f/G, f = (r' x r'')_z, G = |r'|^2
   double kap = 0, kap_t = 0;
-  double h[8] = {};      // dK / dq (= d K_t / d qdot)
-  double hk_t[8] = {};   // d K_t / dq = H_K qdot
-  double Hk[64] = {};    // d2K / dq2 (only with tangent)
+  double f = 0, iG = 1;
+  double rx_t[2] = {0, 0}, rxx_t[2] = {0, 0};  // r'_t, r''_t
+  double df[8], dG[8];                         // df/dq, dG/dq
+  double h[8];                                 // dK / dq (= d K_t / d qdot)
 };
 
-/// eps, d eps/dq and, with qdot, eps_t and d eps_t/dq (Exudyn: d eps = r'^T S'_i / |r'|).
+/// eps, d eps/dq and, with qdot, eps_t and the direction p of d eps_t/dq
+/// (Exudyn: d eps = r'^T S'_i / |r'|).
 void axialState(const std::array<double, 4>& Sx, const double* q, const double* qdot, PointState& s) {
   double rx[2];
   map2(Sx, q, rx);
@@ -97,69 +104,134 @@ void axialState(const std::array<double, 4>& Sx, const double* q, const double* 
     map2(Sx, qdot, rx_t);
     s.eps_t = s.t[0] * rx_t[0] + s.t[1] * rx_t[1];
     // d eps_t/dq = (I - t t^T)/|r'| r'_t, spread by S'
-    const double p0 = (rx_t[0] - s.eps_t * s.t[0]) / s.n, p1 = (rx_t[1] - s.eps_t * s.t[1]) / s.n;
-    for (int j = 0; j < 4; ++j) {
-      s.geps_t[2 * j] = Sx[j] * p0;
-      s.geps_t[2 * j + 1] = Sx[j] * p1;
-    }
+    s.p[0] = (rx_t[0] - s.eps_t * s.t[0]) / s.n;
+    s.p[1] = (rx_t[1] - s.eps_t * s.t[1]) / s.n;
   } else {
     s.eps_t = 0.0;
-    for (double& v : s.geps_t) v = 0.0;
+    s.p[0] = s.p[1] = 0.0;
   }
 }
 
-/// K = f/G with f = r' x r'', G = |r'|^2; dK/dq, optionally the Hessian, K_t and dK_t/dq.
+/// d eps_t / dq = S'_j p_i (zero without velocities).
+void strainRateGradient(const std::array<double, 4>& Sx, const PointState& s, double geps_t[8]) {
+  for (int j = 0; j < 4; ++j) {
+    geps_t[2 * j] = Sx[j] * s.p[0];
+    geps_t[2 * j + 1] = Sx[j] * s.p[1];
+  }
+}
+
+/// K = f/G with f = r' x r'', G = |r'|^2, dK/dq and, with qdot, K_t = dK/dq qdot.
 void bendingState(const std::array<double, 4>& Sx, const std::array<double, 4>& Sxx, const double* q,
-                  const double* qdot, bool hessian, PointState& s) {
+                  const double* qdot, PointState& s) {
   double rx[2], rxx[2];
   map2(Sx, q, rx);
   map2(Sxx, q, rxx);
-  const double f = rx[0] * rxx[1] - rx[1] * rxx[0];
+  s.f = rx[0] * rxx[1] - rx[1] * rxx[0];
   const double G = rx[0] * rx[0] + rx[1] * rx[1];
-  const double iG = 1.0 / G;
-  s.kap = f * iG;
-  double df[8], dG[8];
+  s.iG = 1.0 / G;
+  s.kap = s.f * s.iG;
   for (int j = 0; j < 4; ++j) {
-    df[2 * j] = Sx[j] * rxx[1] - Sxx[j] * rx[1];
-    df[2 * j + 1] = -Sx[j] * rxx[0] + Sxx[j] * rx[0];
-    dG[2 * j] = 2.0 * rx[0] * Sx[j];
-    dG[2 * j + 1] = 2.0 * rx[1] * Sx[j];
+    s.df[2 * j] = Sx[j] * rxx[1] - Sxx[j] * rx[1];
+    s.df[2 * j + 1] = -Sx[j] * rxx[0] + Sxx[j] * rx[0];
+    s.dG[2 * j] = 2.0 * rx[0] * Sx[j];
+    s.dG[2 * j + 1] = 2.0 * rx[1] * Sx[j];
   }
-  for (int a = 0; a < 8; ++a) s.h[a] = (df[a] - s.kap * dG[a]) * iG;  // Exudyn eq. for dK
-  if (hessian) {
-    // H_K = H_f/G - (df dG^T + dG df^T)/G^2 + 2 f dG dG^T/G^3 - f H_G/G^2
-    const double iG2 = iG * iG, c3 = 2.0 * f * iG2 * iG, cG = f * iG2;
-    for (int j = 0; j < 4; ++j) {
-      for (int i = 0; i < 2; ++i) {
-        const int a = 2 * j + i;
-        for (int k = 0; k < 4; ++k) {
-          const double hf = Sx[j] * Sxx[k] - Sxx[j] * Sx[k];
-          const double hg = 2.0 * Sx[j] * Sx[k];
-          for (int l = 0; l < 2; ++l) {
-            const int b = 2 * k + l;
-            const double eps_il = (i == l) ? 0.0 : (i == 0 ? 1.0 : -1.0);
-            double v = eps_il * hf * iG - (df[a] * dG[b] + dG[a] * df[b]) * iG2 + c3 * dG[a] * dG[b];
-            if (i == l) v -= cG * hg;
-            s.Hk[8 * a + b] = v;
-          }
-        }
-      }
-    }
-  }
+  for (int a = 0; a < 8; ++a) s.h[a] = (s.df[a] - s.kap * s.dG[a]) * s.iG;  // Exudyn eq. for dK
   if (qdot) {
     double kt = 0.0;
     for (int a = 0; a < 8; ++a) kt += s.h[a] * qdot[a];
     s.kap_t = kt;
-    if (hessian) {
-      for (int a = 0; a < 8; ++a) {
-        double v = 0.0;
-        for (int b = 0; b < 8; ++b) v += s.Hk[8 * a + b] * qdot[b];
-        s.hk_t[a] = v;
-      }
-    }
+    map2(Sx, qdot, s.rx_t);
+    map2(Sxx, qdot, s.rxx_t);
   } else {
     s.kap_t = 0.0;
-    for (double& v : s.hk_t) v = 0.0;
+    s.rx_t[0] = s.rx_t[1] = s.rxx_t[0] = s.rxx_t[1] = 0.0;
+  }
+}
+
+// The Hessian of K = f/G at the state of bendingState:
+//   H_K = H_f/G - (df dG^T + dG df^T)/G^2 + 2 f dG dG^T/G^3 - f H_G/G^2,
+// with the constant, block-structured parts (a = 2j+i, b = 2k+l)
+//   H_f[a][b] = e_il (S'_j S''_k - S''_j S'_k)  (e_01 = 1, e_10 = -1, e_00 = e_11 = 0),
+//   H_G[a][b] = d_il 2 S'_j S'_k.
+
+/// K += a dK/dq (dK/dq)^T + c H_K (row-major 8x8) without forming either matrix. With u = df/dq,
+/// v = dG/dq and dK/dq = (u - K v)/G the rank part of both terms is
+///   [a u u^T - (a K + c)(u v^T + v u^T) + (a K^2 + 2 c K) v v^T] / G^2 = u x^T + v y^T,
+/// and the rest, c (H_f/G - f H_G/G^2), is one 2x2 block per node pair (j, k).
+/// upper: only the blocks k >= j (a symmetric K is completed by mirrorUpper).
+void addBendingBlocks(const std::array<double, 4>& Sx, const std::array<double, 4>& Sxx, const PointState& s,
+                      double a, double c, bool upper, double* __restrict K) {
+  const double iG2 = s.iG * s.iG, kap = s.kap;
+  const double uu = a * iG2, uv = -(a * kap + c) * iG2, vv = (a * kap * kap + 2.0 * c * kap) * iG2;
+  double x[8], y[8];
+  for (int b = 0; b < 8; ++b) {
+    x[b] = uu * s.df[b] + uv * s.dG[b];
+    y[b] = uv * s.df[b] + vv * s.dG[b];
+  }
+  for (int r = 0; r < 8; ++r)
+    for (int b = upper ? (r & ~1) : 0; b < 8; ++b) K[8 * r + b] += s.df[r] * x[b] + s.dG[r] * y[b];
+  const double cf = c * s.iG, cg = 2.0 * c * s.f * iG2;
+  for (int j = 0; j < 4; ++j)
+    for (int k = upper ? j : 0; k < 4; ++k) {
+      const double hf = cf * (Sx[j] * Sxx[k] - Sxx[j] * Sx[k]);  // c H_f/G: off-diagonal of the block
+      const double hg = cg * Sx[j] * Sx[k];                       // c f H_G/G^2: diagonal of the block
+      double* row0 = K + 8 * (2 * j) + 2 * k;
+      double* row1 = row0 + 8;
+      row0[0] -= hg;
+      row0[1] += hf;
+      row1[0] -= hf;
+      row1[1] -= hg;
+    }
+}
+
+/// K += S'_j S'_k B for every node pair (j, k), B a 2x2 matrix (row-major): the axial terms, whose
+/// vectors all are S' times a direction (d eps/dq = S' t, d eps_t/dq = S' p, d2eps/dq2 = S' S'^T (I - t t^T)/|r'|).
+/// upper: only the blocks k >= j.
+void addAxialBlocks(const std::array<double, 4>& Sx, const double B[4], bool upper, double* __restrict K) {
+  for (int j = 0; j < 4; ++j)
+    for (int k = upper ? j : 0; k < 4; ++k) {
+      const double ss = Sx[j] * Sx[k];
+      double* row0 = K + 8 * (2 * j) + 2 * k;
+      double* row1 = row0 + 8;
+      row0[0] += ss * B[0];
+      row0[1] += ss * B[1];
+      row1[0] += ss * B[2];
+      row1[1] += ss * B[3];
+    }
+}
+
+/// d K_t / dq = H_K qdot without forming H_K, using
+/// H_f qdot = (S'_j r''_t,y - S''_j r'_t,y, -S'_j r''_t,x + S''_j r'_t,x) and H_G qdot = 2 S'_j r'_t.
+void curvatureRateGradient(const std::array<double, 4>& Sx, const std::array<double, 4>& Sxx, const double* qdot,
+                           const PointState& s, double hk_t[8]) {
+  const double iG2 = s.iG * s.iG, c3 = 2.0 * s.f * iG2 * s.iG, cG = s.f * iG2;
+  double f_t = 0.0, G_t = 0.0;  // df/dq qdot, dG/dq qdot
+  for (int a = 0; a < 8; ++a) {
+    f_t += s.df[a] * qdot[a];
+    G_t += s.dG[a] * qdot[a];
+  }
+  for (int j = 0; j < 4; ++j) {
+    const double Hf[2] = {Sx[j] * s.rxx_t[1] - Sxx[j] * s.rx_t[1], -Sx[j] * s.rxx_t[0] + Sxx[j] * s.rx_t[0]};
+    for (int i = 0; i < 2; ++i) {
+      const int a = 2 * j + i;
+      hk_t[a] = Hf[i] * s.iG - (s.df[a] * G_t + s.dG[a] * f_t) * iG2 + c3 * s.dG[a] * G_t -
+                cG * 2.0 * Sx[j] * s.rx_t[i];
+    }
+  }
+}
+
+/// Completes a symmetric 8x8 K of which the blocks k >= j were accumulated: K[b][a] = K[a][b], b > a.
+void mirrorUpper(double* K) {
+  for (int a = 0; a < 8; ++a)
+    for (int b = a + 1; b < 8; ++b) K[8 * b + a] = K[8 * a + b];
+}
+
+/// K += c u v^T (8x8, row-major).
+inline void addOuter(double c, const double u[8], const double v[8], double* __restrict K) {
+  for (int a = 0; a < 8; ++a) {
+    const double cu = c * u[a];
+    for (int b = 0; b < 8; ++b) K[8 * a + b] += cu * v[b];
   }
 }
 
@@ -201,30 +273,65 @@ std::array<double, 4> AncfCable2D::shape_xx(double x, double L) {
   return {12.0 * x / L3 - 6.0 / L2, 6.0 * x / L2 - 4.0 / L, 6.0 / L2 - 12.0 * x / L3, 6.0 * x / L2 - 2.0 / L};
 }
 
-AncfCable2D::AncfCable2D(const std::array<double, 8>& qRef, double L, const AncfCable2DParameters& p)
-    : qRef_(qRef), L_(L), p_(p) {
-  if (!(L > 0.0)) throw std::invalid_argument("ancf_cable2d: reference length must be positive");
-  if (p.useReducedOrderIntegration < 0 || p.useReducedOrderIntegration > 2)
-    throw std::invalid_argument("ancf_cable2d: useReducedOrderIntegration must be 0, 1 or 2");
-  const Rule ra = p.useReducedOrderIntegration == 0 ? gauss(5)
-                  : p.useReducedOrderIntegration == 1 ? gauss(4)
-                                                      : lobatto3();
-  const Rule rb = p.useReducedOrderIntegration == 0 ? gauss(3) : gauss(2);
+std::shared_ptr<const AncfCable2D::Geometry> AncfCable2D::geometry(double L, int rule, double rhoA) {
+  static std::mutex mutex;
+  static std::map<std::tuple<double, int, double>, std::weak_ptr<const Geometry>> cache;
+  const std::lock_guard<std::mutex> lock(mutex);
+  std::weak_ptr<const Geometry>* slot = std::isfinite(rhoA) ? &cache[{L, rule, rhoA}] : nullptr;
+  if (slot)
+    if (std::shared_ptr<const Geometry> g = slot->lock()) return g;
+  auto g = std::make_shared<Geometry>();
+  const Rule ra = rule == 0 ? gauss(5) : rule == 1 ? gauss(4) : lobatto3();
+  const Rule rb = rule == 0 ? gauss(3) : gauss(2);
   auto fill = [&](const Rule& r, std::array<IntegrationPoint, kMaxIp>& ips) {
     for (int i = 0; i < r.n; ++i) {
       IntegrationPoint& ip = ips[i];
       ip.x = 0.5 * L * r.xi[i] + 0.5 * L;  // x_ip = L/2 xi + L/2
       ip.w = 0.5 * L * r.w[i];
+      ip.xiNorm = ip.x / L;
       ip.Sx = shape_x(ip.x, L);
       ip.Sxx = shape_xx(ip.x, L);
-      ip.strainRef = axialStrainRef(ip.x);
-      ip.curvatureRef = curvatureRef(ip.x);
     }
   };
-  nAxial_ = ra.n;
-  nBending_ = rb.n;
-  fill(ra, axialIp_);
-  fill(rb, bendingIp_);
+  g->nAxial = ra.n;
+  g->nBending = rb.n;
+  fill(ra, g->axial);
+  fill(rb, g->bending);
+
+  // M = rhoA int S^T S dx, Gauss order 7 (exact for the cubic shape functions).
+  const Rule rm = gauss(4);
+  for (int ipn = 0; ipn < rm.n; ++ipn) {
+    const double x = 0.5 * L * rm.xi[ipn] + 0.5 * L;
+    const double w = 0.5 * L * rm.w[ipn] * rhoA;
+    const std::array<double, 4> S = shape(x, L);
+    for (int i = 0; i < 4; ++i)
+      for (int j = 0; j < 4; ++j) {
+        g->M[8 * (2 * i) + 2 * j] += w * S[i] * S[j];
+        g->M[8 * (2 * i + 1) + 2 * j + 1] += w * S[i] * S[j];
+      }
+  }
+  // rhoA int S dx with 2-point Gauss (exact for cubics), as Exudyn's DisplacementMassIntegral_q:
+  // the body force is this times the acceleration (bodyForce).
+  const Rule r2 = gauss(2);
+  for (int i = 0; i < r2.n; ++i) {
+    const std::array<double, 4> S = shape(0.5 * L * r2.xi[i] + 0.5 * L, L);
+    const double w = rhoA * 0.5 * L * r2.w[i];
+    for (int j = 0; j < 4; ++j) g->massShapeIntegral[j] += w * S[j];
+  }
+  if (slot) *slot = g;
+  return g;
+}
+
+AncfCable2D::AncfCable2D(const std::array<double, 8>& qRef, double L, const AncfCable2DParameters& p)
+    : qRef_(qRef), L_(L), p_(p) {
+  if (!(L > 0.0)) throw std::invalid_argument("ancf_cable2d: reference length must be positive");
+  if (p.useReducedOrderIntegration < 0 || p.useReducedOrderIntegration > 2)
+    throw std::invalid_argument("ancf_cable2d: useReducedOrderIntegration must be 0, 1 or 2");
+  geo_ = geometry(L, p.useReducedOrderIntegration, p.physicsMassPerLength);
+  for (int i = 0; i < geo_->nAxial; ++i)
+    axialRef_[i] = {axialStrainRef(geo_->axial[i].x), curvatureRef(geo_->axial[i].x)};
+  for (int i = 0; i < geo_->nBending; ++i)
+    bendingRef_[i] = {axialStrainRef(geo_->bending[i].x), curvatureRef(geo_->bending[i].x)};
 
   const Expression* ua = p_.axialForceUserFunction.get();
   const Expression* ub = p_.bendingMomentUserFunction.get();
@@ -235,19 +342,6 @@ AncfCable2D::AncfCable2D(const std::array<double, 8>& qRef, double L, const Ancf
       ua && (ua->uses(UfVar::curvature) || ua->uses(UfVar::curvature_t) || ua->uses(UfVar::curvatureRef));
   bendingNeedsStrain_ =
       ub && (ub->uses(UfVar::axialStrain) || ub->uses(UfVar::axialStrain_t) || ub->uses(UfVar::axialStrainRef));
-
-  // M = rhoA int S^T S dx, Gauss order 7 (exact for the cubic shape functions).
-  const Rule rm = gauss(4);
-  for (int ipn = 0; ipn < rm.n; ++ipn) {
-    const double x = 0.5 * L * rm.xi[ipn] + 0.5 * L;
-    const double w = 0.5 * L * rm.w[ipn] * p_.physicsMassPerLength;
-    const std::array<double, 4> S = shape(x, L);
-    for (int i = 0; i < 4; ++i)
-      for (int j = 0; j < 4; ++j) {
-        M_[8 * (2 * i) + 2 * j] += w * S[i] * S[j];
-        M_[8 * (2 * i + 1) + 2 * j + 1] += w * S[i] * S[j];
-      }
-  }
 }
 
 std::span<const NodeKind> AncfCable2D::nodeKinds() const {
@@ -336,8 +430,18 @@ struct AncfCable2D::Law {
   // A force law that is not finite (its value, or with a tangent/damping the derivatives used) ends
   // the evaluation: the assembler reports it with the set, element and time instead of letting
   // inf/NaN reach the solvers (issue 13 item 6). strain / curvature: whether s holds them here.
+  // The test is inline and branch-light; the message is built only on failure (fail).
   static void check(const AncfCable2DParameters& p, const UserFunctionValue& v, bool axialLaw, double t,
                     const PointState& s, bool strain, bool curvature, bool derivatives) {
+    const bool finiteDerivatives = !derivatives || (std::isfinite(v.dAxialStrain) && std::isfinite(v.dAxialStrain_t) &&
+                                                    std::isfinite(v.dCurvature) && std::isfinite(v.dCurvature_t));
+    if (std::isfinite(v.value) && finiteDerivatives) [[likely]]
+      return;
+    fail(p, v, axialLaw, t, s, strain, curvature, derivatives);
+  }
+  [[gnu::cold, gnu::noinline]] static void fail(const AncfCable2DParameters& p, const UserFunctionValue& v,
+                                                bool axialLaw, double t, const PointState& s, bool strain,
+                                                bool curvature, bool derivatives) {
     const double d[4] = {v.dAxialStrain, v.dAxialStrain_t, v.dCurvature, v.dCurvature_t};
     static const char* dNames[4] = {"axialStrain", "axialStrain_t", "curvature", "curvature_t"};
     int bad = -1;
@@ -366,113 +470,142 @@ AncfCable2D::EvaluationCounts AncfCable2D::evaluationCounts() {
 
 void AncfCable2D::evaluate(const KernelInput& in, const KernelNeeds& needs, KernelOutput& out) const {
   const double* q = in.q;
-  const double* qd = in.qdot;
+  // Velocities enter only through a law that reads them (a damping term or a *_t argument of a user
+  // function: hasDamping_); otherwise eps_t, K_t and their gradients are not computed.
+  const double* qd = hasDamping_ ? in.qdot : nullptr;
   const bool wantK = needs.tangent;
   const bool wantD = needs.damping && hasDamping_;
+  const bool derivatives = wantK || wantD;
   double f[8] = {};
-  std::array<double, 64> Km{}, Kg{}, D{};
-  PointState s;
+  // Tangent blocks are accumulated in place: Km (material) and Kg (geometric) are the same 8x8
+  // array unless the split is asked for; D only with a damping law.
+  double *Km = nullptr, *Kg = nullptr, *D = nullptr;
+  if (wantK) {
+    out.K.assign(64, 0.0);
+    Km = Kg = out.K.data();
+    if (needs.splitGeometric) {
+      out.Kg.assign(64, 0.0);
+      Kg = out.Kg.data();
+    }
+  }
+  if (needs.damping) out.D.assign(64, 0.0);
+  if (wantD) D = out.D.data();
+  // Without velocities and without a law coupling strain and curvature every term of K is
+  // symmetric (w EA g g^T, w EI h h^T, N d2eps/dq2, M d2K/dq2): only the upper blocks are summed.
+  const bool symmetric = !hasDamping_ && !axialNeedsCurvature_ && !bendingNeedsStrain_;
+  double dN[8], geps_t[8], hk_t[8];
+  // The strain states of all points first: independent square roots and divisions overlap.
+  std::array<PointState, kMaxIp> states;
 
   // Axial part: Q += w N d eps/dq
-  for (int ip = 0; ip < nAxial_; ++ip) {
-    const IntegrationPoint& P = axialIp_[ip];
-    axialState(P.Sx, q, qd, s);
-    if (axialNeedsCurvature_) bendingState(P.Sx, P.Sxx, q, qd, wantK, s);
-    const UserFunctionValue N = Law::axial(p_, in.t, P.x / L_, s, P.strainRef, P.curvatureRef);
-    Law::check(p_, N, true, in.t, s, true, axialNeedsCurvature_, wantK || wantD);
+  const Geometry& geo = *geo_;
+  for (int ip = 0; ip < geo.nAxial; ++ip) {
+    const IntegrationPoint& P = geo.axial[ip];
+    axialState(P.Sx, q, qd, states[ip]);
+    if (axialNeedsCurvature_) bendingState(P.Sx, P.Sxx, q, qd, states[ip]);
+  }
+  for (int ip = 0; ip < geo.nAxial; ++ip) {
+    const IntegrationPoint& P = geo.axial[ip];
+    const PointState& s = states[ip];
+    const UserFunctionValue N = Law::axial(p_, in.t, P.xiNorm, s, axialRef_[ip].strain, axialRef_[ip].curvature);
+    Law::check(p_, N, true, in.t, s, true, axialNeedsCurvature_, derivatives);
     const double w = P.w;
     for (int a = 0; a < 8; ++a) f[a] += w * N.value * s.g[a];
     if (wantK) {
-      double dN[8];  // dN/dq
-      for (int b = 0; b < 8; ++b) {
-        dN[b] = N.dAxialStrain * s.g[b] + N.dAxialStrain_t * s.geps_t[b];
-        if (axialNeedsCurvature_) dN[b] += N.dCurvature * s.h[b] + N.dCurvature_t * s.hk_t[b];
-      }
-      for (int a = 0; a < 8; ++a)
-        for (int b = 0; b < 8; ++b) Km[8 * a + b] += w * s.g[a] * dN[b];
-      // N d2eps/dq2 = N S'_j S'_k (I - t t^T)/|r'|
+      // material part w d eps/dq (dN/dq)^T = S'_j S'_k w t (dN/deps t + dN/deps_t p)^T (+ coupling below)
+      const double ae = w * N.dAxialStrain, at = w * N.dAxialStrain_t;
+      const double Bm[4] = {s.t[0] * (ae * s.t[0] + at * s.p[0]), s.t[0] * (ae * s.t[1] + at * s.p[1]),
+                            s.t[1] * (ae * s.t[0] + at * s.p[0]), s.t[1] * (ae * s.t[1] + at * s.p[1])};
+      // geometric part N d2eps/dq2 = N S'_j S'_k (I - t t^T)/|r'|
       const double c = w * N.value / s.n;
-      const double P00 = c * (1.0 - s.t[0] * s.t[0]), P01 = -c * s.t[0] * s.t[1], P11 = c * (1.0 - s.t[1] * s.t[1]);
-      for (int j = 0; j < 4; ++j)
-        for (int k = 0; k < 4; ++k) {
-          const double ss = P.Sx[j] * P.Sx[k];
-          Kg[8 * (2 * j) + 2 * k] += ss * P00;
-          Kg[8 * (2 * j) + 2 * k + 1] += ss * P01;
-          Kg[8 * (2 * j + 1) + 2 * k] += ss * P01;
-          Kg[8 * (2 * j + 1) + 2 * k + 1] += ss * P11;
-        }
-    }
-    if (wantD) {
-      for (int b = 0; b < 8; ++b) {
-        double dNv = N.dAxialStrain_t * s.g[b];
-        if (axialNeedsCurvature_) dNv += N.dCurvature_t * s.h[b];
-        for (int a = 0; a < 8; ++a) D[8 * a + b] += w * s.g[a] * dNv;
+      const double Bg[4] = {c * (1.0 - s.t[0] * s.t[0]), -c * s.t[0] * s.t[1], -c * s.t[0] * s.t[1],
+                            c * (1.0 - s.t[1] * s.t[1])};
+      if (Kg == Km) {
+        const double B[4] = {Bm[0] + Bg[0], Bm[1] + Bg[1], Bm[2] + Bg[2], Bm[3] + Bg[3]};
+        addAxialBlocks(P.Sx, B, symmetric, Km);
+      } else {
+        addAxialBlocks(P.Sx, Bm, symmetric, Km);
+        addAxialBlocks(P.Sx, Bg, symmetric, Kg);
       }
+      if (axialNeedsCurvature_) {  // a user law of the curvature: w d eps/dq (dN/dK dK/dq + dN/dK_t dK_t/dq)^T
+        for (int b = 0; b < 8; ++b) dN[b] = N.dCurvature * s.h[b];
+        if (qd) {
+          curvatureRateGradient(P.Sx, P.Sxx, qd, s, hk_t);
+          for (int b = 0; b < 8; ++b) dN[b] += N.dCurvature_t * hk_t[b];
+        }
+        addOuter(w, s.g, dN, Km);
+      }
+    }
+    if (wantD) {  // w d eps/dq (dN/dqdot)^T
+      for (int b = 0; b < 8; ++b) dN[b] = N.dAxialStrain_t * s.g[b];
+      if (axialNeedsCurvature_)
+        for (int b = 0; b < 8; ++b) dN[b] += N.dCurvature_t * s.h[b];
+      addOuter(w, s.g, dN, D);
     }
   }
 
   // Bending part: Q += w M dK/dq
-  for (int ip = 0; ip < nBending_; ++ip) {
-    const IntegrationPoint& P = bendingIp_[ip];
-    bendingState(P.Sx, P.Sxx, q, qd, wantK, s);
-    if (bendingNeedsStrain_) axialState(P.Sx, q, qd, s);
-    const UserFunctionValue M = Law::bending(p_, in.t, P.x / L_, s, P.strainRef, P.curvatureRef);
-    Law::check(p_, M, false, in.t, s, bendingNeedsStrain_, true, wantK || wantD);
+  double* dM = dN;
+  for (int ip = 0; ip < geo.nBending; ++ip) {
+    const IntegrationPoint& P = geo.bending[ip];
+    bendingState(P.Sx, P.Sxx, q, qd, states[ip]);
+    if (bendingNeedsStrain_) axialState(P.Sx, q, qd, states[ip]);
+  }
+  for (int ip = 0; ip < geo.nBending; ++ip) {
+    const IntegrationPoint& P = geo.bending[ip];
+    const PointState& s = states[ip];
+    const UserFunctionValue M = Law::bending(p_, in.t, P.xiNorm, s, bendingRef_[ip].strain, bendingRef_[ip].curvature);
+    Law::check(p_, M, false, in.t, s, bendingNeedsStrain_, true, derivatives);
     const double w = P.w;
     for (int a = 0; a < 8; ++a) f[a] += w * M.value * s.h[a];
     if (wantK) {
-      double dM[8];
-      for (int b = 0; b < 8; ++b) {
-        dM[b] = M.dCurvature * s.h[b] + M.dCurvature_t * s.hk_t[b];
-        if (bendingNeedsStrain_) dM[b] += M.dAxialStrain * s.g[b] + M.dAxialStrain_t * s.geps_t[b];
+      // material part w dK/dq (dM/dq)^T = w dM/dK dK/dq dK/dq^T + w dK/dq (the other terms of dM/dq)^T,
+      // geometric part M d2K/dq2
+      const double a = w * M.dCurvature, c = w * M.value;
+      if (Kg == Km) {
+        addBendingBlocks(P.Sx, P.Sxx, s, a, c, symmetric, Km);
+      } else {
+        addBendingBlocks(P.Sx, P.Sxx, s, a, 0.0, symmetric, Km);
+        addBendingBlocks(P.Sx, P.Sxx, s, 0.0, c, symmetric, Kg);
       }
-      const double c = w * M.value;
-      for (int a = 0; a < 8; ++a)
-        for (int b = 0; b < 8; ++b) {
-          Km[8 * a + b] += w * s.h[a] * dM[b];
-          Kg[8 * a + b] += c * s.Hk[8 * a + b];
+      if (qd || bendingNeedsStrain_) {
+        for (int b = 0; b < 8; ++b) dM[b] = 0.0;
+        if (qd) {
+          curvatureRateGradient(P.Sx, P.Sxx, qd, s, hk_t);
+          for (int b = 0; b < 8; ++b) dM[b] += M.dCurvature_t * hk_t[b];
         }
-    }
-    if (wantD) {
-      for (int b = 0; b < 8; ++b) {
-        double dMv = M.dCurvature_t * s.h[b];
-        if (bendingNeedsStrain_) dMv += M.dAxialStrain_t * s.g[b];
-        for (int a = 0; a < 8; ++a) D[8 * a + b] += w * s.h[a] * dMv;
+        if (bendingNeedsStrain_) {
+          for (int b = 0; b < 8; ++b) dM[b] += M.dAxialStrain * s.g[b];
+          if (qd) {
+            strainRateGradient(P.Sx, s, geps_t);
+            for (int b = 0; b < 8; ++b) dM[b] += M.dAxialStrain_t * geps_t[b];
+          }
+        }
+        addOuter(w, s.h, dM, Km);
       }
+    }
+    if (wantD) {  // w dK/dq (dM/dqdot)^T
+      for (int b = 0; b < 8; ++b) dM[b] = M.dCurvature_t * s.h[b];
+      if (bendingNeedsStrain_)
+        for (int b = 0; b < 8; ++b) dM[b] += M.dAxialStrain_t * s.g[b];
+      addOuter(w, s.h, dM, D);
     }
   }
 
+  if (wantK && symmetric) {
+    mirrorUpper(Km);
+    if (Kg != Km) mirrorUpper(Kg);
+  }
   out.f.assign(f, f + 8);
-  if (wantK) {
-    if (needs.splitGeometric) {
-      out.K.assign(Km.begin(), Km.end());
-      out.Kg.assign(Kg.begin(), Kg.end());
-    } else {
-      out.K.resize(64);
-      for (int a = 0; a < 64; ++a) out.K[a] = Km[a] + Kg[a];
-    }
-  }
-  if (needs.damping) {
-    if (wantD) out.D.assign(D.begin(), D.end());
-    else out.D.assign(64, 0.0);
-  }
 }
 
-void AncfCable2D::mass(const double* /*q*/, std::vector<double>& M) const { M.assign(M_.begin(), M_.end()); }
+void AncfCable2D::mass(const double* /*q*/, std::vector<double>& M) const { M.assign(geo_->M.begin(), geo_->M.end()); }
 
 void AncfCable2D::bodyForce(const double* /*q*/, const Vec3& a, std::vector<double>& f) const {
-  // rhoA int S dx with 2-point Gauss (exact for cubics), as Exudyn's DisplacementMassIntegral_q.
-  const Rule r = gauss(2);
-  double SI[4] = {};
-  for (int i = 0; i < r.n; ++i) {
-    const std::array<double, 4> S = shape(0.5 * L_ * r.xi[i] + 0.5 * L_, L_);
-    const double w = p_.physicsMassPerLength * 0.5 * L_ * r.w[i];
-    for (int j = 0; j < 4; ++j) SI[j] += w * S[j];
-  }
   f.resize(8);
   for (int j = 0; j < 4; ++j) {
-    f[2 * j] = SI[j] * a[0];
-    f[2 * j + 1] = SI[j] * a[1];
+    f[2 * j] = geo_->massShapeIntegral[j] * a[0];
+    f[2 * j + 1] = geo_->massShapeIntegral[j] * a[1];
   }
 }
 
@@ -480,14 +613,14 @@ double AncfCable2D::axialForceAt(const double* q, const double* qdot, double x, 
   PointState s;
   const std::array<double, 4> Sx = shape_x(x, L_);
   axialState(Sx, q, qdot, s);
-  if (axialNeedsCurvature_) bendingState(Sx, shape_xx(x, L_), q, qdot, false, s);
+  if (axialNeedsCurvature_) bendingState(Sx, shape_xx(x, L_), q, qdot, s);
   return Law::axial(p_, t, x / L_, s, axialStrainRef(x), curvatureRef(x)).value;
 }
 
 double AncfCable2D::bendingMomentAt(const double* q, const double* qdot, double x, double t) const {
   PointState s;
   const std::array<double, 4> Sx = shape_x(x, L_);
-  bendingState(Sx, shape_xx(x, L_), q, qdot, false, s);
+  bendingState(Sx, shape_xx(x, L_), q, qdot, s);
   if (bendingNeedsStrain_) axialState(Sx, q, qdot, s);
   return Law::bending(p_, t, x / L_, s, axialStrainRef(x), curvatureRef(x)).value;
 }

@@ -138,11 +138,13 @@ DynamicAnalysis::~DynamicAnalysis() {
 // by the mass term at the step sizes dynamics uses, so on one process a model without multipliers
 // (no rigid modes or releases as constraints) is factored by PETSc's own LU (no pivoting needed;
 // nested-dissection order) instead of MUMPS, whose fixed cost per factorization (about 0.1 ms)
-// exceeds a whole time step of a small model. Anything else: MUMPS, as everywhere.
+// exceeds a whole time step of a small model. ANCF chains: PETSc's LU in band order, on several
+// processes the same LU on every process (useChainLU). Anything else: MUMPS, as everywhere.
 PetscErrorCode DynamicAnalysis::useDynamicsSolver(KSP ksp) {
   PetscFunctionBeginUser;
   PetscCall(useDirectSolver(ksp));
   const DistributedMesh& mesh = asm_.mesh();
+  if (ancfChain(mesh)) PetscFunctionReturn(useChainLU(ksp, mesh.comm));
   int size = 1;
   MPI_Comm_size(mesh.comm, &size);
   bool plain = size == 1;
@@ -362,6 +364,7 @@ PetscErrorCode DynamicAnalysis::initialAccelerations(Vec U, Vec V, Vec Qdd, bool
     PetscCall(KSPSetOperators(ksp, M, M));
   }
   PetscCall(useDirectSolver(ksp));
+  if (ancfChain(asm_.mesh())) PetscCall(useChainLU(ksp, comm));
   PetscCall(KSPSetFromOptions(ksp));
   PetscCall(KSPSolve(ksp, F_, Qdd));
   KSPConvergedReason why;

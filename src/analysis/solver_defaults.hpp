@@ -87,16 +87,17 @@ inline PetscErrorCode useChainLU(KSP ksp, MPI_Comm comm) {
 /// where MUMPS spends its time in per-front overhead (A1 with 16384 elements, 65538 unknowns:
 /// factorization 8 ms and solve 1 ms against 50 ms and 10 ms with MUMPS). PETSc's LU does not
 /// pivot: zero pivots are shifted (the static solver wraps it in GMRES on the exact operator, and
-/// the constraint check factors a diagonally shifted tangent). Everything else: MUMPS.
+/// the constraint check factors a diagonally shifted tangent). On several processes the same LU on
+/// every process, in reverse Cuthill-McKee order (useChainLU: MUMPS orders and distributes a chain
+/// badly). Everything else: MUMPS.
 inline PetscErrorCode useDirectSolver(KSP ksp, const DistributedMesh& mesh) {
   PetscFunctionBeginUser;
   PetscCall(useDirectSolver(ksp));
+  if (!ancfChain(mesh)) PetscFunctionReturn(PETSC_SUCCESS);
   int size = 1;
   MPI_Comm_size(mesh.comm, &size);
-  int chain = size == 1 && mesh.anyAncf;
-  for (const LocalNode& n : mesh.nodes) chain = chain && n.kind == NodeKind::Ancf2D;
-  for (const LocalElement& e : mesh.elements) chain = chain && e.firstMultiplier < 0;
-  if (chain) PetscCall(usePetscLU(ksp));
+  if (size == 1) PetscCall(usePetscLU(ksp));
+  else PetscCall(useChainLU(ksp, mesh.comm));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

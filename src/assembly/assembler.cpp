@@ -30,6 +30,7 @@ const SinewEvents& SinewEvents::get() {
     PetscLogEventRegister("SinewTangentOp", cls, &e.tangentOperator);
     PetscLogEventRegister("SinewCOOSetup", cls, &e.cooSetup);
     PetscLogEventRegister("SinewCoarseSpace", cls, &e.coarseSpace);
+    PetscLogEventRegister("SinewCorotJac", cls, &e.corotatedJacobian);
     return e;
   }();
   return ev;

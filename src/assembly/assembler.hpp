@@ -326,6 +326,11 @@ class Assembler {
   double corotatedShiftA_ = 0;
   /// Keeps element e's dynamic block K (8 x 8) and its angle from the ANCF state q (dynamicJacobian).
   void keepCorotated(size_t e, const LocalElement& el, const double* q, const double* K);
+  /// COO pattern of corotatedJacobian on J (once per matrix): element blocks, then per owned ANCF node
+  /// its two translation diagonals (nodal mass) and its 2 x 2 slope block (slope torque).
+  PetscErrorCode prepareCorotatedCOO(Mat J);
+  std::vector<PetscScalar> corotatedValues_;
+  bool slopeTorqueBlock(int i, const LoadState& ls, double* K) const;
   std::vector<std::pair<int, SetPressure>> pressureElems_;  // local element index, pressure
   bool anyPressure_ = false;
   std::vector<int> cableElems_;  // local elements with a Cable3D kernel

@@ -37,23 +37,62 @@ void Assembler::keepCorotated(size_t e, const LocalElement& el, const double* q,
   corotatedAngle_[e] = elementAngle(q);
 }
 
+PetscErrorCode Assembler::prepareCorotatedCOO(Mat J) {
+  PetscFunctionBeginUser;
+  // a marker composed with the matrix: it dies with the matrix (a later matrix may reuse the address)
+  PetscObject marker = nullptr;
+  PetscCall(PetscObjectQuery(reinterpret_cast<PetscObject>(J), "SinewCorotatedCOO", &marker));
+  if (marker) PetscFunctionReturn(PETSC_SUCCESS);
+  std::vector<PetscInt> ci, cj;
+  auto global = [&](int local) { return local >= 0 ? static_cast<PetscInt>(mesh_.localToGlobalUnknown(local)) : -1; };
+  std::array<int, kMaxElementRows> idx;
+  std::array<double, 48> q;
+  for (const LocalElement& el : mesh_.elements) {
+    gatherElement(el, q.data(), nullptr, idx.data(), nullptr);
+    for (int r = 0; r < 8; ++r)
+      for (int c = 0; c < 8; ++c) {
+        ci.push_back(global(idx[r]));
+        cj.push_back(global(idx[c]));
+      }
+  }
+  for (int i = 0; i < mesh_.numOwnedNodes; ++i) {
+    const LocalNode& n = mesh_.nodes[i];
+    for (int k = 0; k < 2; ++k) {  // nodal mass
+      ci.push_back(global(n.dof[k]));
+      cj.push_back(global(n.dof[k]));
+    }
+    for (int r = 2; r < 4; ++r)  // slope torque
+      for (int c = 2; c < 4; ++c) {
+        ci.push_back(global(n.dof[r]));
+        cj.push_back(global(n.dof[c]));
+      }
+  }
+  corotatedValues_.assign(ci.size(), 0.0);
+  PetscCall(MatSetPreallocationCOO(J, static_cast<PetscCount>(ci.size()), ci.data(), cj.data()));
+  PetscContainer tag;
+  PetscCall(PetscContainerCreate(mesh_.comm, &tag));
+  PetscCall(PetscObjectCompose(reinterpret_cast<PetscObject>(J), "SinewCorotatedCOO", reinterpret_cast<PetscObject>(tag)));
+  PetscCall(PetscContainerDestroy(&tag));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode Assembler::corotatedJacobian(Vec U, const LoadState& ls, Mat J) {
   PetscFunctionBeginUser;
   if (!corotatedValid_) SETERRQ(PETSC_COMM_SELF, PETSC_ERR_ORDER, "corotatedJacobian: no kept ANCF blocks");
   PetscCall(PetscLogEventBegin(SinewEvents::get().corotatedJacobian, 0, 0, 0, 0));
+  PetscCall(prepareCorotatedCOO(J));
   PetscCall(loadLocal(U, uWork_));
   Vec ul;
   const PetscScalar* u;
   PetscCall(VecGhostGetLocalForm(uWork_, &ul));
   PetscCall(VecGetArrayRead(ul, &u));
   computeStates(u, ls);
-  PetscCall(MatZeroEntries(J));
   std::array<double, 48> q;
   std::array<int, kMaxElementRows> idx;
-  double T[64], K[64];
-  for (size_t e = 0; e < mesh_.elements.size(); ++e) {
-    const LocalElement& el = mesh_.elements[e];
-    gatherElement(el, q.data(), u, idx.data(), nullptr);
+  double T[64];
+  PetscScalar* K = corotatedValues_.data();
+  for (size_t e = 0; e < mesh_.elements.size(); ++e, K += 64) {
+    gatherElement(mesh_.elements[e], q.data(), u, idx.data(), nullptr);
     const double d = elementAngle(q.data()) - corotatedAngle_[e];
     const double c = std::cos(d), s = std::sin(d);
     const double* B = corotatedBlocks_.data() + 64 * e;
@@ -68,22 +107,15 @@ PetscErrorCode Assembler::corotatedJacobian(Vec U, const LoadState& ls, Mat J) {
         K[8 * a + b] = c * T[8 * a + b] - s * T[8 * a + b + 1];
         K[8 * a + b + 1] = s * T[8 * a + b] + c * T[8 * a + b + 1];
       }
-    PetscCall(MatSetValuesLocal(J, 8, idx.data(), 8, idx.data(), K, ADD_VALUES));
   }
-  for (int i = 0; i < mesh_.numOwnedNodes; ++i) {  // nodal masses, as dynamicJacobian
+  for (int i = 0; i < mesh_.numOwnedNodes; ++i, K += 6) {  // node terms, as dynamicJacobian
     const LocalNode& n = mesh_.nodes[i];
-    if (n.mass <= 0 || corotatedShiftA_ == 0.0) continue;
-    const double m = corotatedShiftA_ * n.mass;
-    for (int k = 0; k < 2; ++k) {
-      const PetscInt r = n.dof[k];
-      PetscCall(MatSetValuesLocal(J, 1, &r, 1, &r, &m, ADD_VALUES));
-    }
+    K[0] = K[1] = n.mass > 0 ? corotatedShiftA_ * n.mass : 0.0;
+    if (!slopeTorqueBlock(i, ls, K + 2)) K[2] = K[3] = K[4] = K[5] = 0.0;
   }
-  PetscCall(addSlopeTorqueTangent(ls, J));
   PetscCall(VecRestoreArrayRead(ul, &u));
   PetscCall(VecGhostRestoreLocalForm(uWork_, &ul));
-  PetscCall(MatAssemblyBegin(J, MAT_FINAL_ASSEMBLY));
-  PetscCall(MatAssemblyEnd(J, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatSetValuesCOO(J, corotatedValues_.data(), INSERT_VALUES));
   PetscCall(PetscLogEventEnd(SinewEvents::get().corotatedJacobian, 0, 0, 0, 0));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

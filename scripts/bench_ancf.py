@@ -69,7 +69,7 @@ def main():
     sec = ["A1 refined (`scripts/bench_ancf.py`): static cantilever under gravity, `loadsteps: 1`, `calcfreq: false`; "
            "4 n + 1 unknowns. Solver (default for ANCF statics, docs/ancf_cable2d.md): Newton, each linear system solved "
            "by GMRES on the element-wise tangent operator, right-preconditioned by the LU factorization of the "
-           "assembled tangent (1 rank: PETSc LU in nested-dissection order; 2 ranks: MUMPS), from 1024 elements per "
+           "assembled tangent (PETSc LU: 1 rank in nested-dissection order; 2 ranks on every rank in reverse Cuthill-McKee order), from 1024 elements per "
            "scene element with the cable coarse space (two-level) and the coarse predictor. Phases = setup + "
            "constraint check + statics + output of the run summary; wall = mpirun as a whole (process start "
            "included); memory = /usr/bin/time -v maximum resident set (largest process). Machine: 2 cores; load "

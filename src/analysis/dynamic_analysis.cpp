@@ -71,6 +71,10 @@ DynamicAnalysis::DynamicAnalysis(Assembler& assembler, const DynamicsOptions& op
   SinewCallThrow(comm, PetscOptionsGetString(nullptr, nullptr, "-dynamics_modified_newton", modified, sizeof(modified), &set));
   const std::string mode = modified;
   modifiedNewton_ = mode == "true" || (mode == "auto" && asm_.mesh().numGlobalUnknowns >= 200);
+  PetscBool corot = PETSC_TRUE;
+  SinewCallThrow(comm, PetscOptionsGetBool(nullptr, nullptr, "-dynamics_corotated_jacobian", &corot, &set));
+  corotated_ = corot && modifiedNewton_ && scheme == Scheme::ArnoldBruls && ancfChain(asm_.mesh());
+  asm_.keepCorotatedBlocks(corotated_);
   // Newton with mixed stresses for beams, as in statics (docs/beam.md): a large rotation step moves
   // the nodes along straight lines and stretches axially stiff elements; the displacement-based
   // tangent would carry that spurious axial force (residuals alternating by 1e2 per iteration on a
@@ -138,11 +142,13 @@ DynamicAnalysis::~DynamicAnalysis() {
 // by the mass term at the step sizes dynamics uses, so on one process a model without multipliers
 // (no rigid modes or releases as constraints) is factored by PETSc's own LU (no pivoting needed;
 // nested-dissection order) instead of MUMPS, whose fixed cost per factorization (about 0.1 ms)
-// exceeds a whole time step of a small model. Anything else: MUMPS, as everywhere.
+// exceeds a whole time step of a small model. ANCF chains: PETSc's LU in band order, on several
+// processes the same LU on every process (useChainLU). Anything else: MUMPS, as everywhere.
 PetscErrorCode DynamicAnalysis::useDynamicsSolver(KSP ksp) {
   PetscFunctionBeginUser;
   PetscCall(useDirectSolver(ksp));
   const DistributedMesh& mesh = asm_.mesh();
+  if (ancfChain(mesh)) PetscFunctionReturn(useChainLU(ksp, mesh.comm));
   int size = 1;
   MPI_Comm_size(mesh.comm, &size);
   bool plain = size == 1;
@@ -237,9 +243,24 @@ PetscErrorCode DynamicAnalysis::formJacobian(SNES snes, Vec U, Mat, Mat P, void*
     const bool sameH = std::abs(self->jacobianH_ - h) <= 1e-9 * h;
     if (self->jacobianValid_ && sameH && !slow && self->reuseCount_ < kMaxReuse) {
       ++self->reuseCount_;
+      self->lastCorotated_ = false;
+      PetscFunctionReturn(PETSC_SUCCESS);
+    }
+    // a fine cable's kept Jacobian goes stale mainly by the rotation of its elements: rebuild it
+    // from the kept blocks turned with their elements (A1g, 65536 elements, 20 steps of 1e-3 s: 1
+    // Jacobian and 18 rebuilds against 31 Jacobians); a fresh one when the last rebuild did not help
+    if (self->corotated_ && slow && self->jacobianValid_ && sameH && !self->lastCorotated_ &&
+        self->asm_.corotatedBlocksValid()) {
+      PetscCall(self->asm_.corotatedJacobian(U, self->ls_, P));
+      PetscCall(self->damping_.addJacobian(self->gamma_ / (self->beta_ * h), P));
+      ++self->report_.jacobians;
+      ++self->report_.corotatedJacobians;
+      self->reuseCount_ = 0;
+      self->lastCorotated_ = true;
       PetscFunctionReturn(PETSC_SUCCESS);
     }
   }
+  self->lastCorotated_ = false;
   if (self->midpoint_) {
     // d/dq_{n+1} of the midpoint residual: (K + (2/h) C + (4/h^2) M) / 2 at the mid state, the rotary
     // inertia's block exact (rotaryMomentumStep; the elements' rotation columns are those of the mid state)
@@ -362,6 +383,7 @@ PetscErrorCode DynamicAnalysis::initialAccelerations(Vec U, Vec V, Vec Qdd, bool
     PetscCall(KSPSetOperators(ksp, M, M));
   }
   PetscCall(useDirectSolver(ksp));
+  if (ancfChain(asm_.mesh())) PetscCall(useChainLU(ksp, comm));
   PetscCall(KSPSetFromOptions(ksp));
   PetscCall(KSPSolve(ksp, F_, Qdd));
   KSPConvergedReason why;

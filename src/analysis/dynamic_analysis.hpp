@@ -35,6 +35,7 @@ struct DynamicsReport {
   int substeps = 0;          ///< SNES solves (1 per step without cuts)
   int newtonIterations = 0;
   int jacobians = 0;         ///< Jacobians assembled and factored (modified Newton keeps one for many iterations)
+  int corotatedJacobians = 0;  ///< of those, rebuilt from rotated kept element blocks (ANCF cables, no kernel)
   double time = 0;           ///< last converged time
   // adaptive time steps (opt.dynamics.adaptive; 0 with a fixed dt)
   int acceptedSteps = 0;     ///< accepted steps (time steps taken) since t = 0
@@ -180,6 +181,11 @@ class DynamicAnalysis {
   // one Jacobian make the next iteration assemble a fresh one (DynamicAnalysis::formJacobian).
   bool modifiedNewton_ = true;
   bool jacobianValid_ = false;
+  /// -dynamics_corotated_jacobian (ANCF cables under modified Newton): a kept Jacobian that stops
+  /// contracting is first rebuilt from its element blocks rotated with the elements
+  /// (Assembler::corotatedJacobian); a fresh one only when that does not help either.
+  bool corotated_ = false;
+  bool lastCorotated_ = false;  ///< the current Newton matrix is a corotated rebuild
   bool restPredictor_ = false;  ///< guarded retry: Newton starts at q_n
   bool modifiedDefault_ = true;  ///< modifiedNewton_ outside guarded retries (set at the start of a time loop)
   /// Guarded mode: a failed solve is retried at the same step with full Newton started at q_n (on);

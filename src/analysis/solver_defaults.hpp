@@ -27,16 +27,57 @@ inline PetscErrorCode useDirectSolver(KSP ksp) {
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/// PETSc's own sequential LU in nested-dissection order, without pivoting: a zero pivot (a wild
-/// Newton iterate) is shifted instead of failing the solve. For one-process models whose matrices
-/// need no pivoting (see below and DynamicAnalysis::useDynamicsSolver).
-inline PetscErrorCode usePetscLU(KSP ksp) {
+/// PETSc's own sequential LU without pivoting: a zero pivot (a wild Newton iterate) is shifted
+/// instead of failing the solve. For one-process models whose matrices need no pivoting (see below
+/// and DynamicAnalysis::useDynamicsSolver). Ordering: nested dissection, or `ordering`.
+inline PetscErrorCode usePetscLU(KSP ksp, MatOrderingType ordering = MATORDERINGND) {
   PetscFunctionBeginUser;
   PC pc;
   PetscCall(KSPGetPC(ksp, &pc));
   PetscCall(PCFactorSetMatSolverType(pc, MATSOLVERPETSC));
-  PetscCall(PCFactorSetMatOrderingType(pc, MATORDERINGND));
+  PetscCall(PCFactorSetMatOrderingType(pc, ordering));
   PetscCall(PCFactorSetShiftType(pc, MAT_SHIFT_NONZERO));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/// A chain of ANCF cable elements: every node an ANCF node, no multipliers (on every rank). Collective.
+inline bool ancfChain(const DistributedMesh& mesh) {
+  int chain = mesh.anyAncf;
+  for (const LocalNode& n : mesh.nodes) chain = chain && n.kind == NodeKind::Ancf2D;
+  for (const LocalElement& e : mesh.elements) chain = chain && e.firstMultiplier < 0;
+  MPI_Allreduce(MPI_IN_PLACE, &chain, 1, MPI_INT, MPI_LAND, mesh.comm);
+  return chain != 0;
+}
+
+/// The LU of an ANCF chain's time-step matrix (DynamicAnalysis): PETSc's LU (usePetscLU) in reverse
+/// Cuthill-McKee order, which keeps a chain's band (A1g at 65536 elements, 262145 unknowns, one
+/// process: factorization 35 ms and solve 4.2 ms against 61 ms and 6.6 ms in nested-dissection order).
+/// On several processes every process factors the whole matrix (PCREDUNDANT; options prefix
+/// redundant_): the chain's elimination tree is one path, which MUMPS neither orders nor
+/// distributes well (A1g, 65537 unknowns, 2 ranks: factorization 100 ms and solve 30 ms with MUMPS,
+/// whatever its ordering, ICNTL(7) = 0..6 or PT-Scotch / ParMETIS; 12 ms and 2 ms here). Each process
+/// then holds the whole matrix and its factors (docs/performance.md, Dynamics).
+inline PetscErrorCode useChainLU(KSP ksp, MPI_Comm comm) {
+  PetscFunctionBeginUser;
+  int size = 1;
+  MPI_Comm_size(comm, &size);
+  PetscCall(KSPSetType(ksp, KSPPREONLY));
+  if (size == 1) {
+    PC pc;
+    PetscCall(KSPGetPC(ksp, &pc));
+    PetscCall(PCSetType(pc, PCLU));
+    PetscFunctionReturn(usePetscLU(ksp, MATORDERINGRCM));
+  }
+  PC pc;
+  KSP sub;
+  PetscCall(KSPGetPC(ksp, &pc));
+  PetscCall(PCSetType(pc, PCREDUNDANT));
+  PetscCall(PCRedundantGetKSP(pc, &sub));
+  PetscCall(KSPSetType(sub, KSPPREONLY));
+  PC inner;
+  PetscCall(KSPGetPC(sub, &inner));
+  PetscCall(PCSetType(inner, PCLU));
+  PetscCall(usePetscLU(sub, MATORDERINGRCM));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -46,16 +87,17 @@ inline PetscErrorCode usePetscLU(KSP ksp) {
 /// where MUMPS spends its time in per-front overhead (A1 with 16384 elements, 65538 unknowns:
 /// factorization 8 ms and solve 1 ms against 50 ms and 10 ms with MUMPS). PETSc's LU does not
 /// pivot: zero pivots are shifted (the static solver wraps it in GMRES on the exact operator, and
-/// the constraint check factors a diagonally shifted tangent). Everything else: MUMPS.
+/// the constraint check factors a diagonally shifted tangent). On several processes the same LU on
+/// every process, in reverse Cuthill-McKee order (useChainLU: MUMPS orders and distributes a chain
+/// badly). Everything else: MUMPS.
 inline PetscErrorCode useDirectSolver(KSP ksp, const DistributedMesh& mesh) {
   PetscFunctionBeginUser;
   PetscCall(useDirectSolver(ksp));
+  if (!ancfChain(mesh)) PetscFunctionReturn(PETSC_SUCCESS);
   int size = 1;
   MPI_Comm_size(mesh.comm, &size);
-  int chain = size == 1 && mesh.anyAncf;
-  for (const LocalNode& n : mesh.nodes) chain = chain && n.kind == NodeKind::Ancf2D;
-  for (const LocalElement& e : mesh.elements) chain = chain && e.firstMultiplier < 0;
-  if (chain) PetscCall(usePetscLU(ksp));
+  if (size == 1) PetscCall(usePetscLU(ksp));
+  else PetscCall(useChainLU(ksp, mesh.comm));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

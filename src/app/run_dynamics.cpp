@@ -152,8 +152,9 @@ PetscErrorCode runDynamics(RunContext& ctx) {
   s << "  dynamics: " << r.steps << " of " << nsteps << " steps of dt = " << opts.dt << " to t = " << r.time;
   if (dyn.midpoint()) s << ", implicit midpoint rule";
   else s << ", generalized-alpha rho = " << opts.spectral_radius << " (alpha_m = " << dyn.alphaM() << ", alpha_f = " << dyn.alphaF() << ")";
-  s << ", " << r.newtonIterations << " Newton iterations on " << r.jacobians << " Jacobians, "
-    << ctx.assembler.counters().dampingMatrices << " element damping matrices";
+  s << ", " << r.newtonIterations << " Newton iterations on " << r.jacobians << " Jacobians";
+  if (r.corotatedJacobians > 0) s << " (" << r.corotatedJacobians << " rebuilt from rotated element blocks)";
+  s << ", " << ctx.assembler.counters().dampingMatrices << " element damping matrices";
   if (r.guardedSteps > 0) s << ", " << r.guardedSteps << " steps retried from the last state";
   if (r.reducedSteps > 0) s << ", " << r.reducedSteps << " steps with halved sub-steps (" << r.substeps << " solves)";
   s << "\n";

@@ -30,6 +30,7 @@ const SinewEvents& SinewEvents::get() {
     PetscLogEventRegister("SinewTangentOp", cls, &e.tangentOperator);
     PetscLogEventRegister("SinewCOOSetup", cls, &e.cooSetup);
     PetscLogEventRegister("SinewCoarseSpace", cls, &e.coarseSpace);
+    PetscLogEventRegister("SinewCorotJac", cls, &e.corotatedJacobian);
     return e;
   }();
   return ev;
@@ -747,21 +748,30 @@ PetscErrorCode Assembler::prepareCOO(Mat J) {
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-// tangent of slope torques on ANCF nodes (node states current): d/ds of -tau (-s_y, s_x)/|s|^2;
-// J = nullptr: only kept as blocks for applyTangent
+// tangent of a slope torque on ANCF node i (node state current): d/ds of -tau (-s_y, s_x)/|s|^2;
+// false (K untouched) without a torque
+bool Assembler::slopeTorqueBlock(int i, const LoadState& ls, double* K) const {
+  const LocalNode& n = mesh_.nodes[i];
+  if (n.kind != NodeKind::Ancf2D) return false;
+  const double tau = ls.initialFactor * n.loadInitial[4] + ls.loadFactor * n.load[4];
+  if (tau == 0.0) return false;
+  const double* s = &state_[12 * static_cast<size_t>(i)];
+  const double sx = s[2], sy = s[3], s2 = sx * sx + sy * sy, s4 = s2 * s2;
+  // r = -tau * (-sy, sx) / s2
+  K[0] = -tau * (2 * sx * sy / s4);
+  K[1] = -tau * (-1 / s2 + 2 * sy * sy / s4);
+  K[2] = -tau * (1 / s2 - 2 * sx * sx / s4);
+  K[3] = -tau * (-2 * sx * sy / s4);
+  return true;
+}
+
+// tangent of slope torques on ANCF nodes (slopeTorqueBlock); J = nullptr: only kept as blocks for applyTangent
 PetscErrorCode Assembler::addSlopeTorqueTangent(const LoadState& ls, Mat J) {
   PetscFunctionBeginUser;
-  const double lam = ls.loadFactor, lam0 = ls.initialFactor;
   for (int i = 0; i < mesh_.numOwnedNodes; ++i) {
     const LocalNode& n = mesh_.nodes[i];
-    if (n.kind != NodeKind::Ancf2D) continue;
-    const double tau = lam0 * n.loadInitial[4] + lam * n.load[4];
-    if (tau == 0.0) continue;
-    const double* s = &state_[12 * static_cast<size_t>(i)];
-    const double sx = s[2], sy = s[3], s2 = sx * sx + sy * sy, s4 = s2 * s2;
-    // r = -tau * (-sy, sx) / s2
-    const double K[4] = {-tau * (2 * sx * sy / s4), -tau * (-1 / s2 + 2 * sy * sy / s4),
-                         -tau * (1 / s2 - 2 * sx * sx / s4), -tau * (-2 * sx * sy / s4)};
+    double K[4];
+    if (!slopeTorqueBlock(i, ls, K)) continue;
     const PetscInt rows[2] = {n.dof[2], n.dof[3]};
     if (J) PetscCall(MatSetValuesLocal(J, 2, rows, 2, rows, K, ADD_VALUES));
     if (keepBlocks_) torqueBlocks_.push_back({i, {K[0], K[1], K[2], K[3]}});

@@ -135,6 +135,21 @@ class Assembler {
   PetscErrorCode dynamicResidual(Vec U, Vec V, Vec A, const LoadState& ls, Vec F);
   /// J = K(U, V) + shiftV D(U, V) + shiftA M; D only from kernels with hasDamping().
   PetscErrorCode dynamicJacobian(Vec U, Vec V, const LoadState& ls, double shiftV, double shiftA, Mat J);
+  // ---- corotated Newton matrix of ANCF cables (corotated_jacobian.cpp)
+  /// From now on dynamicJacobian() also keeps every ANCF cable element's block (K + shiftV D + shiftA M)
+  /// and the angle of the element's mean slope, for corotatedJacobian().
+  void keepCorotatedBlocks(bool on) {
+    keepCorotated_ = on;
+    corotatedValid_ = false;
+  }
+  /// The kept blocks cover every element (all are ANCF cables, the last dynamicJacobian kept them).
+  bool corotatedBlocksValid() const { return corotatedValid_; }
+  /// J from the blocks kept by the last dynamicJacobian(), each rotated by the change of its element's
+  /// angle since then: J = sum_e Q_e B_e Q_e^T (Q_e rotates every 2-vector of the element, positions
+  /// and slopes), plus the node terms of dynamicJacobian (nodal masses with the kept shiftA, slope
+  /// torques at U). Exact for elements that moved rigidly: B(Q q) = Q B(q) Q^T by objectivity, and the
+  /// mass term is isotropic. No element kernel runs. Logged as SinewCorotJac.
+  PetscErrorCode corotatedJacobian(Vec U, const LoadState& ls, Mat J);
   /// Dynamics output: while set (V, Qdd in the unknowns layout), fullResidual() adds the inertia
   /// M qdd (elements, nodal mass and mominertia; prescribed DOFs with their prescribed accelerations),
   /// so the reactions at supports and prescribed DOFs are the dynamic ones. nullptr: statics.
@@ -307,6 +322,17 @@ class Assembler {
   std::vector<double> rigidData_;
   void keepRigid(const LocalElement& el, const double* q, const double* f, const double* K, int n);
   Vec xOp_ = nullptr, yOp_ = nullptr;  // ghosted work vectors of applyTangent
+  // corotated Newton matrix (keepCorotatedBlocks): 8 x 8 block and mean-slope angle per element
+  bool keepCorotated_ = false, corotatedValid_ = false;
+  std::vector<double> corotatedBlocks_, corotatedAngle_;
+  double corotatedShiftA_ = 0;
+  /// Keeps element e's dynamic block K (8 x 8) and its angle from the ANCF state q (dynamicJacobian).
+  void keepCorotated(size_t e, const LocalElement& el, const double* q, const double* K);
+  /// COO pattern of corotatedJacobian on J (once per matrix): element blocks, then per owned ANCF node
+  /// its two translation diagonals (nodal mass) and its 2 x 2 slope block (slope torque).
+  PetscErrorCode prepareCorotatedCOO(Mat J);
+  std::vector<PetscScalar> corotatedValues_;
+  bool slopeTorqueBlock(int i, const LoadState& ls, double* K) const;
   std::vector<std::pair<int, SetPressure>> pressureElems_;  // local element index, pressure
   bool anyPressure_ = false;
   std::vector<int> cableElems_;  // local elements with a Cable3D kernel
@@ -322,6 +348,7 @@ struct SinewEvents {
   PetscLogEvent tangentOperator;   ///< Assembler::applyTangent (element-wise products with the tangent)
   PetscLogEvent cooSetup;          ///< one-time COO pattern of a matrix (inside SinewJacobian)
   PetscLogEvent coarseSpace;       ///< set-up of the cable coarse space (fine LU + coarse matrix)
+  PetscLogEvent corotatedJacobian; ///< Assembler::corotatedJacobian (kept blocks rotated, assembled)
   static const SinewEvents& get();
 };
 

@@ -202,6 +202,12 @@ PetscErrorCode Assembler::dynamicJacobian(Vec U, Vec V, const LoadState& ls, dou
   std::array<double, kMaxElementRows> qdot;
   std::vector<double> MeBuf;
   std::array<double, 6> sigmaMixed;
+  if (keepCorotated_) {
+    corotatedBlocks_.resize(64 * mesh_.elements.size());
+    corotatedAngle_.resize(mesh_.elements.size());
+    corotatedShiftA_ = shiftA;
+    corotatedValid_ = true;
+  }
   vLocal_ = v;
   for (const LocalElement& el : mesh_.elements) {
     gatherElement(el, q.data(), u, idx.data(), nullptr);
@@ -224,6 +230,7 @@ PetscErrorCode Assembler::dynamicJacobian(Vec U, Vec V, const LoadState& ls, dou
       for (int r = 0; r < nd; ++r)
         for (int c = 0; c < nd; ++c) out_.K[static_cast<size_t>(r) * n + c] += shiftA * Me[static_cast<size_t>(r) * nd + c];
     }
+    if (keepCorotated_) keepCorotated(static_cast<size_t>(&el - mesh_.elements.data()), el, q.data(), out_.K.data());
     PetscCall(MatSetValuesLocal(J, n, idx.data(), n, idx.data(), out_.K.data(), ADD_VALUES));
   }
   vLocal_ = nullptr;

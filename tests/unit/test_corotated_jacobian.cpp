@@ -1,0 +1,133 @@
+// Assembler::corotatedJacobian (the Newton matrix of fine ANCF cables rebuilt from kept element
+// blocks turned with their elements) on the ranks it is started with (ctest: 1 and 2). Exit status 0
+// only when every check passed.
+//  (1) A free, bent and stretched ANCF cable (nodal mass and a slope torque included) turned rigidly
+//      by 0.7 rad about the origin: the rebuilt matrix from the blocks kept at the first state equals
+//      dynamicJacobian at the turned state to round-off (objectivity: B(Q q) = Q B(q) Q^T, the mass
+//      term is isotropic), while the kept matrix itself differs from it at O(1).
+//  (2) The same with a deformation added to the turn: the rebuilt matrix is no longer exact (printed),
+//      but closer to the fresh one than the kept matrix is.
+// Measured (2026-11-26, 1 and 2 ranks): (1) 6.9e-15 against 0.48 for the kept matrix; (2) 1.3e-2
+// against 0.48.
+#include <petscmat.h>
+#include <petscsys.h>
+
+#include <cmath>
+#include <string>
+
+#include "assembly/assembler.hpp"
+#include "assembly/kernel_factory.hpp"
+#include "mesh/distributed_mesh.hpp"
+#include "mesh/fe_mesh.hpp"
+#include "scene/scene_reader.hpp"
+
+namespace {
+
+int failures = 0;
+
+void expect(bool ok, const char* what, double value) {
+  PetscPrintf(PETSC_COMM_WORLD, "  %-66s %.3e  %s\n", what, value, ok ? "ok" : "FAILED");
+  if (!ok) ++failures;
+}
+
+const char* kScene = R"({"nodes": [[0, 0], [1.5, 0]], "elements": [[1, 2]],
+  "nprops": {2: {"moment": [0, 0, 40.0], "mass": 0.3}},
+  "eprops": [{"elems": [1], "type": "ancf_cable2d", "physicsMassPerLength": 1.0, "physicsBendingStiffness": 2.0,
+              "physicsAxialStiffness": 5.0e6, "nbeams": 200}],
+  "opt": {"loadsteps": 1, "calcfreq": false}})";
+
+/// ||A - B||_inf / ||B||_inf
+PetscErrorCode relDiff(Mat A, Mat B, double* d) {
+  PetscFunctionBeginUser;
+  Mat D;
+  PetscCall(MatDuplicate(A, MAT_COPY_VALUES, &D));
+  PetscCall(MatAXPY(D, -1.0, B, SAME_NONZERO_PATTERN));
+  PetscReal nd, nb;
+  PetscCall(MatNorm(D, NORM_INFINITY, &nd));
+  PetscCall(MatNorm(B, NORM_INFINITY, &nb));
+  PetscCall(MatDestroy(&D));
+  *d = nd / nb;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/// U1 = the state of U0 turned by alpha about the origin (positions and slopes), plus `extra` times a
+/// smooth field on every unknown.
+PetscErrorCode turned(sinew::Assembler& a, const sinew::DistributedMesh& mesh, Vec U0, double alpha, double extra,
+                      Vec U1) {
+  PetscFunctionBeginUser;
+  sinew::LoadState ls;
+  ls.loadFactor = 1.0;
+  PetscCall(a.updateStates(U0, ls));
+  PetscScalar* u;
+  PetscCall(VecGetArray(U1, &u));
+  const double c = std::cos(alpha), s = std::sin(alpha);
+  for (int i = 0; i < mesh.numOwnedNodes; ++i) {
+    const sinew::LocalNode& n = mesh.nodes[i];
+    const double* st = a.nodeState(i);
+    const double ref[4] = {n.X0[0], n.X0[1], n.slope0[0], n.slope0[1]};
+    const double rot[4] = {c * st[0] - s * st[1], s * st[0] + c * st[1], c * st[2] - s * st[3], s * st[2] + c * st[3]};
+    for (int k = 0; k < 4; ++k)
+      if (n.dof[k] >= 0) u[n.dof[k]] = rot[k] - ref[k] + extra * std::sin(1.3 * n.dof[k]);
+  }
+  PetscCall(VecRestoreArray(U1, &u));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode check() {
+  PetscFunctionBeginUser;
+  const sinew::Model model = sinew::parseScene(kScene, ".");
+  const sinew::FeMesh fe = sinew::discretize(model);
+  sinew::DistributedMesh mesh = sinew::distributeMesh(PETSC_COMM_WORLD, model, fe, sinew::makeKernelFactory(model));
+  sinew::Assembler a(mesh, model.opt.gravity);
+  Mat J0, Jc, J1;
+  Vec U0, U1, V;
+  PetscCall(a.createMatrix(&J0));
+  PetscCall(a.createMatrix(&Jc));
+  PetscCall(a.createMatrix(&J1));
+  PetscCall(a.createVector(&U0));
+  PetscCall(VecDuplicate(U0, &U1));
+  PetscCall(VecDuplicate(U0, &V));
+  PetscCall(VecSet(V, 0.0));
+  PetscInt lo, hi;
+  PetscCall(VecGetOwnershipRange(U0, &lo, &hi));
+  for (PetscInt i = lo; i < hi; ++i) PetscCall(VecSetValue(U0, i, 0.05 * std::sin(0.37 * static_cast<double>(i)), INSERT_VALUES));
+  PetscCall(VecAssemblyBegin(U0));
+  PetscCall(VecAssemblyEnd(U0));
+  sinew::LoadState ls;
+  ls.loadFactor = 1.0;
+  const double shiftV = 7.0, shiftA = 3.0e4;
+  a.keepCorotatedBlocks(true);
+  for (double extra : {0.0, 1e-4}) {
+    PetscCall(a.dynamicJacobian(U0, V, ls, shiftV, shiftA, J0));
+    expect(a.corotatedBlocksValid(), "blocks kept for every element (1 = yes)", a.corotatedBlocksValid() ? 1.0 : 0.0);
+    PetscCall(turned(a, mesh, U0, 0.7, extra, U1));
+    PetscCall(a.corotatedJacobian(U1, ls, Jc));
+    PetscCall(a.dynamicJacobian(U1, V, ls, shiftV, shiftA, J1));
+    double dc, d0;
+    PetscCall(relDiff(Jc, J1, &dc));
+    PetscCall(relDiff(J0, J1, &d0));
+    if (extra == 0.0) {
+      expect(dc < 1e-13, "rigid turn 0.7 rad: |rebuilt - fresh| / |fresh| (< 1e-13)", dc);
+      expect(d0 > 1e-2, "rigid turn 0.7 rad: |kept - fresh| / |fresh| (> 1e-2)", d0);
+    } else {
+      expect(dc < d0, "turn + deformation 1e-4: |rebuilt - fresh| / |fresh| (< kept's)", dc);
+      expect(d0 > 1e-2, "turn + deformation 1e-4: |kept - fresh| / |fresh|", d0);
+    }
+  }
+  for (Mat* m : {&J0, &Jc, &J1}) PetscCall(MatDestroy(m));
+  for (Vec* v : {&U0, &U1, &V}) PetscCall(VecDestroy(v));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  PetscCall(PetscInitialize(&argc, &argv, nullptr, nullptr));
+  PetscPrintf(PETSC_COMM_WORLD, "free cable, 200 elements, nodal mass and slope torque at node 2:\n");
+  PetscCall(check());
+  int all = failures;
+  MPI_Allreduce(MPI_IN_PLACE, &all, 1, MPI_INT, MPI_MAX, PETSC_COMM_WORLD);
+  PetscPrintf(PETSC_COMM_WORLD, "%s\n", all ? "FAILED" : "all checks passed");
+  PetscCall(PetscFinalize());
+  return all ? 1 : 0;
+}

@@ -1,8 +1,7 @@
 // Micro benchmark: time per AncfCable2D::evaluate on one core, residual only and residual + tangent,
 // for the A1g cantilever's element (EA = 1e6, EI = 833.33, rhoA = 78, L = 2/65536) at small deformed,
 // moving states, with velocities given (as in dynamics); CPU time of the process. Not a ctest: a tool to compare kernel versions.
-// Build: g++ -std=c++20 -O3 -DNDEBUG -Iinclude -Isrc src/elements/expression.cpp src/elements/element_kernel.cpp
-//        src/elements/ancf_cable2d.cpp tests/unit/bench_ancf_kernel.cpp -o /tmp/bench_ancf
+// Build: cmake --build build --target bench_ancf_kernel (then build/tests/bench_ancf_kernel).
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>

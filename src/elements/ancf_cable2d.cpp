@@ -159,9 +159,8 @@ void bendingState(const std::array<double, 4>& Sx, const std::array<double, 4>& 
 /// v = dG/dq and dK/dq = (u - K v)/G the rank part of both terms is
 ///   [a u u^T - (a K + c)(u v^T + v u^T) + (a K^2 + 2 c K) v v^T] / G^2 = u x^T + v y^T,
 /// and the rest, c (H_f/G - f H_G/G^2), is one 2x2 block per node pair (j, k).
-/// upper: only the blocks k >= j (a symmetric K is completed by mirrorUpper).
 void addBendingBlocks(const std::array<double, 4>& Sx, const std::array<double, 4>& Sxx, const PointState& s,
-                      double a, double c, bool upper, double* __restrict K) {
+                      double a, double c, double* __restrict K) {
   const double iG2 = s.iG * s.iG, kap = s.kap;
   const double uu = a * iG2, uv = -(a * kap + c) * iG2, vv = (a * kap * kap + 2.0 * c * kap) * iG2;
   double x[8], y[8];
@@ -170,10 +169,10 @@ void addBendingBlocks(const std::array<double, 4>& Sx, const std::array<double, 
     y[b] = uv * s.df[b] + vv * s.dG[b];
   }
   for (int r = 0; r < 8; ++r)
-    for (int b = upper ? (r & ~1) : 0; b < 8; ++b) K[8 * r + b] += s.df[r] * x[b] + s.dG[r] * y[b];
+    for (int b = 0; b < 8; ++b) K[8 * r + b] += s.df[r] * x[b] + s.dG[r] * y[b];
   const double cf = c * s.iG, cg = 2.0 * c * s.f * iG2;
   for (int j = 0; j < 4; ++j)
-    for (int k = upper ? j : 0; k < 4; ++k) {
+    for (int k = 0; k < 4; ++k) {
       const double hf = cf * (Sx[j] * Sxx[k] - Sxx[j] * Sx[k]);  // c H_f/G: off-diagonal of the block
       const double hg = cg * Sx[j] * Sx[k];                       // c f H_G/G^2: diagonal of the block
       double* row0 = K + 8 * (2 * j) + 2 * k;
@@ -187,10 +186,9 @@ void addBendingBlocks(const std::array<double, 4>& Sx, const std::array<double, 
 
 /// K += S'_j S'_k B for every node pair (j, k), B a 2x2 matrix (row-major): the axial terms, whose
 /// vectors all are S' times a direction (d eps/dq = S' t, d eps_t/dq = S' p, d2eps/dq2 = S' S'^T (I - t t^T)/|r'|).
-/// upper: only the blocks k >= j.
-void addAxialBlocks(const std::array<double, 4>& Sx, const double B[4], bool upper, double* __restrict K) {
+void addAxialBlocks(const std::array<double, 4>& Sx, const double B[4], double* __restrict K) {
   for (int j = 0; j < 4; ++j)
-    for (int k = upper ? j : 0; k < 4; ++k) {
+    for (int k = 0; k < 4; ++k) {
       const double ss = Sx[j] * Sx[k];
       double* row0 = K + 8 * (2 * j) + 2 * k;
       double* row1 = row0 + 8;
@@ -219,12 +217,6 @@ void curvatureRateGradient(const std::array<double, 4>& Sx, const std::array<dou
                 cG * 2.0 * Sx[j] * s.rx_t[i];
     }
   }
-}
-
-/// Completes a symmetric 8x8 K of which the blocks k >= j were accumulated: K[b][a] = K[a][b], b > a.
-void mirrorUpper(double* K) {
-  for (int a = 0; a < 8; ++a)
-    for (int b = a + 1; b < 8; ++b) K[8 * b + a] = K[8 * a + b];
 }
 
 /// K += c u v^T (8x8, row-major).
@@ -490,9 +482,6 @@ void AncfCable2D::evaluate(const KernelInput& in, const KernelNeeds& needs, Kern
   }
   if (needs.damping) out.D.assign(64, 0.0);
   if (wantD) D = out.D.data();
-  // Without velocities and without a law coupling strain and curvature every term of K is
-  // symmetric (w EA g g^T, w EI h h^T, N d2eps/dq2, M d2K/dq2): only the upper blocks are summed.
-  const bool symmetric = !hasDamping_ && !axialNeedsCurvature_ && !bendingNeedsStrain_;
   double dN[8], geps_t[8], hk_t[8];
   // The strain states of all points first: independent square roots and divisions overlap.
   std::array<PointState, kMaxIp> states;
@@ -522,10 +511,10 @@ void AncfCable2D::evaluate(const KernelInput& in, const KernelNeeds& needs, Kern
                             c * (1.0 - s.t[1] * s.t[1])};
       if (Kg == Km) {
         const double B[4] = {Bm[0] + Bg[0], Bm[1] + Bg[1], Bm[2] + Bg[2], Bm[3] + Bg[3]};
-        addAxialBlocks(P.Sx, B, symmetric, Km);
+        addAxialBlocks(P.Sx, B, Km);
       } else {
-        addAxialBlocks(P.Sx, Bm, symmetric, Km);
-        addAxialBlocks(P.Sx, Bg, symmetric, Kg);
+        addAxialBlocks(P.Sx, Bm, Km);
+        addAxialBlocks(P.Sx, Bg, Kg);
       }
       if (axialNeedsCurvature_) {  // a user law of the curvature: w d eps/dq (dN/dK dK/dq + dN/dK_t dK_t/dq)^T
         for (int b = 0; b < 8; ++b) dN[b] = N.dCurvature * s.h[b];
@@ -563,10 +552,10 @@ void AncfCable2D::evaluate(const KernelInput& in, const KernelNeeds& needs, Kern
       // geometric part M d2K/dq2
       const double a = w * M.dCurvature, c = w * M.value;
       if (Kg == Km) {
-        addBendingBlocks(P.Sx, P.Sxx, s, a, c, symmetric, Km);
+        addBendingBlocks(P.Sx, P.Sxx, s, a, c, Km);
       } else {
-        addBendingBlocks(P.Sx, P.Sxx, s, a, 0.0, symmetric, Km);
-        addBendingBlocks(P.Sx, P.Sxx, s, 0.0, c, symmetric, Kg);
+        addBendingBlocks(P.Sx, P.Sxx, s, a, 0.0, Km);
+        addBendingBlocks(P.Sx, P.Sxx, s, 0.0, c, Kg);
       }
       if (qd || bendingNeedsStrain_) {
         for (int b = 0; b < 8; ++b) dM[b] = 0.0;
@@ -592,10 +581,6 @@ void AncfCable2D::evaluate(const KernelInput& in, const KernelNeeds& needs, Kern
     }
   }
 
-  if (wantK && symmetric) {
-    mirrorUpper(Km);
-    if (Kg != Km) mirrorUpper(Kg);
-  }
   out.f.assign(f, f + 8);
 }
 

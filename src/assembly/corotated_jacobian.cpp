@@ -81,12 +81,8 @@ PetscErrorCode Assembler::corotatedJacobian(Vec U, const LoadState& ls, Mat J) {
   if (!corotatedValid_) SETERRQ(PETSC_COMM_SELF, PETSC_ERR_ORDER, "corotatedJacobian: no kept ANCF blocks");
   PetscCall(PetscLogEventBegin(SinewEvents::get().corotatedJacobian, 0, 0, 0, 0));
   PetscCall(prepareCorotatedCOO(J));
-  PetscCall(loadLocal(U, uWork_));
-  Vec ul;
-  const PetscScalar* u;
-  PetscCall(VecGhostGetLocalForm(uWork_, &ul));
-  PetscCall(VecGetArrayRead(ul, &u));
-  computeStates(u, ls);
+  const double* u = nullptr;
+  PetscCall(beginLocal(U, ls, &u));
   std::array<double, 48> q;
   std::array<int, kMaxElementRows> idx;
   double T[64];
@@ -113,8 +109,7 @@ PetscErrorCode Assembler::corotatedJacobian(Vec U, const LoadState& ls, Mat J) {
     K[0] = K[1] = n.mass > 0 ? corotatedShiftA_ * n.mass : 0.0;
     if (!slopeTorqueBlock(i, ls, K + 2)) K[2] = K[3] = K[4] = K[5] = 0.0;
   }
-  PetscCall(VecRestoreArrayRead(ul, &u));
-  PetscCall(VecGhostRestoreLocalForm(uWork_, &ul));
+  PetscCall(endLocal(&u));
   PetscCall(MatSetValuesCOO(J, corotatedValues_.data(), INSERT_VALUES));
   PetscCall(PetscLogEventEnd(SinewEvents::get().corotatedJacobian, 0, 0, 0, 0));
   PetscFunctionReturn(PETSC_SUCCESS);

@@ -17,6 +17,8 @@
 
 namespace sinew {
 
+struct RotaryMomentumStep;  // elements/rotary_momentum.hpp
+
 /// Largest element block: 4 nodes of 6 DOFs and 6 rigid-mode multipliers (index and work arrays).
 inline constexpr int kMaxElementRows = 4 * 6 + 6;
 
@@ -295,6 +297,8 @@ class Assembler {
   bool nonFiniteLawsFatal_ = true;
   std::string nonFiniteLaw_;
   RotaryMomentum momentum_;
+  /// rotaryMomentumStep of free Frame6 node i under momentum_ (its mominertia, R_n = Rref_, theta from u1).
+  RotaryMomentumStep midpointMomentum(int i) const;
   const double* vLocal_ = nullptr;  // local form of the velocities while a dynamic evaluation runs
   // prescribed motions as functions of time (computeStates with ls.timeFunctions): per local node
   // 6 velocities, then 6 accelerations (dof layout; spatial angular rates for rot)

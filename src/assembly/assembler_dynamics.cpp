@@ -122,11 +122,7 @@ void Assembler::addInertia(const double* v, const double* a, Target target, doub
                        n.mominertia != std::array<double, 6>{};
     if (!free && !presc) continue;
     if (free && momentum_.h > 0) {  // midpoint rule: the change of the spin momentum (J_s w)_{n+1} - (J_s w)_n over h
-      const auto& I = n.mominertia;
-      const Mat3 J0{I[0], I[1], I[2], I[1], I[3], I[4], I[2], I[4], I[5]};
-      const Vec3 theta{momentum_.u1[n.dof[3]], momentum_.u1[n.dof[4]], momentum_.u1[n.dof[5]]};
-      const Vec3 w0{momentum_.w0[n.dof[3]], momentum_.w0[n.dof[4]], momentum_.w0[n.dof[5]]};
-      const Vec3 m = rotaryMomentumStep(J0, Rref_[i], theta, w0, momentum_.h).r;
+      const Vec3 m = midpointMomentum(i).r;
       for (int k = 0; k < 3; ++k) out[map[3 + k]] += m[k];
       continue;
     }
@@ -139,6 +135,15 @@ void Assembler::addInertia(const double* v, const double* a, Target target, doub
     const Vec3 m = J * wd + cross(w, J * w);
     for (int k = 0; k < 3; ++k) out[map[3 + k]] += m[k];
   }
+}
+
+RotaryMomentumStep Assembler::midpointMomentum(int i) const {
+  const LocalNode& n = mesh_.nodes[i];
+  const auto& I = n.mominertia;
+  const Mat3 J0{I[0], I[1], I[2], I[1], I[3], I[4], I[2], I[4], I[5]};
+  const Vec3 theta{momentum_.u1[n.dof[3]], momentum_.u1[n.dof[4]], momentum_.u1[n.dof[5]]};
+  const Vec3 w0{momentum_.w0[n.dof[3]], momentum_.w0[n.dof[4]], momentum_.w0[n.dof[5]]};
+  return rotaryMomentumStep(J0, Rref_[i], theta, w0, momentum_.h);
 }
 
 PetscErrorCode Assembler::rotateSpins(Vec U, Vec W) const {
@@ -256,11 +261,7 @@ PetscErrorCode Assembler::dynamicJacobian(Vec U, Vec V, const LoadState& ls, dou
     std::array<double, 9> B;
     for (int k = 0; k < 9; ++k) B[k] = shiftA * Js[k] + shiftV * G[k];
     if (momentum_.h > 0) {  // midpoint rule: the exact derivative of its momentum change (times 2: the caller halves J)
-      const auto& I = n.mominertia;
-      const Mat3 J0{I[0], I[1], I[2], I[1], I[3], I[4], I[2], I[4], I[5]};
-      const Vec3 theta{momentum_.u1[n.dof[3]], momentum_.u1[n.dof[4]], momentum_.u1[n.dof[5]]};
-      const Vec3 w0{momentum_.w0[n.dof[3]], momentum_.w0[n.dof[4]], momentum_.w0[n.dof[5]]};
-      const Mat3 dr = rotaryMomentumStep(J0, Rref_[i], theta, w0, momentum_.h).dr;
+      const Mat3 dr = midpointMomentum(i).dr;
       for (int k = 0; k < 9; ++k) B[k] = 2.0 * dr[k];
     }
     const PetscInt rows[3] = {n.dof[3], n.dof[4], n.dof[5]};

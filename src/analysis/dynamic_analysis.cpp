@@ -73,7 +73,8 @@ DynamicAnalysis::DynamicAnalysis(Assembler& assembler, const DynamicsOptions& op
   modifiedNewton_ = mode == "true" || (mode == "auto" && asm_.mesh().numGlobalUnknowns >= 200);
   PetscBool corot = PETSC_TRUE;
   SinewCallThrow(comm, PetscOptionsGetBool(nullptr, nullptr, "-dynamics_corotated_jacobian", &corot, &set));
-  corotated_ = corot && modifiedNewton_ && scheme == Scheme::ArnoldBruls && ancfChain(asm_.mesh());
+  chain_ = ancfChain(asm_.mesh());
+  corotated_ = corot && modifiedNewton_ && scheme == Scheme::ArnoldBruls && chain_;
   asm_.keepCorotatedBlocks(corotated_);
   // Newton with mixed stresses for beams, as in statics (docs/beam.md): a large rotation step moves
   // the nodes along straight lines and stretches axially stiff elements; the displacement-based
@@ -148,7 +149,7 @@ PetscErrorCode DynamicAnalysis::useDynamicsSolver(KSP ksp) {
   PetscFunctionBeginUser;
   PetscCall(useDirectSolver(ksp));
   const DistributedMesh& mesh = asm_.mesh();
-  if (ancfChain(mesh)) PetscFunctionReturn(useChainLU(ksp, mesh.comm));
+  if (chain_) PetscFunctionReturn(useChainLU(ksp, mesh.comm));
   int size = 1;
   MPI_Comm_size(mesh.comm, &size);
   bool plain = size == 1;
@@ -383,7 +384,7 @@ PetscErrorCode DynamicAnalysis::initialAccelerations(Vec U, Vec V, Vec Qdd, bool
     PetscCall(KSPSetOperators(ksp, M, M));
   }
   PetscCall(useDirectSolver(ksp));
-  if (ancfChain(asm_.mesh())) PetscCall(useChainLU(ksp, comm));
+  if (chain_) PetscCall(useChainLU(ksp, comm));
   PetscCall(KSPSetFromOptions(ksp));
   PetscCall(KSPSolve(ksp, F_, Qdd));
   KSPConvergedReason why;

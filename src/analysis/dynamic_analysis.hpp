@@ -185,6 +185,7 @@ class DynamicAnalysis {
   /// contracting is first rebuilt from its element blocks rotated with the elements
   /// (Assembler::corotatedJacobian); a fresh one only when that does not help either.
   bool corotated_ = false;
+  bool chain_ = false;  ///< ancfChain(mesh): an ANCF cable model (its LU: useChainLU)
   bool lastCorotated_ = false;  ///< the current Newton matrix is a corotated rebuild
   bool restPredictor_ = false;  ///< guarded retry: Newton starts at q_n
   bool modifiedDefault_ = true;  ///< modifiedNewton_ outside guarded retries (set at the start of a time loop)

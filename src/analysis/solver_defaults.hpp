@@ -61,23 +61,18 @@ inline PetscErrorCode useChainLU(KSP ksp, MPI_Comm comm) {
   PetscFunctionBeginUser;
   int size = 1;
   MPI_Comm_size(comm, &size);
-  PetscCall(KSPSetType(ksp, KSPPREONLY));
-  if (size == 1) {
-    PC pc;
-    PetscCall(KSPGetPC(ksp, &pc));
-    PetscCall(PCSetType(pc, PCLU));
-    PetscFunctionReturn(usePetscLU(ksp, MATORDERINGRCM));
-  }
+  KSP lu = ksp;  // one process: this KSP; several: the redundant preconditioner's own
   PC pc;
-  KSP sub;
-  PetscCall(KSPGetPC(ksp, &pc));
-  PetscCall(PCSetType(pc, PCREDUNDANT));
-  PetscCall(PCRedundantGetKSP(pc, &sub));
-  PetscCall(KSPSetType(sub, KSPPREONLY));
-  PC inner;
-  PetscCall(KSPGetPC(sub, &inner));
-  PetscCall(PCSetType(inner, PCLU));
-  PetscCall(usePetscLU(sub, MATORDERINGRCM));
+  if (size > 1) {
+    PetscCall(KSPSetType(ksp, KSPPREONLY));
+    PetscCall(KSPGetPC(ksp, &pc));
+    PetscCall(PCSetType(pc, PCREDUNDANT));
+    PetscCall(PCRedundantGetKSP(pc, &lu));
+  }
+  PetscCall(KSPSetType(lu, KSPPREONLY));
+  PetscCall(KSPGetPC(lu, &pc));
+  PetscCall(PCSetType(pc, PCLU));
+  PetscCall(usePetscLU(lu, MATORDERINGRCM));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -218,6 +218,9 @@ PetscErrorCode DynamicAnalysis::formJacobian(SNES snes, Vec U, Mat, Mat P, void*
   PetscFunctionBeginUser;
   auto* self = static_cast<DynamicAnalysis*>(ctx);
   const double h = self->h_;
+  // generalized alpha: dqd/dq = gamma/(beta h), dqdd/dq = (1 - alpha_m)/((1 - alpha_f) beta h^2)
+  const double shiftV = self->gamma_ / (self->beta_ * h);
+  const double shiftA = (1.0 - self->alphaM_) / ((1.0 - self->alphaF_) * self->beta_ * h * h);
   PetscInt it = 0;
   PetscReal fnorm = 0;
   if (snes) {
@@ -253,7 +256,7 @@ PetscErrorCode DynamicAnalysis::formJacobian(SNES snes, Vec U, Mat, Mat P, void*
     if (self->corotated_ && slow && self->jacobianValid_ && sameH && !self->lastCorotated_ &&
         self->asm_.corotatedBlocksValid()) {
       PetscCall(self->asm_.corotatedJacobian(U, self->ls_, P));
-      PetscCall(self->damping_.addJacobian(self->gamma_ / (self->beta_ * h), P));
+      PetscCall(self->damping_.addJacobian(shiftV, P));
       ++self->report_.jacobians;
       ++self->report_.corotatedJacobians;
       self->reuseCount_ = 0;
@@ -285,9 +288,6 @@ PetscErrorCode DynamicAnalysis::formJacobian(SNES snes, Vec U, Mat, Mat P, void*
       PetscCall(MatDiagonalScale(P, self->constraintScale_, self->constraintScale_));
     }
   } else {
-  // dqd/dq = gamma/(beta h), dqdd/dq = (1 - alpha_m)/((1 - alpha_f) beta h^2)
-  const double shiftV = self->gamma_ / (self->beta_ * h);
-  const double shiftA = (1.0 - self->alphaM_) / ((1.0 - self->alphaF_) * self->beta_ * h * h);
   PetscCall(self->rates(U));
   PetscCall(self->asm_.dynamicJacobian(U, self->V1_, self->ls_, shiftV, shiftA, P));
   PetscCall(self->damping_.addJacobian(shiftV, P));

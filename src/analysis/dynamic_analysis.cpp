@@ -1,5 +1,6 @@
 #include "analysis/solver_defaults.hpp"
 #include "analysis/dynamic_analysis.hpp"
+#include "analysis/cut_corrected_lu.hpp"
 #include "mesh/collective_error.hpp"
 
 #include <cfloat>
@@ -76,6 +77,16 @@ DynamicAnalysis::DynamicAnalysis(Assembler& assembler, const DynamicsOptions& op
   chain_ = ancfChain(asm_.mesh());
   corotated_ = corot && modifiedNewton_ && scheme == Scheme::ArnoldBruls && chain_;
   asm_.keepCorotatedBlocks(corotated_);
+  PetscBool refine = PETSC_TRUE;
+  SinewCallThrow(comm, PetscOptionsGetBool(nullptr, nullptr, "-dynamics_refine", &refine, &set));
+  refine_ = refine && corotated_;
+  // ANCF chains on several ranks: rank-local LU with the exact correction of the few coupling
+  // unknowns (useCutCorrectedLU) instead of every rank factoring the whole chain (PCREDUNDANT); A1g
+  // at 65536 elements, 2 ranks: 14 ms against 48 ms per factorization (docs/performance.md)
+  char chainLU[16] = "auto";
+  SinewCallThrow(comm, PetscOptionsGetString(nullptr, nullptr, "-dynamics_chain_lu", chainLU, sizeof(chainLU), &set));
+  const std::string lu = chainLU;
+  cutLU_ = chain_ && (lu == "cut" || (lu == "auto" && couplingUnknowns(asm_.mesh()) <= kCutCorrectedMaxCoupling));
   // Newton with mixed stresses for beams, as in statics (docs/beam.md): a large rotation step moves
   // the nodes along straight lines and stretches axially stiff elements; the displacement-based
   // tangent would carry that spurious axial force (residuals alternating by 1e2 per iteration on a
@@ -133,6 +144,7 @@ DynamicAnalysis::DynamicAnalysis(Assembler& assembler, const DynamicsOptions& op
 DynamicAnalysis::~DynamicAnalysis() {
   SNESDestroy(&snes_);
   MatDestroy(&J_);
+  MatDestroy(&Jop_);
   for (Vec* v : {&F_, &Un_, &Vn_, &An_, &Qn_, &V1_, &A1_, &Q1_, &Cu_, &keep_, &Um_, &Vm_, &U0_, &notKeep_, &Fend_, &constraintScale_})
     VecDestroy(v);
 }
@@ -149,7 +161,15 @@ PetscErrorCode DynamicAnalysis::useDynamicsSolver(KSP ksp) {
   PetscFunctionBeginUser;
   PetscCall(useDirectSolver(ksp));
   const DistributedMesh& mesh = asm_.mesh();
-  if (chain_) PetscFunctionReturn(useChainLU(ksp, mesh.comm));
+  if (chain_) {
+    int size = 1;
+    MPI_Comm_size(mesh.comm, &size);
+    if (size > 1 && cutLU_) {
+      PetscCall(KSPSetType(ksp, KSPPREONLY));
+      PetscFunctionReturn(useCutCorrectedLU(ksp));
+    }
+    PetscFunctionReturn(useChainLU(ksp, mesh.comm));
+  }
   int size = 1;
   MPI_Comm_size(mesh.comm, &size);
   bool plain = size == 1;
@@ -239,13 +259,26 @@ PetscErrorCode DynamicAnalysis::formJacobian(SNES snes, Vec U, Mat, Mat P, void*
     // when it grows (a stale Jacobian drifts in the stiff directions: small updates, residual up 1.5x)
     const bool slow = self->predictor_ == Predictor::State
                           ? (it == 1 && fnorm > kContractivity * self->prevFnorm_) ||
-                                (it >= 2 && (self->theta_ > kContractivity || fnorm > 1.5 * self->prevFnorm_))
+                                (it >= 2 && ((self->theta_ > kContractivity && self->matrixIt_ <= it - 2) ||
+                                             fnorm > 1.5 * self->prevFnorm_))
                           : it > 0 && fnorm > kContractivity * self->prevFnorm_;
+    if (it == 0) self->matrixIt_ = -100;
     self->prevFnorm_ = fnorm;
     // the same step size up to round-off: a step that ends on k dt has h = k dt - t, a few ulps off
     // dt, which must not count as a new step size (it refactored every other step)
     const bool sameH = std::abs(self->jacobianH_ - h) <= 1e-9 * h;
-    if (self->jacobianValid_ && sameH && !slow && self->reuseCount_ < kMaxReuse) {
+    // a kept matrix whose elements turned by half the turn that made a kept matrix stall in an earlier
+    // step is rebuilt at once, after the step's first update (which moves the state near q_{n+1}):
+    // A1g at 65536 elements stalls from a turn of ~1e-6 rad, i.e. within each later step
+    bool turned = false;
+    double turn = 0.0;
+    if (self->corotated_ && self->jacobianValid_ && sameH && !self->lastCorotated_ && self->asm_.corotatedBlocksValid() &&
+        (it >= 2 ? slow : it == 1 && !slow && self->staleTurn_ < HUGE_VAL)) {
+      PetscCall(self->asm_.corotationTurn(U, self->ls_, &turn));
+      if (it >= 2) self->staleTurn_ = std::min(self->staleTurn_, turn);
+      turned = it == 1 && turn > 0.5 * self->staleTurn_;
+    }
+    if (self->jacobianValid_ && sameH && !slow && !turned && self->reuseCount_ < kMaxReuse) {
       ++self->reuseCount_;
       self->lastCorotated_ = false;
       PetscFunctionReturn(PETSC_SUCCESS);
@@ -253,8 +286,9 @@ PetscErrorCode DynamicAnalysis::formJacobian(SNES snes, Vec U, Mat, Mat P, void*
     // a fine cable's kept Jacobian goes stale mainly by the rotation of its elements: rebuild it
     // from the kept blocks turned with their elements (A1g, 65536 elements, 20 steps of 1e-3 s: 1
     // Jacobian and 18 rebuilds against 31 Jacobians); a fresh one when the last rebuild did not help
-    if (self->corotated_ && slow && self->jacobianValid_ && sameH && !self->lastCorotated_ &&
+    if (self->corotated_ && (slow || turned) && self->jacobianValid_ && sameH && !self->lastCorotated_ &&
         self->asm_.corotatedBlocksValid()) {
+      self->matrixIt_ = it;
       PetscCall(self->asm_.corotatedJacobian(U, self->ls_, P));
       PetscCall(self->damping_.addJacobian(shiftV, P));
       ++self->report_.jacobians;
@@ -293,10 +327,19 @@ PetscErrorCode DynamicAnalysis::formJacobian(SNES snes, Vec U, Mat, Mat P, void*
   PetscCall(self->damping_.addJacobian(shiftV, P));
   }
   ++self->report_.jacobians;
+  self->matrixIt_ = it;
   self->jacobianValid_ = true;
   self->jacobianH_ = h;
   self->reuseCount_ = 0;
   if (it == 0 || self->jacobianNorm_ == 0) PetscCall(MatNorm(P, NORM_INFINITY, &self->jacobianNorm_));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode DynamicAnalysis::applyNewtonMatrix(Mat A, Vec x, Vec y) {
+  PetscFunctionBeginUser;
+  DynamicAnalysis* self = nullptr;
+  PetscCall(MatShellGetContext(A, &self));
+  PetscCall(self->asm_.applyCorotated(x, y));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -495,7 +538,14 @@ PetscErrorCode DynamicAnalysis::runArnoldBruls(Vec U, const StepCallback& onStep
   PetscCall(SNESCreate(comm, &snes_));
   PetscCall(SNESSetType(snes_, SNESNEWTONLS));
   PetscCall(SNESSetFunction(snes_, F_, formFunction, this));
-  PetscCall(SNESSetJacobian(snes_, J_, J_, formJacobian, this));
+  if (refine_) {
+    PetscInt m = 0, n = 0, M = 0, N = 0;
+    PetscCall(MatGetLocalSize(J_, &m, &n));
+    PetscCall(MatGetSize(J_, &M, &N));
+    PetscCall(MatCreateShell(comm, m, n, M, N, this, &Jop_));
+    PetscCall(MatShellSetOperation(Jop_, MATOP_MULT, reinterpret_cast<void (*)(void)>(applyNewtonMatrix)));
+  }
+  PetscCall(SNESSetJacobian(snes_, refine_ ? Jop_ : J_, J_, formJacobian, this));
   PetscCall(SNESSetTolerances(snes_, 1e-50, 1e-10, 1e-12, 50, 10000));
   // a residual 1e6 times its start is a diverged Newton solve: retried at once, not after 50 iterations
   PetscCall(SNESSetDivergenceTolerance(snes_, 1e6));
@@ -506,6 +556,12 @@ PetscErrorCode DynamicAnalysis::runArnoldBruls(Vec U, const StepCallback& onStep
   KSP ksp;
   PetscCall(SNESGetKSP(snes_, &ksp));
   PetscCall(useDynamicsSolver(ksp));
+  if (refine_) {
+    PetscCall(KSPSetType(ksp, KSPRICHARDSON));
+    PetscCall(KSPSetTolerances(ksp, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT, 2));
+    PetscCall(KSPSetNormType(ksp, KSP_NORM_NONE));
+    PetscCall(KSPSetConvergenceTest(ksp, KSPConvergedSkip, nullptr, nullptr));
+  }
   PetscCall(SNESSetFromOptions(snes_));
   Vec Usol;
   PetscCall(VecDuplicate(U, &Usol));

@@ -153,6 +153,10 @@ class DynamicAnalysis {
   LoadState ls_;
   SNES snes_ = nullptr;
   Mat J_ = nullptr;
+  Mat Jop_ = nullptr;  ///< refined step solves: the Newton matrix applied element by element (Assembler::applyCorotated)
+  bool refine_ = false;
+  bool cutLU_ = false;  ///< ANCF chain with few coupling unknowns: useCutCorrectedLU on several ranks
+  static PetscErrorCode applyNewtonMatrix(Mat A, Vec x, Vec y);
   Vec F_ = nullptr;
   Vec Un_ = nullptr, Vn_ = nullptr, An_ = nullptr, Qn_ = nullptr;  // step start: q, qd, a (algorithmic), qdd
   Vec V1_ = nullptr, A1_ = nullptr, Q1_ = nullptr, Cu_ = nullptr;  // iterate rates; Cu = predictor part of q
@@ -187,6 +191,8 @@ class DynamicAnalysis {
   bool corotated_ = false;
   bool chain_ = false;  ///< ancfChain(mesh): an ANCF cable model (its LU: useChainLU)
   bool lastCorotated_ = false;  ///< the current Newton matrix is a corotated rebuild
+  double staleTurn_ = HUGE_VAL;  ///< smallest element turn (rad) at which a kept Newton matrix stalled
+  int matrixIt_ = -100;          ///< Newton iteration of this solve that built the current matrix (-100: an earlier solve)
   bool restPredictor_ = false;  ///< guarded retry: Newton starts at q_n
   bool modifiedDefault_ = true;  ///< modifiedNewton_ outside guarded retries (set at the start of a time loop)
   /// Guarded mode: a failed solve is retried at the same step with full Newton started at q_n (on);

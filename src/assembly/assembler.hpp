@@ -152,6 +152,17 @@ class Assembler {
   /// torques at U). Exact for elements that moved rigidly: B(Q q) = Q B(q) Q^T by objectivity, and the
   /// mass term is isotropic. No element kernel runs. Logged as SinewCorotJac.
   PetscErrorCode corotatedJacobian(Vec U, const LoadState& ls, Mat J);
+  /// y = J x for the Newton matrix last built from the kept blocks (dynamicJacobian with
+  /// keepCorotatedBlocks, or corotatedJacobian), applied element by element: each block to its
+  /// element's part of x minus its first node's translation t, plus the block's exact response to t,
+  /// its translational mass shiftA M_e (t, 0, t, 0) (stiffness and damping vanish on a translation).
+  /// The assembled matrix applies the same J with round-off eps |J| |x|; here eps |B_e| |x_e - t|,
+  /// which keeps the smooth modes of fine cables accurate (bending stiffness EI/l^3 against the mass
+  /// term of a soft mode). Logged as SinewTangentOp.
+  PetscErrorCode applyCorotated(Vec x, Vec y);
+  /// The largest turn (rad) of an element at U away from the rotation its block has in the current
+  /// Newton matrix (all ranks; collective).
+  PetscErrorCode corotationTurn(Vec U, const LoadState& ls, double* turn);
   /// Dynamics output: while set (V, Qdd in the unknowns layout), fullResidual() adds the inertia
   /// M qdd (elements, nodal mass and mominertia; prescribed DOFs with their prescribed accelerations),
   /// so the reactions at supports and prescribed DOFs are the dynamic ones. nullptr: statics.
@@ -336,6 +347,10 @@ class Assembler {
   /// its two translation diagonals (nodal mass) and its 2 x 2 slope block (slope torque).
   PetscErrorCode prepareCorotatedCOO(Mat J);
   std::vector<PetscScalar> corotatedValues_;
+  std::vector<double> corotationCS_;       ///< per element cos, sin of the turn the current Newton matrix applies to its kept block
+  std::vector<double> corotatedNodeTerms_;  ///< per owned node: nodal mass term (2), slope torque block (4)
+  /// Node terms of the Newton matrix (nodal masses with shiftA, slope torques at the current states).
+  void keepCorotatedNodeTerms(const LoadState& ls, double shiftA);
   bool slopeTorqueBlock(int i, const LoadState& ls, double* K) const;
   std::vector<std::pair<int, SetPressure>> pressureElems_;  // local element index, pressure
   bool anyPressure_ = false;

@@ -268,6 +268,11 @@ PetscErrorCode Assembler::dynamicJacobian(Vec U, Vec V, const LoadState& ls, dou
     PetscCall(MatSetValuesLocal(J, 3, rows, 3, rows, B.data(), ADD_VALUES));
   }
   PetscCall(addSlopeTorqueTangent(ls, J));
+  if (keepCorotated_) {
+    keepCorotatedNodeTerms(ls, shiftA);
+    corotationCS_.assign(2 * mesh_.elements.size(), 0.0);
+    for (size_t e = 0; e < mesh_.elements.size(); ++e) corotationCS_[2 * e] = 1.0;
+  }
   PetscCall(VecRestoreArrayRead(ul, &u));
   PetscCall(VecGhostRestoreLocalForm(uWork_, &ul));
   PetscCall(restoreLocalRead(V, &vl, &v));

@@ -37,6 +37,16 @@ void Assembler::keepCorotated(size_t e, const LocalElement& el, const double* q,
   corotatedAngle_[e] = elementAngle(q);
 }
 
+void Assembler::keepCorotatedNodeTerms(const LoadState& ls, double shiftA) {
+  corotatedNodeTerms_.resize(6 * static_cast<size_t>(mesh_.numOwnedNodes));
+  double* K = corotatedNodeTerms_.data();
+  for (int i = 0; i < mesh_.numOwnedNodes; ++i, K += 6) {
+    const LocalNode& n = mesh_.nodes[i];
+    K[0] = K[1] = n.mass > 0 ? shiftA * n.mass : 0.0;
+    if (!slopeTorqueBlock(i, ls, K + 2)) K[2] = K[3] = K[4] = K[5] = 0.0;
+  }
+}
+
 PetscErrorCode Assembler::prepareCorotatedCOO(Mat J) {
   PetscFunctionBeginUser;
   // a marker composed with the matrix: it dies with the matrix (a later matrix may reuse the address)
@@ -91,6 +101,8 @@ PetscErrorCode Assembler::corotatedJacobian(Vec U, const LoadState& ls, Mat J) {
     gatherElement(mesh_.elements[e], q.data(), u, idx.data(), nullptr);
     const double d = elementAngle(q.data()) - corotatedAngle_[e];
     const double c = std::cos(d), s = std::sin(d);
+    corotationCS_[2 * e] = c;
+    corotationCS_[2 * e + 1] = s;
     const double* B = corotatedBlocks_.data() + 64 * e;
     // T = Q B (each row pair (2a, 2a + 1) rotated), K = T Q^T (each column pair rotated)
     for (int a = 0; a < 8; a += 2)
@@ -104,14 +116,113 @@ PetscErrorCode Assembler::corotatedJacobian(Vec U, const LoadState& ls, Mat J) {
         K[8 * a + b + 1] = s * T[8 * a + b] + c * T[8 * a + b + 1];
       }
   }
-  for (int i = 0; i < mesh_.numOwnedNodes; ++i, K += 6) {  // node terms, as dynamicJacobian
-    const LocalNode& n = mesh_.nodes[i];
-    K[0] = K[1] = n.mass > 0 ? corotatedShiftA_ * n.mass : 0.0;
-    if (!slopeTorqueBlock(i, ls, K + 2)) K[2] = K[3] = K[4] = K[5] = 0.0;
-  }
+  keepCorotatedNodeTerms(ls, corotatedShiftA_);  // node terms, as dynamicJacobian
+  std::copy(corotatedNodeTerms_.begin(), corotatedNodeTerms_.end(), K);
   PetscCall(endLocal(&u));
   PetscCall(MatSetValuesCOO(J, corotatedValues_.data(), INSERT_VALUES));
   PetscCall(PetscLogEventEnd(SinewEvents::get().corotatedJacobian, 0, 0, 0, 0));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+
+
+PetscErrorCode Assembler::corotationTurn(Vec U, const LoadState& ls, double* turn) {
+  PetscFunctionBeginUser;
+  if (!corotatedValid_) SETERRQ(PETSC_COMM_SELF, PETSC_ERR_ORDER, "corotationTurn: no kept ANCF blocks");
+  const double* u = nullptr;
+  PetscCall(beginLocal(U, ls, &u));
+  std::array<double, 48> q;
+  std::array<int, kMaxElementRows> idx;
+  double t = 0.0;
+  for (size_t e = 0; e < mesh_.elements.size(); ++e) {
+    gatherElement(mesh_.elements[e], q.data(), u, idx.data(), nullptr);
+    const double applied = std::atan2(corotationCS_[2 * e + 1], corotationCS_[2 * e]);
+    const double te = std::abs(std::remainder(elementAngle(q.data()) - corotatedAngle_[e] - applied, 2 * M_PI));
+    t = std::max(t, te);
+  }
+  PetscCall(endLocal(&u));
+  PetscCallMPI(MPI_Allreduce(&t, turn, 1, MPI_DOUBLE, MPI_MAX, mesh_.comm));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode Assembler::applyCorotated(Vec x, Vec y) {
+  PetscFunctionBeginUser;
+  if (!corotatedValid_) SETERRQ(PETSC_COMM_SELF, PETSC_ERR_ORDER, "applyCorotated: no kept ANCF blocks");
+  PetscCall(PetscLogEventBegin(SinewEvents::get().tangentOperator, 0, 0, 0, 0));
+  if (!xOp_) {
+    PetscCall(createVector(&xOp_));
+    PetscCall(VecDuplicate(xOp_, &yOp_));
+  }
+  PetscCall(loadLocal(x, xOp_));
+  Vec xl, yl;
+  const PetscScalar* xa;
+  PetscScalar* ya;
+  PetscCall(VecGhostGetLocalForm(xOp_, &xl));
+  PetscCall(VecGhostGetLocalForm(yOp_, &yl));
+  PetscCall(VecSet(yl, 0.0));
+  PetscCall(VecGetArrayRead(xl, &xa));
+  PetscCall(VecGetArray(yl, &ya));
+  const double* B = corotatedBlocks_.data();
+  const double* cs = corotationCS_.data();
+  std::vector<double> MeBuf;
+  std::array<double, 48> q{};
+  for (const LocalElement& el : mesh_.elements) {
+    int idx[8];
+    for (int a = 0; a < 2; ++a)
+      for (int k = 0; k < 4; ++k) idx[4 * a + k] = mesh_.nodes[el.node[a]].dof[k];
+    double d[8];
+    for (int k = 0; k < 8; ++k) d[k] = idx[k] >= 0 ? xa[idx[k]] : 0.0;
+    const double t[2] = {d[0], d[1]};
+    d[0] = 0.0;
+    d[1] = 0.0;
+    d[4] -= t[0];
+    d[5] -= t[1];
+    // into the frame the block was kept in: Q^T d (every 2-vector turned back by the element's turn)
+    const double c = cs[0], sn = cs[1];
+    for (int a = 0; a < 8; a += 2) {
+      const double x0 = d[a], x1 = d[a + 1];
+      d[a] = c * x0 + sn * x1;
+      d[a + 1] = -sn * x0 + c * x1;
+    }
+    double z[8];
+    // translational mass: shiftA (M_e[:, 0] + M_e[:, 4]) t_x + shiftA (M_e[:, 1] + M_e[:, 5]) t_y
+    const double* Me = el.kernel->hasInertia() ? elementMass(el, q.data(), MeBuf) : nullptr;
+    for (int r = 0; r < 8; ++r) {
+      double s = 0.0;
+      for (int k = 0; k < 8; ++k) s += B[8 * r + k] * d[k];
+      z[r] = s;
+    }
+    for (int a = 0; a < 8; a += 2) {  // back: Q z
+      const double x0 = z[a], x1 = z[a + 1];
+      z[a] = c * x0 - sn * x1;
+      z[a + 1] = sn * x0 + c * x1;
+    }
+    for (int r = 0; r < 8; ++r) {
+      // the translation's response: shiftA M_e (t, 0, t, 0) (M_e = m (x) I_2 is invariant under Q)
+      if (Me) z[r] += corotatedShiftA_ * ((Me[8 * r + 0] + Me[8 * r + 4]) * t[0] + (Me[8 * r + 1] + Me[8 * r + 5]) * t[1]);
+      if (idx[r] >= 0) ya[idx[r]] += z[r];
+    }
+    B += 64;
+    cs += 2;
+  }
+  const double* K = corotatedNodeTerms_.data();
+  for (int i = 0; i < mesh_.numOwnedNodes; ++i, K += 6) {
+    const LocalNode& n = mesh_.nodes[i];
+    for (int k = 0; k < 2; ++k)
+      if (n.dof[k] >= 0) ya[n.dof[k]] += K[k] * xa[n.dof[k]];
+    const int r0 = n.dof[2], r1 = n.dof[3];
+    const double s0 = r0 >= 0 ? xa[r0] : 0.0, s1 = r1 >= 0 ? xa[r1] : 0.0;
+    if (r0 >= 0) ya[r0] += K[2] * s0 + K[3] * s1;
+    if (r1 >= 0) ya[r1] += K[4] * s0 + K[5] * s1;
+  }
+  PetscCall(VecRestoreArray(yl, &ya));
+  PetscCall(VecRestoreArrayRead(xl, &xa));
+  PetscCall(VecGhostRestoreLocalForm(yOp_, &yl));
+  PetscCall(VecGhostRestoreLocalForm(xOp_, &xl));
+  PetscCall(VecGhostUpdateBegin(yOp_, ADD_VALUES, SCATTER_REVERSE));
+  PetscCall(VecGhostUpdateEnd(yOp_, ADD_VALUES, SCATTER_REVERSE));
+  PetscCall(VecCopy(yOp_, y));
+  PetscCall(PetscLogEventEnd(SinewEvents::get().tangentOperator, 0, 0, 0, 0));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

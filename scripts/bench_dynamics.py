@@ -223,7 +223,7 @@ def side_by_side(a, model, sizes, steps, h, repeat, timeout):
 
 def growth(a):
     """The growth table (Sinew alone, 2 ranks, 20 steps of A1g) as lines of the bench_dynamics_growth block."""
-    gsizes = [n for n in ([512, 4096] if a.quick else [1024, 4096, 16384, 65536]) if n <= a.max_elements]
+    gsizes = [n for n in ([512, 4096] if a.quick else [1024, 4096, 16384, 32768, 65536]) if n <= a.max_elements]
     load0, t0 = os.getloadavg()[0], time.time()
     g = ["| elements | unknowns | integration [s] | per step and element [us] | Newton its / Jacobians (rebuilt) | process [s] |"
          " process CPU [s] | CPU per step and element [us] | peak memory [MiB] | memory per element [KiB] |",

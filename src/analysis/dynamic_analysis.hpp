@@ -154,7 +154,10 @@ class DynamicAnalysis {
   SNES snes_ = nullptr;
   Mat J_ = nullptr;
   Mat Jop_ = nullptr;  ///< refined step solves: the Newton matrix applied element by element (Assembler::applyCorotated)
-  bool refine_ = false;
+  bool refine_ = false;      ///< step solves refined (useRefinedSolves)
+  bool refineAuto_ = false;  ///< -dynamics_refine auto: refine_ from the first slow contraction on
+  static constexpr double kRefineContraction = 1e-3;
+  PetscErrorCode useRefinedSolves(KSP ksp);
   bool cutLU_ = false;  ///< ANCF chain with few coupling unknowns: useCutCorrectedLU on several ranks
   static PetscErrorCode applyNewtonMatrix(Mat A, Vec x, Vec y);
   Vec F_ = nullptr;

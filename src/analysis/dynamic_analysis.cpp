@@ -253,10 +253,13 @@ PetscErrorCode DynamicAnalysis::formJacobian(SNES snes, Vec U, Mat, Mat P, void*
     PetscCall(SNESGetIterationNumber(snes, &it));
     PetscCall(SNESGetFunctionNorm(snes, &fnorm));
   }
-  if (self->refineAuto_ && !self->refine_ && snes && it >= 2 && self->matrixIt_ <= it - 2 &&
+  // auto: one more refinement (up to kMaxRefinements) each time Newton's updates on one matrix
+  // contract by less than kRefineContraction (A1g: none up to 16384 elements, 1 from 32768, 2 at 131072)
+  if (self->refineAuto_ && self->refinements_ < kMaxRefinements && snes && it >= 2 && self->matrixIt_ <= it - 2 &&
       self->theta_ > kRefineContraction) {
     KSP ksp;
     PetscCall(SNESGetKSP(snes, &ksp));
+    ++self->refinements_;
     PetscCall(self->useRefinedSolves(ksp));
     self->refine_ = true;
   }
@@ -353,7 +356,7 @@ PetscErrorCode DynamicAnalysis::formJacobian(SNES snes, Vec U, Mat, Mat P, void*
 PetscErrorCode DynamicAnalysis::useRefinedSolves(KSP ksp) {
   PetscFunctionBeginUser;
   PetscCall(KSPSetType(ksp, KSPRICHARDSON));
-  PetscCall(KSPSetTolerances(ksp, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT, 2));
+  PetscCall(KSPSetTolerances(ksp, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT, 1 + std::max(1, refinements_)));
   PetscCall(KSPSetNormType(ksp, KSP_NORM_NONE));
   PetscCall(KSPSetConvergenceTest(ksp, KSPConvergedSkip, nullptr, nullptr));
   PetscFunctionReturn(PETSC_SUCCESS);

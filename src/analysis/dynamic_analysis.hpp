@@ -157,6 +157,8 @@ class DynamicAnalysis {
   bool refine_ = false;      ///< step solves refined (useRefinedSolves)
   bool refineAuto_ = false;  ///< -dynamics_refine auto: refine_ from the first slow contraction on
   static constexpr double kRefineContraction = 1e-3;
+  static constexpr int kMaxRefinements = 3;
+  int refinements_ = 0;      ///< refinements per step solve (-dynamics_refine true: 1)
   PetscErrorCode useRefinedSolves(KSP ksp);
   bool cutLU_ = false;  ///< ANCF chain with few coupling unknowns: useCutCorrectedLU on several ranks
   static PetscErrorCode applyNewtonMatrix(Mat A, Vec x, Vec y);

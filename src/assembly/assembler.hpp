@@ -337,9 +337,9 @@ class Assembler {
   std::vector<double> rigidData_;
   void keepRigid(const LocalElement& el, const double* q, const double* f, const double* K, int n);
   Vec xOp_ = nullptr, yOp_ = nullptr;  // ghosted work vectors of applyTangent
-  // corotated Newton matrix (keepCorotatedBlocks): 8 x 8 block and mean-slope angle per element
+  // corotated Newton matrix (keepCorotatedBlocks)
   bool keepCorotated_ = false, corotatedValid_ = false;
-  std::vector<double> corotatedBlocks_, corotatedAngle_;
+  std::vector<double> corotatedBlocks_, corotatedDir_;  ///< 8 x 8 block and mean-slope direction (unit 2-vector) per element
   double corotatedShiftA_ = 0;
   /// Keeps element e's dynamic block K (8 x 8) and its angle from the ANCF state q (dynamicJacobian).
   void keepCorotated(size_t e, const LocalElement& el, const double* q, const double* K);

@@ -209,7 +209,7 @@ PetscErrorCode Assembler::dynamicJacobian(Vec U, Vec V, const LoadState& ls, dou
   std::array<double, 6> sigmaMixed;
   if (keepCorotated_) {
     corotatedBlocks_.resize(64 * mesh_.elements.size());
-    corotatedAngle_.resize(mesh_.elements.size());
+    corotatedDir_.resize(2 * mesh_.elements.size());
     corotatedShiftA_ = shiftA;
     corotatedValid_ = true;
   }

@@ -17,8 +17,13 @@ namespace sinew {
 
 namespace {
 
-/// Angle of an ANCF cable element's mean slope (s1 + s2) from its state (x1, y1, sx1, sy1, x2, ...).
-double elementAngle(const double* q) { return std::atan2(q[3] + q[7], q[2] + q[6]); }
+/// Direction (unit vector) of an ANCF cable element's mean slope s1 + s2, from its nodes' states
+/// (x, y, sx, sy, ...).
+void meanSlopeDirection(const double* n1, const double* n2, double* d) {
+  const double mx = n1[2] + n2[2], my = n1[3] + n2[3], r = 1.0 / std::hypot(mx, my);
+  d[0] = mx * r;
+  d[1] = my * r;
+}
 
 bool corotatable(const LocalElement& el) {
   const auto kinds = el.kernel->nodeKinds();
@@ -34,7 +39,7 @@ void Assembler::keepCorotated(size_t e, const LocalElement& el, const double* q,
     return;
   }
   std::copy(K, K + 64, corotatedBlocks_.begin() + static_cast<long>(64 * e));
-  corotatedAngle_[e] = elementAngle(q);
+  meanSlopeDirection(q, q + 4, &corotatedDir_[2 * e]);
 }
 
 void Assembler::keepCorotatedNodeTerms(const LoadState& ls, double shiftA) {
@@ -93,14 +98,15 @@ PetscErrorCode Assembler::corotatedJacobian(Vec U, const LoadState& ls, Mat J) {
   PetscCall(prepareCorotatedCOO(J));
   const double* u = nullptr;
   PetscCall(beginLocal(U, ls, &u));
-  std::array<double, 48> q;
-  std::array<int, kMaxElementRows> idx;
   double T[64];
   PetscScalar* K = corotatedValues_.data();
   for (size_t e = 0; e < mesh_.elements.size(); ++e, K += 64) {
-    gatherElement(mesh_.elements[e], q.data(), u, idx.data(), nullptr);
-    const double d = elementAngle(q.data()) - corotatedAngle_[e];
-    const double c = std::cos(d), s = std::sin(d);
+    // the turn of the element's mean slope since its block was kept: cos d = d0 . d, sin d = d0 x d
+    const LocalElement& el = mesh_.elements[e];
+    double d[2];
+    meanSlopeDirection(&state_[12 * static_cast<size_t>(el.node[0])], &state_[12 * static_cast<size_t>(el.node[1])], d);
+    const double* d0 = &corotatedDir_[2 * e];
+    const double c = d0[0] * d[0] + d0[1] * d[1], s = d0[0] * d[1] - d0[1] * d[0];
     corotationCS_[2 * e] = c;
     corotationCS_[2 * e + 1] = s;
     const double* B = corotatedBlocks_.data() + 64 * e;
@@ -131,14 +137,15 @@ PetscErrorCode Assembler::corotationTurn(Vec U, const LoadState& ls, double* tur
   if (!corotatedValid_) SETERRQ(PETSC_COMM_SELF, PETSC_ERR_ORDER, "corotationTurn: no kept ANCF blocks");
   const double* u = nullptr;
   PetscCall(beginLocal(U, ls, &u));
-  std::array<double, 48> q;
-  std::array<int, kMaxElementRows> idx;
   double t = 0.0;
   for (size_t e = 0; e < mesh_.elements.size(); ++e) {
-    gatherElement(mesh_.elements[e], q.data(), u, idx.data(), nullptr);
-    const double applied = std::atan2(corotationCS_[2 * e + 1], corotationCS_[2 * e]);
-    const double te = std::abs(std::remainder(elementAngle(q.data()) - corotatedAngle_[e] - applied, 2 * M_PI));
-    t = std::max(t, te);
+    const LocalElement& el = mesh_.elements[e];
+    double d[2];
+    meanSlopeDirection(&state_[12 * static_cast<size_t>(el.node[0])], &state_[12 * static_cast<size_t>(el.node[1])], d);
+    const double* d0 = &corotatedDir_[2 * e];
+    const double c = d0[0] * d[0] + d0[1] * d[1], s = d0[0] * d[1] - d0[1] * d[0];  // turn since kept
+    const double ca = corotationCS_[2 * e], sa = corotationCS_[2 * e + 1];         // turn applied
+    t = std::max(t, std::abs(std::atan2(s * ca - c * sa, c * ca + s * sa)));
   }
   PetscCall(endLocal(&u));
   PetscCallMPI(MPI_Allreduce(&t, turn, 1, MPI_DOUBLE, MPI_MAX, mesh_.comm));

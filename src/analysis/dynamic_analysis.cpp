@@ -254,15 +254,32 @@ PetscErrorCode DynamicAnalysis::formJacobian(SNES snes, Vec U, Mat, Mat P, void*
     PetscCall(SNESGetFunctionNorm(snes, &fnorm));
   }
   // auto: one more refinement (up to kMaxRefinements) each time Newton's updates on one matrix
-  // contract by less than kRefineContraction (A1g: none up to 16384 elements, 1 from 32768, 2 at 131072)
-  if (self->refineAuto_ && self->refinements_ < kMaxRefinements && snes && it >= 2 && self->matrixIt_ <= it - 2 &&
-      self->theta_ > kRefineContraction) {
+  // contract by less than kRefineContraction (A1g: none up to 16384 elements, 1 from 32768, 3 at
+  // 131072); a refinement that does not halve the next such contraction is taken back and auto
+  // ends (the contraction was the kept matrix's staleness, not the LU's accuracy: A3 at 512 elements)
+  if (it == 0) self->refineIt_ = -100;
+  if (self->refineAuto_ && snes && it >= 2 && self->matrixIt_ <= it - 2 && self->refineIt_ <= it - 2) {
     KSP ksp;
     PetscCall(SNESGetKSP(snes, &ksp));
-    ++self->refinements_;
-    PetscCall(self->useRefinedSolves(ksp));
-    self->refine_ = true;
+    if (self->refineCheck_) {
+      self->refineCheck_ = false;
+      if (self->theta_ > 0.5 * self->refineTheta_) {
+        --self->refinements_;
+        self->refineAuto_ = false;
+        self->refine_ = self->refinements_ > 0;
+        if (self->refine_) PetscCall(self->useRefinedSolves(ksp));
+        else PetscCall(KSPSetType(ksp, KSPPREONLY));
+      }
+    } else if (self->refinements_ < kMaxRefinements && self->theta_ > kRefineContraction) {
+      ++self->refinements_;
+      self->refineIt_ = it;
+      self->refineCheck_ = true;
+      self->refineTheta_ = self->theta_;
+      PetscCall(self->useRefinedSolves(ksp));
+      self->refine_ = true;
+    }
   }
+  self->report_.refinements = self->refine_ ? std::max(1, self->refinements_) : 0;
   if (self->modifiedNewton_ && snes) {
     // Keep the factored Jacobian (P untouched: PCSetUp sees the same matrix state and does not
     // refactor) while it still makes Newton contract fast enough.
@@ -366,6 +383,7 @@ PetscErrorCode DynamicAnalysis::applyNewtonMatrix(Mat A, Vec x, Vec y) {
   PetscFunctionBeginUser;
   DynamicAnalysis* self = nullptr;
   PetscCall(MatShellGetContext(A, &self));
+  ++self->report_.refinedSolves;  // one product per refinement of a solve
   PetscCall(self->asm_.applyCorotated(x, y));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -36,6 +36,8 @@ struct DynamicsReport {
   int newtonIterations = 0;
   int jacobians = 0;         ///< Jacobians assembled and factored (modified Newton keeps one for many iterations)
   int corotatedJacobians = 0;  ///< of those, rebuilt from rotated kept element blocks (ANCF cables, no kernel)
+  int refinements = 0;       ///< refinements per step solve at the end (-dynamics_refine)
+  int refinedSolves = 0;     ///< step solves that were refined
   double time = 0;           ///< last converged time
   // adaptive time steps (opt.dynamics.adaptive; 0 with a fixed dt)
   int acceptedSteps = 0;     ///< accepted steps (time steps taken) since t = 0
@@ -159,6 +161,9 @@ class DynamicAnalysis {
   static constexpr double kRefineContraction = 1e-3;
   static constexpr int kMaxRefinements = 3;
   int refinements_ = 0;      ///< refinements per step solve (-dynamics_refine true: 1)
+  bool refineCheck_ = false;  ///< auto: the next contraction on one matrix judges the last added refinement
+  double refineTheta_ = 0;    ///< the contraction that added it
+  int refineIt_ = -100;       ///< Newton iteration of this solve that added it (-100: an earlier solve)
   PetscErrorCode useRefinedSolves(KSP ksp);
   bool cutLU_ = false;  ///< ANCF chain with few coupling unknowns: useCutCorrectedLU on several ranks
   static PetscErrorCode applyNewtonMatrix(Mat A, Vec x, Vec y);

@@ -154,6 +154,9 @@ PetscErrorCode runDynamics(RunContext& ctx) {
   else s << ", generalized-alpha rho = " << opts.spectral_radius << " (alpha_m = " << dyn.alphaM() << ", alpha_f = " << dyn.alphaF() << ")";
   s << ", " << r.newtonIterations << " Newton iterations on " << r.jacobians << " Jacobians";
   if (r.corotatedJacobians > 0) s << " (" << r.corotatedJacobians << " rebuilt from rotated element blocks)";
+  if (r.refinedSolves > 0)
+    s << ", " << r.refinedSolves << " refinements of step solves with the element-wise Newton matrix (" << r.refinements
+      << " per solve at the end)";
   s << ", " << ctx.assembler.counters().dampingMatrices << " element damping matrices";
   if (r.guardedSteps > 0) s << ", " << r.guardedSteps << " steps retried from the last state";
   if (r.reducedSteps > 0) s << ", " << r.reducedSteps << " steps with halved sub-steps (" << r.substeps << " solves)";

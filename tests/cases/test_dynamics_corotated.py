@@ -51,8 +51,15 @@ def run(name, args=()):
         st.close(f["time"][-1], STEPS * H, rtol=1e-12, what=f"{name}: end time reached")
         tip = np.array(tip_displacement(f))
     its, jac, rebuilt = int(m.group(1)), int(m.group(2)), int(m.group(4) or 0)
-    print(f"  {name}: {its} Newton iterations on {jac} Jacobians ({rebuilt} rebuilt, {jac - rebuilt} fresh), tip {tip}")
+    r = re.search(r"(\d+) refinements of step solves with the element-wise Newton matrix \((\d+) per solve at the end\)", out)
+    refined = int(r.group(2)) if r else 0
+    print(f"  {name}: {its} Newton iterations on {jac} Jacobians ({rebuilt} rebuilt, {jac - rebuilt} fresh), "
+          f"{r.group(1) if r else 0} refinements ({refined} per solve at the end), tip {tip}")
+    RUNS[name] = refined
     return its, jac - rebuilt, rebuilt, tip
+
+
+RUNS = {}
 
 
 its, fresh, rebuilt, tip = run("corotated")
@@ -71,6 +78,8 @@ print(f"  tip difference {d} m to the fresh Jacobians, {dr} m to unrefined solve
 st.check(fresh <= 3 and rebuilt >= 3, f"default: {fresh} fresh and {rebuilt} rebuilt Jacobians: at most 3 fresh expected")
 st.check(rebuilt0 == 0 and fresh0 >= 6, f"without: {fresh0} fresh and {rebuilt0} rebuilt Jacobians: at least 6 fresh expected")
 st.check(its <= 2.5 * STEPS, f"default: {its} Newton iterations in {STEPS} steps: at most 2.5 per step expected")
+st.check(RUNS["corotated"] >= 1 and RUNS["unrefined"] == 0,
+         f"refinements per solve at the end: {RUNS['corotated']} with the default (>= 1), {RUNS['unrefined']} unrefined (0)")
 st.check(itsr >= 3 * STEPS, f"-dynamics_refine false: {itsr} Newton iterations in {STEPS} steps: at least 3 per step expected")
 st.check(d.max() < 1e-8, f"tips differ by {d} m: 1e-8 m expected")
 st.check(dr.max() < 1e-8, f"tips with and without refined solves differ by {dr} m: 1e-8 m expected")

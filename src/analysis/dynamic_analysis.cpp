@@ -77,10 +77,11 @@ DynamicAnalysis::DynamicAnalysis(Assembler& assembler, const DynamicsOptions& op
   chain_ = ancfChain(asm_.mesh());
   corotated_ = corot && modifiedNewton_ && scheme == Scheme::ArnoldBruls && chain_;
   asm_.keepCorotatedBlocks(corotated_);
-  // refined step solves: on (true), off (false), or auto: from the first step whose Newton updates on
-  // an unchanged matrix contract by less than kRefineContraction (the LU's accuracy in the smooth
-  // modes limits Newton: A1g at 65536 elements 7.5e-3; at 4096 1e-5..1e-4, where a refinement would
-  // only cost)
+  // refined step solves (useRefinedSolves): once (true), never (false), or auto: added while Newton's
+  // updates on an unchanged matrix contract by less than kRefineContraction (the LU's accuracy in the
+  // smooth modes limits Newton: A1g at 65536 elements 7.5e-3; at 4096 1e-5..1e-4, where a refinement
+  // would only cost), see formJacobian; not when the user chose another KSP for the step solves
+  // (runArnoldBruls)
   char refine[16] = "auto";
   SinewCallThrow(comm, PetscOptionsGetString(nullptr, nullptr, "-dynamics_refine", refine, sizeof(refine), &set));
   const std::string rf = refine;
@@ -88,7 +89,8 @@ DynamicAnalysis::DynamicAnalysis(Assembler& assembler, const DynamicsOptions& op
   refine_ = corotated_ && rf == "true";
   // ANCF chains on several ranks: rank-local LU with the exact correction of the few coupling
   // unknowns (useCutCorrectedLU) instead of every rank factoring the whole chain (PCREDUNDANT); A1g
-  // at 65536 elements, 2 ranks: 14 ms against 48 ms per factorization (docs/performance.md)
+  // at 65536 elements, 2 ranks: 28 ms against 42 ms per factorization, 2.1 ms against 5.2 ms per
+  // solve (docs/performance.md, "The direct solver of a chain")
   char chainLU[16] = "auto";
   SinewCallThrow(comm, PetscOptionsGetString(nullptr, nullptr, "-dynamics_chain_lu", chainLU, sizeof(chainLU), &set));
   const std::string lu = chainLU;
@@ -161,8 +163,10 @@ DynamicAnalysis::~DynamicAnalysis() {
 // by the mass term at the step sizes dynamics uses, so on one process a model without multipliers
 // (no rigid modes or releases as constraints) is factored by PETSc's own LU (no pivoting needed;
 // nested-dissection order) instead of MUMPS, whose fixed cost per factorization (about 0.1 ms)
-// exceeds a whole time step of a small model. ANCF chains: PETSc's LU in band order, on several
-// processes the same LU on every process (useChainLU). Anything else: MUMPS, as everywhere.
+// exceeds a whole time step of a small model. ANCF chains: PETSc's LU in band order (useChainLU), on
+// several processes each rank's part with the exact correction of the unknowns coupling the ranks
+// (useCutCorrectedLU; -dynamics_chain_lu redundant: every process factors the whole matrix).
+// Anything else: MUMPS, as everywhere.
 PetscErrorCode DynamicAnalysis::useDynamicsSolver(KSP ksp) {
   PetscFunctionBeginUser;
   PetscCall(useDirectSolver(ksp));
@@ -300,9 +304,10 @@ PetscErrorCode DynamicAnalysis::formJacobian(SNES snes, Vec U, Mat, Mat P, void*
     // the same step size up to round-off: a step that ends on k dt has h = k dt - t, a few ulps off
     // dt, which must not count as a new step size (it refactored every other step)
     const bool sameH = std::abs(self->jacobianH_ - h) <= 1e-9 * h;
-    // a kept matrix whose elements turned by half the turn that made a kept matrix stall in an earlier
-    // step is rebuilt at once, after the step's first update (which moves the state near q_{n+1}):
-    // A1g at 65536 elements stalls from a turn of ~1e-6 rad, i.e. within each later step
+    // a kept matrix whose elements turned by half the turn at which a kept matrix stalled in an
+    // earlier step is rebuilt at once, after the step's first update (which moves the state near
+    // q_{n+1}), not one iteration later on a growing residual: A1g at 65536 elements stalls from a
+    // turn of 2.3e-4 rad, which the clamped end's bending wave exceeds in every step after the fourth
     bool turned = false;
     double turn = 0.0;
     if (self->corotated_ && self->jacobianValid_ && sameH && !self->lastCorotated_ && self->asm_.corotatedBlocksValid() &&
@@ -603,6 +608,13 @@ PetscErrorCode DynamicAnalysis::runArnoldBruls(Vec U, const StepCallback& onStep
   PetscCall(useDynamicsSolver(ksp));
   if (refine_) PetscCall(useRefinedSolves(ksp));
   PetscCall(SNESSetFromOptions(snes_));
+  if (refineAuto_) {  // the step solves' KSP chosen by the user (-ksp_type): auto does not change it
+    KSPType type;
+    PetscBool preonly = PETSC_FALSE;
+    PetscCall(KSPGetType(ksp, &type));
+    PetscCall(PetscStrcmp(type, KSPPREONLY, &preonly));
+    refineAuto_ = preonly;
+  }
   Vec Usol;
   PetscCall(VecDuplicate(U, &Usol));
   PetscCall(SNESSetSolution(snes_, Usol));

@@ -28,7 +28,7 @@ iterations per step with the default, at least 3 with -dynamics_refine false (th
 the option is ignored), tips within 1e-8 m of each other.
 Measured (2026-11-26): 24 Newton iterations on 8 Jacobians (7 rebuilt) refined, 31 unrefined. The
 refined tip is also the accurate one: against the 4096-element tip (-4.905000365e-4 m, the same to
-1e-12 m at 16384 elements) it is 2.2e-11 m off, the unrefined and the fresh-Jacobian runs 2.3e-9 m
+1e-12 m at 16384 elements) it is 2.2e-11 m off, the unrefined and the fresh-Jacobian runs 3.5e-9 m
 and 2.5e-9 m (their smooth-mode LU error, accumulated over the steps); 2e-10 m allowed.
 Runtime: 12 s (4 runs).
 """

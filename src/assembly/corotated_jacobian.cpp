@@ -3,8 +3,9 @@
 // A Jacobian kept across Newton iterations and time steps goes stale on a fine cable as its elements
 // turn: an element's bending stiffness EI/l^3 exceeds its axial stiffness EA/l by EI/(EA l^2) (9e5 for
 // A1 at 65536 elements), and a rotation by d theta moves the bending stiffness into the element's
-// former axial direction; from d theta ~ EA l^2/EI (1e-6 rad there) the kept matrix no longer
-// contracts Newton (docs/performance.md, "Why 65536 elements still cost more per element"). The
+// former axial direction, and a kept matrix stops contracting Newton (estimate d theta ~ EA l^2/EI,
+// 1e-6 rad there; measured, A1g: kept matrices stalled from a turn of 2.3e-4 rad; docs/performance.md,
+// "Why 65536 elements cost more per element, and what was done"). The
 // element blocks themselves are objective, B(Q q) = Q B(q) Q^T, so the kept blocks rotated by each
 // element's own rotation are the current Newton matrix up to the elements' deformation since they
 // were kept. Rotating per node instead breaks the blocks' translation invariance (neighbouring
@@ -129,8 +130,6 @@ PetscErrorCode Assembler::corotatedJacobian(Vec U, const LoadState& ls, Mat J) {
   PetscCall(PetscLogEventEnd(SinewEvents::get().corotatedJacobian, 0, 0, 0, 0));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
-
-
 
 PetscErrorCode Assembler::corotationTurn(Vec U, const LoadState& ls, double* turn) {
   PetscFunctionBeginUser;

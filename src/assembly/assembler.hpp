@@ -336,7 +336,12 @@ class Assembler {
   std::vector<std::pair<int, size_t>> rigidInfo_;
   std::vector<double> rigidData_;
   void keepRigid(const LocalElement& el, const double* q, const double* f, const double* K, int n);
-  Vec xOp_ = nullptr, yOp_ = nullptr;  // ghosted work vectors of applyTangent
+  Vec xOp_ = nullptr, yOp_ = nullptr;  // ghosted work vectors of applyTangent and applyCorotated
+  /// y = the element-by-element product that body adds into ya from xa (local ghosted forms of x and
+  /// y; ghost contributions summed to their owners). Logged as SinewTangentOp.
+  PetscErrorCode elementProduct(Vec x, Vec y, const std::function<void(const double* xa, double* ya)>& body);
+  /// ya += K xa on node's two slope unknowns (K: 2 x 2, row-major).
+  static void addSlopeBlock(const LocalNode& node, const double* K, const double* xa, double* ya);
   // corotated Newton matrix (keepCorotatedBlocks)
   bool keepCorotated_ = false, corotatedValid_ = false;
   std::vector<double> corotatedBlocks_, corotatedDir_;  ///< 8 x 8 block and mean-slope direction (unit 2-vector) per element

@@ -154,81 +154,57 @@ PetscErrorCode Assembler::corotationTurn(Vec U, const LoadState& ls, double* tur
 PetscErrorCode Assembler::applyCorotated(Vec x, Vec y) {
   PetscFunctionBeginUser;
   if (!corotatedValid_) SETERRQ(PETSC_COMM_SELF, PETSC_ERR_ORDER, "applyCorotated: no kept ANCF blocks");
-  PetscCall(PetscLogEventBegin(SinewEvents::get().tangentOperator, 0, 0, 0, 0));
-  if (!xOp_) {
-    PetscCall(createVector(&xOp_));
-    PetscCall(VecDuplicate(xOp_, &yOp_));
-  }
-  PetscCall(loadLocal(x, xOp_));
-  Vec xl, yl;
-  const PetscScalar* xa;
-  PetscScalar* ya;
-  PetscCall(VecGhostGetLocalForm(xOp_, &xl));
-  PetscCall(VecGhostGetLocalForm(yOp_, &yl));
-  PetscCall(VecSet(yl, 0.0));
-  PetscCall(VecGetArrayRead(xl, &xa));
-  PetscCall(VecGetArray(yl, &ya));
-  const double* B = corotatedBlocks_.data();
-  const double* cs = corotationCS_.data();
-  std::vector<double> MeBuf;
-  std::array<double, 48> q{};
-  for (const LocalElement& el : mesh_.elements) {
-    int idx[8];
-    for (int a = 0; a < 2; ++a)
-      for (int k = 0; k < 4; ++k) idx[4 * a + k] = mesh_.nodes[el.node[a]].dof[k];
-    double d[8];
-    for (int k = 0; k < 8; ++k) d[k] = idx[k] >= 0 ? xa[idx[k]] : 0.0;
-    const double t[2] = {d[0], d[1]};
-    d[0] = 0.0;
-    d[1] = 0.0;
-    d[4] -= t[0];
-    d[5] -= t[1];
-    // into the frame the block was kept in: Q^T d (every 2-vector turned back by the element's turn)
-    const double c = cs[0], sn = cs[1];
-    for (int a = 0; a < 8; a += 2) {
-      const double x0 = d[a], x1 = d[a + 1];
-      d[a] = c * x0 + sn * x1;
-      d[a + 1] = -sn * x0 + c * x1;
-    }
-    double z[8];
-    // translational mass: shiftA (M_e[:, 0] + M_e[:, 4]) t_x + shiftA (M_e[:, 1] + M_e[:, 5]) t_y
-    const double* Me = el.kernel->hasInertia() ? elementMass(el, q.data(), MeBuf) : nullptr;
-    for (int r = 0; r < 8; ++r) {
-      double s = 0.0;
-      for (int k = 0; k < 8; ++k) s += B[8 * r + k] * d[k];
-      z[r] = s;
-    }
-    for (int a = 0; a < 8; a += 2) {  // back: Q z
-      const double x0 = z[a], x1 = z[a + 1];
-      z[a] = c * x0 - sn * x1;
-      z[a + 1] = sn * x0 + c * x1;
-    }
-    for (int r = 0; r < 8; ++r) {
+  PetscCall(elementProduct(x, y, [&](const double* xa, double* ya) {
+    const double* B = corotatedBlocks_.data();
+    const double* cs = corotationCS_.data();
+    std::vector<double> MeBuf;
+    std::array<double, 48> q{};
+    for (const LocalElement& el : mesh_.elements) {
+      int idx[8];
+      for (int a = 0; a < 2; ++a)
+        for (int k = 0; k < 4; ++k) idx[4 * a + k] = mesh_.nodes[el.node[a]].dof[k];
+      double d[8];
+      for (int k = 0; k < 8; ++k) d[k] = idx[k] >= 0 ? xa[idx[k]] : 0.0;
+      const double t[2] = {d[0], d[1]};  // the first node's translation, applied exactly below
+      d[0] = 0.0;
+      d[1] = 0.0;
+      d[4] -= t[0];
+      d[5] -= t[1];
+      // into the frame the block was kept in: Q^T d (every 2-vector turned back by the element's turn)
+      const double c = cs[0], sn = cs[1];
+      for (int a = 0; a < 8; a += 2) {
+        const double x0 = d[a], x1 = d[a + 1];
+        d[a] = c * x0 + sn * x1;
+        d[a + 1] = -sn * x0 + c * x1;
+      }
+      double z[8];
+      for (int r = 0; r < 8; ++r) {
+        double s = 0.0;
+        for (int k = 0; k < 8; ++k) s += B[8 * r + k] * d[k];
+        z[r] = s;
+      }
+      for (int a = 0; a < 8; a += 2) {  // back: Q z
+        const double x0 = z[a], x1 = z[a + 1];
+        z[a] = c * x0 - sn * x1;
+        z[a + 1] = sn * x0 + c * x1;
+      }
       // the translation's response: shiftA M_e (t, 0, t, 0) (M_e = m (x) I_2 is invariant under Q)
-      if (Me) z[r] += corotatedShiftA_ * ((Me[8 * r + 0] + Me[8 * r + 4]) * t[0] + (Me[8 * r + 1] + Me[8 * r + 5]) * t[1]);
-      if (idx[r] >= 0) ya[idx[r]] += z[r];
+      const double* Me = el.kernel->hasInertia() ? elementMass(el, q.data(), MeBuf) : nullptr;
+      for (int r = 0; r < 8; ++r) {
+        if (Me) z[r] += corotatedShiftA_ * ((Me[8 * r + 0] + Me[8 * r + 4]) * t[0] + (Me[8 * r + 1] + Me[8 * r + 5]) * t[1]);
+        if (idx[r] >= 0) ya[idx[r]] += z[r];
+      }
+      B += 64;
+      cs += 2;
     }
-    B += 64;
-    cs += 2;
-  }
-  const double* K = corotatedNodeTerms_.data();
-  for (int i = 0; i < mesh_.numOwnedNodes; ++i, K += 6) {
-    const LocalNode& n = mesh_.nodes[i];
-    for (int k = 0; k < 2; ++k)
-      if (n.dof[k] >= 0) ya[n.dof[k]] += K[k] * xa[n.dof[k]];
-    const int r0 = n.dof[2], r1 = n.dof[3];
-    const double s0 = r0 >= 0 ? xa[r0] : 0.0, s1 = r1 >= 0 ? xa[r1] : 0.0;
-    if (r0 >= 0) ya[r0] += K[2] * s0 + K[3] * s1;
-    if (r1 >= 0) ya[r1] += K[4] * s0 + K[5] * s1;
-  }
-  PetscCall(VecRestoreArray(yl, &ya));
-  PetscCall(VecRestoreArrayRead(xl, &xa));
-  PetscCall(VecGhostRestoreLocalForm(yOp_, &yl));
-  PetscCall(VecGhostRestoreLocalForm(xOp_, &xl));
-  PetscCall(VecGhostUpdateBegin(yOp_, ADD_VALUES, SCATTER_REVERSE));
-  PetscCall(VecGhostUpdateEnd(yOp_, ADD_VALUES, SCATTER_REVERSE));
-  PetscCall(VecCopy(yOp_, y));
-  PetscCall(PetscLogEventEnd(SinewEvents::get().tangentOperator, 0, 0, 0, 0));
+    const double* K = corotatedNodeTerms_.data();
+    for (int i = 0; i < mesh_.numOwnedNodes; ++i, K += 6) {
+      const LocalNode& n = mesh_.nodes[i];
+      for (int k = 0; k < 2; ++k)
+        if (n.dof[k] >= 0) ya[n.dof[k]] += K[k] * xa[n.dof[k]];
+      addSlopeBlock(n, K + 2, xa, ya);
+    }
+  }));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

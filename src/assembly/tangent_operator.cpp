@@ -139,7 +139,7 @@ long Assembler::rigidFreeElements() const {
   return c;
 }
 
-PetscErrorCode Assembler::applyTangent(Vec x, Vec y, bool rigidFree) {
+PetscErrorCode Assembler::elementProduct(Vec x, Vec y, const std::function<void(const double* xa, double* ya)>& body) {
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(SinewEvents::get().tangentOperator, 0, 0, 0, 0));
   if (!xOp_) {
@@ -155,94 +155,7 @@ PetscErrorCode Assembler::applyTangent(Vec x, Vec y, bool rigidFree) {
   PetscCall(VecSet(yl, 0.0));
   PetscCall(VecGetArrayRead(xl, &xa));
   PetscCall(VecGetArray(yl, &ya));
-  std::array<int, kMaxElementRows> idx;
-  std::array<double, kMaxElementRows> d, z;
-  size_t offset = 0, ei = 0;
-  if (rigidFree && rigidInfo_.size() != mesh_.elements.size())
-    SETERRQ(PETSC_COMM_SELF, PETSC_ERR_ORDER, "applyTangent: no rigid-motion data (keepRigidData before jacobian)");
-  for (const LocalElement& el : mesh_.elements) {
-    const auto kinds = el.kernel->nodeKinds();
-    int n = 0;
-    std::array<int, 4> nodeStart{};
-    for (size_t i = 0; i < kinds.size(); ++i) {
-      const LocalNode& node = mesh_.nodes[el.node[i]];
-      nodeStart[i] = n;
-      for (int k = 0; k < dofSize(kinds[i]); ++k, ++n) idx[n] = node.dof[k];
-    }
-    for (int j = 0; j < el.kernel->numConstraints(); ++j, ++n) idx[n] = el.firstMultiplier + j;
-    for (int k = 0; k < n; ++k) d[k] = idx[k] >= 0 ? xa[idx[k]] : 0.0;
-    // subtract the translation of the first node from every node's translation DOFs
-    const int nt = kinds[0] == NodeKind::Ancf2D ? 2 : 3;
-    std::array<double, 3> t{};
-    for (int c = 0; c < nt; ++c) t[c] = d[c];
-    for (size_t i = 0; i < kinds.size(); ++i) {
-      const int ni = kinds[i] == NodeKind::Ancf2D ? 2 : 3;
-      for (int c = 0; c < std::min(nt, ni); ++c) d[nodeStart[i] + c] -= t[c];
-    }
-    const double* K = blocks_.data() + offset;
-    if (rigidFree) {
-      const auto [nr, roff] = rigidInfo_[ei++];
-      const double* fk = rigidData_.data() + roff;
-      const double* R = fk + n;
-      const double* F = R + static_cast<size_t>(n) * nr;
-      const double* E = F + static_cast<size_t>(n) * nr;
-      std::array<Group, 8> g;
-      const int ng = groupsOf(kinds, g);
-      double c[3] = {0, 0, 0};  // rotation of the first node (d is translation-free already)
-      for (int k = 0; k < nr; ++k)
-        for (int j = 0; j < n; ++j) c[k] += E[k * n + j] * d[j];
-      double vr[3] = {0, 0, 0};  // exact moment of K d about the first node: -sum_g d_g x f_g
-      for (int gi = 0; gi < ng && nr > 0; ++gi) {
-        if (!g[gi].position) continue;
-        const double* a = &d[g[gi].start];
-        const double* b = fk + g[gi].start;
-        if (nr == 1) {
-          vr[0] -= a[0] * b[1] - a[1] * b[0];
-        } else {
-          vr[0] -= a[1] * b[2] - a[2] * b[1];
-          vr[1] -= a[2] * b[0] - a[0] * b[2];
-          vr[2] -= a[0] * b[1] - a[1] * b[0];
-        }
-      }
-      for (int j = 0; j < n; ++j)
-        for (int k = 0; k < nr; ++k) d[j] -= R[j * nr + k] * c[k];
-      for (int r = 0; r < n; ++r) {
-        double s = 0.0;
-        for (int cc = 0; cc < n; ++cc) s += K[r * n + cc] * d[cc];
-        for (int k = 0; k < nr; ++k) s += F[r * nr + k] * c[k];
-        z[r] = s;
-      }
-      // balance: resultant force 0 (first node's translation rows), moment vr (E^T)
-      double wt[3] = {0, 0, 0}, wr[3] = {0, 0, 0};
-      for (size_t i = 0; i < kinds.size(); ++i) {
-        const int ni = kinds[i] == NodeKind::Ancf2D ? 2 : 3;
-        for (int cc = 0; cc < std::min(nt, ni); ++cc) wt[cc] += z[nodeStart[i] + cc];
-      }
-      for (int k = 0; k < nr; ++k)
-        for (int j = 0; j < n; ++j) wr[k] += R[j * nr + k] * z[j];
-      for (int cc = 0; cc < nt; ++cc) z[cc] -= wt[cc];
-      for (int k = 0; k < nr; ++k)
-        for (int j = 0; j < n; ++j) z[j] += E[k * n + j] * (vr[k] - wr[k]);
-      for (int r = 0; r < n; ++r)
-        if (idx[r] >= 0) ya[idx[r]] += z[r];
-      offset += static_cast<size_t>(n) * n;
-      continue;
-    }
-    for (int r = 0; r < n; ++r) {
-      if (idx[r] < 0) continue;
-      double s = 0.0;
-      for (int c = 0; c < n; ++c) s += K[r * n + c] * d[c];
-      ya[idx[r]] += s;
-    }
-    offset += static_cast<size_t>(n) * n;
-  }
-  for (const auto& [i, K] : torqueBlocks_) {
-    const LocalNode& node = mesh_.nodes[i];
-    const int r0 = node.dof[2], r1 = node.dof[3];
-    const double s0 = r0 >= 0 ? xa[r0] : 0.0, s1 = r1 >= 0 ? xa[r1] : 0.0;
-    if (r0 >= 0) ya[r0] += K[0] * s0 + K[1] * s1;
-    if (r1 >= 0) ya[r1] += K[2] * s0 + K[3] * s1;
-  }
+  body(xa, ya);
   PetscCall(VecRestoreArray(yl, &ya));
   PetscCall(VecRestoreArrayRead(xl, &xa));
   PetscCall(VecGhostRestoreLocalForm(yOp_, &yl));
@@ -251,6 +164,102 @@ PetscErrorCode Assembler::applyTangent(Vec x, Vec y, bool rigidFree) {
   PetscCall(VecGhostUpdateEnd(yOp_, ADD_VALUES, SCATTER_REVERSE));
   PetscCall(VecCopy(yOp_, y));
   PetscCall(PetscLogEventEnd(SinewEvents::get().tangentOperator, 0, 0, 0, 0));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+void Assembler::addSlopeBlock(const LocalNode& node, const double* K, const double* xa, double* ya) {
+  const int r0 = node.dof[2], r1 = node.dof[3];
+  const double s0 = r0 >= 0 ? xa[r0] : 0.0, s1 = r1 >= 0 ? xa[r1] : 0.0;
+  if (r0 >= 0) ya[r0] += K[0] * s0 + K[1] * s1;
+  if (r1 >= 0) ya[r1] += K[2] * s0 + K[3] * s1;
+}
+
+PetscErrorCode Assembler::applyTangent(Vec x, Vec y, bool rigidFree) {
+  PetscFunctionBeginUser;
+  if (rigidFree && rigidInfo_.size() != mesh_.elements.size())
+    SETERRQ(PETSC_COMM_SELF, PETSC_ERR_ORDER, "applyTangent: no rigid-motion data (keepRigidData before jacobian)");
+  PetscCall(elementProduct(x, y, [&](const double* xa, double* ya) {
+    std::array<int, kMaxElementRows> idx;
+    std::array<double, kMaxElementRows> d, z;
+    size_t offset = 0, ei = 0;
+    for (const LocalElement& el : mesh_.elements) {
+      const auto kinds = el.kernel->nodeKinds();
+      int n = 0;
+      std::array<int, 4> nodeStart{};
+      for (size_t i = 0; i < kinds.size(); ++i) {
+        const LocalNode& node = mesh_.nodes[el.node[i]];
+        nodeStart[i] = n;
+        for (int k = 0; k < dofSize(kinds[i]); ++k, ++n) idx[n] = node.dof[k];
+      }
+      for (int j = 0; j < el.kernel->numConstraints(); ++j, ++n) idx[n] = el.firstMultiplier + j;
+      for (int k = 0; k < n; ++k) d[k] = idx[k] >= 0 ? xa[idx[k]] : 0.0;
+      // subtract the translation of the first node from every node's translation DOFs
+      const int nt = kinds[0] == NodeKind::Ancf2D ? 2 : 3;
+      std::array<double, 3> t{};
+      for (int c = 0; c < nt; ++c) t[c] = d[c];
+      for (size_t i = 0; i < kinds.size(); ++i) {
+        const int ni = kinds[i] == NodeKind::Ancf2D ? 2 : 3;
+        for (int c = 0; c < std::min(nt, ni); ++c) d[nodeStart[i] + c] -= t[c];
+      }
+      const double* K = blocks_.data() + offset;
+      if (rigidFree) {
+        const auto [nr, roff] = rigidInfo_[ei++];
+        const double* fk = rigidData_.data() + roff;
+        const double* R = fk + n;
+        const double* F = R + static_cast<size_t>(n) * nr;
+        const double* E = F + static_cast<size_t>(n) * nr;
+        std::array<Group, 8> g;
+        const int ng = groupsOf(kinds, g);
+        double c[3] = {0, 0, 0};  // rotation of the first node (d is translation-free already)
+        for (int k = 0; k < nr; ++k)
+          for (int j = 0; j < n; ++j) c[k] += E[k * n + j] * d[j];
+        double vr[3] = {0, 0, 0};  // exact moment of K d about the first node: -sum_g d_g x f_g
+        for (int gi = 0; gi < ng && nr > 0; ++gi) {
+          if (!g[gi].position) continue;
+          const double* a = &d[g[gi].start];
+          const double* b = fk + g[gi].start;
+          if (nr == 1) {
+            vr[0] -= a[0] * b[1] - a[1] * b[0];
+          } else {
+            vr[0] -= a[1] * b[2] - a[2] * b[1];
+            vr[1] -= a[2] * b[0] - a[0] * b[2];
+            vr[2] -= a[0] * b[1] - a[1] * b[0];
+          }
+        }
+        for (int j = 0; j < n; ++j)
+          for (int k = 0; k < nr; ++k) d[j] -= R[j * nr + k] * c[k];
+        for (int r = 0; r < n; ++r) {
+          double s = 0.0;
+          for (int cc = 0; cc < n; ++cc) s += K[r * n + cc] * d[cc];
+          for (int k = 0; k < nr; ++k) s += F[r * nr + k] * c[k];
+          z[r] = s;
+        }
+        // balance: resultant force 0 (first node's translation rows), moment vr (E^T)
+        double wt[3] = {0, 0, 0}, wr[3] = {0, 0, 0};
+        for (size_t i = 0; i < kinds.size(); ++i) {
+          const int ni = kinds[i] == NodeKind::Ancf2D ? 2 : 3;
+          for (int cc = 0; cc < std::min(nt, ni); ++cc) wt[cc] += z[nodeStart[i] + cc];
+        }
+        for (int k = 0; k < nr; ++k)
+          for (int j = 0; j < n; ++j) wr[k] += R[j * nr + k] * z[j];
+        for (int cc = 0; cc < nt; ++cc) z[cc] -= wt[cc];
+        for (int k = 0; k < nr; ++k)
+          for (int j = 0; j < n; ++j) z[j] += E[k * n + j] * (vr[k] - wr[k]);
+        for (int r = 0; r < n; ++r)
+          if (idx[r] >= 0) ya[idx[r]] += z[r];
+        offset += static_cast<size_t>(n) * n;
+        continue;
+      }
+      for (int r = 0; r < n; ++r) {
+        if (idx[r] < 0) continue;
+        double s = 0.0;
+        for (int c = 0; c < n; ++c) s += K[r * n + c] * d[c];
+        ya[idx[r]] += s;
+      }
+      offset += static_cast<size_t>(n) * n;
+    }
+    for (const auto& [i, K] : torqueBlocks_) addSlopeBlock(mesh_.nodes[i], K.data(), xa, ya);
+  }));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -103,6 +103,11 @@ PetscErrorCode cutSetUp(PC pc) {
     PetscCallMPI(MPI_Allgatherv(colmap, mine, MPIU_INT, all.data(), counts.data(), displs.data(), MPIU_INT, comm));
     std::sort(all.begin(), all.end());
     all.erase(std::unique(all.begin(), all.end()), all.end());
+    if (all.size() > 4096)
+      SETERRQ(comm, PETSC_ERR_SUP,
+              "cut-corrected LU (-dynamics_chain_lu cut): %d unknowns couple the ranks, at most 4096 supported (its capacitance "
+              "matrix is dense); use -dynamics_chain_lu redundant or auto",
+              static_cast<int>(all.size()));
     cut->coupling = all;
     cut->ownedRow.assign(all.size(), -1);
     for (size_t k = 0; k < all.size(); ++k)

@@ -156,10 +156,8 @@ PetscErrorCode Assembler::addLumpedInertia() {
   PetscCall(VecGhostRestoreLocalForm(b, &bl));
   const PetscScalar *ra, *rb;
   for (Vec v : {a, b}) {
-    PetscCall(VecGhostUpdateBegin(v, ADD_VALUES, SCATTER_REVERSE));
-    PetscCall(VecGhostUpdateEnd(v, ADD_VALUES, SCATTER_REVERSE));
-    PetscCall(VecGhostUpdateBegin(v, INSERT_VALUES, SCATTER_FORWARD));
-    PetscCall(VecGhostUpdateEnd(v, INSERT_VALUES, SCATTER_FORWARD));
+    PetscCall(ghostUpdate(v, ADD_VALUES, SCATTER_REVERSE));
+    PetscCall(ghostUpdate(v, INSERT_VALUES, SCATTER_FORWARD));
   }
   PetscCall(VecGhostGetLocalForm(a, &al));
   PetscCall(VecGhostGetLocalForm(b, &bl));
@@ -250,8 +248,7 @@ PetscErrorCode Assembler::preallocationCounts() const {
     std::copy(src->begin(), src->end(), x);
     PetscCall(VecRestoreArray(loc, &x));
     PetscCall(VecGhostRestoreLocalForm(v, &loc));
-    PetscCall(VecGhostUpdateBegin(v, ADD_VALUES, SCATTER_REVERSE));
-    PetscCall(VecGhostUpdateEnd(v, ADD_VALUES, SCATTER_REVERSE));
+    PetscCall(ghostUpdate(v, ADD_VALUES, SCATTER_REVERSE));
   }
   const PetscScalar *d, *o;
   PetscCall(VecGetArrayRead(D, &d));
@@ -305,8 +302,7 @@ PetscErrorCode Assembler::createMatrix(Mat* A) const {
 PetscErrorCode Assembler::loadLocal(Vec U, Vec local) {
   PetscFunctionBeginUser;
   PetscCall(VecCopy(U, local));
-  PetscCall(VecGhostUpdateBegin(local, INSERT_VALUES, SCATTER_FORWARD));
-  PetscCall(VecGhostUpdateEnd(local, INSERT_VALUES, SCATTER_FORWARD));
+  PetscCall(ghostUpdate(local, INSERT_VALUES, SCATTER_FORWARD));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -604,8 +600,7 @@ PetscErrorCode Assembler::forceVector(Vec U, const LoadState& ls, Vec work, Vec 
   PetscCall(VecGhostRestoreLocalForm(work, &fl));
   PetscCall(VecGhostRestoreLocalForm(uWork_, &ul));
   PetscCall(ierr);
-  PetscCall(VecGhostUpdateBegin(work, ADD_VALUES, SCATTER_REVERSE));
-  PetscCall(VecGhostUpdateEnd(work, ADD_VALUES, SCATTER_REVERSE));
+  PetscCall(ghostUpdate(work, ADD_VALUES, SCATTER_REVERSE));
   PetscCall(VecCopy(work, out));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -624,10 +619,8 @@ PetscErrorCode Assembler::residual(Vec U, const LoadState& ls, Vec F) {
 PetscErrorCode Assembler::fullResidual(Vec U, const LoadState& ls, Vec Ffull) {
   PetscFunctionBeginUser;
   if (reactionA_) {  // dynamics: reactions include the inertia M qdd (ghost values needed below)
-    PetscCall(VecGhostUpdateBegin(reactionV_, INSERT_VALUES, SCATTER_FORWARD));
-    PetscCall(VecGhostUpdateEnd(reactionV_, INSERT_VALUES, SCATTER_FORWARD));
-    PetscCall(VecGhostUpdateBegin(reactionA_, INSERT_VALUES, SCATTER_FORWARD));
-    PetscCall(VecGhostUpdateEnd(reactionA_, INSERT_VALUES, SCATTER_FORWARD));
+    PetscCall(ghostUpdate(reactionV_, INSERT_VALUES, SCATTER_FORWARD));
+    PetscCall(ghostUpdate(reactionA_, INSERT_VALUES, SCATTER_FORWARD));
   }
   PetscCall(forceVector(U, ls, fullWork_, Ffull, [&](const double* u, double* f) {
     PetscFunctionBeginUser;

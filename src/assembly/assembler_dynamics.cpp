@@ -15,8 +15,7 @@ namespace {
 /// Ghost-updated local form of a ghosted vector (read access); pair with restoreLocalRead.
 PetscErrorCode getLocalRead(Vec X, Vec* xl, const PetscScalar** x) {
   PetscFunctionBeginUser;
-  PetscCall(VecGhostUpdateBegin(X, INSERT_VALUES, SCATTER_FORWARD));
-  PetscCall(VecGhostUpdateEnd(X, INSERT_VALUES, SCATTER_FORWARD));
+  PetscCall(ghostUpdate(X, INSERT_VALUES, SCATTER_FORWARD));
   PetscCall(VecGhostGetLocalForm(X, xl));
   PetscCall(VecGetArrayRead(*xl, x));
   PetscFunctionReturn(PETSC_SUCCESS);

@@ -160,8 +160,7 @@ PetscErrorCode Assembler::elementProduct(Vec x, Vec y, const std::function<void(
   PetscCall(VecRestoreArrayRead(xl, &xa));
   PetscCall(VecGhostRestoreLocalForm(yOp_, &yl));
   PetscCall(VecGhostRestoreLocalForm(xOp_, &xl));
-  PetscCall(VecGhostUpdateBegin(yOp_, ADD_VALUES, SCATTER_REVERSE));
-  PetscCall(VecGhostUpdateEnd(yOp_, ADD_VALUES, SCATTER_REVERSE));
+  PetscCall(ghostUpdate(yOp_, ADD_VALUES, SCATTER_REVERSE));
   PetscCall(VecCopy(yOp_, y));
   PetscCall(PetscLogEventEnd(SinewEvents::get().tangentOperator, 0, 0, 0, 0));
   PetscFunctionReturn(PETSC_SUCCESS);

@@ -1,18 +1,21 @@
-"""The direct solver of ANCF chains (issue 12 item 2): on several processes every process factors
-the whole matrix with PETSc's LU in reverse Cuthill-McKee order (PCREDUNDANT, useChainLU in
-src/analysis/solver_defaults.hpp), instead of MUMPS, whose factorization of a chain is 5-10x slower
+"""The direct solver of ANCF chains (issue 12 item 2). In dynamics on several processes each rank
+factors its part of the chain with PETSc's LU in reverse Cuthill-McKee order and the unknowns
+coupling the ranks are corrected exactly (useCutCorrectedLU, -dynamics_chain_lu, default auto = cut
+here); -dynamics_chain_lu redundant and statics: every process factors the whole matrix
+(PCREDUNDANT, useChainLU in src/analysis/solver_defaults.hpp). Both instead of MUMPS, whose factorization of a chain is 5-10x slower
 (A1g, 16384 elements, 2 ranks: 100 ms against 12 ms per factorization, 30 ms against 2 ms per solve;
 docs/performance.md, Dynamics). In dynamics (the time-step matrix) and in statics (the fine LU of the
 two-level preconditioner, options prefix fine_).
 
 A1g (the A1 cantilever swinging down under gravity, h = 1e-3) on 1024 elements, 2 ranks, 10 steps:
-- the default's -ksp_view names the redundant PETSc LU in RCM order (the test fails when the default
-  is dropped: MUMPS shows up instead);
-- its tip agrees with the former default, MUMPS (-pc_type lu -pc_factor_mat_solver_type mumps), and
-  with one process (PETSc's LU in RCM order).
-Measured (2026-11-26): tip (-7.37e-14, -4.905000e-04) m in all three runs, 20 Newton iterations on
-3 Jacobians each; differences to MUMPS (0, 1.1e-17) m, to one process (0, 6.2e-18) m. With MUMPS
-forced, -ksp_view shows no "redundant" and no "rcm" (the checks below fail). Runtime 2 s.
+- the default's -ksp_view names the cut-corrected LU and its local LU in RCM order (the test fails
+  when the default is dropped: PCREDUNDANT or MUMPS shows up instead);
+- -dynamics_chain_lu redundant shows PCREDUNDANT (fails when the option is ignored);
+- the tips agree: default, PCREDUNDANT, MUMPS (-pc_type lu -pc_factor_mat_solver_type mumps) and
+  one process (PETSc's LU in RCM order).
+Measured (2026-11-26): tip (-7.37e-14, -4.905000e-04) m in all four runs, 20 Newton iterations on
+3 Jacobians each; differences to PCREDUNDANT (0, 1.7e-18) m, to MUMPS (0, 3.4e-18) m, to one process
+(0, 5.2e-18) m. Statics: 4.5e-13 m to MUMPS, 4.7e-13 m to one process. Runtime 4 s.
 """
 import re
 
@@ -41,6 +44,14 @@ view = out.split("time step 0/")[-1]
 st.check("cut-corrected LU" in view, "the default time-step solver of a 2-rank ANCF chain is not the cut-corrected LU")
 st.check("mumps" not in view.lower(), "MUMPS appears in the default time-step solver of an ANCF chain")
 st.check(re.search(r"ordering:\s*rcm", view) is not None, "the chain's LU is not in RCM order (-ksp_view)")
+# -dynamics_chain_lu redundant: every rank factors the whole chain (PCREDUNDANT), the former default
+tip_r, out_r = run("chain_redundant", args=["-dynamics_chain_lu", "redundant", "-ksp_view"])
+view_r = out_r.split("time step 0/")[-1]
+st.check("type: redundant" in view_r and "cut-corrected LU" not in view_r,
+         "-dynamics_chain_lu redundant: the time-step solver is not PCREDUNDANT (-ksp_view)")
+dr = np.abs(tip - tip_r)
+print(f"  tip difference to PCREDUNDANT {dr} m")
+st.check(dr.max() < 1e-12, f"tip differs from PCREDUNDANT's by {dr} m: 1e-12 m expected")
 tip_m, _ = run("chain_mumps", args=["-pc_type", "lu", "-pc_factor_mat_solver_type", "mumps"])
 tip_1, _ = run("chain_one", np_=1)
 dm, d1 = np.abs(tip - tip_m), np.abs(tip - tip_1)

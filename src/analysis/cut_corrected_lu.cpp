@@ -59,6 +59,17 @@ struct CutLU {
   std::vector<double> c;            ///< work: S^T D^-1 b and the correction coefficients
 };
 
+/// y = D_r^-1 b with this rank's factors (b, y: arrays of its local rows).
+PetscErrorCode localSolve(CutLU* cut, const double* b, double* y) {
+  PetscFunctionBeginUser;
+  PetscCall(VecPlaceArray(cut->b, b));
+  PetscCall(VecPlaceArray(cut->y, y));
+  PetscCall(KSPSolve(cut->local, cut->b, cut->y));
+  PetscCall(VecResetArray(cut->b));
+  PetscCall(VecResetArray(cut->y));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode cutDestroy(PC pc) {
   PetscFunctionBeginUser;
   CutLU* cut = nullptr;
@@ -147,13 +158,8 @@ PetscErrorCode cutSetUp(PC pc) {
     PetscCall(MatSeqAIJRestoreArrayRead(Ao, &va));
     PetscCall(MatRestoreRowIJ(Ao, 0, PETSC_FALSE, PETSC_FALSE, &nr, &ia, &ja, &done));
   }
-  for (PetscInt j = 0; j < no; ++j) {
-    PetscCall(VecPlaceArray(cut->b, w.data() + static_cast<size_t>(j) * n));
-    PetscCall(VecPlaceArray(cut->y, cut->Z.data() + static_cast<size_t>(j) * n));
-    PetscCall(KSPSolve(cut->local, cut->b, cut->y));
-    PetscCall(VecResetArray(cut->b));
-    PetscCall(VecResetArray(cut->y));
-  }
+  for (PetscInt j = 0; j < no; ++j)
+    PetscCall(localSolve(cut, w.data() + static_cast<size_t>(j) * n, cut->Z.data() + static_cast<size_t>(j) * n));
   // capacitance I + S^T D^-1 W: the rows of the owned coupling unknowns here, summed over the ranks
   cut->C.assign(m * m, 0.0);
   for (PetscInt j = 0; j < no; ++j) {
@@ -177,11 +183,7 @@ PetscErrorCode cutApply(PC pc, Vec x, Vec y) {
   PetscScalar* ya;
   PetscCall(VecGetArrayRead(x, &xa));
   PetscCall(VecGetArray(y, &ya));
-  PetscCall(VecPlaceArray(cut->b, xa));
-  PetscCall(VecPlaceArray(cut->y, ya));
-  PetscCall(KSPSolve(cut->local, cut->b, cut->y));
-  PetscCall(VecResetArray(cut->b));
-  PetscCall(VecResetArray(cut->y));
+  PetscCall(localSolve(cut, xa, ya));
   const size_t m = cut->coupling.size();
   if (m > 0) {
     PetscInt n = 0;

@@ -77,7 +77,7 @@ DynamicAnalysis::DynamicAnalysis(Assembler& assembler, const DynamicsOptions& op
   chain_ = ancfChain(asm_.mesh());
   corotated_ = corot && modifiedNewton_ && scheme == Scheme::ArnoldBruls && chain_;
   asm_.keepCorotatedBlocks(corotated_);
-  // refined step solves (useRefinedSolves): once (true), never (false), or auto: added while Newton's
+  // refined step solves (setRefinements): once (true), never (false), or auto: added while Newton's
   // updates on an unchanged matrix contract by less than kRefineContraction (the LU's accuracy in the
   // smooth modes limits Newton: A1g at 65536 elements 7.5e-3; at 4096 1e-5..1e-4, where a refinement
   // would only cost), see formJacobian; not when the user chose another KSP for the step solves
@@ -86,7 +86,7 @@ DynamicAnalysis::DynamicAnalysis(Assembler& assembler, const DynamicsOptions& op
   SinewCallThrow(comm, PetscOptionsGetString(nullptr, nullptr, "-dynamics_refine", refine, sizeof(refine), &set));
   const std::string rf = refine;
   refineAuto_ = corotated_ && rf == "auto";
-  refine_ = corotated_ && rf == "true";
+  refinements_ = corotated_ && rf == "true" ? 1 : 0;
   // ANCF chains on several ranks: rank-local LU with the exact correction of the few coupling
   // unknowns (useCutCorrectedLU) instead of every rank factoring the whole chain (PCREDUNDANT); A1g
   // at 65536 elements, 2 ranks: 28 ms against 42 ms per factorization, 2.1 ms against 5.2 ms per
@@ -171,17 +171,13 @@ PetscErrorCode DynamicAnalysis::useDynamicsSolver(KSP ksp) {
   PetscFunctionBeginUser;
   PetscCall(useDirectSolver(ksp));
   const DistributedMesh& mesh = asm_.mesh();
-  if (chain_) {
-    int size = 1;
-    MPI_Comm_size(mesh.comm, &size);
-    if (size > 1 && cutLU_) {
-      PetscCall(KSPSetType(ksp, KSPPREONLY));
-      PetscFunctionReturn(useCutCorrectedLU(ksp));
-    }
-    PetscFunctionReturn(useChainLU(ksp, mesh.comm));
-  }
   int size = 1;
   MPI_Comm_size(mesh.comm, &size);
+  if (chain_ && size > 1 && cutLU_) {
+    PetscCall(KSPSetType(ksp, KSPPREONLY));
+    PetscFunctionReturn(useCutCorrectedLU(ksp));
+  }
+  if (chain_) PetscFunctionReturn(useChainLU(ksp, mesh.comm));
   bool plain = size == 1;
   for (const LocalElement& e : mesh.elements) plain = plain && e.firstMultiplier < 0;
   if (!plain) {
@@ -261,29 +257,23 @@ PetscErrorCode DynamicAnalysis::formJacobian(SNES snes, Vec U, Mat, Mat P, void*
   // contract by less than kRefineContraction (A1g: none up to 16384 elements, 1 from 32768, 3 at
   // 131072); a refinement that does not halve the next such contraction is taken back and auto
   // ends (the contraction was the kept matrix's staleness, not the LU's accuracy: A3 at 512 elements)
-  if (it == 0) self->refineIt_ = -100;
+  if (it == 0) self->matrixIt_ = self->refineIt_ = -100;  // both updates of a theta came from this solve's matrix
   if (self->refineAuto_ && snes && it >= 2 && self->matrixIt_ <= it - 2 && self->refineIt_ <= it - 2) {
     KSP ksp;
     PetscCall(SNESGetKSP(snes, &ksp));
     if (self->refineCheck_) {
       self->refineCheck_ = false;
       if (self->theta_ > 0.5 * self->refineTheta_) {
-        --self->refinements_;
         self->refineAuto_ = false;
-        self->refine_ = self->refinements_ > 0;
-        if (self->refine_) PetscCall(self->useRefinedSolves(ksp));
-        else PetscCall(KSPSetType(ksp, KSPPREONLY));
+        PetscCall(self->setRefinements(ksp, self->refinements_ - 1));
       }
     } else if (self->refinements_ < kMaxRefinements && self->theta_ > kRefineContraction) {
-      ++self->refinements_;
       self->refineIt_ = it;
       self->refineCheck_ = true;
       self->refineTheta_ = self->theta_;
-      PetscCall(self->useRefinedSolves(ksp));
-      self->refine_ = true;
+      PetscCall(self->setRefinements(ksp, self->refinements_ + 1));
     }
   }
-  self->report_.refinements = self->refine_ ? std::max(1, self->refinements_) : 0;
   if (self->modifiedNewton_ && snes) {
     // Keep the factored Jacobian (P untouched: PCSetUp sees the same matrix state and does not
     // refactor) while it still makes Newton contract fast enough.
@@ -299,7 +289,6 @@ PetscErrorCode DynamicAnalysis::formJacobian(SNES snes, Vec U, Mat, Mat P, void*
                                 (it >= 2 && ((self->theta_ > kContractivity && self->matrixIt_ <= it - 2) ||
                                              fnorm > 1.5 * self->prevFnorm_))
                           : it > 0 && fnorm > kContractivity * self->prevFnorm_;
-    if (it == 0) self->matrixIt_ = -100;
     self->prevFnorm_ = fnorm;
     // the same step size up to round-off: a step that ends on k dt has h = k dt - t, a few ulps off
     // dt, which must not count as a new step size (it refactored every other step)
@@ -373,12 +362,18 @@ PetscErrorCode DynamicAnalysis::formJacobian(SNES snes, Vec U, Mat, Mat P, void*
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-// One refinement of the LU solve with the Newton matrix applied element by element (Jop_): Richardson
-// with two iterations, x1 = P^-1 b, x2 = x1 + P^-1 (b - J x1), no norms.
-PetscErrorCode DynamicAnalysis::useRefinedSolves(KSP ksp) {
+// n refinements of the LU solve with the Newton matrix applied element by element (Jop_): Richardson
+// with n + 1 iterations, x1 = P^-1 b, x_k+1 = x_k + P^-1 (b - J x_k), no norms; n = 0: the LU alone.
+PetscErrorCode DynamicAnalysis::setRefinements(KSP ksp, int n) {
   PetscFunctionBeginUser;
+  refinements_ = n;
+  report_.refinements = n;
+  if (n == 0) {
+    PetscCall(KSPSetType(ksp, KSPPREONLY));
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
   PetscCall(KSPSetType(ksp, KSPRICHARDSON));
-  PetscCall(KSPSetTolerances(ksp, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT, 1 + std::max(1, refinements_)));
+  PetscCall(KSPSetTolerances(ksp, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT, n + 1));
   PetscCall(KSPSetNormType(ksp, KSP_NORM_NONE));
   PetscCall(KSPSetConvergenceTest(ksp, KSPConvergedSkip, nullptr, nullptr));
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -588,7 +583,7 @@ PetscErrorCode DynamicAnalysis::runArnoldBruls(Vec U, const StepCallback& onStep
   PetscCall(SNESCreate(comm, &snes_));
   PetscCall(SNESSetType(snes_, SNESNEWTONLS));
   PetscCall(SNESSetFunction(snes_, F_, formFunction, this));
-  if (refine_ || refineAuto_) {
+  if (refinements_ > 0 || refineAuto_) {
     PetscInt m = 0, n = 0, M = 0, N = 0;
     PetscCall(MatGetLocalSize(J_, &m, &n));
     PetscCall(MatGetSize(J_, &M, &N));
@@ -606,7 +601,7 @@ PetscErrorCode DynamicAnalysis::runArnoldBruls(Vec U, const StepCallback& onStep
   KSP ksp;
   PetscCall(SNESGetKSP(snes_, &ksp));
   PetscCall(useDynamicsSolver(ksp));
-  if (refine_) PetscCall(useRefinedSolves(ksp));
+  if (refinements_ > 0) PetscCall(setRefinements(ksp, refinements_));
   PetscCall(SNESSetFromOptions(snes_));
   if (refineAuto_) {  // the step solves' KSP chosen by the user (-ksp_type): auto does not change it
     KSPType type;

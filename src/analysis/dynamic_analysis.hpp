@@ -156,15 +156,14 @@ class DynamicAnalysis {
   SNES snes_ = nullptr;
   Mat J_ = nullptr;
   Mat Jop_ = nullptr;  ///< refined step solves: the Newton matrix applied element by element (Assembler::applyCorotated)
-  bool refine_ = false;      ///< step solves refined (useRefinedSolves)
-  bool refineAuto_ = false;  ///< -dynamics_refine auto: refine_ from the first slow contraction on
+  bool refineAuto_ = false;  ///< -dynamics_refine auto: refinements added from the first slow contraction on
   static constexpr double kRefineContraction = 1e-3;
   static constexpr int kMaxRefinements = 3;
-  int refinements_ = 0;      ///< refinements per step solve (-dynamics_refine true: 1)
+  int refinements_ = 0;      ///< refinements per step solve (0: the LU alone; -dynamics_refine true: 1)
   bool refineCheck_ = false;  ///< auto: the next contraction on one matrix judges the last added refinement
   double refineTheta_ = 0;    ///< the contraction that added it
   int refineIt_ = -100;       ///< Newton iteration of this solve that added it (-100: an earlier solve)
-  PetscErrorCode useRefinedSolves(KSP ksp);
+  PetscErrorCode setRefinements(KSP ksp, int n);
   bool cutLU_ = false;  ///< ANCF chain with few coupling unknowns: useCutCorrectedLU on several ranks
   static PetscErrorCode applyNewtonMatrix(Mat A, Vec x, Vec y);
   Vec F_ = nullptr;

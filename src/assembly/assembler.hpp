@@ -358,8 +358,11 @@ class Assembler {
   bool keepCorotated_ = false, corotatedValid_ = false;
   std::vector<double> corotatedBlocks_, corotatedDir_;  ///< 8 x 8 block and mean-slope direction (unit 2-vector) per element
   double corotatedShiftA_ = 0;
-  /// Keeps element e's dynamic block K (8 x 8) and its angle from the ANCF state q (dynamicJacobian).
+  /// Keeps element e's dynamic block K (8 x 8) and its mean-slope direction from the ANCF state q (dynamicJacobian).
   void keepCorotated(size_t e, const LocalElement& el, const double* q, const double* K);
+  /// cos and sin of element e's turn since its block was kept: d0 . d and d0 x d of its mean-slope
+  /// directions (node states of the last computeStates).
+  void turnSinceKept(size_t e, double* c, double* s) const;
   /// COO pattern of corotatedJacobian on J (once per matrix): element blocks, then per owned ANCF node
   /// its two translation diagonals (nodal mass) and its 2 x 2 slope block (slope torque).
   PetscErrorCode prepareCorotatedCOO(Mat J);

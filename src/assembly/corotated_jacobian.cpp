@@ -43,6 +43,15 @@ void Assembler::keepCorotated(size_t e, const LocalElement& el, const double* q,
   meanSlopeDirection(q, q + 4, &corotatedDir_[2 * e]);
 }
 
+void Assembler::turnSinceKept(size_t e, double* c, double* s) const {
+  const LocalElement& el = mesh_.elements[e];
+  double d[2];
+  meanSlopeDirection(&state_[12 * static_cast<size_t>(el.node[0])], &state_[12 * static_cast<size_t>(el.node[1])], d);
+  const double* d0 = &corotatedDir_[2 * e];
+  *c = d0[0] * d[0] + d0[1] * d[1];
+  *s = d0[0] * d[1] - d0[1] * d[0];
+}
+
 void Assembler::keepCorotatedNodeTerms(const LoadState& ls, double shiftA) {
   corotatedNodeTerms_.resize(6 * static_cast<size_t>(mesh_.numOwnedNodes));
   double* K = corotatedNodeTerms_.data();
@@ -102,12 +111,8 @@ PetscErrorCode Assembler::corotatedJacobian(Vec U, const LoadState& ls, Mat J) {
   double T[64];
   PetscScalar* K = corotatedValues_.data();
   for (size_t e = 0; e < mesh_.elements.size(); ++e, K += 64) {
-    // the turn of the element's mean slope since its block was kept: cos d = d0 . d, sin d = d0 x d
-    const LocalElement& el = mesh_.elements[e];
-    double d[2];
-    meanSlopeDirection(&state_[12 * static_cast<size_t>(el.node[0])], &state_[12 * static_cast<size_t>(el.node[1])], d);
-    const double* d0 = &corotatedDir_[2 * e];
-    const double c = d0[0] * d[0] + d0[1] * d[1], s = d0[0] * d[1] - d0[1] * d[0];
+    double c, s;
+    turnSinceKept(e, &c, &s);
     corotationCS_[2 * e] = c;
     corotationCS_[2 * e + 1] = s;
     const double* B = corotatedBlocks_.data() + 64 * e;
@@ -138,12 +143,9 @@ PetscErrorCode Assembler::corotationTurn(Vec U, const LoadState& ls, double* tur
   PetscCall(beginLocal(U, ls, &u));
   double t = 0.0;
   for (size_t e = 0; e < mesh_.elements.size(); ++e) {
-    const LocalElement& el = mesh_.elements[e];
-    double d[2];
-    meanSlopeDirection(&state_[12 * static_cast<size_t>(el.node[0])], &state_[12 * static_cast<size_t>(el.node[1])], d);
-    const double* d0 = &corotatedDir_[2 * e];
-    const double c = d0[0] * d[0] + d0[1] * d[1], s = d0[0] * d[1] - d0[1] * d[0];  // turn since kept
-    const double ca = corotationCS_[2 * e], sa = corotationCS_[2 * e + 1];         // turn applied
+    double c, s;
+    turnSinceKept(e, &c, &s);
+    const double ca = corotationCS_[2 * e], sa = corotationCS_[2 * e + 1];  // the turn the matrix applies
     t = std::max(t, std::abs(std::atan2(s * ca - c * sa, c * ca + s * sa)));
   }
   PetscCall(endLocal(&u));

@@ -59,11 +59,11 @@ KernelFactory makeKernelFactory(const Model& model) {
   for (size_t set = 0; set < model.eprops.size(); ++set) accelerations[set] = model.eprops[set].massProportionalLoad;
   registerSetAccelerations(std::move(accelerations));
   // ANCF parameters (and their compiled user functions) once per property set
-  auto ancf = std::make_shared<std::map<int, AncfCable2DParameters>>();
+  auto ancf = std::make_shared<std::map<int, std::shared_ptr<const AncfCable2DParameters>>>();
   for (size_t set = 0; set < model.eprops.size(); ++set) {
     if (model.eprops[set].type != ElementType::AncfCable2D) continue;
     try {
-      (*ancf)[static_cast<int>(set)] = ancfCable2DParameters(model.eprops[set]);
+      (*ancf)[static_cast<int>(set)] = std::make_shared<const AncfCable2DParameters>(ancfCable2DParameters(model.eprops[set]));
     } catch (const std::invalid_argument& ex) {
       throw SceneError("eprops[" + std::to_string(set) + "]", ex.what());
     }

@@ -315,15 +315,23 @@ std::shared_ptr<const AncfCable2D::Geometry> AncfCable2D::geometry(double L, int
 }
 
 AncfCable2D::AncfCable2D(const std::array<double, 8>& qRef, double L, const AncfCable2DParameters& p)
-    : qRef_(qRef), L_(L), p_(p) {
+    : AncfCable2D(qRef, L, std::make_shared<const AncfCable2DParameters>(p)) {}
+
+AncfCable2D::AncfCable2D(const std::array<double, 8>& qRef, double L, std::shared_ptr<const AncfCable2DParameters> params)
+    : qRef_(qRef), L_(L), params_(std::move(params)), p_(*params_) {
+  const AncfCable2DParameters& p = p_;
   if (!(L > 0.0)) throw std::invalid_argument("ancf_cable2d: reference length must be positive");
   if (p.useReducedOrderIntegration < 0 || p.useReducedOrderIntegration > 2)
     throw std::invalid_argument("ancf_cable2d: useReducedOrderIntegration must be 0, 1 or 2");
   geo_ = geometry(L, p.useReducedOrderIntegration, p.physicsMassPerLength);
-  for (int i = 0; i < geo_->nAxial; ++i)
-    axialRef_[i] = {axialStrainRef(geo_->axial[i].x), curvatureRef(geo_->axial[i].x)};
-  for (int i = 0; i < geo_->nBending; ++i)
-    bendingRef_[i] = {axialStrainRef(geo_->bending[i].x), curvatureRef(geo_->bending[i].x)};
+  if (p.strainIsRelativeToReference != 0.0) {
+    auto ref = std::make_shared<ReferenceTable>();
+    for (int i = 0; i < geo_->nAxial; ++i)
+      ref->axial[i] = {axialStrainRef(geo_->axial[i].x), curvatureRef(geo_->axial[i].x)};
+    for (int i = 0; i < geo_->nBending; ++i)
+      ref->bending[i] = {axialStrainRef(geo_->bending[i].x), curvatureRef(geo_->bending[i].x)};
+    ref_ = std::move(ref);
+  }
 
   const Expression* ua = p_.axialForceUserFunction.get();
   const Expression* ub = p_.bendingMomentUserFunction.get();
@@ -496,7 +504,7 @@ void AncfCable2D::evaluate(const KernelInput& in, const KernelNeeds& needs, Kern
   for (int ip = 0; ip < geo.nAxial; ++ip) {
     const IntegrationPoint& P = geo.axial[ip];
     const PointState& s = states[ip];
-    const UserFunctionValue N = Law::axial(p_, in.t, P.xiNorm, s, axialRef_[ip].strain, axialRef_[ip].curvature);
+    const UserFunctionValue N = Law::axial(p_, in.t, P.xiNorm, s, axialRef(ip).strain, axialRef(ip).curvature);
     Law::check(p_, N, true, in.t, s, true, axialNeedsCurvature_, derivatives);
     const double w = P.w;
     for (int a = 0; a < 8; ++a) f[a] += w * N.value * s.g[a];
@@ -543,7 +551,7 @@ void AncfCable2D::evaluate(const KernelInput& in, const KernelNeeds& needs, Kern
   for (int ip = 0; ip < geo.nBending; ++ip) {
     const IntegrationPoint& P = geo.bending[ip];
     const PointState& s = states[ip];
-    const UserFunctionValue M = Law::bending(p_, in.t, P.xiNorm, s, bendingRef_[ip].strain, bendingRef_[ip].curvature);
+    const UserFunctionValue M = Law::bending(p_, in.t, P.xiNorm, s, bendingRef(ip).strain, bendingRef(ip).curvature);
     Law::check(p_, M, false, in.t, s, bendingNeedsStrain_, true, derivatives);
     const double w = P.w;
     for (int a = 0; a < 8; ++a) f[a] += w * M.value * s.h[a];

@@ -47,6 +47,9 @@ class AncfCable2D : public ElementKernel {
  public:
   /// qRef: both nodes' reference coordinates [x0, y0, sx0, sy0, x1, y1, sx1, sy1]; L: reference length.
   AncfCable2D(const std::array<double, 8>& qRef, double L, const AncfCable2DParameters& p);
+  /// The same with the parameters shared by the elements of a set (one copy per eprops set: a fine
+  /// cable's elements then fit in fewer cache lines; the kernel factory uses this).
+  AncfCable2D(const std::array<double, 8>& qRef, double L, std::shared_ptr<const AncfCable2DParameters> p);
 
   const char* name() const override { return "ancf_cable2d"; }
   std::span<const NodeKind> nodeKinds() const override;
@@ -129,11 +132,23 @@ class AncfCable2D : public ElementKernel {
 
   std::array<double, 8> qRef_;
   double L_;
-  AncfCable2DParameters p_;
+  std::shared_ptr<const AncfCable2DParameters> params_;
+  const AncfCable2DParameters& p_;  ///< *params_
   bool hasDamping_ = false;
   bool axialNeedsCurvature_ = false, bendingNeedsStrain_ = false;
   std::shared_ptr<const Geometry> geo_;
-  std::array<PointRef, kMaxIp> axialRef_{}, bendingRef_{};  ///< per element (reference shape, f_ref)
+  /// eps_ref and K_ref at the integration points of an element whose reference shape enters them
+  /// (f_ref != 0); null when they are the constants of the parameters
+  struct ReferenceTable {
+    std::array<PointRef, kMaxIp> axial{}, bending{};
+  };
+  std::shared_ptr<const ReferenceTable> ref_;
+  PointRef axialRef(int ip) const {
+    return ref_ ? ref_->axial[ip] : PointRef{p_.physicsReferenceAxialStrain, p_.physicsReferenceCurvature};
+  }
+  PointRef bendingRef(int ip) const {
+    return ref_ ? ref_->bending[ip] : PointRef{p_.physicsReferenceAxialStrain, p_.physicsReferenceCurvature};
+  }
 };
 
 }  // namespace sinew

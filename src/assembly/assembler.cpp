@@ -450,8 +450,10 @@ PetscErrorCode Assembler::assembleForces(const double* u, const LoadState& ls, T
   const Vec3 g = gravity_ ? gscale * *gravity_ : Vec3{};
   double fint2 = 0, fext2 = 0;
   KernelNeeds needs;
+  std::vector<double> MeBuf;
   for (const LocalElement& el : mesh_.elements) {
     gatherElement(el, q.data(), u, idx.data(), fidx.data());
+    if (aLocal_ && el.kernel->hasInertia()) addElementInertia(el, q.data(), idx.data(), fidx.data(), aLocal_, target, out, MeBuf);
     KernelInput in{q.data(), gatherVelocity(el, idx.data(), qdot.data()),
                    el.firstMultiplier >= 0 ? u + el.firstMultiplier : nullptr, ls.time};
     in.disp = elemDisp_.data();

@@ -152,10 +152,9 @@ class Assembler {
   // ---- corotated Newton matrix of ANCF cables (corotated_jacobian.cpp)
   /// From now on dynamicJacobian() also keeps every ANCF cable element's block (K + shiftV D + shiftA M)
   /// and the angle of the element's mean slope, for corotatedJacobian().
-  void keepCorotatedBlocks(bool on) {
-    keepCorotated_ = on;
-    corotatedValid_ = false;
-  }
+  /// A model of ANCF cable elements and nodes only also assembles dynamicJacobian from those blocks
+  /// through the COO pattern of corotatedJacobian (no MatSetValuesLocal per element block).
+  void keepCorotatedBlocks(bool on);
   /// The kept blocks cover every element (all are ANCF cables, the last dynamicJacobian kept them).
   bool corotatedBlocksValid() const { return corotatedValid_; }
   /// J from the blocks kept by the last dynamicJacobian(), each rotated by the change of its element's
@@ -283,7 +282,13 @@ class Assembler {
   bool prescribedRates(const LocalElement& el, double* v, double* a) const;
   /// Adds M qdd (elements, nodal inertia) to `out` (local form) by the rows of `target`; a = local
   /// form of the accelerations of the unknowns, v = of the velocities (gyroscopic moments).
-  void addInertia(const double* v, const double* a, Target target, double* out);
+  /// elements = false: the nodal terms only (the residual's element loop added the elements' M_e qdd_e,
+  /// addElementInertia with aLocal_).
+  void addInertia(const double* v, const double* a, Target target, double* out, bool elements = true);
+  /// out += M_e qdd_e of one element (idx, fidx from gatherElement; prescribed DOFs with their
+  /// prescribed accelerations).
+  void addElementInertia(const LocalElement& el, const double* q, const int* idx, const int* fidx, const double* a,
+                         Target target, double* out, std::vector<double>& MeBuf) const;
   /// The element's mass matrix at q: the kernel's constantMass() when it has one, else mass(q) into buf.
   const double* elementMass(const LocalElement& el, const double* q, std::vector<double>& buf) const;
 
@@ -323,6 +328,7 @@ class Assembler {
   /// rotaryMomentumStep of free Frame6 node i under momentum_ (its mominertia, R_n = Rref_, theta from u1).
   RotaryMomentumStep midpointMomentum(int i) const;
   const double* vLocal_ = nullptr;  // local form of the velocities while a dynamic evaluation runs
+  const double* aLocal_ = nullptr;  // and of the accelerations while dynamicResidual runs (element inertia in the force loop)
   // prescribed motions as functions of time (computeStates with ls.timeFunctions): per local node
   // 6 velocities, then 6 accelerations (dof layout; spatial angular rates for rot)
   std::vector<double> presRate_;
@@ -366,6 +372,10 @@ class Assembler {
   /// COO pattern of corotatedJacobian on J (once per matrix): element blocks, then per owned ANCF node
   /// its two translation diagonals (nodal mass) and its 2 x 2 slope block (slope torque).
   PetscErrorCode prepareCorotatedCOO(Mat J);
+  /// J = the kept blocks (each rotated by corotationCS_ with rotate) plus the node terms
+  /// corotatedNodeTerms_, through the COO pattern of prepareCorotatedCOO.
+  PetscErrorCode setCorotatedValues(Mat J, bool rotate);
+  bool corotatedCOO_ = false;  ///< keepCorotatedBlocks(true) on a model of ANCF cables only
   std::vector<PetscScalar> corotatedValues_;
   std::vector<double> corotationCS_;       ///< per element cos, sin of the turn the current Newton matrix applies to its kept block
   std::vector<double> corotatedNodeTerms_;  ///< per owned node: nodal mass term (2), slope torque block (4)

@@ -79,29 +79,36 @@ const double* Assembler::gatherVelocity(const LocalElement& el, const int* idx, 
   return qdot;
 }
 
-void Assembler::addInertia(const double* v, const double* a, Target target, double* out) {
+void Assembler::addElementInertia(const LocalElement& el, const double* q, const int* idx, const int* fidx, const double* a,
+                                  Target target, double* out, std::vector<double>& MeBuf) const {
+  std::array<double, kMaxElementRows> pv, pa;
+  const bool moving = prescribedRates(el, pv.data(), pa.data());
+  const double* Me = elementMass(el, q, MeBuf);
+  const int n = el.kernel->numDofs();
+  const int* map = target == Target::Residual ? idx : fidx;
+  // the element's accelerations (prescribed ones from their time functions), then M_e qdd_e
+  std::array<double, kMaxElementRows> ae;
+  for (int c = 0; c < n; ++c) ae[c] = idx[c] >= 0 ? a[idx[c]] : (moving ? pa[c] : 0.0);
+  for (int r = 0; r < n; ++r) {
+    if (map[r] < 0) continue;
+    const double* Mr = Me + static_cast<size_t>(r) * n;
+    double s = 0.0;
+    for (int c = 0; c < n; ++c) s += Mr[c] * ae[c];
+    out[map[r]] += s;
+  }
+}
+
+void Assembler::addInertia(const double* v, const double* a, Target target, double* out, bool elements) {
   // elements: M_e qdd_e, the accelerations of prescribed DOFs from their time functions
   std::array<double, 48> q;
   std::array<int, kMaxElementRows> idx, fidx;
-  std::array<double, kMaxElementRows> pv, pa;
   std::vector<double> MeBuf;
-  for (const LocalElement& el : mesh_.elements) {
-    if (!el.kernel->hasInertia()) continue;
-    gatherElement(el, q.data(), nullptr, idx.data(), fidx.data());
-    const bool moving = prescribedRates(el, pv.data(), pa.data());
-    const double* Me = elementMass(el, q.data(), MeBuf);
-    const int n = el.kernel->numDofs();
-    const int* map = target == Target::Residual ? idx.data() : fidx.data();
-    for (int r = 0; r < n; ++r) {
-      if (map[r] < 0) continue;
-      double s = 0.0;
-      for (int c = 0; c < n; ++c) {
-        if (idx[c] >= 0) s += Me[static_cast<size_t>(r) * n + c] * a[idx[c]];
-        else if (moving) s += Me[static_cast<size_t>(r) * n + c] * pa[c];
-      }
-      out[map[r]] += s;
+  if (elements)
+    for (const LocalElement& el : mesh_.elements) {
+      if (!el.kernel->hasInertia()) continue;
+      gatherElement(el, q.data(), nullptr, idx.data(), fidx.data());
+      addElementInertia(el, q.data(), idx.data(), fidx.data(), a, target, out, MeBuf);
     }
-  }
   for (int i = 0; i < mesh_.numOwnedNodes; ++i) {
     const LocalNode& n = mesh_.nodes[i];
     const double* pr = presRatesActive_ && n.timeFn ? &presRate_[12 * static_cast<size_t>(i)] : nullptr;
@@ -174,11 +181,12 @@ PetscErrorCode Assembler::dynamicResidual(Vec U, Vec V, Vec A, const LoadState& 
   const PetscErrorCode ierr = forceVector(U, ls, fWork_, F, [&](const double* u, double* f) {
     PetscFunctionBeginUser;
     vLocal_ = v;
+    aLocal_ = a;  // the elements' M_e qdd_e in the force loop (their data read once)
     const PetscErrorCode e = assembleForces(u, ls, Target::Residual, f);
-    vLocal_ = nullptr;
+    vLocal_ = aLocal_ = nullptr;
     PetscCall(e);
-    // inertia M A: element masses and nodal point masses and rotary inertia
-    addInertia(v, a, Target::Residual, f);
+    // inertia M A of nodal point masses and rotary inertia
+    addInertia(v, a, Target::Residual, f, false);
     PetscFunctionReturn(PETSC_SUCCESS);
   });
   PetscCall(restoreLocalRead(A, &al, &a));
@@ -200,7 +208,11 @@ PetscErrorCode Assembler::dynamicJacobian(Vec U, Vec V, const LoadState& ls, dou
   PetscCall(VecGhostGetLocalForm(uWork_, &ul));
   PetscCall(VecGetArrayRead(ul, &u));
   computeStates(u, ls);
-  PetscCall(MatZeroEntries(J));
+  // ANCF cables only: every block is kept (corotatedJacobian) and the matrix set from the kept blocks
+  // in one COO call (A1g, 2 ranks: 56 ms against 108 ms with MatSetValuesLocal per block at 65536
+  // elements, 3.6 ms against 6.6 ms at 4096; the COO pattern is set up once per matrix)
+  const bool coo = keepCorotated_ && corotatedCOO_;
+  if (!coo) PetscCall(MatZeroEntries(J));
   std::array<double, 48> q;
   std::array<int, kMaxElementRows> idx;
   std::array<double, kMaxElementRows> qdot;
@@ -235,10 +247,22 @@ PetscErrorCode Assembler::dynamicJacobian(Vec U, Vec V, const LoadState& ls, dou
         for (int c = 0; c < nd; ++c) out_.K[static_cast<size_t>(r) * n + c] += shiftA * Me[static_cast<size_t>(r) * nd + c];
     }
     if (keepCorotated_) keepCorotated(static_cast<size_t>(&el - mesh_.elements.data()), el, q.data(), out_.K.data());
-    PetscCall(MatSetValuesLocal(J, n, idx.data(), n, idx.data(), out_.K.data(), ADD_VALUES));
+    if (!coo) PetscCall(MatSetValuesLocal(J, n, idx.data(), n, idx.data(), out_.K.data(), ADD_VALUES));
   }
   vLocal_ = nullptr;
   if (mixedNewton_) keepMixedReference();  // the next Newton iterate linearizes its stresses about this state
+  if (coo) {
+    keepCorotatedNodeTerms(ls, shiftA);
+    corotationCS_.assign(2 * mesh_.elements.size(), 0.0);
+    for (size_t e = 0; e < mesh_.elements.size(); ++e) corotationCS_[2 * e] = 1.0;
+    PetscCall(VecRestoreArrayRead(ul, &u));
+    PetscCall(VecGhostRestoreLocalForm(uWork_, &ul));
+    PetscCall(restoreLocalRead(V, &vl, &v));
+    PetscCall(setCorotatedValues(J, false));
+    PetscCall(PetscLogEventEnd(SinewEvents::get().jacobian, 0, 0, 0, 0));
+    PetscCall(agreeElementValues());
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
   for (int i = 0; i < mesh_.numOwnedNodes; ++i) {
     const LocalNode& n = mesh_.nodes[i];
     if (n.mass <= 0 || shiftA == 0.0) continue;

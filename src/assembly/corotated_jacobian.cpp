@@ -10,6 +10,7 @@
 // element's own rotation are the current Newton matrix up to the elements' deformation since they
 // were kept. Rotating per node instead breaks the blocks' translation invariance (neighbouring
 // nodes turn by different angles) and is worse than not rotating at all on coarser cables.
+#include <algorithm>
 #include <cmath>
 
 #include "assembly/assembler.hpp"
@@ -33,6 +34,13 @@ bool corotatable(const LocalElement& el) {
 }
 
 }  // namespace
+
+void Assembler::keepCorotatedBlocks(bool on) {
+  keepCorotated_ = on;
+  corotatedValid_ = false;
+  corotatedCOO_ = on && std::all_of(mesh_.elements.begin(), mesh_.elements.end(), corotatable) &&
+                  std::all_of(mesh_.nodes.begin(), mesh_.nodes.end(), [](const LocalNode& n) { return n.kind == NodeKind::Ancf2D; });
+}
 
 void Assembler::keepCorotated(size_t e, const LocalElement& el, const double* q, const double* K) {
   if (!corotatable(el)) {
@@ -101,37 +109,45 @@ PetscErrorCode Assembler::prepareCorotatedCOO(Mat J) {
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+PetscErrorCode Assembler::setCorotatedValues(Mat J, bool rotate) {
+  PetscFunctionBeginUser;
+  PetscCall(prepareCorotatedCOO(J));
+  PetscScalar* K = corotatedValues_.data();
+  if (!rotate) {
+    K = std::copy(corotatedBlocks_.begin(), corotatedBlocks_.end(), K);
+  } else {
+    double T[64];
+    for (size_t e = 0; e < mesh_.elements.size(); ++e, K += 64) {
+      const double c = corotationCS_[2 * e], s = corotationCS_[2 * e + 1];
+      const double* B = corotatedBlocks_.data() + 64 * e;
+      // T = Q B (each row pair (2a, 2a + 1) rotated), K = T Q^T (each column pair rotated)
+      for (int a = 0; a < 8; a += 2)
+        for (int b = 0; b < 8; ++b) {
+          T[8 * a + b] = c * B[8 * a + b] - s * B[8 * (a + 1) + b];
+          T[8 * (a + 1) + b] = s * B[8 * a + b] + c * B[8 * (a + 1) + b];
+        }
+      for (int a = 0; a < 8; ++a)
+        for (int b = 0; b < 8; b += 2) {
+          K[8 * a + b] = c * T[8 * a + b] - s * T[8 * a + b + 1];
+          K[8 * a + b + 1] = s * T[8 * a + b] + c * T[8 * a + b + 1];
+        }
+    }
+  }
+  std::copy(corotatedNodeTerms_.begin(), corotatedNodeTerms_.end(), K);
+  PetscCall(MatSetValuesCOO(J, corotatedValues_.data(), INSERT_VALUES));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode Assembler::corotatedJacobian(Vec U, const LoadState& ls, Mat J) {
   PetscFunctionBeginUser;
   if (!corotatedValid_) SETERRQ(PETSC_COMM_SELF, PETSC_ERR_ORDER, "corotatedJacobian: no kept ANCF blocks");
   PetscCall(PetscLogEventBegin(SinewEvents::get().corotatedJacobian, 0, 0, 0, 0));
-  PetscCall(prepareCorotatedCOO(J));
   const double* u = nullptr;
   PetscCall(beginLocal(U, ls, &u));
-  double T[64];
-  PetscScalar* K = corotatedValues_.data();
-  for (size_t e = 0; e < mesh_.elements.size(); ++e, K += 64) {
-    double c, s;
-    turnSinceKept(e, &c, &s);
-    corotationCS_[2 * e] = c;
-    corotationCS_[2 * e + 1] = s;
-    const double* B = corotatedBlocks_.data() + 64 * e;
-    // T = Q B (each row pair (2a, 2a + 1) rotated), K = T Q^T (each column pair rotated)
-    for (int a = 0; a < 8; a += 2)
-      for (int b = 0; b < 8; ++b) {
-        T[8 * a + b] = c * B[8 * a + b] - s * B[8 * (a + 1) + b];
-        T[8 * (a + 1) + b] = s * B[8 * a + b] + c * B[8 * (a + 1) + b];
-      }
-    for (int a = 0; a < 8; ++a)
-      for (int b = 0; b < 8; b += 2) {
-        K[8 * a + b] = c * T[8 * a + b] - s * T[8 * a + b + 1];
-        K[8 * a + b + 1] = s * T[8 * a + b] + c * T[8 * a + b + 1];
-      }
-  }
+  for (size_t e = 0; e < mesh_.elements.size(); ++e) turnSinceKept(e, &corotationCS_[2 * e], &corotationCS_[2 * e + 1]);
   keepCorotatedNodeTerms(ls, corotatedShiftA_);  // node terms, as dynamicJacobian
-  std::copy(corotatedNodeTerms_.begin(), corotatedNodeTerms_.end(), K);
   PetscCall(endLocal(&u));
-  PetscCall(MatSetValuesCOO(J, corotatedValues_.data(), INSERT_VALUES));
+  PetscCall(setCorotatedValues(J, true));
   PetscCall(PetscLogEventEnd(SinewEvents::get().corotatedJacobian, 0, 0, 0, 0));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -90,6 +90,14 @@ DynamicAnalysis::DynamicAnalysis(Assembler& assembler, const DynamicsOptions& op
   // unknowns (useCutCorrectedLU) instead of every rank factoring the whole chain (PCREDUNDANT); A1g
   // at 65536 elements, 2 ranks: 28 ms against 42 ms per factorization, 2.1 ms against 5.2 ms per
   // solve (docs/performance.md, "The direct solver of a chain")
+  // the kept LU turned with the nodes (useNodeRotatedPC): always (true), never (false), or auto: from
+  // the first kept matrix that stalled by its elements' turn (A1g: from 16384 elements), where turned
+  // kept matrices would otherwise be rebuilt and refactored in every step (docs/performance.md)
+  char nodeRot[16] = "auto";
+  SinewCallThrow(comm, PetscOptionsGetString(nullptr, nullptr, "-dynamics_node_rotation", nodeRot, sizeof(nodeRot), &set));
+  const std::string nr = nodeRot;
+  nodeRotation_ = !corotated_ || nr == "false" ? NodeRotation::Off : nr == "true" ? NodeRotation::On : NodeRotation::Auto;
+  rotating_ = nodeRotation_ == NodeRotation::On;
   char chainLU[16] = "auto";
   SinewCallThrow(comm, PetscOptionsGetString(nullptr, nullptr, "-dynamics_chain_lu", chainLU, sizeof(chainLU), &set));
   const std::string lu = chainLU;

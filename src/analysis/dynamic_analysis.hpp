@@ -164,6 +164,13 @@ class DynamicAnalysis {
   double refineTheta_ = 0;    ///< the contraction that added it
   int refineIt_ = -100;       ///< Newton iteration of this solve that added it (-100: an earlier solve)
   PetscErrorCode setRefinements(KSP ksp, int n);
+  /// -dynamics_node_rotation: the kept LU preconditions turned with the nodes (useNodeRotatedPC)
+  enum class NodeRotation { Off, On, Auto } nodeRotation_ = NodeRotation::Off;
+  bool rotating_ = false;  ///< node rotation in use (On; Auto: from the first kept matrix that stalled by turning)
+  /// With node rotation, a kept matrix is rebuilt at the first iteration of a step whose first update
+  /// reduced the residual by less than this (A1g at 65536 elements, 20 steps: 0.5: 51 Newton
+  /// iterations on 7 matrices; 0.2: 47 on 7; 0.1: 41 on 8; 0.05: 41 on 17).
+  static constexpr double kRotatedContractivity = 0.1;
   bool cutLU_ = false;  ///< ANCF chain with few coupling unknowns: useCutCorrectedLU on several ranks
   static PetscErrorCode applyNewtonMatrix(Mat A, Vec x, Vec y);
   Vec F_ = nullptr;

@@ -3,6 +3,7 @@
 // step solves (setRefinements, applyNewtonMatrix) and the convergence test.
 #include "analysis/cut_corrected_lu.hpp"
 #include "analysis/dynamic_analysis.hpp"
+#include "analysis/node_rotated_pc.hpp"
 #include "analysis/solver_defaults.hpp"
 
 #include <algorithm>
@@ -21,6 +22,10 @@ namespace sinew {
 // Anything else: MUMPS, as everywhere.
 PetscErrorCode DynamicAnalysis::useDynamicsSolver(KSP ksp) {
   PetscFunctionBeginUser;
+  if (nodeRotation_ != NodeRotation::Off) {
+    PetscCall(KSPSetType(ksp, KSPPREONLY));
+    PetscCall(useNodeRotatedPC(ksp, asm_, &rotating_, &ksp));
+  }
   PetscCall(useDirectSolver(ksp));
   const DistributedMesh& mesh = asm_.mesh();
   int size = 1;
@@ -90,7 +95,7 @@ PetscErrorCode DynamicAnalysis::formJacobian(SNES snes, Vec U, Mat, Mat P, void*
     // updates judges the kept Jacobian (convergenceTest), the residual only at the first iteration and
     // when it grows (a stale Jacobian drifts in the stiff directions: small updates, residual up 1.5x)
     const bool slow = self->predictor_ == Predictor::State
-                          ? (it == 1 && fnorm > kContractivity * self->prevFnorm_) ||
+                          ? (it == 1 && fnorm > (self->rotating_ ? kRotatedContractivity : kContractivity) * self->prevFnorm_) ||
                                 (it >= 2 && ((self->theta_ > kContractivity && self->matrixIt_ <= it - 2) ||
                                              fnorm > 1.5 * self->prevFnorm_))
                           : it > 0 && fnorm > kContractivity * self->prevFnorm_;
@@ -101,18 +106,25 @@ PetscErrorCode DynamicAnalysis::formJacobian(SNES snes, Vec U, Mat, Mat P, void*
     // a kept matrix whose elements turned by half the turn at which a kept matrix stalled in an
     // earlier step is rebuilt at once, after the step's first update (which moves the state near
     // q_{n+1}), not one iteration later on a growing residual: A1g at 65536 elements stalls from a
-    // turn of 2.3e-4 rad, which the clamped end's bending wave exceeds in every step after the fourth
+    // turn of 2.3e-4 rad, which the clamped end's bending wave exceeds in every step after the fourth.
+    // With node rotation (auto: from that first stall on) the kept LU is turned with the nodes
+    // instead, and no turn forces a rebuild
     bool turned = false;
     double turn = 0.0;
-    if (self->corotated_ && self->jacobianValid_ && sameH && !self->lastCorotated_ && self->asm_.corotatedBlocksValid() &&
-        (it >= 2 ? slow : it == 1 && !slow && self->staleTurn_ < HUGE_VAL)) {
+    if (self->corotated_ && !self->rotating_ && self->jacobianValid_ && sameH && !self->lastCorotated_ &&
+        self->asm_.corotatedBlocksValid() && (it >= 2 ? slow : it == 1 && !slow && self->staleTurn_ < HUGE_VAL)) {
       PetscCall(self->asm_.corotationTurn(U, self->ls_, &turn));
       if (it >= 2) self->staleTurn_ = std::min(self->staleTurn_, turn);
       turned = it == 1 && turn > 0.5 * self->staleTurn_;
+      if (self->nodeRotation_ == NodeRotation::Auto && self->staleTurn_ < HUGE_VAL) {
+        self->rotating_ = true;
+        turned = false;
+      }
     }
     if (self->jacobianValid_ && sameH && !slow && !turned && self->reuseCount_ < kMaxReuse) {
       ++self->reuseCount_;
       self->lastCorotated_ = false;
+      if (self->rotating_) PetscCall(self->asm_.turnToIterate(U, self->ls_));
       PetscFunctionReturn(PETSC_SUCCESS);
     }
     // a fine cable's kept Jacobian goes stale mainly by the rotation of its elements: rebuild it

@@ -174,6 +174,14 @@ class Assembler {
   /// The largest turn (rad) of an element at U away from the rotation its block has in the current
   /// Newton matrix (all ranks; collective).
   PetscErrorCode corotationTurn(Vec U, const LoadState& ls, double* turn);
+  /// Turns the Newton matrix's element blocks to the iterate U (the element-wise product applyCorotated
+  /// then applies the kept blocks rotated by each element's turn at U) and computes every owned
+  /// node's slope turn since the Newton matrix was built (rotateNodes; collective).
+  PetscErrorCode turnToIterate(Vec U, const LoadState& ls);
+  /// y = R x (back = false) or R^T x on the owned unknowns: R turns each owned ANCF node's position
+  /// and slope pair by the node's turn since the Newton matrix was built (turnToIterate); pairs with
+  /// a constrained unknown are not turned. x and y: arrays of the owned unknowns (may alias).
+  void rotateNodes(const double* x, double* y, bool back) const;
   /// Dynamics output: while set (V, Qdd in the unknowns layout), fullResidual() adds the inertia
   /// M qdd (elements, nodal mass and mominertia; prescribed DOFs with their prescribed accelerations),
   /// so the reactions at supports and prescribed DOFs are the dynamic ones. nullptr: statics.
@@ -379,6 +387,10 @@ class Assembler {
   std::vector<PetscScalar> corotatedValues_;
   std::vector<double> corotationCS_;       ///< per element cos, sin of the turn the current Newton matrix applies to its kept block
   std::vector<double> corotatedNodeTerms_;  ///< per owned node: nodal mass term (2), slope torque block (4)
+  std::vector<double> nodeDir0_;  ///< per owned node: unit slope direction when the Newton matrix was built
+  std::vector<double> nodeCS_;    ///< per owned node: cos, sin of its slope's turn since then (turnToIterate)
+  /// Records the owned nodes' slope directions of the current states (a Newton matrix was built).
+  void keepNodeDirections();
   /// Node terms of the Newton matrix (nodal masses with shiftA, slope torques at the current states).
   void keepCorotatedNodeTerms(const LoadState& ls, double shiftA);
   bool slopeTorqueBlock(int i, const LoadState& ls, double* K) const;

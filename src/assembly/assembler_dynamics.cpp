@@ -255,6 +255,7 @@ PetscErrorCode Assembler::dynamicJacobian(Vec U, Vec V, const LoadState& ls, dou
     keepCorotatedNodeTerms(ls, shiftA);
     corotationCS_.assign(2 * mesh_.elements.size(), 0.0);
     for (size_t e = 0; e < mesh_.elements.size(); ++e) corotationCS_[2 * e] = 1.0;
+    keepNodeDirections();
     PetscCall(VecRestoreArrayRead(ul, &u));
     PetscCall(VecGhostRestoreLocalForm(uWork_, &ul));
     PetscCall(restoreLocalRead(V, &vl, &v));
@@ -295,6 +296,7 @@ PetscErrorCode Assembler::dynamicJacobian(Vec U, Vec V, const LoadState& ls, dou
     keepCorotatedNodeTerms(ls, shiftA);
     corotationCS_.assign(2 * mesh_.elements.size(), 0.0);
     for (size_t e = 0; e < mesh_.elements.size(); ++e) corotationCS_[2 * e] = 1.0;
+    keepNodeDirections();
   }
   PetscCall(VecRestoreArrayRead(ul, &u));
   PetscCall(VecGhostRestoreLocalForm(uWork_, &ul));

@@ -146,6 +146,7 @@ PetscErrorCode Assembler::corotatedJacobian(Vec U, const LoadState& ls, Mat J) {
   PetscCall(beginLocal(U, ls, &u));
   for (size_t e = 0; e < mesh_.elements.size(); ++e) turnSinceKept(e, &corotationCS_[2 * e], &corotationCS_[2 * e + 1]);
   keepCorotatedNodeTerms(ls, corotatedShiftA_);  // node terms, as dynamicJacobian
+  keepNodeDirections();
   PetscCall(endLocal(&u));
   PetscCall(setCorotatedValues(J, true));
   PetscCall(PetscLogEventEnd(SinewEvents::get().corotatedJacobian, 0, 0, 0, 0));
@@ -167,6 +168,55 @@ PetscErrorCode Assembler::corotationTurn(Vec U, const LoadState& ls, double* tur
   PetscCall(endLocal(&u));
   PetscCallMPI(MPI_Allreduce(&t, turn, 1, MPI_DOUBLE, MPI_MAX, mesh_.comm));
   PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+void Assembler::keepNodeDirections() {
+  const size_t n = static_cast<size_t>(mesh_.numOwnedNodes);
+  nodeDir0_.resize(2 * n);
+  nodeCS_.assign(2 * n, 0.0);
+  for (size_t i = 0; i < n; ++i) {
+    const double* st = &state_[12 * i];
+    const double r = 1.0 / std::hypot(st[2], st[3]);
+    nodeDir0_[2 * i] = st[2] * r;
+    nodeDir0_[2 * i + 1] = st[3] * r;
+    nodeCS_[2 * i] = 1.0;
+  }
+}
+
+PetscErrorCode Assembler::turnToIterate(Vec U, const LoadState& ls) {
+  PetscFunctionBeginUser;
+  if (!corotatedValid_) SETERRQ(PETSC_COMM_SELF, PETSC_ERR_ORDER, "turnToIterate: no kept ANCF blocks");
+  const double* u = nullptr;
+  PetscCall(beginLocal(U, ls, &u));
+  for (size_t e = 0; e < mesh_.elements.size(); ++e) turnSinceKept(e, &corotationCS_[2 * e], &corotationCS_[2 * e + 1]);
+  for (size_t i = 0; i < static_cast<size_t>(mesh_.numOwnedNodes); ++i) {
+    const double* st = &state_[12 * i];
+    const double r = 1.0 / std::hypot(st[2], st[3]), dx = st[2] * r, dy = st[3] * r;
+    const double* d0 = &nodeDir0_[2 * i];
+    nodeCS_[2 * i] = d0[0] * dx + d0[1] * dy;
+    nodeCS_[2 * i + 1] = d0[0] * dy - d0[1] * dx;
+  }
+  PetscCall(endLocal(&u));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+void Assembler::rotateNodes(const double* x, double* y, bool back) const {
+  const double sign = back ? -1.0 : 1.0;
+  for (int i = 0; i < mesh_.numOwnedNodes; ++i) {
+    const LocalNode& n = mesh_.nodes[i];
+    const double c = nodeCS_[2 * i], s = sign * nodeCS_[2 * i + 1];
+    for (int a = 0; a < 4; a += 2) {
+      const int i0 = n.dof[a], i1 = n.dof[a + 1];
+      if (i0 < 0 || i1 < 0) {
+        if (i0 >= 0) y[i0] = x[i0];
+        if (i1 >= 0) y[i1] = x[i1];
+        continue;
+      }
+      const double x0 = x[i0], x1 = x[i1];
+      y[i0] = c * x0 - s * x1;
+      y[i1] = s * x0 + c * x1;
+    }
+  }
 }
 
 PetscErrorCode Assembler::applyCorotated(Vec x, Vec y) {

@@ -1,0 +1,20 @@
+// Preconditioner of a kept Newton matrix turned with the nodes of an ANCF cable (useNodeRotatedPC).
+#pragma once
+
+#include <petscksp.h>
+
+#include "assembly/assembler.hpp"
+
+namespace sinew {
+
+/// Makes ksp's preconditioner R B^-1 R^T while *active (B^-1 alone otherwise): B^-1 is the
+/// preconditioner of the returned inner KSP (configure it: its PC is applied directly, set up with
+/// ksp's preconditioning matrix B, the Newton matrix as built and factored once), and R turns each
+/// ANCF node's position and slope pair by the node's turn since B was built
+/// (Assembler::turnToIterate, Assembler::rotateNodes). By objectivity an element block at a state
+/// turned rigidly by Q is Q B_e Q^T, so R B R^T is the Newton matrix of a cable that turned with its
+/// nodes; it misses the difference of the turns of an element's two nodes (1e-7 rad where the
+/// elements of A1g at 65536 elements turned by 1e-3 rad) and the elements' deformation, not the turn.
+PetscErrorCode useNodeRotatedPC(KSP ksp, const Assembler& assembler, const bool* active, KSP* inner);
+
+}  // namespace sinew

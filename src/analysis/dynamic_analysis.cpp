@@ -91,8 +91,9 @@ DynamicAnalysis::DynamicAnalysis(Assembler& assembler, const DynamicsOptions& op
   // at 65536 elements, 2 ranks: 28 ms against 42 ms per factorization, 2.1 ms against 5.2 ms per
   // solve (docs/performance.md, "The direct solver of a chain")
   // the kept LU turned with the nodes (useNodeRotatedPC): always (true), never (false), or auto: from
-  // the first kept matrix that stalled by its elements' turn (A1g: from 16384 elements), where turned
-  // kept matrices would otherwise be rebuilt and refactored in every step (docs/performance.md)
+  // the first kept matrix that stalled by an element turn below kRotationTurn (A1g: from 16384
+  // elements), where turned kept matrices would otherwise be rebuilt and refactored in every step
+  // (docs/performance.md)
   char nodeRot[16] = "auto";
   SinewCallThrow(comm, PetscOptionsGetString(nullptr, nullptr, "-dynamics_node_rotation", nodeRot, sizeof(nodeRot), &set));
   const std::string nr = nodeRot;

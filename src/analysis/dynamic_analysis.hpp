@@ -166,11 +166,19 @@ class DynamicAnalysis {
   PetscErrorCode setRefinements(KSP ksp, int n);
   /// -dynamics_node_rotation: the kept LU preconditions turned with the nodes (useNodeRotatedPC)
   enum class NodeRotation { Off, On, Auto } nodeRotation_ = NodeRotation::Off;
-  bool rotating_ = false;  ///< node rotation in use (On; Auto: from the first kept matrix that stalled by turning)
+  bool rotating_ = false;  ///< node rotation in use (On; Auto: when the first kept matrix stalled at a turn below kRotationTurn)
   /// With node rotation, a kept matrix is rebuilt at the first iteration of a step whose first update
   /// reduced the residual by less than this (A1g at 65536 elements, 20 steps: 0.5: 51 Newton
   /// iterations on 7 matrices; 0.2: 47 on 7; 0.1: 41 on 8; 0.05: 41 on 17).
   static constexpr double kRotatedContractivity = 0.1;
+  /// -dynamics_node_rotation auto: on when the first kept matrix that stalled did so at an element turn
+  /// below this (rad).
+  /// Measured stall turns: A1g (20 steps, 2 ranks) 5.1e-4 at 65536 elements, 5.3e-4 at 32768, 1.1e-3 at
+  /// 16384, where it saves rebuilds and factorizations in every step; A1g at 4096 elements (100 steps,
+  /// one process) 3.1e-3 and A3 at 512 elements 1.1e-2, where node rotation cost CPU time (0.95 against
+  /// 0.85 s, 1.70 against 1.50 s, the fastest of 5 interleaved runs each) by replacing cheap rebuilds
+  /// with fresh matrices. Later stalls (A3 at 512 elements: below 2e-3) do not switch it on.
+  static constexpr double kRotationTurn = 2e-3;
   bool cutLU_ = false;  ///< ANCF chain with few coupling unknowns: useCutCorrectedLU on several ranks
   static PetscErrorCode applyNewtonMatrix(Mat A, Vec x, Vec y);
   Vec F_ = nullptr;

@@ -107,16 +107,17 @@ PetscErrorCode DynamicAnalysis::formJacobian(SNES snes, Vec U, Mat, Mat P, void*
     // earlier step is rebuilt at once, after the step's first update (which moves the state near
     // q_{n+1}), not one iteration later on a growing residual: A1g at 65536 elements stalls from a
     // turn of 2.3e-4 rad, which the clamped end's bending wave exceeds in every step after the fourth.
-    // With node rotation (auto: from that first stall on) the kept LU is turned with the nodes
-    // instead, and no turn forces a rebuild
+    // With node rotation (auto: when that first stall came at a turn below kRotationTurn) the kept LU
+    // is turned with the nodes instead, and no turn forces a rebuild
     bool turned = false;
     double turn = 0.0;
     if (self->corotated_ && !self->rotating_ && self->jacobianValid_ && sameH && !self->lastCorotated_ &&
         self->asm_.corotatedBlocksValid() && (it >= 2 ? slow : it == 1 && !slow && self->staleTurn_ < HUGE_VAL)) {
       PetscCall(self->asm_.corotationTurn(U, self->ls_, &turn));
+      const bool first = self->staleTurn_ == HUGE_VAL;
       if (it >= 2) self->staleTurn_ = std::min(self->staleTurn_, turn);
       turned = it == 1 && turn > 0.5 * self->staleTurn_;
-      if (self->nodeRotation_ == NodeRotation::Auto && self->staleTurn_ < HUGE_VAL) {
+      if (first && it >= 2 && self->nodeRotation_ == NodeRotation::Auto && turn < kRotationTurn) {
         self->rotating_ = true;
         turned = false;
       }

@@ -251,20 +251,8 @@ PetscErrorCode Assembler::dynamicJacobian(Vec U, Vec V, const LoadState& ls, dou
   }
   vLocal_ = nullptr;
   if (mixedNewton_) keepMixedReference();  // the next Newton iterate linearizes its stresses about this state
-  if (coo) {
-    keepCorotatedNodeTerms(ls, shiftA);
-    corotationCS_.assign(2 * mesh_.elements.size(), 0.0);
-    for (size_t e = 0; e < mesh_.elements.size(); ++e) corotationCS_[2 * e] = 1.0;
-    keepNodeDirections();
-    PetscCall(VecRestoreArrayRead(ul, &u));
-    PetscCall(VecGhostRestoreLocalForm(uWork_, &ul));
-    PetscCall(restoreLocalRead(V, &vl, &v));
-    PetscCall(setCorotatedValues(J, false));
-    PetscCall(PetscLogEventEnd(SinewEvents::get().jacobian, 0, 0, 0, 0));
-    PetscCall(agreeElementValues());
-    PetscFunctionReturn(PETSC_SUCCESS);
-  }
-  for (int i = 0; i < mesh_.numOwnedNodes; ++i) {
+  // node terms (nodal masses, rotary inertia, slope torques); with coo they come with the kept blocks
+  for (int i = 0; i < mesh_.numOwnedNodes && !coo; ++i) {
     const LocalNode& n = mesh_.nodes[i];
     if (n.mass <= 0 || shiftA == 0.0) continue;
     const int nt = n.kind == NodeKind::Ancf2D ? 2 : 3;
@@ -276,7 +264,7 @@ PetscErrorCode Assembler::dynamicJacobian(Vec U, Vec V, const LoadState& ls, dou
   }
   // rotary inertia: d/dtheta of J_s wd + w x (J_s w) with dwd/dtheta = shiftA, dw/dtheta = shiftV
   // (the change of J_s with the rotation is left out: an approximate tangent)
-  for (int i = 0; i < mesh_.numOwnedNodes; ++i) {
+  for (int i = 0; i < mesh_.numOwnedNodes && !coo; ++i) {
     if (!hasRotaryInertia(i)) continue;
     const LocalNode& n = mesh_.nodes[i];
     const Mat3 Js = spatialInertia(i);
@@ -291,7 +279,7 @@ PetscErrorCode Assembler::dynamicJacobian(Vec U, Vec V, const LoadState& ls, dou
     const PetscInt rows[3] = {n.dof[3], n.dof[4], n.dof[5]};
     PetscCall(MatSetValuesLocal(J, 3, rows, 3, rows, B.data(), ADD_VALUES));
   }
-  PetscCall(addSlopeTorqueTangent(ls, J));
+  if (!coo) PetscCall(addSlopeTorqueTangent(ls, J));
   if (keepCorotated_) {
     keepCorotatedNodeTerms(ls, shiftA);
     corotationCS_.assign(2 * mesh_.elements.size(), 0.0);
@@ -301,8 +289,12 @@ PetscErrorCode Assembler::dynamicJacobian(Vec U, Vec V, const LoadState& ls, dou
   PetscCall(VecRestoreArrayRead(ul, &u));
   PetscCall(VecGhostRestoreLocalForm(uWork_, &ul));
   PetscCall(restoreLocalRead(V, &vl, &v));
-  PetscCall(MatAssemblyBegin(J, MAT_FINAL_ASSEMBLY));
-  PetscCall(MatAssemblyEnd(J, MAT_FINAL_ASSEMBLY));
+  if (coo) {
+    PetscCall(setCorotatedValues(J, false));
+  } else {
+    PetscCall(MatAssemblyBegin(J, MAT_FINAL_ASSEMBLY));
+    PetscCall(MatAssemblyEnd(J, MAT_FINAL_ASSEMBLY));
+  }
   PetscCall(PetscLogEventEnd(SinewEvents::get().jacobian, 0, 0, 0, 0));
   PetscCall(agreeElementValues());
   PetscFunctionReturn(PETSC_SUCCESS);

@@ -626,20 +626,22 @@ PetscErrorCode Assembler::fullResidual(Vec U, const LoadState& ls, Vec Ffull) {
   }
   PetscCall(forceVector(U, ls, fullWork_, Ffull, [&](const double* u, double* f) {
     PetscFunctionBeginUser;
-    PetscCall(assembleForces(u, ls, Target::Full, f));
-    if (reactionA_) {
-      Vec vl, al;
-      const PetscScalar *v, *a;
-      PetscCall(VecGhostGetLocalForm(reactionV_, &vl));
-      PetscCall(VecGhostGetLocalForm(reactionA_, &al));
-      PetscCall(VecGetArrayRead(vl, &v));
-      PetscCall(VecGetArrayRead(al, &a));
-      addInertia(v, a, Target::Full, f);
-      PetscCall(VecRestoreArrayRead(al, &a));
-      PetscCall(VecRestoreArrayRead(vl, &v));
-      PetscCall(VecGhostRestoreLocalForm(reactionA_, &al));
-      PetscCall(VecGhostRestoreLocalForm(reactionV_, &vl));
-    }
+    if (!reactionA_) PetscFunctionReturn(assembleForces(u, ls, Target::Full, f));
+    Vec vl, al;
+    const PetscScalar *v, *a;
+    PetscCall(VecGhostGetLocalForm(reactionV_, &vl));
+    PetscCall(VecGhostGetLocalForm(reactionA_, &al));
+    PetscCall(VecGetArrayRead(vl, &v));
+    PetscCall(VecGetArrayRead(al, &a));
+    aLocal_ = a;  // the elements' M_e qdd_e in the force loop
+    const PetscErrorCode e = assembleForces(u, ls, Target::Full, f);
+    aLocal_ = nullptr;
+    addNodeInertia(v, a, Target::Full, f);
+    PetscCall(VecRestoreArrayRead(al, &a));
+    PetscCall(VecRestoreArrayRead(vl, &v));
+    PetscCall(VecGhostRestoreLocalForm(reactionA_, &al));
+    PetscCall(VecGhostRestoreLocalForm(reactionV_, &vl));
+    PetscCall(e);
     PetscFunctionReturn(PETSC_SUCCESS);
   }));
   PetscCall(agreeElementValues());

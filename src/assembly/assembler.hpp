@@ -288,11 +288,11 @@ class Assembler {
   /// functions evaluated by computeStates (0 elsewhere); false (nothing written) when no node of el moves
   /// by a function of time.
   bool prescribedRates(const LocalElement& el, double* v, double* a) const;
-  /// Adds M qdd (elements, nodal inertia) to `out` (local form) by the rows of `target`; a = local
-  /// form of the accelerations of the unknowns, v = of the velocities (gyroscopic moments).
-  /// elements = false: the nodal terms only (the residual's element loop added the elements' M_e qdd_e,
-  /// addElementInertia with aLocal_).
-  void addInertia(const double* v, const double* a, Target target, double* out, bool elements = true);
+  /// Adds the nodal inertia (point masses, rotary inertia) to `out` (local form) by the rows of
+  /// `target`; a = local form of the accelerations of the unknowns, v = of the velocities (gyroscopic
+  /// moments). The elements' M_e qdd_e come from the force loop (assembleForces with aLocal_ set:
+  /// addElementInertia).
+  void addNodeInertia(const double* v, const double* a, Target target, double* out);
   /// out += M_e qdd_e of one element (idx, fidx from gatherElement; prescribed DOFs with their
   /// prescribed accelerations).
   void addElementInertia(const LocalElement& el, const double* q, const int* idx, const int* fidx, const double* a,
@@ -336,7 +336,7 @@ class Assembler {
   /// rotaryMomentumStep of free Frame6 node i under momentum_ (its mominertia, R_n = Rref_, theta from u1).
   RotaryMomentumStep midpointMomentum(int i) const;
   const double* vLocal_ = nullptr;  // local form of the velocities while a dynamic evaluation runs
-  const double* aLocal_ = nullptr;  // and of the accelerations while dynamicResidual runs (element inertia in the force loop)
+  const double* aLocal_ = nullptr;  // and of the accelerations while dynamicResidual or a dynamic fullResidual runs (element inertia in the force loop)
   // prescribed motions as functions of time (computeStates with ls.timeFunctions): per local node
   // 6 velocities, then 6 accelerations (dof layout; spatial angular rates for rot)
   std::vector<double> presRate_;

@@ -98,17 +98,7 @@ void Assembler::addElementInertia(const LocalElement& el, const double* q, const
   }
 }
 
-void Assembler::addInertia(const double* v, const double* a, Target target, double* out, bool elements) {
-  // elements: M_e qdd_e, the accelerations of prescribed DOFs from their time functions
-  std::array<double, 48> q;
-  std::array<int, kMaxElementRows> idx, fidx;
-  std::vector<double> MeBuf;
-  if (elements)
-    for (const LocalElement& el : mesh_.elements) {
-      if (!el.kernel->hasInertia()) continue;
-      gatherElement(el, q.data(), nullptr, idx.data(), fidx.data());
-      addElementInertia(el, q.data(), idx.data(), fidx.data(), a, target, out, MeBuf);
-    }
+void Assembler::addNodeInertia(const double* v, const double* a, Target target, double* out) {
   for (int i = 0; i < mesh_.numOwnedNodes; ++i) {
     const LocalNode& n = mesh_.nodes[i];
     const double* pr = presRatesActive_ && n.timeFn ? &presRate_[12 * static_cast<size_t>(i)] : nullptr;
@@ -186,7 +176,7 @@ PetscErrorCode Assembler::dynamicResidual(Vec U, Vec V, Vec A, const LoadState& 
     vLocal_ = aLocal_ = nullptr;
     PetscCall(e);
     // inertia M A of nodal point masses and rotary inertia
-    addInertia(v, a, Target::Residual, f, false);
+    addNodeInertia(v, a, Target::Residual, f);
     PetscFunctionReturn(PETSC_SUCCESS);
   });
   PetscCall(restoreLocalRead(A, &al, &a));
@@ -211,7 +201,7 @@ PetscErrorCode Assembler::dynamicJacobian(Vec U, Vec V, const LoadState& ls, dou
   // ANCF cables only: every block is kept (corotatedJacobian) and the matrix set from the kept blocks
   // in one COO call (A1g, 2 ranks: 56 ms against 108 ms with MatSetValuesLocal per block at 65536
   // elements, 3.6 ms against 6.6 ms at 4096; the COO pattern is set up once per matrix)
-  const bool coo = keepCorotated_ && corotatedCOO_;
+  const bool coo = corotatedCOO_;
   if (!coo) PetscCall(MatZeroEntries(J));
   std::array<double, 48> q;
   std::array<int, kMaxElementRows> idx;

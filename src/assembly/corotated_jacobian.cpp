@@ -9,7 +9,9 @@
 // element blocks themselves are objective, B(Q q) = Q B(q) Q^T, so the kept blocks rotated by each
 // element's own rotation are the current Newton matrix up to the elements' deformation since they
 // were kept. Rotating per node instead breaks the blocks' translation invariance (neighbouring
-// nodes turn by different angles) and is worse than not rotating at all on coarser cables.
+// nodes turn by different angles) and is worse than not rotating at all on coarser cables as a
+// matrix; as a preconditioner of the element-wise product it serves fine cables (turnToIterate,
+// rotateNodes; src/analysis/node_rotated_pc.hpp).
 #include <algorithm>
 #include <cmath>
 
@@ -19,12 +21,21 @@ namespace sinew {
 
 namespace {
 
+/// d = (x, y) / |(x, y)|
+void unitDirection(double x, double y, double* d) {
+  const double r = 1.0 / std::hypot(x, y);
+  d[0] = x * r;
+  d[1] = y * r;
+}
+
 /// Direction (unit vector) of an ANCF cable element's mean slope s1 + s2, from its nodes' states
 /// (x, y, sx, sy, ...).
-void meanSlopeDirection(const double* n1, const double* n2, double* d) {
-  const double mx = n1[2] + n2[2], my = n1[3] + n2[3], r = 1.0 / std::hypot(mx, my);
-  d[0] = mx * r;
-  d[1] = my * r;
+void meanSlopeDirection(const double* n1, const double* n2, double* d) { unitDirection(n1[2] + n2[2], n1[3] + n2[3], d); }
+
+/// cos and sin of the turn from unit vector d0 to unit vector d: d0 . d and d0 x d
+void turnBetween(const double* d0, const double* d, double* c, double* s) {
+  *c = d0[0] * d[0] + d0[1] * d[1];
+  *s = d0[0] * d[1] - d0[1] * d[0];
 }
 
 bool corotatable(const LocalElement& el) {
@@ -55,9 +66,7 @@ void Assembler::turnSinceKept(size_t e, double* c, double* s) const {
   const LocalElement& el = mesh_.elements[e];
   double d[2];
   meanSlopeDirection(&state_[12 * static_cast<size_t>(el.node[0])], &state_[12 * static_cast<size_t>(el.node[1])], d);
-  const double* d0 = &corotatedDir_[2 * e];
-  *c = d0[0] * d[0] + d0[1] * d[1];
-  *s = d0[0] * d[1] - d0[1] * d[0];
+  turnBetween(&corotatedDir_[2 * e], d, c, s);
 }
 
 void Assembler::keepCorotatedNodeTerms(const LoadState& ls, double shiftA) {
@@ -175,10 +184,7 @@ void Assembler::keepNodeDirections() {
   nodeDir0_.resize(2 * n);
   nodeCS_.assign(2 * n, 0.0);
   for (size_t i = 0; i < n; ++i) {
-    const double* st = &state_[12 * i];
-    const double r = 1.0 / std::hypot(st[2], st[3]);
-    nodeDir0_[2 * i] = st[2] * r;
-    nodeDir0_[2 * i + 1] = st[3] * r;
+    unitDirection(state_[12 * i + 2], state_[12 * i + 3], &nodeDir0_[2 * i]);
     nodeCS_[2 * i] = 1.0;
   }
 }
@@ -190,11 +196,9 @@ PetscErrorCode Assembler::turnToIterate(Vec U, const LoadState& ls) {
   PetscCall(beginLocal(U, ls, &u));
   for (size_t e = 0; e < mesh_.elements.size(); ++e) turnSinceKept(e, &corotationCS_[2 * e], &corotationCS_[2 * e + 1]);
   for (size_t i = 0; i < static_cast<size_t>(mesh_.numOwnedNodes); ++i) {
-    const double* st = &state_[12 * i];
-    const double r = 1.0 / std::hypot(st[2], st[3]), dx = st[2] * r, dy = st[3] * r;
-    const double* d0 = &nodeDir0_[2 * i];
-    nodeCS_[2 * i] = d0[0] * dx + d0[1] * dy;
-    nodeCS_[2 * i + 1] = d0[0] * dy - d0[1] * dx;
+    double d[2];
+    unitDirection(state_[12 * i + 2], state_[12 * i + 3], d);
+    turnBetween(&nodeDir0_[2 * i], d, &nodeCS_[2 * i], &nodeCS_[2 * i + 1]);
   }
   PetscCall(endLocal(&u));
   PetscFunctionReturn(PETSC_SUCCESS);

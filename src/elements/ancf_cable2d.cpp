@@ -318,8 +318,8 @@ AncfCable2D::AncfCable2D(const std::array<double, 8>& qRef, double L, const Ancf
     : AncfCable2D(qRef, L, std::make_shared<const AncfCable2DParameters>(p)) {}
 
 AncfCable2D::AncfCable2D(const std::array<double, 8>& qRef, double L, std::shared_ptr<const AncfCable2DParameters> params)
-    : qRef_(qRef), L_(L), params_(std::move(params)), p_(*params_) {
-  const AncfCable2DParameters& p = p_;
+    : qRef_(qRef), L_(L), params_(std::move(params)) {
+  const AncfCable2DParameters& p = *params_;
   if (!(L > 0.0)) throw std::invalid_argument("ancf_cable2d: reference length must be positive");
   if (p.useReducedOrderIntegration < 0 || p.useReducedOrderIntegration > 2)
     throw std::invalid_argument("ancf_cable2d: useReducedOrderIntegration must be 0, 1 or 2");
@@ -333,9 +333,9 @@ AncfCable2D::AncfCable2D(const std::array<double, 8>& qRef, double L, std::share
     ref_ = std::move(ref);
   }
 
-  const Expression* ua = p_.axialForceUserFunction.get();
-  const Expression* ub = p_.bendingMomentUserFunction.get();
-  hasDamping_ = (!ua && p_.physicsAxialDamping != 0.0) || (!ub && p_.physicsBendingDamping != 0.0) ||
+  const Expression* ua = params_->axialForceUserFunction.get();
+  const Expression* ub = params_->bendingMomentUserFunction.get();
+  hasDamping_ = (!ua && params_->physicsAxialDamping != 0.0) || (!ub && params_->physicsBendingDamping != 0.0) ||
                 (ua && (ua->uses(UfVar::axialStrain_t) || ua->uses(UfVar::curvature_t))) ||
                 (ub && (ub->uses(UfVar::axialStrain_t) || ub->uses(UfVar::curvature_t)));
   axialNeedsCurvature_ =
@@ -361,13 +361,13 @@ double AncfCable2D::curvature(const double* q, double x) const {
   return (rx[0] * rxx[1] - rx[1] * rxx[0]) / (rx[0] * rx[0] + rx[1] * rx[1]);
 }
 double AncfCable2D::axialStrainRef(double x) const {
-  double r = p_.physicsReferenceAxialStrain;
-  if (p_.strainIsRelativeToReference != 0.0) r += p_.strainIsRelativeToReference * axialStrain(qRef_.data(), x);
+  double r = params_->physicsReferenceAxialStrain;
+  if (params_->strainIsRelativeToReference != 0.0) r += params_->strainIsRelativeToReference * axialStrain(qRef_.data(), x);
   return r;
 }
 double AncfCable2D::curvatureRef(double x) const {
-  double r = p_.physicsReferenceCurvature;
-  if (p_.strainIsRelativeToReference != 0.0) r += p_.strainIsRelativeToReference * curvature(qRef_.data(), x);
+  double r = params_->physicsReferenceCurvature;
+  if (params_->strainIsRelativeToReference != 0.0) r += params_->strainIsRelativeToReference * curvature(qRef_.data(), x);
   return r;
 }
 
@@ -504,8 +504,8 @@ void AncfCable2D::evaluate(const KernelInput& in, const KernelNeeds& needs, Kern
   for (int ip = 0; ip < geo.nAxial; ++ip) {
     const IntegrationPoint& P = geo.axial[ip];
     const PointState& s = states[ip];
-    const UserFunctionValue N = Law::axial(p_, in.t, P.xiNorm, s, axialRef(ip).strain, axialRef(ip).curvature);
-    Law::check(p_, N, true, in.t, s, true, axialNeedsCurvature_, derivatives);
+    const UserFunctionValue N = Law::axial(*params_, in.t, P.xiNorm, s, axialRef(ip).strain, axialRef(ip).curvature);
+    Law::check(*params_, N, true, in.t, s, true, axialNeedsCurvature_, derivatives);
     const double w = P.w;
     for (int a = 0; a < 8; ++a) f[a] += w * N.value * s.g[a];
     if (wantK) {
@@ -551,8 +551,8 @@ void AncfCable2D::evaluate(const KernelInput& in, const KernelNeeds& needs, Kern
   for (int ip = 0; ip < geo.nBending; ++ip) {
     const IntegrationPoint& P = geo.bending[ip];
     const PointState& s = states[ip];
-    const UserFunctionValue M = Law::bending(p_, in.t, P.xiNorm, s, bendingRef(ip).strain, bendingRef(ip).curvature);
-    Law::check(p_, M, false, in.t, s, bendingNeedsStrain_, true, derivatives);
+    const UserFunctionValue M = Law::bending(*params_, in.t, P.xiNorm, s, bendingRef(ip).strain, bendingRef(ip).curvature);
+    Law::check(*params_, M, false, in.t, s, bendingNeedsStrain_, true, derivatives);
     const double w = P.w;
     for (int a = 0; a < 8; ++a) f[a] += w * M.value * s.h[a];
     if (wantK) {
@@ -607,7 +607,7 @@ double AncfCable2D::axialForceAt(const double* q, const double* qdot, double x, 
   const std::array<double, 4> Sx = shape_x(x, L_);
   axialState(Sx, q, qdot, s);
   if (axialNeedsCurvature_) bendingState(Sx, shape_xx(x, L_), q, qdot, s);
-  return Law::axial(p_, t, x / L_, s, axialStrainRef(x), curvatureRef(x)).value;
+  return Law::axial(*params_, t, x / L_, s, axialStrainRef(x), curvatureRef(x)).value;
 }
 
 double AncfCable2D::bendingMomentAt(const double* q, const double* qdot, double x, double t) const {
@@ -615,7 +615,7 @@ double AncfCable2D::bendingMomentAt(const double* q, const double* qdot, double 
   const std::array<double, 4> Sx = shape_x(x, L_);
   bendingState(Sx, shape_xx(x, L_), q, qdot, s);
   if (bendingNeedsStrain_) axialState(Sx, q, qdot, s);
-  return Law::bending(p_, t, x / L_, s, axialStrainRef(x), curvatureRef(x)).value;
+  return Law::bending(*params_, t, x / L_, s, axialStrainRef(x), curvatureRef(x)).value;
 }
 
 void AncfCable2D::elementForce(const double* q, std::vector<double>& out) const {
@@ -698,19 +698,19 @@ std::vector<double> AncfCable2D::output(const std::string& variable, double x, c
 }
 
 bool AncfCable2D::strainEnergy(const double* q, double* energy) const {
-  if (p_.axialForceUserFunction || p_.bendingMomentUserFunction) return false;
-  const int r = p_.useReducedOrderIntegration;
+  if (params_->axialForceUserFunction || params_->bendingMomentUserFunction) return false;
+  const int r = params_->useReducedOrderIntegration;
   const Rule ra = r == 0 ? gauss(5) : (r == 1 ? gauss(4) : lobatto3());
   const Rule rb = r == 0 ? gauss(3) : gauss(2);
   const double L = length();
   double e = 0.0;
   for (int i = 0; i < ra.n; ++i) {
     const double x = 0.5 * L * (ra.xi[i] + 1), d = axialStrain(q, x) - axialStrainRef(x);
-    e += 0.25 * L * ra.w[i] * p_.physicsAxialStiffness * d * d;
+    e += 0.25 * L * ra.w[i] * params_->physicsAxialStiffness * d * d;
   }
   for (int i = 0; i < rb.n; ++i) {
     const double x = 0.5 * L * (rb.xi[i] + 1), d = curvature(q, x) - curvatureRef(x);
-    e += 0.25 * L * rb.w[i] * p_.physicsBendingStiffness * d * d;
+    e += 0.25 * L * rb.w[i] * params_->physicsBendingStiffness * d * d;
   }
   *energy = e;
   return true;

@@ -53,7 +53,7 @@ class AncfCable2D : public ElementKernel {
 
   const char* name() const override { return "ancf_cable2d"; }
   std::span<const NodeKind> nodeKinds() const override;
-  bool hasInertia() const override { return p_.physicsMassPerLength > 0.0; }
+  bool hasInertia() const override { return params_->physicsMassPerLength > 0.0; }
   bool hasDamping() const override { return hasDamping_; }
 
   /// f = Q_e(q, qdot, t) (elastic + viscous generalized forces, Exudyn's ODE2 LHS);
@@ -89,7 +89,7 @@ class AncfCable2D : public ElementKernel {
   /// int EA/2 (eps - eps_ref)^2 + EI/2 (K - K_ref)^2 dx with the rules of evaluate (its gradient is
   /// the internal force); false with user force laws (no energy given).
   bool strainEnergy(const double* q, double* energy) const override;
-  const AncfCable2DParameters& parameters() const { return p_; }
+  const AncfCable2DParameters& parameters() const { return *params_; }
   const std::array<double, 8>& referenceCoordinates() const { return qRef_; }
 
   /// Force-law evaluations of all AncfCable2D kernels of this process so far: user-function calls,
@@ -132,8 +132,7 @@ class AncfCable2D : public ElementKernel {
 
   std::array<double, 8> qRef_;
   double L_;
-  std::shared_ptr<const AncfCable2DParameters> params_;
-  const AncfCable2DParameters& p_;  ///< *params_
+  std::shared_ptr<const AncfCable2DParameters> params_;  ///< shared by the elements of a set
   bool hasDamping_ = false;
   bool axialNeedsCurvature_ = false, bendingNeedsStrain_ = false;
   std::shared_ptr<const Geometry> geo_;
@@ -144,10 +143,10 @@ class AncfCable2D : public ElementKernel {
   };
   std::shared_ptr<const ReferenceTable> ref_;
   PointRef axialRef(int ip) const {
-    return ref_ ? ref_->axial[ip] : PointRef{p_.physicsReferenceAxialStrain, p_.physicsReferenceCurvature};
+    return ref_ ? ref_->axial[ip] : PointRef{params_->physicsReferenceAxialStrain, params_->physicsReferenceCurvature};
   }
   PointRef bendingRef(int ip) const {
-    return ref_ ? ref_->bending[ip] : PointRef{p_.physicsReferenceAxialStrain, p_.physicsReferenceCurvature};
+    return ref_ ? ref_->bending[ip] : PointRef{params_->physicsReferenceAxialStrain, params_->physicsReferenceCurvature};
   }
 };
 

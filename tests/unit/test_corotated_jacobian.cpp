@@ -101,6 +101,18 @@ PetscErrorCode check() {
   sinew::LoadState ls;
   ls.loadFactor = 1.0;
   const double shiftV = 7.0, shiftA = 3.0e4;
+  auto relVec = [](Vec a, Vec ref, double* d) -> PetscErrorCode {
+    PetscFunctionBeginUser;
+    Vec t;
+    PetscCall(VecDuplicate(a, &t));
+    PetscCall(VecWAXPY(t, -1.0, ref, a));
+    PetscReal nt, nr;
+    PetscCall(VecNorm(t, NORM_2, &nt));
+    PetscCall(VecNorm(ref, NORM_2, &nr));
+    PetscCall(VecDestroy(&t));
+    *d = nt / nr;
+    PetscFunctionReturn(PETSC_SUCCESS);
+  };
   a.keepCorotatedBlocks(true);
   Vec xr, wr, yr, y0, y1r;  // node rotation: R J0 R^T xr against J1 xr
   PetscCall(VecDuplicate(U0, &xr));
@@ -131,18 +143,12 @@ PetscErrorCode check() {
     }
     PetscCall(a.corotatedJacobian(U1, ls, Jc));
     PetscCall(a.dynamicJacobian(U1, V, ls, shiftV, shiftA, J1));
-    double dc, d0, dn, dk;
+    double dc = 0, d0 = 0, dn = 0, dk = 0;
     PetscCall(relDiff(Jc, J1, &dc));
     PetscCall(relDiff(J0, J1, &d0));
     PetscCall(MatMult(J1, xr, y1r));
-    PetscCall(VecAXPY(yr, -1.0, y1r));
-    PetscCall(VecAXPY(y0, -1.0, y1r));
-    PetscReal nr, nk, n1;
-    PetscCall(VecNorm(yr, NORM_2, &nr));
-    PetscCall(VecNorm(y0, NORM_2, &nk));
-    PetscCall(VecNorm(y1r, NORM_2, &n1));
-    dn = nr / n1;
-    dk = nk / n1;
+    PetscCall(relVec(yr, y1r, &dn));
+    PetscCall(relVec(y0, y1r, &dk));
     if (extra == 0.0) {
       expect(dc < 1e-13, "rigid turn 0.7 rad: |rebuilt - fresh| / |fresh| (< 1e-13)", dc);
       expect(d0 > 1e-2, "rigid turn 0.7 rad: |kept - fresh| / |fresh| (> 1e-2)", d0);
@@ -164,18 +170,6 @@ PetscErrorCode check() {
   for (PetscInt i = lo; i < hi; ++i) PetscCall(VecSetValue(x, i, std::cos(0.91 * static_cast<double>(i)), INSERT_VALUES));
   PetscCall(VecAssemblyBegin(x));
   PetscCall(VecAssemblyEnd(x));
-  auto relVec = [](Vec a, Vec ref, double* d) -> PetscErrorCode {
-    PetscFunctionBeginUser;
-    Vec t;
-    PetscCall(VecDuplicate(a, &t));
-    PetscCall(VecWAXPY(t, -1.0, ref, a));
-    PetscReal nt, nr;
-    PetscCall(VecNorm(t, NORM_2, &nt));
-    PetscCall(VecNorm(ref, NORM_2, &nr));
-    PetscCall(VecDestroy(&t));
-    *d = nt / nr;
-    PetscFunctionReturn(PETSC_SUCCESS);
-  };
   double dop = 0;
   PetscCall(a.corotatedJacobian(U1, ls, Jc));
   PetscCall(MatMult(Jc, x, y1));

@@ -12,7 +12,8 @@
 
 namespace sinew {
 
-BucklingAnalysis::BucklingAnalysis(Assembler& assembler, int nbuck) : asm_(assembler), nbuck_(nbuck) {
+BucklingAnalysis::BucklingAnalysis(Assembler& assembler, int nbuck, const EigenSettings& settings)
+    : asm_(assembler), nbuck_(nbuck) {
   MPI_Comm comm = asm_.mesh().comm;
   SinewCallThrow(comm, asm_.createMatrix(&Km_));
   SinewCallThrow(comm, asm_.createMatrix(&Kg_));
@@ -29,7 +30,7 @@ BucklingAnalysis::BucklingAnalysis(Assembler& assembler, int nbuck) : asm_(assem
   SinewCallThrow(comm, STSetMatStructure(st, SUBSET_NONZERO_PATTERN));
   SinewCallThrow(comm, STGetKSP(st, &ksp));
   SinewCallThrow(comm, useDirectSolver(ksp, asm_.mesh()));
-  SinewCallThrow(comm, eigenOperator(asm_, &elementwise_));
+  SinewCallThrow(comm, eigenOperator(asm_, settings.eigenOperator, &elementwise_));
   if (elementwise_) {  // as the frequency analysis (modal_analysis.cpp)
     asm_.keepTangentBlocks(true);
     asm_.keepRigidData(true);
@@ -40,9 +41,7 @@ BucklingAnalysis::BucklingAnalysis(Assembler& assembler, int nbuck) : asm_(assem
     SinewCallThrow(comm, useAccurateInnerSolver(ksp));
   }
   SinewCallThrow(comm, EPSSetFromOptions(eps_));
-  PetscBool set = PETSC_FALSE;
-  SinewCallThrow(comm, PetscOptionsHasName(nullptr, "buck_", "-eps_nev", &set));
-  userNev_ = set;
+  userNev_ = settings.userBucklingNev;
 }
 
 BucklingAnalysis::~BucklingAnalysis() {

@@ -12,12 +12,14 @@
 
 #include "analysis/step_analysis.hpp"
 #include "assembly/assembler.hpp"
+#include "settings/settings.hpp"
 
 namespace sinew {
 
 class BucklingAnalysis : public StepAnalysis {
  public:
-  BucklingAnalysis(Assembler& assembler, int nbuck);
+  /// settings: -eigen_operator, -buck_eps_nev given.
+  BucklingAnalysis(Assembler& assembler, int nbuck, const EigenSettings& settings);
   ~BucklingAnalysis() override;
   BucklingAnalysis(const BucklingAnalysis&) = delete;
   BucklingAnalysis& operator=(const BucklingAnalysis&) = delete;

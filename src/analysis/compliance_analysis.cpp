@@ -20,7 +20,8 @@ const char* methodName(ComplianceAnalysis::Method m) {
 }
 }  // namespace
 
-ComplianceAnalysis::ComplianceAnalysis(Assembler& assembler, const std::vector<int>& nodes) : asm_(assembler) {
+ComplianceAnalysis::ComplianceAnalysis(Assembler& assembler, const std::vector<int>& nodes, const ComplianceSettings& settings)
+    : asm_(assembler) {
   DistributedMesh& m = asm_.mesh();
   const std::set<int> requested(nodes.begin(), nodes.end());
   long cols = 0;
@@ -35,13 +36,9 @@ ComplianceAnalysis::ComplianceAnalysis(Assembler& assembler, const std::vector<i
     if (!g.k.empty()) groups_.push_back(std::move(g));
   }
   MPI_Allreduce(&cols, &totalColumns_, 1, MPI_LONG, MPI_SUM, m.comm);
-  PetscBool set = PETSC_FALSE;
-  SinewCallThrow(m.comm, PetscOptionsGetInt(nullptr, nullptr, "-compliance_batch", &batch_, &set));
-  batch_ = std::max<PetscInt>(batch_, 1);
-  const char* names[] = {"selinv", "sparse", "dense"};
-  PetscInt which = 0;
-  SinewCallThrow(m.comm, PetscOptionsGetEList(nullptr, nullptr, "-compliance_method", names, 3, &which, &set));
-  method_ = static_cast<Method>(which);
+  batch_ = std::max<PetscInt>(settings.batch, 1);
+  method_ = settings.method;
+  blockColumns_ = settings.mumpsBlockColumns;
   SinewCallThrow(m.comm, asm_.createMatrix(&J_));
   SinewCallThrow(m.comm, KSPCreate(m.comm, &ksp_));
   SinewCallThrow(m.comm, KSPSetOptionsPrefix(ksp_, "compl_"));
@@ -112,9 +109,8 @@ PetscErrorCode ComplianceAnalysis::selectedInverse(Mat F, std::vector<double>& g
   PetscCall(MatCreateTranspose(Bt, &spRHS));
   // ICNTL(27): columns per block of the solve phase. MUMPS's automatic choice (about 32) costs a
   // round of messages per block on every tree node; 2048 was the fastest measured (docs/performance.md).
-  PetscBool userBlock = PETSC_FALSE;
-  PetscCall(PetscOptionsHasName(nullptr, "compl_", "-mat_mumps_icntl_27", &userBlock));
-  if (!userBlock) PetscCall(MatMumpsSetIcntl(F, 27, 2048));
+  // (-compl_mat_mumps_icntl_27: the user's value, which MUMPS has also read from the options)
+  PetscCall(MatMumpsSetIcntl(F, 27, blockColumns_));
   PetscCall(MatMumpsGetInverse(F, spRHS));
   PetscCall(MatMumpsSetIcntl(F, 30, 0));
   ++batches_;

@@ -16,18 +16,19 @@
 #include <vector>
 
 #include "analysis/step_analysis.hpp"
+#include "settings/settings.hpp"
 
 namespace sinew {
 
 class ComplianceAnalysis : public StepAnalysis {
  public:
-  enum class Method { SelectedInverse, SparseRhs, DenseRhs };
+  using Method = ComplianceMethod;
 
   /// nodes: 0-based scene nodes whose compliance is computed; empty = every scene node.
-  /// Options (prefix compl_): -compl_ksp_*/-compl_pc_* (factorization), -compliance_method
-  /// selinv|sparse|dense (default selinv), -compliance_batch (right-hand-side columns per solve of
-  /// the sparse and dense methods, default 96).
-  ComplianceAnalysis(Assembler& assembler, const std::vector<int>& nodes);
+  /// Options (prefix compl_): -compl_ksp_*/-compl_pc_* (factorization); settings: -compliance_method
+  /// selinv|sparse|dense, -compliance_batch (right-hand-side columns per solve of the sparse and
+  /// dense methods), -compl_mat_mumps_icntl_27 (columns per block of the selected inverse).
+  ComplianceAnalysis(Assembler& assembler, const std::vector<int>& nodes, const ComplianceSettings& settings);
   ~ComplianceAnalysis() override;
   const char* name() const override { return "compliance"; }
   PetscErrorCode atStep(Vec U, const LoadState& ls, ResultFile& file, bool* ok) override;
@@ -55,6 +56,7 @@ class ComplianceAnalysis : public StepAnalysis {
   std::vector<Group> groups_;     ///< requested owned nodes with at least one free DOF
   Method method_ = Method::SelectedInverse;
   PetscInt batch_ = 96;
+  int blockColumns_ = 2048;  ///< MUMPS ICNTL(27) of the selected inverse (-compl_mat_mumps_icntl_27)
   long totalColumns_ = 0, factorizations_ = 0, batches_ = 0;
   double factorTime_ = 0, solveTime_ = 0;
   std::string failure_;

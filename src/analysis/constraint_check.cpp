@@ -92,17 +92,14 @@ std::string groupedModes(const std::string& lines, size_t maxItems) {
 }  // namespace
 
 PetscErrorCode checkConstraints(Assembler& assembler, const Model& model, Vec U, const LoadState& ls,
-                                ConstraintReport* report) {
+                                const ModelCheckSettings& settings, ConstraintReport* report) {
   PetscFunctionBeginUser;
   *report = ConstraintReport{};
   DistributedMesh& m = assembler.mesh();
   MPI_Comm comm = m.comm;
   if (m.numGlobalUnknowns == 0) PetscFunctionReturn(PETSC_SUCCESS);
-  PetscReal tol = 1e-11;
-  PetscInt nvec = 3;
-  PetscCall(PetscOptionsGetReal(nullptr, nullptr, "-constraint_check_tol", &tol, nullptr));
-  PetscCall(PetscOptionsGetInt(nullptr, nullptr, "-constraint_check_vectors", &nvec, nullptr));
-  nvec = std::clamp<PetscInt>(nvec, 1, static_cast<PetscInt>(m.numGlobalUnknowns));
+  const PetscReal tol = settings.tol;
+  const PetscInt nvec = std::clamp<PetscInt>(settings.vectors, 1, static_cast<PetscInt>(m.numGlobalUnknowns));
 
   Mat J, As;
   PetscCall(assembler.createMatrix(&J));

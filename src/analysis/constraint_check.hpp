@@ -14,6 +14,7 @@
 #include <string>
 
 #include "assembly/assembler.hpp"
+#include "settings/settings.hpp"
 #include "sinew/model.hpp"
 
 namespace sinew {
@@ -24,9 +25,9 @@ struct ConstraintReport {
   std::string message;               ///< rank 0: what is wrong and what to fix (empty when regular)
 };
 
-/// Collective. Checks the tangent at state U (load state ls). Options: -constraint_check_tol
-/// (default 1e-11), -constraint_check_vectors (subspace size, default 3).
+/// Collective. Checks the tangent at state U (load state ls). settings: -constraint_check_tol,
+/// -constraint_check_vectors (subspace size).
 PetscErrorCode checkConstraints(Assembler& assembler, const Model& model, Vec U, const LoadState& ls,
-                                ConstraintReport* report);
+                                const ModelCheckSettings& settings, ConstraintReport* report);
 
 }  // namespace sinew

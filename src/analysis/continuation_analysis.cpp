@@ -14,7 +14,8 @@
 
 namespace sinew {
 
-ContinuationAnalysis::ContinuationAnalysis(Assembler& assembler, const ContinuationOptions& opt)
+ContinuationAnalysis::ContinuationAnalysis(Assembler& assembler, const ContinuationOptions& opt,
+                                           const ContinuationSettings& settings, int maxCuts)
     : asm_(assembler), opt_(opt) {
   MPI_Comm comm = asm_.mesh().comm;
   SinewCallThrow(comm, asm_.createMatrix(&K_));
@@ -24,28 +25,14 @@ ContinuationAnalysis::ContinuationAnalysis(Assembler& assembler, const Continuat
   SinewCallThrow(comm, KSPSetOptionsPrefix(ksp_, "continuation_"));
   SinewCallThrow(comm, useDirectSolver(ksp_));
   SinewCallThrow(comm, KSPSetFromOptions(ksp_));
-  SinewCallThrow(comm, PetscOptionsGetReal(nullptr, nullptr, "-continuation_rtol", &rtol_, nullptr));
-  PetscInt v = maxIts_;
-  SinewCallThrow(comm, PetscOptionsGetInt(nullptr, nullptr, "-continuation_max_it", &v, nullptr));
-  maxIts_ = static_cast<int>(v);
-  v = maxCuts_;
-  SinewCallThrow(comm, PetscOptionsGetInt(nullptr, nullptr, "-max_cuts", &v, nullptr));
-  maxCuts_ = static_cast<int>(v);
-  v = desiredIts_;
-  SinewCallThrow(comm, PetscOptionsGetInt(nullptr, nullptr, "-continuation_desired_its", &v, nullptr));
-  desiredIts_ = static_cast<int>(std::max<PetscInt>(v, 1));
-  v = initialSteps_;
-  SinewCallThrow(comm, PetscOptionsGetInt(nullptr, nullptr, "-continuation_initial_steps", &v, nullptr));
-  initialSteps_ = static_cast<int>(std::max<PetscInt>(v, 1));
-  PetscBool inertia = PETSC_TRUE;
-  SinewCallThrow(comm, PetscOptionsGetBool(nullptr, nullptr, "-continuation_inertia", &inertia, nullptr));
-  inertia_ = inertia;
-  PetscBool lowest = PETSC_FALSE;
-  SinewCallThrow(comm, PetscOptionsGetBool(nullptr, nullptr, "-continuation_lowest_eigenvalue", &lowest, nullptr));
-  lowest_ = lowest;
-  PetscBool bs = PETSC_FALSE;
-  SinewCallThrow(comm, PetscOptionsGetBool(nullptr, nullptr, "-branch_switch", &bs, nullptr));
-  branchSwitch_ = bs;
+  rtol_ = settings.rtol;
+  maxIts_ = settings.maxIt;
+  maxCuts_ = maxCuts;
+  desiredIts_ = std::max(settings.desiredIts, 1);
+  initialSteps_ = std::max(settings.initialSteps, 1);
+  inertia_ = settings.inertia;
+  lowest_ = settings.lowestEigenvalue;
+  branchSwitch_ = settings.branchSwitch;
   // the control DOF: a unit vector over the unknowns (the node's owner sets its entry)
   long local = 0;
   for (const LocalElement& el : asm_.mesh().elements) local += el.kernel->numConstraints();

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "assembly/assembler.hpp"
+#include "settings/settings.hpp"
 #include "sinew/model.hpp"
 
 namespace sinew {
@@ -47,7 +48,9 @@ struct CriticalPoint {
 
 class ContinuationAnalysis {
  public:
-  ContinuationAnalysis(Assembler& assembler, const ContinuationOptions& opt);
+  /// maxCuts: halvings of a failing step (-max_cuts, StaticsSettings::maxCuts).
+  ContinuationAnalysis(Assembler& assembler, const ContinuationOptions& opt, const ContinuationSettings& settings,
+                       int maxCuts);
   ~ContinuationAnalysis();
   using PointCallback = std::function<PetscErrorCode(const PathPoint&, Vec U)>;
   /// Follows the path from U (load factor 0) until a stop criterion; onPoint after each converged point.

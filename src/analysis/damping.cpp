@@ -7,7 +7,8 @@
 
 namespace sinew {
 
-Damping::Damping(Assembler& assembler, const DynamicsOptions& opts) : asm_(assembler), opts_(opts) {
+Damping::Damping(Assembler& assembler, const DynamicsOptions& opts, const EigenSettings& eigen)
+    : asm_(assembler), opts_(opts), eigen_(eigen) {
   rayleigh_ = opts_.mass_proportional_damping > 0 || opts_.stiffness_proportional_damping > 0;
   for (double z : opts_.modal_damping) modal_ = modal_ || z > 0;
 }
@@ -42,7 +43,7 @@ PetscErrorCode Damping::setup(Vec U, const LoadState& ls, Vec keep, ResultFile& 
   if (modal_) {
     // modes of the start state: the first n of Sinew's frequency analysis, mass-normalized
     const int n = static_cast<int>(opts_.modal_damping.size() == 1 ? opts_.modal_damping_modes : opts_.modal_damping.size());
-    ModalAnalysis modal(asm_, n, false);
+    ModalAnalysis modal(asm_, n, false, eigen_);
     bool ok = true;
     PetscCall(modal.atStep(U, ls, file, &ok));
     if (!ok)

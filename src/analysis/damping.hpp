@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "assembly/assembler.hpp"
+#include "settings/settings.hpp"
 #include "sinew/model.hpp"
 #include "sinew/result_file.hpp"
 
@@ -21,7 +22,8 @@ namespace sinew {
 
 class Damping {
  public:
-  Damping(Assembler& assembler, const DynamicsOptions& opts);
+  /// eigen: the settings of the frequency analysis behind modal damping.
+  Damping(Assembler& assembler, const DynamicsOptions& opts, const EigenSettings& eigen);
   ~Damping();
   Damping(const Damping&) = delete;
   Damping& operator=(const Damping&) = delete;
@@ -42,6 +44,7 @@ class Damping {
  private:
   Assembler& asm_;
   DynamicsOptions opts_;
+  EigenSettings eigen_;  ///< of the frequency analysis of modal damping
   bool rayleigh_ = false, modal_ = false;
   Mat C0_ = nullptr;  ///< alpha M0 + beta K0
   Mat M0_ = nullptr;  ///< for the modal part

@@ -18,21 +18,17 @@ LoadState DynamicAnalysis::loadsAt(double t) {
   return ls;
 }
 
-DynamicAnalysis::Scheme DynamicAnalysis::checkScheme(const DistributedMesh& mesh) {
-  char scheme[64] = "arnold_bruls";
-  PetscBool set = PETSC_FALSE;
-  SinewCallThrow(mesh.comm, PetscOptionsGetString(nullptr, nullptr, "-dynamics_scheme", scheme, sizeof(scheme), &set));
-  const std::string sch = scheme;
-  if (sch != "tsalpha2" && sch != "arnold_bruls" && sch != "midpoint")
-    throw SceneError("-dynamics_scheme", "expected arnold_bruls, midpoint or tsalpha2, got " + sch);
-  if (sch == "tsalpha2" && mesh.anyRotations)
+DynamicAnalysis::Scheme DynamicAnalysis::checkScheme(const DistributedMesh& mesh, Scheme scheme) {
+  if (scheme == Scheme::TSAlpha2 && mesh.anyRotations)
     throw SceneError("-dynamics_scheme", "tsalpha2 integrates the unknowns as a vector space; beam rotations need the "
                                          "Lie-group form of the default scheme (arnold_bruls)");
-  return sch == "tsalpha2" ? Scheme::TSAlpha2 : sch == "midpoint" ? Scheme::Midpoint : Scheme::ArnoldBruls;
+  return scheme;
 }
 
-DynamicAnalysis::DynamicAnalysis(Assembler& assembler, const DynamicsOptions& opts)
-    : asm_(assembler), opts_(opts), damping_(assembler, opts) {
+DynamicAnalysis::DynamicAnalysis(Assembler& assembler, const DynamicsOptions& opts, const Settings& all)
+    : asm_(assembler), opts_(opts), damping_(assembler, opts, all.eigen) {
+  const DynamicsSettings& settings = all.dynamics;
+  const StaticsSettings& newton = all.statics;
   const double rho = opts_.spectral_radius;
   alphaM_ = (2.0 * rho - 1.0) / (rho + 1.0);
   alphaF_ = rho / (rho + 1.0);
@@ -43,49 +39,35 @@ DynamicAnalysis::DynamicAnalysis(Assembler& assembler, const DynamicsOptions& op
   SinewCallThrow(comm, asm_.createMatrix(&J_));
   SinewCallThrow(comm, asm_.createVector(&F_));
   for (Vec* v : {&Un_, &Vn_, &An_, &Qn_, &V1_, &A1_, &Q1_, &Cu_}) SinewCallThrow(comm, VecDuplicate(F_, v));
-  const Scheme scheme = checkScheme(asm_.mesh());
+  const Scheme scheme = checkScheme(asm_.mesh(), settings.scheme);
   useTS_ = scheme == Scheme::TSAlpha2;
   midpoint_ = scheme == Scheme::Midpoint;
   if (midpoint_) for (Vec* v : {&Um_, &Vm_}) SinewCallThrow(comm, VecDuplicate(F_, v));
-  PetscBool set = PETSC_FALSE;
-  PetscInt cuts = maxCuts_;
-  SinewCallThrow(comm, PetscOptionsGetInt(nullptr, nullptr, "-max_cuts", &cuts, &set));
-  maxCuts_ = static_cast<int>(cuts);
-  PetscInt grow = growAfter_;
-  SinewCallThrow(comm, PetscOptionsGetInt(nullptr, nullptr, "-dt_grow_after", &grow, &set));
-  growAfter_ = static_cast<int>(grow);
+  maxCuts_ = newton.maxCuts;
+  growAfter_ = settings.dtGrowAfter;
   if (growAfter_ < 0) throw SceneError("-dt_grow_after", "expected a count >= 0, got " + std::to_string(growAfter_));
-  const StepControlSettings sc = readStepControl(comm, opts_, scheme);
+  const StepControlSettings sc = stepControl(opts_, settings, scheme);
   control_ = sc.control;
   dtMin_ = sc.dtMin;
   dtMax_ = sc.dtMax;
   adaptTol_ = sc.tol;
   adaptIts_ = sc.its;
-  PetscReal rtol = forceRtol_;
-  SinewCallThrow(comm, PetscOptionsGetReal(nullptr, nullptr, "-force_rtol", &rtol, &set));
-  forceRtol_ = rtol;
+  forceRtol_ = newton.forceRtol.value_or(forceRtol_);
   // modified Newton pays where a Jacobian and its factorization cost much more than a residual and
   // a solve; measured (docs/ancf_cable2d.md): A3 with 64 elements (258 unknowns) 1.8x faster, 512
   // elements 1.4x, a 16-element pendulum (66 unknowns) 1.1x slower: auto = from 200 unknowns
-  char modified[16] = "auto";
-  SinewCallThrow(comm, PetscOptionsGetString(nullptr, nullptr, "-dynamics_modified_newton", modified, sizeof(modified), &set));
-  const std::string mode = modified;
-  modifiedNewton_ = mode == "true" || (mode == "auto" && asm_.mesh().numGlobalUnknowns >= 200);
-  PetscBool corot = PETSC_TRUE;
-  SinewCallThrow(comm, PetscOptionsGetBool(nullptr, nullptr, "-dynamics_corotated_jacobian", &corot, &set));
+  const AutoSwitch mode = settings.modifiedNewton;
+  modifiedNewton_ = mode == AutoSwitch::On || (mode == AutoSwitch::Auto && asm_.mesh().numGlobalUnknowns >= 200);
   chain_ = ancfChain(asm_.mesh());
-  corotated_ = corot && modifiedNewton_ && scheme == Scheme::ArnoldBruls && chain_;
+  corotated_ = settings.corotatedJacobian && modifiedNewton_ && scheme == Scheme::ArnoldBruls && chain_;
   asm_.keepCorotatedBlocks(corotated_);
   // refined step solves (setRefinements): once (true), never (false), or auto: added while Newton's
   // updates on an unchanged matrix contract by less than kRefineContraction (the LU's accuracy in the
   // smooth modes limits Newton: A1g at 65536 elements 7.5e-3; at 4096 1e-5..1e-4, where a refinement
   // would only cost), see formJacobian; not when the user chose another KSP for the step solves
   // (runArnoldBruls)
-  char refine[16] = "auto";
-  SinewCallThrow(comm, PetscOptionsGetString(nullptr, nullptr, "-dynamics_refine", refine, sizeof(refine), &set));
-  const std::string rf = refine;
-  refineAuto_ = corotated_ && rf == "auto";
-  refinements_ = corotated_ && rf == "true" ? 1 : 0;
+  refineAuto_ = corotated_ && settings.refine == AutoSwitch::Auto;
+  refinements_ = corotated_ && settings.refine == AutoSwitch::On ? 1 : 0;
   // ANCF chains on several ranks: rank-local LU with the exact correction of the few coupling
   // unknowns (useCutCorrectedLU) instead of every rank factoring the whole chain (PCREDUNDANT); A1g
   // at 65536 elements, 2 ranks: 28 ms against 42 ms per factorization, 2.1 ms against 5.2 ms per
@@ -94,22 +76,20 @@ DynamicAnalysis::DynamicAnalysis(Assembler& assembler, const DynamicsOptions& op
   // the first kept matrix that stalled by an element turn below kRotationTurn (A1g: from 16384
   // elements), where turned kept matrices would otherwise be rebuilt and refactored in every step
   // (docs/performance.md)
-  char nodeRot[16] = "auto";
-  SinewCallThrow(comm, PetscOptionsGetString(nullptr, nullptr, "-dynamics_node_rotation", nodeRot, sizeof(nodeRot), &set));
-  const std::string nr = nodeRot;
-  nodeRotation_ = !corotated_ || nr == "false" ? NodeRotation::Off : nr == "true" ? NodeRotation::On : NodeRotation::Auto;
+  const AutoSwitch nr = settings.nodeRotation;
+  nodeRotation_ = !corotated_ || nr == AutoSwitch::Off ? NodeRotation::Off
+                  : nr == AutoSwitch::On               ? NodeRotation::On
+                                                       : NodeRotation::Auto;
   rotating_ = nodeRotation_ == NodeRotation::On;
-  char chainLU[16] = "auto";
-  SinewCallThrow(comm, PetscOptionsGetString(nullptr, nullptr, "-dynamics_chain_lu", chainLU, sizeof(chainLU), &set));
-  const std::string lu = chainLU;
-  cutLU_ = chain_ && (lu == "cut" || (lu == "auto" && couplingUnknowns(asm_.mesh()) <= kCutCorrectedMaxCoupling));
+  const ChainLU lu = settings.chainLU;
+  cutLU_ = chain_ && (lu == ChainLU::Cut ||
+                      (lu == ChainLU::Auto && couplingUnknowns(asm_.mesh()) <= kCutCorrectedMaxCoupling));
+  mumpsWorkspace_ = settings.mumpsWorkspace;
   // Newton with mixed stresses for beams, as in statics (docs/beam.md): a large rotation step moves
   // the nodes along straight lines and stretches axially stiff elements; the displacement-based
   // tangent would carry that spurious axial force (residuals alternating by 1e2 per iteration on a
   // swinging leaf spring at dt = T1/24). Each step's stresses are linearized from q_n.
-  PetscBool mixed = PETSC_TRUE;
-  SinewCallThrow(comm, PetscOptionsGetBool(nullptr, nullptr, "-newton_mixed_stresses", &mixed, &set));
-  asm_.setMixedStressNewton(mixed && asm_.hasMixedStressKernels());
+  asm_.setMixedStressNewton(newton.mixedStresses && asm_.hasMixedStressKernels());
   // Newton's start of a step. The extrapolation q_n + h qd_n + h^2/2 a_n carries the algorithmic
   // accelerations of the modes the step does not resolve (h omega >> 1: the axial and the short
   // bending waves of a fine cable, omega ~ 1/l_e resp. 1/l_e^2). Those are noise of amplitude
@@ -121,9 +101,7 @@ DynamicAnalysis::DynamicAnalysis(Assembler& assembler, const DynamicsOptions& op
   // Newton converges in 2 iterations per step (the update test of convergenceTest), no retries.
   // auto: q_n from 200 unknowns (where modified Newton keeps the Jacobian) and for beams (below); else
   // the extrapolation (A3 with 1 element: 2000 iterations against 2779 from q_n).
-  char pred[16] = "auto";
-  SinewCallThrow(comm, PetscOptionsGetString(nullptr, nullptr, "-dynamics_predictor", pred, sizeof(pred), &set));
-  const std::string pr = pred;
+  const DynamicsPredictor pr = settings.predictor;
   const bool fine = asm_.mesh().numGlobalUnknowns >= 200;
   // Beams (mixed-stress Newton) start from q_n at any size, as statics has no secant predictor for
   // them: the additive extrapolation of positions and rotation vectors stretches the elements. The
@@ -131,8 +109,9 @@ DynamicAnalysis::DynamicAnalysis(Assembler& assembler, const DynamicsOptions& op
   // took 303 Newton iterations with 5 retried steps from the extrapolation, 36 from q_n; without the
   // mixed stresses the extrapolation even converged to another root of the step equations (tip
   // -0.318 m at t = 0.3 s against -0.266 m from q_n and from every smaller step: -0.268 m).
-  predictor_ = pr == "state" || (pr == "auto" && (fine || asm_.mixedStressNewton())) ? Predictor::State
-                                                                                     : Predictor::Acceleration;
+  predictor_ = pr == DynamicsPredictor::State || (pr == DynamicsPredictor::Auto && (fine || asm_.mixedStressNewton()))
+                   ? Predictor::State
+                   : Predictor::Acceleration;
   coordMax_ = asm_.coordinateScale();
   int mult = 0;
   for (const LocalElement& e : asm_.mesh().elements) mult |= e.firstMultiplier >= 0;

@@ -24,6 +24,7 @@
 
 #include "analysis/damping.hpp"
 #include "assembly/assembler.hpp"
+#include "settings/settings.hpp"
 #include "sinew/model.hpp"
 
 namespace sinew {
@@ -56,7 +57,10 @@ struct DynamicsProgress {
 
 class DynamicAnalysis {
  public:
-  DynamicAnalysis(Assembler& assembler, const DynamicsOptions& opts);
+  /// settings.dynamics: the flags of the time loop; settings.statics: the Newton settings shared with
+  /// statics (-max_cuts, -force_rtol, -newton_mixed_stresses); settings.eigen: modal damping's
+  /// frequency analysis.
+  DynamicAnalysis(Assembler& assembler, const DynamicsOptions& opts, const Settings& settings);
   ~DynamicAnalysis();
   DynamicAnalysis(const DynamicAnalysis&) = delete;
   DynamicAnalysis& operator=(const DynamicAnalysis&) = delete;
@@ -73,13 +77,13 @@ class DynamicAnalysis {
   double lastStep() const { return lastH_; }
   /// The loads of the time loop at t: in full from t = 0, functions of time evaluated at t.
   static LoadState loadsAt(double t);
-  enum class Scheme { ArnoldBruls, Midpoint, TSAlpha2 };
-  /// Reads -dynamics_scheme and checks it against the model (SceneError; called at setup, where scene
-  /// errors exit 2): tsalpha2 (a vector space) cannot integrate rotation unknowns.
-  static Scheme checkScheme(const DistributedMesh& mesh);
+  using Scheme = DynamicsScheme;
+  /// Checks -dynamics_scheme against the model (SceneError; called at setup, where scene errors exit 2):
+  /// tsalpha2 (a vector space) cannot integrate rotation unknowns.
+  static Scheme checkScheme(const DistributedMesh& mesh, Scheme scheme);
   /// Checks opt.dynamics.adaptive with its flags (-dynamics_adapt, -dynamics_dt_min/max, ...): SceneError
   /// (exit 2) for dt_min > dt_max or adaptive steps with tsalpha2 or midpoint. Called at setup, after checkScheme.
-  static void checkStepControl(const DistributedMesh& mesh, const DynamicsOptions& opts);
+  static void checkStepControl(const DistributedMesh& mesh, const DynamicsOptions& opts, const DynamicsSettings& settings);
   /// Integrates from U (in: initial state, at rest; out: state at the last converged time).
   PetscErrorCode run(Vec U, const StepCallback& onStep, bool* converged);
   /// With opt.dynamics damping: the frequency analysis of the start state (modal damping) sees
@@ -180,6 +184,7 @@ class DynamicAnalysis {
   /// with fresh matrices. Later stalls (A3 at 512 elements: below 2e-3) do not switch it on.
   static constexpr double kRotationTurn = 2e-3;
   bool cutLU_ = false;  ///< ANCF chain with few coupling unknowns: useCutCorrectedLU on several ranks
+  int mumpsWorkspace_ = 100;  ///< -mat_mumps_icntl_14 of the MUMPS step solver (DynamicsSettings::mumpsWorkspace)
   static PetscErrorCode applyNewtonMatrix(Mat A, Vec x, Vec y);
   Vec F_ = nullptr;
   Vec Un_ = nullptr, Vn_ = nullptr, An_ = nullptr, Qn_ = nullptr;  // step start: q, qd, a (algorithmic), qdd
@@ -230,14 +235,15 @@ class DynamicAnalysis {
   int reuseCount_ = 0;         ///< iterations on the kept Jacobian since it was built
   double prevFnorm_ = 0;       ///< residual norm at the previous Jacobian call of this solve
   // time-step control (opt.dynamics.adaptive, -dynamics_adapt; docs/dynamics.md "Time-step control")
-  enum class StepControl { None, Newton, Error } control_ = StepControl::None;
+  using StepControl = TimeStepControl;
+  StepControl control_ = StepControl::None;
   struct StepControlSettings {
     StepControl control = StepControl::None;
     double dtMin = 0, dtMax = 0, tol = 0;
     int its = 0;
   };
   /// The scene's opt.dynamics.adaptive overridden by the flags, checked (SceneError).
-  static StepControlSettings readStepControl(MPI_Comm comm, const DynamicsOptions& opts, Scheme scheme);
+  static StepControlSettings stepControl(const DynamicsOptions& opts, const DynamicsSettings& settings, Scheme scheme);
   double dtMin_ = 0, dtMax_ = 0, adaptTol_ = 1e-4;
   int adaptIts_ = 4;
   double lastH_ = 0;

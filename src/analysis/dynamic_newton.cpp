@@ -5,6 +5,7 @@
 #include "analysis/dynamic_analysis.hpp"
 #include "analysis/node_rotated_pc.hpp"
 #include "analysis/solver_defaults.hpp"
+#include "settings/read_settings.hpp"
 
 #include <algorithm>
 #include <cfloat>
@@ -40,10 +41,8 @@ PetscErrorCode DynamicAnalysis::useDynamicsSolver(KSP ksp) {
   if (!plain) {
     // MUMPS: the off-diagonal pivoting a wild Newton iterate needs (a step load on a fine cable)
     // overflows the default workspace estimate (INFOG(1) = -9, a failed linear solve); reserve 100 %
-    // more (ICNTL(14)) unless the user set it
-    PetscBool set = PETSC_FALSE;
-    PetscCall(PetscOptionsHasName(nullptr, nullptr, "-mat_mumps_icntl_14", &set));
-    if (!set) PetscCall(PetscOptionsSetValue(nullptr, "-mat_mumps_icntl_14", "100"));
+    // more (ICNTL(14), -mat_mumps_icntl_14) unless the user set it
+    PetscCall(applySolverOptionDefault("-mat_mumps_icntl_14", mumpsWorkspace_));
     PetscFunctionReturn(PETSC_SUCCESS);
   }
   PetscCall(usePetscLU(ksp));

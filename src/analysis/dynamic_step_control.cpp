@@ -6,34 +6,24 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <sstream>
 
 namespace sinew {
 
-DynamicAnalysis::StepControlSettings DynamicAnalysis::readStepControl(MPI_Comm comm, const DynamicsOptions& opts,
-                                                                      Scheme scheme) {
+DynamicAnalysis::StepControlSettings DynamicAnalysis::stepControl(const DynamicsOptions& opts,
+                                                                  const DynamicsSettings& settings, Scheme scheme) {
   // time-step control: opt.dynamics.adaptive, each field overridden by its flag
   const AdaptiveStepOptions& ad = opts.adaptive;
-  PetscBool set = PETSC_FALSE;
-  char ctl[16] = "";
-  std::snprintf(ctl, sizeof ctl, "%s", ad.control.c_str());
-  SinewCallThrow(comm, PetscOptionsGetString(nullptr, nullptr, "-dynamics_adapt", ctl, sizeof(ctl), &set));
-  const std::string control = ctl;
   StepControlSettings r;
-  r.control = control == "newton" ? StepControl::Newton : control == "error" ? StepControl::Error : StepControl::None;
-  PetscReal dtMin = ad.dt_min > 0 ? ad.dt_min : 1e-4 * opts.dt;
-  PetscReal dtMax = ad.dt_max > 0 ? ad.dt_max : opts.dt * opts.output_every;
-  PetscReal tol = ad.tolerance;
-  PetscInt its = ad.target_iterations;
-  SinewCallThrow(comm, PetscOptionsGetReal(nullptr, nullptr, "-dynamics_dt_min", &dtMin, &set));
-  SinewCallThrow(comm, PetscOptionsGetReal(nullptr, nullptr, "-dynamics_dt_max", &dtMax, &set));
-  SinewCallThrow(comm, PetscOptionsGetReal(nullptr, nullptr, "-dynamics_adapt_tol", &tol, &set));
-  SinewCallThrow(comm, PetscOptionsGetInt(nullptr, nullptr, "-dynamics_adapt_its", &its, &set));
-  r.dtMin = dtMin;
-  r.dtMax = dtMax;
-  r.tol = tol;
-  r.its = static_cast<int>(its);
+  const std::string& control = ad.control;
+  r.control = settings.adapt ? *settings.adapt
+              : control == "newton" ? StepControl::Newton
+              : control == "error"  ? StepControl::Error
+                                    : StepControl::None;
+  r.dtMin = settings.dtMin.value_or(ad.dt_min > 0 ? ad.dt_min : 1e-4 * opts.dt);
+  r.dtMax = settings.dtMax.value_or(ad.dt_max > 0 ? ad.dt_max : opts.dt * opts.output_every);
+  r.tol = settings.adaptTol.value_or(ad.tolerance);
+  r.its = settings.adaptIts.value_or(ad.target_iterations);
   if (r.control != StepControl::None && r.dtMin > r.dtMax) {
     std::ostringstream msg;
     msg << "the smallest adaptive step " << r.dtMin << " exceeds the largest (dt_max " << r.dtMax << ")";
@@ -47,8 +37,9 @@ DynamicAnalysis::StepControlSettings DynamicAnalysis::readStepControl(MPI_Comm c
   return r;
 }
 
-void DynamicAnalysis::checkStepControl(const DistributedMesh& mesh, const DynamicsOptions& opts) {
-  readStepControl(mesh.comm, opts, checkScheme(mesh));
+void DynamicAnalysis::checkStepControl(const DistributedMesh& mesh, const DynamicsOptions& opts,
+                                       const DynamicsSettings& settings) {
+  stepControl(opts, settings, checkScheme(mesh, settings.scheme));
 }
 
 // Zienkiewicz & Xie (1991) type estimate of the local error of q_{n+1}: the Newmark/alpha update

@@ -9,6 +9,7 @@
 #include "elements/cable3d.hpp"
 #include "elements/membrane.hpp"
 #include "mesh/collective_error.hpp"
+#include "settings/read_settings.hpp"
 
 namespace sinew {
 
@@ -55,7 +56,8 @@ void setFormFindingMode(DistributedMesh& m, const std::vector<int>& sets, bool o
 }
 }  // namespace
 
-PetscErrorCode checkFormFindingConstraints(Assembler& assembler, const Model& model, ConstraintReport* report) {
+PetscErrorCode checkFormFindingConstraints(Assembler& assembler, const Model& model, const ModelCheckSettings& settings,
+                                           ConstraintReport* report) {
   PetscFunctionBeginUser;
   DistributedMesh& m = assembler.mesh();
   const std::vector<int> sets = formFoundSets(*model.formfinding, model.eprops);
@@ -64,13 +66,14 @@ PetscErrorCode checkFormFindingConstraints(Assembler& assembler, const Model& mo
   Vec U0;
   PetscCall(assembler.createVector(&U0));
   PetscCall(VecSet(U0, 0.0));
-  PetscCall(checkConstraints(assembler, model, U0, LoadState{}, report));
+  PetscCall(checkConstraints(assembler, model, U0, LoadState{}, settings, report));
   PetscCall(VecDestroy(&U0));
   setFormFindingMode(m, sets, false, 0.0, false);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-FormFindingAnalysis::FormFindingAnalysis(Assembler& assembler, const FormFinding& ff, const std::vector<ElementSet>& eprops)
+FormFindingAnalysis::FormFindingAnalysis(Assembler& assembler, const FormFinding& ff, const std::vector<ElementSet>& eprops,
+                                         const FormFindingSettings& settings)
     : asm_(assembler), ff_(ff), eprops_(eprops) {
   DistributedMesh& m = asm_.mesh();
   MPI_Comm comm = m.comm;
@@ -156,9 +159,7 @@ FormFindingAnalysis::FormFindingAnalysis(Assembler& assembler, const FormFinding
   }
   // MUMPS fill-reducing ordering: SCOTCH (ICNTL(7) = 3) unless the user chose one. Measured on the
   // sail (55k unknowns, docs/performance.md): the automatic choice factors 1.6-2.4x slower.
-  PetscBool ordering = PETSC_FALSE;
-  SinewCallThrow(comm, PetscOptionsHasName(nullptr, "ff_", "-mat_mumps_icntl_7", &ordering));
-  if (!ordering) SinewCallThrow(comm, PetscOptionsSetValue(nullptr, "-ff_mat_mumps_icntl_7", "3"));
+  SinewCallThrow(comm, applySolverOptionDefault("-ff_mat_mumps_icntl_7", settings.mumpsOrdering));
   SinewCallThrow(comm, SNESSetFromOptions(snes_));
 }
 

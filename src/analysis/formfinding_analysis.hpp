@@ -53,6 +53,7 @@
 
 #include "analysis/constraint_check.hpp"
 #include "assembly/assembler.hpp"
+#include "settings/settings.hpp"
 #include "sinew/model.hpp"
 
 namespace sinew {
@@ -74,8 +75,10 @@ struct FormFindingStepReport {
 
 class FormFindingAnalysis {
  public:
-  /// eprops: the model's property sets (names in messages, which sets are form-found).
-  FormFindingAnalysis(Assembler& assembler, const FormFinding& ff, const std::vector<ElementSet>& eprops);
+  /// eprops: the model's property sets (names in messages, which sets are form-found). settings:
+  /// -ff_mat_mumps_icntl_7.
+  FormFindingAnalysis(Assembler& assembler, const FormFinding& ff, const std::vector<ElementSet>& eprops,
+                      const FormFindingSettings& settings);
   ~FormFindingAnalysis();
   FormFindingAnalysis(const FormFindingAnalysis&) = delete;
   FormFindingAnalysis& operator=(const FormFindingAnalysis&) = delete;
@@ -149,6 +152,7 @@ class FormFindingAnalysis {
 /// elastic stiffness of every other element. A node no element holds in some direction, a net
 /// without supports (rigid translation), a mast free to swing about the corner it carries, are
 /// null directions of this tangent. The kernels are elastic again afterwards.
-PetscErrorCode checkFormFindingConstraints(Assembler& assembler, const Model& model, ConstraintReport* report);
+PetscErrorCode checkFormFindingConstraints(Assembler& assembler, const Model& model, const ModelCheckSettings& settings,
+                                           ConstraintReport* report);
 
 }  // namespace sinew

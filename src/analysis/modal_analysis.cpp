@@ -84,7 +84,7 @@ double frequencyHz(double omega2, double zeroTol) {
   return -std::sqrt(-omega2) / twoPi;
 }
 
-ModalAnalysis::ModalAnalysis(Assembler& assembler, int nfreq, bool writeResults)
+ModalAnalysis::ModalAnalysis(Assembler& assembler, int nfreq, bool writeResults, const EigenSettings& settings)
     : asm_(assembler), write_(writeResults), nev_(nfreq) {
   MPI_Comm comm = asm_.mesh().comm;
   SinewCallThrow(comm, asm_.createMatrix(&K_));
@@ -103,7 +103,7 @@ ModalAnalysis::ModalAnalysis(Assembler& assembler, int nfreq, bool writeResults)
   SinewCallThrow(comm, STSetMatStructure(st, SUBSET_NONZERO_PATTERN));  // pattern(M) within pattern(K)
   SinewCallThrow(comm, STGetKSP(st, &ksp));
   SinewCallThrow(comm, useDirectSolver(ksp, asm_.mesh()));
-  SinewCallThrow(comm, eigenOperator(asm_, &elementwise_, true));
+  SinewCallThrow(comm, eigenOperator(asm_, settings.eigenOperator, &elementwise_, true));
   if (elementwise_) {
     // K x by the element-wise, rigid-motion-free products (accurate for the soft modes of fine
     // meshes); (K - sigma M) y = b by GMRES preconditioned with the LU of the assembled K - sigma M
@@ -129,12 +129,8 @@ ModalAnalysis::ModalAnalysis(Assembler& assembler, int nfreq, bool writeResults)
     nev_ = static_cast<int>(N);
     SinewCallThrow(comm, EPSSetDimensions(eps_, nev_, ncv > N ? PETSC_DEFAULT : ncv, PETSC_DEFAULT));
   }
-  PetscBool set = PETSC_FALSE;
-  SinewCallThrow(comm, PetscOptionsHasName(nullptr, nullptr, "-eps_target", &set));
-  userTarget_ = set;
-  PetscReal rel = shiftRel_;
-  SinewCallThrow(comm, PetscOptionsGetReal(nullptr, nullptr, "-freq_shift_rel", &rel, &set));
-  shiftRel_ = rel;
+  userTarget_ = settings.userTarget;
+  shiftRel_ = settings.freqShiftRel;
   modes_.resize(nev_, nullptr);
   for (Vec& v : modes_) SinewCallThrow(comm, MatCreateVecs(K_, &v, nullptr));
 }

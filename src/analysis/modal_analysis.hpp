@@ -11,6 +11,7 @@
 
 #include "analysis/step_analysis.hpp"
 #include "assembly/assembler.hpp"
+#include "settings/settings.hpp"
 
 namespace sinew {
 
@@ -31,8 +32,9 @@ double frequencyHz(double omega2, double zeroTol);
 class ModalAnalysis : public StepAnalysis {
  public:
   /// nfreq: number of frequencies (-eps_nev overrides). writeResults: /freq and mesh/mode_freq_<i>
-  /// (false when only the state-space model needs the modes).
-  ModalAnalysis(Assembler& assembler, int nfreq, bool writeResults);
+  /// (false when only the state-space model needs the modes). settings: -eigen_operator,
+  /// -freq_shift_rel, -eps_target given.
+  ModalAnalysis(Assembler& assembler, int nfreq, bool writeResults, const EigenSettings& settings);
   ~ModalAnalysis() override;
   ModalAnalysis(const ModalAnalysis&) = delete;
   ModalAnalysis& operator=(const ModalAnalysis&) = delete;

@@ -7,6 +7,7 @@
 
 #include "assembly/assembler.hpp"
 #include "mesh/distributed_mesh.hpp"
+#include "settings/settings.hpp"
 #include "sinew/petsc_compat.hpp"
 
 namespace sinew {
@@ -102,16 +103,11 @@ inline PetscErrorCode useDirectSolver(KSP ksp, const DistributedMesh& mesh) {
 /// element-wise rigid-motion-free products of Assembler::applyTangent(x, y, true), with inner GMRES
 /// solves preconditioned by the LU of the assembled matrix (docs/modal.md, "Eigenvalues on fine
 /// meshes"); assembled: the assembled matrix and its LU alone. Collective.
-inline PetscErrorCode eigenOperator(Assembler& assembler, bool* elementwise, bool withMultipliers = false) {
+inline PetscErrorCode eigenOperator(Assembler& assembler, OperatorChoice c, bool* elementwise, bool withMultipliers = false) {
   PetscFunctionBeginUser;
   MPI_Comm comm = assembler.mesh().comm;
-  char choice[32] = "auto";
-  PetscCall(PetscOptionsGetString(nullptr, nullptr, "-eigen_operator", choice, sizeof choice, nullptr));
-  const std::string c = choice;
-  if (c != "auto" && c != "elementwise" && c != "assembled")
-    SETERRQ(comm, PETSC_ERR_ARG_WRONG, "-eigen_operator: expected auto, elementwise or assembled, got '%s'", choice);
   const bool available = assembler.elementwiseTangentAvailable();
-  if (c == "elementwise" && !available)
+  if (c == OperatorChoice::Elementwise && !available)
     SETERRQ(comm, PETSC_ERR_ARG_INCOMP, "-eigen_operator elementwise: not available for models with cables or surface pressure");
   // auto with multipliers (rigid elements/modes): the frequency analysis (withMultipliers) uses the
   // element-wise operator once it is made symmetric as the assembled tangent (ModalAnalysis::Kskew_;
@@ -120,7 +116,8 @@ inline PetscErrorCode eigenOperator(Assembler& assembler, bool* elementwise, boo
   int multipliers = 0;
   for (const LocalElement& e : assembler.mesh().elements) multipliers |= e.firstMultiplier >= 0;
   MPI_Allreduce(MPI_IN_PLACE, &multipliers, 1, MPI_INT, MPI_LOR, comm);
-  *elementwise = available && (c == "elementwise" || (c == "auto" && (withMultipliers || !multipliers)));
+  *elementwise = available && (c == OperatorChoice::Elementwise ||
+                               (c == OperatorChoice::Auto && (withMultipliers || !multipliers)));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -9,7 +9,7 @@
 
 namespace sinew {
 
-StaticAnalysis::StaticAnalysis(Assembler& assembler, int loadsteps)
+StaticAnalysis::StaticAnalysis(Assembler& assembler, int loadsteps, const StaticsSettings& settings, const AncfSettings& ancf)
     : asm_(assembler), loadsteps_(loadsteps), lastStep_(loadsteps) {
   MPI_Comm comm = asm_.mesh().comm;
   SinewCallThrow(comm, asm_.createMatrix(&J_));
@@ -33,41 +33,24 @@ StaticAnalysis::StaticAnalysis(Assembler& assembler, int loadsteps)
   KSP ksp;
   SinewCallThrow(comm, SNESGetKSP(snes_, &ksp));
   SinewCallThrow(comm, useDirectSolver(ksp, asm_.mesh()));
-  SinewCallThrow(comm, setUpElementwiseOperator());
+  SinewCallThrow(comm, setUpElementwiseOperator(settings.tangentOperator, ancf));
   SinewCallThrow(comm, SNESSetFromOptions(snes_));
-  PetscReal rtol = forceRtol_;
-  PetscBool set = PETSC_FALSE;
-  PetscInt cuts = maxCuts_;
-  SinewCallThrow(comm, PetscOptionsGetReal(nullptr, nullptr, "-force_rtol", &rtol, &set));
-  SinewCallThrow(comm, PetscOptionsGetInt(nullptr, nullptr, "-max_cuts", &cuts, &set));
-  forceRtol_ = rtol;
-
-  PetscBool adaptive = PETSC_TRUE;
-  PetscInt growIts = growIts_;
-  SinewCallThrow(comm, PetscOptionsGetBool(nullptr, nullptr, "-adaptive_increments", &adaptive, &set));
-  SinewCallThrow(comm, PetscOptionsGetInt(nullptr, nullptr, "-increment_grow_its", &growIts, &set));
-  adaptive_ = adaptive;
-  growIts_ = static_cast<int>(growIts);
-  maxCuts_ = static_cast<int>(cuts);
+  forceRtol_ = settings.forceRtol.value_or(forceRtol_);
+  maxCuts_ = settings.maxCuts;
+  adaptive_ = settings.adaptiveIncrements;
+  growIts_ = settings.incrementGrowIts;
   coordMax_ = asm_.coordinateScale();
   // Newton with mixed stresses (beams): see Assembler::setMixedStressNewton; -newton_mixed_stresses false
   // restores the displacement-based tangent
-  PetscBool mixed = PETSC_TRUE;
-  SinewCallThrow(comm, PetscOptionsGetBool(nullptr, nullptr, "-newton_mixed_stresses", &mixed, &set));
-  asm_.setMixedStressNewton(mixed);
+  asm_.setMixedStressNewton(settings.mixedStresses);
   // The secant predictor extrapolates positions and rotation vectors additively: for beams that
   // stretches the elements (the spurious axial force the mixed-stress tangent keeps out of the
   // tangent, but not out of the residual), and every roll-up measured converged in fewer
   // iterations without it (docs/beam.md). Default: off for models with beams under the
   // mixed-stress Newton, on otherwise.
-  const bool beamsMixed = mixed && asm_.hasMixedStressKernels();
-  PetscBool predictor = beamsMixed ? PETSC_FALSE : PETSC_TRUE;
-  SinewCallThrow(comm, PetscOptionsGetBool(nullptr, nullptr, "-predictor", &predictor, &set));
-  predictor_ = predictor;
-  divergedIts_ = beamsMixed ? 6 : 0;
-  PetscInt divergedIts = divergedIts_;
-  SinewCallThrow(comm, PetscOptionsGetInt(nullptr, nullptr, "-newton_diverged_its", &divergedIts, &set));
-  divergedIts_ = static_cast<int>(divergedIts);
+  const bool beamsMixed = settings.mixedStresses && asm_.hasMixedStressKernels();
+  predictor_ = settings.predictor.value_or(!beamsMixed);
+  divergedIts_ = settings.divergedIts.value_or(beamsMixed ? 6 : 0);
 }
 
 // -tangent_operator elementwise|assembled (default: elementwise for models with ANCF cables).
@@ -77,20 +60,15 @@ StaticAnalysis::StaticAnalysis(Assembler& assembler, int loadsteps)
 // the true residual) on the element-wise operator of Assembler::applyTangent, preconditioned by the
 // LU factorization of the assembled tangent; the few modes the LU gets wrong take a few GMRES
 // iterations. -ksp_* / -pc_* options still act on this solver.
-PetscErrorCode StaticAnalysis::setUpElementwiseOperator() {
+PetscErrorCode StaticAnalysis::setUpElementwiseOperator(OperatorChoice choice, const AncfSettings& ancf) {
   PetscFunctionBeginUser;
   MPI_Comm comm = asm_.mesh().comm;
-  char choice[32] = "auto";
-  PetscBool set = PETSC_FALSE;
-  PetscCall(PetscOptionsGetString(nullptr, nullptr, "-tangent_operator", choice, sizeof choice, &set));
-  const std::string c = choice;
-  if (c != "auto" && c != "elementwise" && c != "assembled")
-    SETERRQ(comm, PETSC_ERR_ARG_WRONG, "-tangent_operator: expected auto, elementwise or assembled, got '%s'", choice);
   const bool available = asm_.elementwiseTangentAvailable();
-  if (c == "elementwise" && !available)
+  if (choice == OperatorChoice::Elementwise && !available)
     SETERRQ(comm, PETSC_ERR_ARG_INCOMP,
             "-tangent_operator elementwise: not available for models with cables or surface pressure");
-  const bool use = available && (c == "elementwise" || (c == "auto" && asm_.mesh().anyAncf));
+  const bool use = available && (choice == OperatorChoice::Elementwise ||
+                                 (choice == OperatorChoice::Auto && asm_.mesh().anyAncf));
   if (!use) PetscFunctionReturn(PETSC_SUCCESS);
   asm_.keepTangentBlocks(true);
   const PetscInt nloc = asm_.mesh().numOwnedUnknowns, N = static_cast<PetscInt>(asm_.mesh().numGlobalUnknowns);
@@ -106,11 +84,8 @@ PetscErrorCode StaticAnalysis::setUpElementwiseOperator() {
   // the soft modes the LU gets wrong (cable_coarse_space.hpp); -ancf_coarse_ratio r sets the fine
   // elements per coarse element (0: none; default ~2 sqrt(ANCF elements) once a scene element is
   // split into at least 1024 elements)
-  PetscInt ratio = CableCoarseSpace::defaultRatio(asm_.mesh(), 1024);
-  PetscCall(PetscOptionsGetInt(nullptr, nullptr, "-ancf_coarse_ratio", &ratio, nullptr));
-  PetscBool cpred = PETSC_TRUE;
-  PetscCall(PetscOptionsGetBool(nullptr, nullptr, "-ancf_coarse_predictor", &cpred, nullptr));
-  coarsePredictor_ = cpred;
+  const int ratio = ancf.coarseRatio ? *ancf.coarseRatio : CableCoarseSpace::defaultRatio(asm_.mesh(), 1024);
+  coarsePredictor_ = ancf.coarsePredictor;
   // rtol 1e-10 (one level) or 1e-6 (with the coarse space): the residual of a fine cable is mostly
   // round-off noise, and the element-wise products are accurate to eps |J_e| |dU_e - t|; at
   // 1,048,576 A1 elements GMRES broke down at rtol 1e-8 (Newton converges on its update whatever
@@ -119,7 +94,7 @@ PetscErrorCode StaticAnalysis::setUpElementwiseOperator() {
   // 1e-10 converged in one load step (9 iterations).
   PetscCall(KSPSetTolerances(ksp, ratio > 0 ? 1e-6 : 1e-10, 1e-300, PETSC_DEFAULT, 200));
   if (ratio > 0) {
-    coarse_ = std::make_unique<CableCoarseSpace>(asm_, static_cast<int>(ratio));
+    coarse_ = std::make_unique<CableCoarseSpace>(asm_, ratio);
     PC pc;
     PetscCall(KSPGetPC(ksp, &pc));
     PetscCall(coarse_->install(pc));

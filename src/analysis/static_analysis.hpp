@@ -11,6 +11,7 @@
 
 #include "analysis/cable_coarse_space.hpp"
 #include "assembly/assembler.hpp"
+#include "settings/settings.hpp"
 
 namespace sinew {
 
@@ -37,8 +38,9 @@ struct StaticsProgress {
 
 class StaticAnalysis {
  public:
-  /// options prefix "" -> -snes_*, -ksp_*, -pc_* act on this solver.
-  StaticAnalysis(Assembler& assembler, int loadsteps);
+  /// options prefix "" -> -snes_*, -ksp_*, -pc_* act on this solver. `settings`: the Newton and load
+  /// stepping settings, `ancf`: the solver of fine ANCF cables.
+  StaticAnalysis(Assembler& assembler, int loadsteps, const StaticsSettings& settings, const AncfSettings& ancf);
   ~StaticAnalysis();
   /// Solves the load steps from U (in: start state, out: last converged state): SPACAR Light's
   /// steps by default (step 1 = initial loads and prescribed motions alone, load factor 0; step k
@@ -92,7 +94,7 @@ class StaticAnalysis {
   PetscErrorCode solveIncrement(Vec U, double lambda, bool* ok, int* its, double* fnorm, SNESConvergedReason* why);
 
   static PetscErrorCode tangentMult(Mat A, Vec x, Vec y);
-  PetscErrorCode setUpElementwiseOperator();
+  PetscErrorCode setUpElementwiseOperator(OperatorChoice choice, const AncfSettings& ancf);
 
   Assembler& asm_;
   const bool* stop_ = nullptr;

@@ -6,9 +6,10 @@
 #include <string>
 #include <vector>
 
-#include "app/flags.hpp"
-#include "app/petsc_flags.hpp"
 #include "scene/nearest_name.hpp"
+#include "settings/flags.hpp"
+#include "settings/petsc_flags.hpp"
+#include "settings/read_settings.hpp"
 #include "sinew/petsc_compat.hpp"
 
 #ifndef SINEW_VERSION
@@ -142,9 +143,10 @@ PetscErrorCode printGroup(MPI_Comm comm, const FlagGroup& g) {
 
 PetscErrorCode helpRequested(PetscBool* help) {
   PetscFunctionBeginUser;
-  PetscBool h = PETSC_FALSE;
+  StartupRequests asked;
   PetscCall(PetscOptionsHasHelp(nullptr, help));
-  PetscCall(PetscOptionsHasName(nullptr, nullptr, "-h", &h));
+  PetscCall(readStartupRequests(&asked));
+  const bool h = asked.shortHelp;
   if (h && !*help) {  // as -help: the usage text, then Sinew's and PETSc's objects' options
     PetscCall(PetscOptionsSetValue(nullptr, "-help", nullptr));
     PetscCall(PetscPrintf(PETSC_COMM_WORLD, "%s", usageText()));
@@ -157,9 +159,10 @@ PetscErrorCode handleCommandLine(MPI_Comm comm, bool* stop, int* exitCode) {
   PetscFunctionBeginUser;
   *stop = false;
   *exitCode = 0;
-  PetscBool version = PETSC_FALSE, help = PETSC_FALSE;
-  PetscCall(PetscOptionsHasName(nullptr, nullptr, "-version", &version));
-  if (version) {  // PETSc and SLEPc have printed their banners; no run
+  PetscBool help = PETSC_FALSE;
+  StartupRequests asked;
+  PetscCall(readStartupRequests(&asked));
+  if (asked.version) {  // PETSc and SLEPc have printed their banners; no run
     PetscCall(printVersion(comm));
     *stop = true;
     PetscFunctionReturn(PETSC_SUCCESS);

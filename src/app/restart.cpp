@@ -132,19 +132,6 @@ std::string sceneFingerprint(const Model& model, long feNodes, long feElements) 
   return s.str();
 }
 
-std::string restartOption() {
-  char buf[PETSC_MAX_PATH_LEN] = "";
-  PetscBool set = PETSC_FALSE;
-  PetscOptionsGetString(nullptr, nullptr, "-restart", buf, sizeof buf, &set);
-  return set ? std::string(buf) : std::string();
-}
-
-int stopAfterStepOption() {
-  PetscInt k = 0;
-  PetscOptionsGetInt(nullptr, nullptr, "-stop_after_step", &k, nullptr);
-  return static_cast<int>(k);
-}
-
 std::vector<double> formfindingRows(const std::vector<FormFindingStepReport>& reports) {
   std::vector<double> rows;
   for (const auto& r : reports) {
@@ -178,7 +165,7 @@ std::vector<FormFindingStepReport> formfindingReports(const std::vector<double>&
 }
 
 Restart::Restart(MPI_Comm comm, const std::string& path, const std::string& output, const std::string& fingerprint,
-                 const Model& model, const Plan& plan)
+                 const Model& model, const Plan& plan, DynamicsScheme scheme)
     : comm_(comm) {
   // (a killed run leaves its last committed state under its final name; `path`.part is the copy
   // being written, inconsistent between two commits, and never read)
@@ -202,7 +189,7 @@ Restart::Restart(MPI_Comm comm, const std::string& path, const std::string& outp
     src = copy_;
   }
   try {
-    check(comm, src, path, fingerprint, model, plan);
+    check(comm, src, path, fingerprint, model, plan, scheme);
   } catch (...) {
     removeCopy();
     throw;
@@ -210,7 +197,7 @@ Restart::Restart(MPI_Comm comm, const std::string& path, const std::string& outp
 }
 
 void Restart::check(MPI_Comm comm, const std::string& src, const std::string& path, const std::string& fingerprint,
-                    const Model& model, const Plan& plan) {
+                    const Model& model, const Plan& plan, DynamicsScheme scheme) {
   try {
     reader_ = std::make_unique<CheckpointReader>(comm, src);
   } catch (const std::exception& e) {
@@ -293,9 +280,7 @@ void Restart::check(MPI_Comm comm, const std::string& src, const std::string& pa
         << ": a restart continues with the same time step and scheme (a later tend is fine)";
       throw SceneError("-restart", m.str());
     }
-    char scheme[64] = "arnold_bruls";
-    PetscOptionsGetString(nullptr, nullptr, "-dynamics_scheme", scheme, sizeof scheme, nullptr);
-    if (std::string(scheme) == "tsalpha2")
+    if (scheme == DynamicsScheme::TSAlpha2)
       throw SceneError("-restart", "-dynamics_scheme tsalpha2 keeps its state inside PETSc TS and cannot continue from a "
                                    "checkpoint; restart with the default scheme arnold_bruls");
   }

@@ -31,19 +31,14 @@ namespace sinew {
 /// supports, loads, form-finding block) that a restart compares.
 std::string sceneFingerprint(const Model& model, long feNodes, long feElements);
 
-/// -restart value ("" when not given).
-std::string restartOption();
-/// -stop_after_step value (0 when not given).
-int stopAfterStepOption();
-
 class Restart {
  public:
   /// Opens the checkpoint of `path` and checks it against
   /// this run: fingerprint, analysis kind, dynamics dt and spectral radius. When the source is
   /// the output file itself (or its .part), it is read from a copy. Throws SceneError (exit 2)
-  /// for a refused restart or an unreadable source.
+  /// for a refused restart or an unreadable source. scheme: this run's -dynamics_scheme.
   Restart(MPI_Comm comm, const std::string& path, const std::string& output, const std::string& fingerprint,
-          const Model& model, const Plan& plan);
+          const Model& model, const Plan& plan, DynamicsScheme scheme);
   ~Restart();
 
   CheckpointPhase phase() const { return reader_->phase(); }
@@ -76,7 +71,7 @@ class Restart {
 
  private:
   void check(MPI_Comm comm, const std::string& src, const std::string& path, const std::string& fingerprint,
-             const Model& model, const Plan& plan);
+             const Model& model, const Plan& plan, DynamicsScheme scheme);
   void removeCopy();
   MPI_Comm comm_;
   std::string copy_;  ///< temporary copy of the source (removed at the end), or ""

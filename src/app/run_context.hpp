@@ -15,6 +15,7 @@
 #include "app/summary.hpp"
 #include "assembly/assembler.hpp"
 #include "output/checkpoint.hpp"
+#include "settings/settings.hpp"
 #include "sinew/model.hpp"
 #include "sinew/result_file.hpp"
 
@@ -26,6 +27,7 @@ struct RunContext {
   MPI_Comm comm = MPI_COMM_WORLD;
   Model& model;  ///< global node/element arrays are released after set-up; eprops, opt, formfinding, sensors stay
   const Plan& plan;
+  const Settings& settings;  ///< every flag's setting (read once at start-up)
   Assembler& assembler;
   StepResults& results;
   ResultFile& file;
@@ -56,8 +58,8 @@ struct RunContext {
   int stopAfterRows = 0;
   static constexpr int kStopAfterStep = -1;  ///< interruptSignal of a -stop_after_step stop
 
-  RunContext(Model& m, const Plan& p, Assembler& a, StepResults& r, ResultFile& f)
-      : model(m), plan(p), assembler(a), results(r), file(f), progress(MPI_COMM_WORLD, m.opt.silent) {}
+  RunContext(Model& m, const Plan& p, const Settings& s, Assembler& a, StepResults& r, ResultFile& f)
+      : model(m), plan(p), settings(s), assembler(a), results(r), file(f), progress(MPI_COMM_WORLD, m.opt.silent) {}
 
   /// A converged step of a step loop.
   struct Step {

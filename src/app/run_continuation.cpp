@@ -12,7 +12,8 @@ PetscErrorCode runContinuation(RunContext& ctx) {
   PetscFunctionBeginUser;
   const double t0 = MPI_Wtime();
   const double outBefore = ctx.times.output, anaBefore = ctx.times.analyses;
-  ContinuationAnalysis path(ctx.assembler, *ctx.model.opt.continuation);
+  ContinuationAnalysis path(ctx.assembler, *ctx.model.opt.continuation, ctx.settings.continuation,
+                            ctx.settings.statics.maxCuts);
   std::vector<double> negative;
   path.setStopFlag(&ctx.stop);
   path.setStartCarriesInitialLoads(ctx.model.formfinding.has_value());  // runs after form finding

@@ -27,14 +27,13 @@ PetscErrorCode runDynamics(RunContext& ctx) {
   SensorAnalysis* sensors = nullptr;
   for (auto& a : ctx.stepAnalyses)
     if (auto* s = dynamic_cast<SensorAnalysis*>(a.get())) sensors = s;
-  PetscBool energy = PETSC_FALSE;
-  PetscCall(PetscOptionsGetBool(nullptr, nullptr, "-dynamics_energy", &energy, nullptr));
+  const bool energy = ctx.settings.dynamics.energy;
   bool energyOk = true;
   double energy0 = 0, maxDrift = 0, work = 0, power = 0, tPrev = 0;
   std::unique_ptr<EnergyMomentum> em;
   if (energy) em = std::make_unique<EnergyMomentum>(ctx.assembler);
 
-  DynamicAnalysis dyn(ctx.assembler, opts);
+  DynamicAnalysis dyn(ctx.assembler, opts, ctx.settings);
   dyn.setStopFlag(&ctx.stop);
   dyn.setResultFile(&ctx.file);
   if (ctx.restart && ctx.restart->phase() == CheckpointPhase::Dynamics) {

@@ -79,7 +79,7 @@ PetscErrorCode runFormFinding(RunContext& ctx) {
   const double t0 = MPI_Wtime();
   const double outBefore = ctx.times.output, anaBefore = ctx.times.analyses;
   const FormFinding& ff = *ctx.model.formfinding;
-  FormFindingAnalysis analysis(ctx.assembler, ff, ctx.model.eprops);
+  FormFindingAnalysis analysis(ctx.assembler, ff, ctx.model.eprops, ctx.settings.formfinding);
   analysis.setStopFlag(&ctx.stop);
   analysis.setFailureHint(ctx.formfindingHint);
   if (ctx.restart && ctx.restart->phase() == CheckpointPhase::FormFinding)

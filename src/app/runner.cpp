@@ -32,28 +32,15 @@
 #include "mesh/fe_mesh.hpp"
 #include "output/output_target.hpp"
 #include "scene/scene_reader.hpp"
+#include "settings/read_settings.hpp"
 #include "sinew/result_file.hpp"
 
 namespace sinew {
 namespace {
 
-/// opt fields given as flags (-loadsteps 40) override the scene.
-OptionOverride petscOverrides() {
-  return [](const std::string& name) -> std::optional<std::string> {
-    char buf[4096] = "";
-    PetscBool set = PETSC_FALSE;
-    PetscOptionsGetString(nullptr, nullptr, ("-" + name).c_str(), buf, sizeof(buf), &set);
-    if (!set) return std::nullopt;
-    return std::string(buf);
-  };
-}
-
 /// The result file: -o, else <opt.filename or scene stem>.h5. An -o without a value gives "".
-std::string outputPath(const Model& model, const std::string& scenePath) {
-  char buf[PETSC_MAX_PATH_LEN] = "";
-  PetscBool set = PETSC_FALSE;
-  PetscOptionsGetString(nullptr, nullptr, "-o", buf, sizeof(buf), &set);
-  if (set) return buf;
+std::string outputPath(const Model& model, const std::string& scenePath, const OutputSettings& output) {
+  if (output.file) return *output.file;
   const std::string stem = model.opt.filename.empty() ? std::filesystem::path(scenePath).stem().string() : model.opt.filename;
   return stem + ".h5";
 }
@@ -215,22 +202,21 @@ PetscErrorCode finiteAtReference(Assembler& assembler, bool* finite, std::string
 /// stiffness of the form-found elements), otherwise the statics tangent at the reference state.
 /// A singular model prints its message and sets *exitCode = 2.
 PetscErrorCode checkModelBeforeRun(const Model& model, const Plan& plan, Assembler& assembler, const std::string& h5,
-                                   ConstraintCheckSetting* setting, Timings* times, int* exitCode) {
+                                   const ModelCheckSettings& settings, ConstraintCheckSetting* setting, Timings* times,
+                                   int* exitCode) {
   PetscFunctionBeginUser;
   const DistributedMesh& dmesh = assembler.mesh();
   MPI_Comm comm = dmesh.comm;
-  PetscBool checkModel = PETSC_TRUE;
-  PetscCall(PetscOptionsGetBool(nullptr, nullptr, "-constraint_check", &checkModel, nullptr));
+  bool checkModel = settings.enabled;
   // The check factors the tangent once (MUMPS): above this size it would cost as much memory as a
   // direct solve, so large models (often solved iteratively) skip it up front; a failing linear
   // solve still triggers it as a diagnostic.
-  PetscInt checkMax = 200000;
-  PetscCall(PetscOptionsGetInt(nullptr, nullptr, "-constraint_check_max_unknowns", &checkMax, nullptr));
+  const long checkMax = settings.maxUnknowns;
   if (checkModel && dmesh.numGlobalUnknowns > checkMax) {
-    checkModel = PETSC_FALSE;
+    checkModel = false;
     if (!model.opt.silent)
       PetscCall(PetscPrintf(comm, "  note: constraint check skipped (%ld unknowns > -constraint_check_max_unknowns %ld)\n",
-                            dmesh.numGlobalUnknowns, static_cast<long>(checkMax)));
+                            dmesh.numGlobalUnknowns, checkMax));
   }
   setting->enabled = checkModel;
   const bool formfinding = plan.formfinding && model.formfinding.has_value();
@@ -250,7 +236,7 @@ PetscErrorCode checkModelBeforeRun(const Model& model, const Plan& plan, Assembl
   ConstraintReport check;
   PetscCall(PetscLogEventBegin(SinewEvents::get().constraintCheck, 0, 0, 0, 0));
   if (formfinding) {
-    PetscCall(checkFormFindingConstraints(assembler, model, &check));
+    PetscCall(checkFormFindingConstraints(assembler, model, settings, &check));
     if (check.singular)
       check.message += "  (found in the form-finding problem: the form-found cables and membranes carry their prestress "
                        "only, as geometric stiffness; every other element is elastic)\n";
@@ -258,7 +244,7 @@ PetscErrorCode checkModelBeforeRun(const Model& model, const Plan& plan, Assembl
     Vec U0;
     PetscCall(assembler.createVector(&U0));
     PetscCall(VecSet(U0, 0.0));
-    PetscCall(checkConstraints(assembler, model, U0, LoadState{}, &check));
+    PetscCall(checkConstraints(assembler, model, U0, LoadState{}, settings, &check));
     PetscCall(VecDestroy(&U0));
   }
   PetscCall(PetscLogEventEnd(SinewEvents::get().constraintCheck, 0, 0, 0, 0));
@@ -287,7 +273,7 @@ PetscErrorCode checkLoadedModelAfterFormFinding(RunContext& ctx, const Constrain
   ConstraintReport check;
   const double tCheck = MPI_Wtime();
   PetscCall(PetscLogEventBegin(SinewEvents::get().constraintCheck, 0, 0, 0, 0));
-  PetscCall(checkConstraints(ctx.assembler, ctx.model, ctx.U, LoadState{}, &check));
+  PetscCall(checkConstraints(ctx.assembler, ctx.model, ctx.U, LoadState{}, ctx.settings.check, &check));
   PetscCall(PetscLogEventEnd(SinewEvents::get().constraintCheck, 0, 0, 0, 0));
   ctx.times.check += MPI_Wtime() - tCheck;
   if (!check.singular) PetscFunctionReturn(PETSC_SUCCESS);
@@ -314,6 +300,9 @@ PetscErrorCode runScene(int argc, char** argv, int* exitCode) {
     PetscFunctionReturn(PETSC_SUCCESS);
   }
   const std::string scenePath = argv[1];
+  // every flag's setting, read once (the command line was checked by handleCommandLine)
+  Settings settings;
+  PetscCall(readSettings(nullptr, &settings));
   Timings times;
   double t0 = MPI_Wtime();
 
@@ -325,12 +314,14 @@ PetscErrorCode runScene(int argc, char** argv, int* exitCode) {
   std::string fingerprint;  // of the scene, stored with every checkpoint (app/restart.hpp)
   PetscCall(PetscLogEventBegin(SinewEvents::get().setup, 0, 0, 0, 0));
   try {
-    model = readScene(scenePath, petscOverrides());
+    model = readScene(scenePath, sceneOverrides(settings));
     plan = makePlan(model);
     const FeMesh fe = discretize(model);
-    dmesh = std::make_unique<DistributedMesh>(distributeMesh(comm, model, fe, makeKernelFactory(model)));
-    if (plan.dynamics) DynamicAnalysis::checkScheme(*dmesh);
-    if (plan.dynamics && model.opt.dynamics) DynamicAnalysis::checkStepControl(*dmesh, *model.opt.dynamics);
+    dmesh = std::make_unique<DistributedMesh>(
+        distributeMesh(comm, model, fe, makeKernelFactory(model, settings.dynamics.beamMass)));
+    if (plan.dynamics) DynamicAnalysis::checkScheme(*dmesh, settings.dynamics.scheme);
+    if (plan.dynamics && model.opt.dynamics)
+      DynamicAnalysis::checkStepControl(*dmesh, *model.opt.dynamics, settings.dynamics);
     fingerprint = sceneFingerprint(model, static_cast<long>(fe.X.size()), static_cast<long>(fe.elements.size()));
   } catch (const SceneError& ex) {
     setupError = std::string("error: ") + ex.what();
@@ -350,7 +341,7 @@ PetscErrorCode runScene(int argc, char** argv, int* exitCode) {
 
   // The result file is checked and locked before any analysis (a directory, a device, the scene
   // itself, a missing directory, another run writing it: exit 1; -o without a value: exit 2).
-  const std::string h5 = outputPath(model, scenePath);
+  const std::string h5 = outputPath(model, scenePath, settings.output);
   if (h5.empty()) {
     PetscCall(PetscPrintf(comm, "error: -o needs a file name (-o result.h5)\n"));
     *exitCode = 2;
@@ -364,10 +355,10 @@ PetscErrorCode runScene(int argc, char** argv, int* exitCode) {
   }
   // -restart old.h5: the checkpoint must belong to this scene (refused with exit 2 before any file is written)
   std::unique_ptr<Restart> restart;
-  if (const std::string from = restartOption(); !from.empty() && !model.opt.showinputonly) {
+  if (const std::string& from = settings.output.restart; !from.empty() && !model.opt.showinputonly) {
     std::string error;
     try {
-      restart = std::make_unique<Restart>(comm, from, h5, fingerprint, model, plan);
+      restart = std::make_unique<Restart>(comm, from, h5, fingerprint, model, plan, settings.dynamics.scheme);
     } catch (const std::exception& ex) {
       error = std::string("error: ") + ex.what();
     }
@@ -379,7 +370,7 @@ PetscErrorCode runScene(int argc, char** argv, int* exitCode) {
       PetscFunctionReturn(PETSC_SUCCESS);
     }
   }
-  Assembler assembler(*dmesh, model.opt.gravity);
+  Assembler assembler(*dmesh, model.opt.gravity, settings.statics.assemblyCoo);
   StepResults results(assembler, {plan.stress, plan.stressPerElement});
   ResultLayout layout;
   results.fillLayout(layout);
@@ -436,16 +427,14 @@ PetscErrorCode runScene(int argc, char** argv, int* exitCode) {
   ConstraintCheckSetting check;
   {
     PhaseScope checkPhase("the constraint check");
-    PetscCall(checkModelBeforeRun(model, plan, assembler, h5, &check, &times, exitCode));
+    PetscCall(checkModelBeforeRun(model, plan, assembler, h5, settings.check, &check, &times, exitCode));
   }
   if (*exitCode) PetscFunctionReturn(PETSC_SUCCESS);
 
   std::unique_ptr<ResultFile> file;
   try {
     file = std::make_unique<ResultFile>(comm, h5, layout);
-    PetscReal syncInterval = 10;
-    PetscCall(PetscOptionsGetReal(nullptr, nullptr, "-output_fsync_interval", &syncInterval, nullptr));
-    file->setSyncInterval(syncInterval);
+    file->setSyncInterval(settings.output.fsyncInterval);
   } catch (const std::exception& ex) {
     PetscCall(PetscPrintf(comm, "error: cannot create %s: %s\n", h5.c_str(), ex.what()));
     *exitCode = 1;
@@ -454,7 +443,7 @@ PetscErrorCode runScene(int argc, char** argv, int* exitCode) {
   std::vector<double> p0;
   for (const Vec3& x : initialPositions) p0.insert(p0.end(), x.begin(), x.end());
 
-  RunContext ctx(model, plan, assembler, results, *file);
+  RunContext ctx(model, plan, settings, assembler, results, *file);
   ctx.formfindingHint = formfindingHint;
   bool modelError = false;  // a singular tangent found when Newton's linear solve failed
   ctx.comm = comm;
@@ -468,10 +457,9 @@ PetscErrorCode runScene(int argc, char** argv, int* exitCode) {
     PetscCall(addStepAnalyses(ctx));
   }
   CheckpointWriter checkpointWriter(assembler, fingerprint);
-  PetscBool writeCheckpoints = PETSC_TRUE;  // -checkpoint false: no /checkpoint (the run cannot be continued)
-  PetscCall(PetscOptionsGetBool(nullptr, nullptr, "-checkpoint", &writeCheckpoints, nullptr));
-  if (writeCheckpoints) ctx.checkpoint = &checkpointWriter;
-  ctx.stopAfterRows = stopAfterStepOption();
+  // -checkpoint false: no /checkpoint (the run cannot be continued)
+  if (settings.output.checkpoint) ctx.checkpoint = &checkpointWriter;
+  ctx.stopAfterRows = settings.output.stopAfterStep;
   ctx.restart = restart.get();
   if (restart && ctx.ioError.empty()) {
     // the earlier run's rows and state, committed with its checkpoint before the analysis goes on
@@ -533,7 +521,7 @@ PetscErrorCode runScene(int argc, char** argv, int* exitCode) {
       // a restart keeps the earlier run's ramp (its loadsteps and opt.load_ramp, checked equal by Restart):
       // -loadsteps is the last step, the load factor of step k stays StaticAnalysis::stepFactor(k)
       const int ramp = resumeStatics ? restart->rampLoadsteps() : model.opt.loadsteps;
-      StaticAnalysis statics(assembler, ramp);
+      StaticAnalysis statics(assembler, ramp, settings.statics, settings.ancf);
       statics.setLastStep(model.opt.loadsteps);
       statics.setUnloaded(unloaded(model, *dmesh, assembler));
       statics.setStopFlag(&ctx.stop);
@@ -589,7 +577,7 @@ PetscErrorCode runScene(int argc, char** argv, int* exitCode) {
           ls.loadFactor = ls.time = ctx.reports.empty() ? 0.0 : ctx.reports.back().loadFactor;
           ConstraintReport report;
           PhaseScope checkAfter("the constraint check after the failed step");
-          PetscCall(checkConstraints(assembler, model, ctx.U, ls, &report));
+          PetscCall(checkConstraints(assembler, model, ctx.U, ls, settings.check, &report));
           if (report.singular) {
             ctx.failure += "\n" + report.message;
             modelError = true;

@@ -57,7 +57,8 @@ bool Assembler::bodyAcceleration(const LocalElement& el, const LoadState& ls, Ve
   return true;
 }
 
-Assembler::Assembler(DistributedMesh& mesh, const std::optional<Vec3>& gravity) : mesh_(mesh), gravity_(gravity) {
+Assembler::Assembler(DistributedMesh& mesh, const std::optional<Vec3>& gravity, bool cooAssembly)
+    : mesh_(mesh), gravity_(gravity) {
   const int nl = static_cast<int>(mesh_.nodes.size());
   state_.assign(12 * static_cast<size_t>(nl), 0.0);
   disp_.assign(3 * static_cast<size_t>(nl), 0.0);
@@ -82,11 +83,9 @@ Assembler::Assembler(DistributedMesh& mesh, const std::optional<Vec3>& gravity) 
   SinewCallThrow(mesh_.comm, createVector(&uWork_));
   SinewCallThrow(mesh_.comm, VecDuplicate(uWork_, &fWork_));
   SinewCallThrow(mesh_.comm, createFullVector(&fullWork_));
-  PetscBool coo = PETSC_TRUE;
-  SinewCallThrow(mesh_.comm, PetscOptionsGetBool(nullptr, nullptr, "-assembly_coo", &coo, nullptr));
   // the same decision on every rank (the COO calls are collective): no rank has cables, pressure
   // elements or ANCF nodes (their node and load tangents are added outside the element blocks)
-  int cooOk = coo && !mesh_.anyAncf && pressureElems_.empty() && cableElems_.empty();
+  int cooOk = cooAssembly && !mesh_.anyAncf && pressureElems_.empty() && cableElems_.empty();
   MPI_Allreduce(MPI_IN_PLACE, &cooOk, 1, MPI_INT, MPI_LAND, mesh_.comm);
   cooAssembly_ = cooOk != 0;
   std::vector<PetscInt> l2g(mesh_.numLocalUnknowns());

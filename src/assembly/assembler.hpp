@@ -68,7 +68,9 @@ struct AssemblyCounters {
 
 class Assembler {
  public:
-  Assembler(DistributedMesh& mesh, const std::optional<Vec3>& gravity);
+  /// cooAssembly: the Jacobian assembled by COO where the model allows it (-assembly_coo,
+  /// StaticsSettings::assemblyCoo), else by MatSetValuesLocal.
+  Assembler(DistributedMesh& mesh, const std::optional<Vec3>& gravity, bool cooAssembly);
   ~Assembler();
   Assembler(const Assembler&) = delete;
   Assembler& operator=(const Assembler&) = delete;

@@ -47,7 +47,7 @@ double constraintScaleOf(const Model& model) {
   return scale > 0 ? scale : 1.0;
 }
 
-KernelFactory makeKernelFactory(const Model& model) {
+KernelFactory makeKernelFactory(const Model& model, BeamMass beamMass) {
   const double scale = constraintScaleOf(model);
   // membrane pressures per set, for the assembler's follower-load terms
   std::vector<SetPressure> pressures(model.eprops.size());
@@ -69,9 +69,7 @@ KernelFactory makeKernelFactory(const Model& model) {
     }
   }
   // -beam_mass lumped: beams give their inertia to their nodes (docs/dynamics.md, "Free-floating beams")
-  char beamMass[16] = "consistent";
-  PetscOptionsGetString(nullptr, nullptr, "-beam_mass", beamMass, sizeof(beamMass), nullptr);
-  const bool lumped = std::string(beamMass) == "lumped";
+  const bool lumped = beamMass == BeamMass::Lumped;
   return [scale, ancf, lumped](const Model& m, const FeMesh& fe, int e) -> std::unique_ptr<ElementKernel> {
     const FeElement& el = fe.elements[e];
     const int set = el.set;

@@ -1,12 +1,14 @@
 // Chooses and constructs the element kernel of each FE element from the scene's property sets.
 #pragma once
 #include "mesh/distributed_mesh.hpp"
+#include "settings/settings.hpp"
 
 namespace sinew {
 
 /// Kernel factory for a model: beams (flexible, released and rigid modes; elements in no set are
-/// rigid and massless), cables, membranes and ANCF cables.
-KernelFactory makeKernelFactory(const Model& model);
+/// rigid and massless), cables, membranes and ANCF cables. beamMass: the beams' inertia (-beam_mass,
+/// DynamicsSettings::beamMass).
+KernelFactory makeKernelFactory(const Model& model, BeamMass beamMass);
 
 /// Stiffness scale used for the rows of rigid-mode constraints: the largest EA / L of the
 /// flexible beams (1 when there are none), so multipliers are forces of the model's size.

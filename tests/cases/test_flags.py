@@ -1,5 +1,5 @@
 """Command-line flags (issue 13 item 7), on 1 and 2 ranks, every run under a timeout.
-- A flag that is neither Sinew's (src/app/flags.cpp, including every scene opt field) nor a
+- A flag that is neither Sinew's (src/settings/flags.cpp: the settings fields and every scene opt field) nor a
   PETSc/SLEPc option is an error: exit 2, one message printed once (rank 0), with the nearest
   Sinew flag; from the command line, an -options_file or PETSC_OPTIONS alike.
 - Every Sinew flag's value is checked before the scene is read: exit 2, a message naming the flag

@@ -1,10 +1,10 @@
-// The flag registry (src/app/flags.*): value checks, and which names count as PETSc/SLEPc options.
+// The flag registry (src/settings/flags.*): value checks, and which names count as PETSc/SLEPc options.
 #include <gtest/gtest.h>
 
 #include <set>
 
-#include "app/flags.hpp"
-#include "app/petsc_flags.hpp"
+#include "settings/flags.hpp"
+#include "settings/petsc_flags.hpp"
 
 using namespace sinew;
 

@@ -1,7 +1,8 @@
 // The registry of every command-line flag Sinew reads (flags.cpp): name, accepted values, default,
-// one-line meaning and -help group. A new flag is one line in sinewFlags() (flags.cpp); the
-// start-up check (command_line.cpp) rejects any option that is neither in the registry nor a
-// PETSc/SLEPc option, and -help lists the registry.
+// one-line meaning and -help group. It is made from the settings' field tables (fields.cpp: a new
+// flag is a settings field and one line there) and the scene opt fields; the start-up check
+// (command_line.cpp) rejects any option that is neither in the registry nor a PETSc/SLEPc option,
+// and -help lists the registry.
 #pragma once
 #include <string>
 #include <vector>
@@ -35,6 +36,11 @@ struct FlagGroup {
   const char* doc;
 };
 
+/// The -help blocks (flagGroups() gives their order).
+namespace flag_groups {
+extern const FlagGroup output, scene, statics, ancf, check, modal, compliance, dynamics, formfinding;
+}  // namespace flag_groups
+
 struct Flag {
   std::string name;          ///< without the leading '-'
   FlagValue value;
@@ -43,8 +49,9 @@ struct Flag {
   std::string help;          ///< one line
 };
 
-/// Every flag Sinew reads: its own flags, the PETSc/SLEPc options it reads itself, and every
-/// scene opt field (sceneOptionDocs(): -loadsteps 40 overrides opt.loadsteps).
+/// Every flag Sinew reads: the settings' fields (its own flags and the PETSc/SLEPc options it reads
+/// or documents, fields.cpp) and every scene opt field (sceneOptionDocs(): -loadsteps 40 overrides
+/// opt.loadsteps).
 const std::vector<Flag>& sinewFlags();
 /// The registry entry of `name` (without '-', any case), or nullptr.
 const Flag* findFlag(const std::string& name);

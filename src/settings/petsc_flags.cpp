@@ -1,6 +1,6 @@
 // The lists below come from the option names compiled into libpetsc 3.18.5 and libslepc 3.18.2
 // (`strings lib*.so | grep '^-'`: 2303 names) and PETSc's -help output.
-#include "app/petsc_flags.hpp"
+#include "settings/petsc_flags.hpp"
 
 #include <algorithm>
 

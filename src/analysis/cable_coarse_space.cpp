@@ -8,6 +8,7 @@
 #include "analysis/solver_defaults.hpp"
 #include "elements/ancf_cable2d.hpp"
 #include "mesh/collective_error.hpp"
+#include "solvers/newton_test.hpp"
 
 namespace sinew {
 
@@ -394,17 +395,28 @@ PetscErrorCode CableCoarseSpace::coarseJacobian(SNES, Vec u, Mat, Mat, void* ctx
 // grows with the fine cable's n: measured 1.5e-3 of a start residual of 135 at 16384 elements, 1.7
 // of 68 at 262144; it is a self-equilibrated moment pattern that moves the solution by nothing
 // measurable): the Newton update below 1e-8 of |u|, or below 1e-5 and no longer shrinking tenfold
+// (the Newton test's update rule, solvers/newton_test.hpp)
 PetscErrorCode CableCoarseSpace::coarseConverged(SNES snes, PetscInt it, PetscReal xnorm, PetscReal snorm,
                                                  PetscReal fnorm, SNESConvergedReason* reason, void* ctx) {
   PetscFunctionBeginUser;
-  auto* self = static_cast<CableCoarseSpace*>(ctx);
-  PetscCall(SNESConvergedDefault(snes, it, xnorm, snorm, fnorm, reason, nullptr));
-  if (*reason == SNES_CONVERGED_SNORM_RELATIVE) *reason = SNES_CONVERGED_ITERATING;  // decided below
-  const double rel = xnorm > 0 ? snorm / xnorm : 1.0;
-  if (*reason == SNES_CONVERGED_ITERATING && it > 1 && updateConverged(rel, self->relPrev_, 1e-8, 1e-5))
-    *reason = SNES_CONVERGED_SNORM_RELATIVE;
-  self->relPrev_ = it > 0 ? rel : 1.0;
+  NewtonIterate x;
+  x.it = it;
+  x.xnorm = xnorm;
+  x.snorm = snorm;
+  x.fnorm = fnorm;
+  PetscCall(static_cast<CableCoarseSpace*>(ctx)->newtonTest_.judge(snes, x, reason));
   PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+NewtonRules CableCoarseSpace::newtonRules() {
+  NewtonRules r;
+  r.snes = NewtonRules::Snes::KeepButUpdate;  // an update below -coarse_snes_stol is decided by the update rule
+  r.snesUpdateForceRtol = 0;
+  r.update = NewtonRules::Update::Relative;
+  r.updateTight = 1e-8;
+  r.updateLoose = 1e-5;
+  r.updateFloorFactor = 0;  // at any residual
+  return r;
 }
 
 PetscErrorCode CableCoarseSpace::predict(Vec U, const LoadState& ls) {

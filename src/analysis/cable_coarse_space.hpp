@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "assembly/assembler.hpp"
+#include "solvers/newton_test.hpp"
 
 namespace sinew {
 
@@ -64,7 +65,8 @@ class CableCoarseSpace {
   Vec U0_ = nullptr, Uw_ = nullptr, Fw_ = nullptr, uc_ = nullptr, fc_ = nullptr;
   LoadState ls_;
   long predictorIts_ = 0;
-  double relPrev_ = 1.0;
+  static NewtonRules newtonRules();
+  NewtonTest newtonTest_{newtonRules()};  ///< the coarse predictor's Newton test
   static PetscErrorCode coarseConverged(SNES, PetscInt it, PetscReal xnorm, PetscReal snorm, PetscReal fnorm,
                                         SNESConvergedReason* reason, void* ctx);
 

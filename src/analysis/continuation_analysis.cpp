@@ -1,7 +1,6 @@
 #include "analysis/continuation_analysis.hpp"
 
 #include <algorithm>
-#include <cfloat>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -11,6 +10,7 @@
 
 #include "analysis/solver_defaults.hpp"
 #include "mesh/collective_error.hpp"
+#include "solvers/newton_test.hpp"
 
 namespace sinew {
 
@@ -136,8 +136,27 @@ PetscErrorCode ContinuationAnalysis::solveFixedLoad(Vec U, double lambda, double
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+// The path-following rules of the Newton test (solvers/newton_test.hpp): from the first update on,
+// the residual below the tolerance or below its round-off floor 8 eps ||K||_inf max(|X|, 1).
+NewtonRules ContinuationAnalysis::newtonRules() {
+  NewtonRules r;
+  r.forceRtol = 1.0;  // the iterate's scale is the tolerance itself
+  r.forceFromIteration = 1;
+  r.belowFloor = true;
+  return r;
+}
+
+NewtonIterate ContinuationAnalysis::iterate(int k, double rnorm, double tol, double jnorm) const {
+  NewtonIterate x;
+  x.it = k;
+  x.fnorm = rnorm;
+  x.scale = tol;
+  x.floor = roundoffFloor(jnorm, std::max(asm_.coordinateScale(), 1.0));
+  return x;
+}
+
 // Newton at a fixed load state (a Jacobian per iteration, MUMPS): converged when the residual is
-// below tol or its round-off floor 8 eps ||K||_inf max(|X|, 1); at most maxIts iterations.
+// below tol or its round-off floor (newtonRules); at most maxIts iterations.
 PetscErrorCode ContinuationAnalysis::newton(Vec U, const LoadState& ls, double tol, int maxIts, bool* ok) {
   PetscFunctionBeginUser;
   *ok = false;
@@ -147,8 +166,7 @@ PetscErrorCode ContinuationAnalysis::newton(Vec U, const LoadState& ls, double t
     PetscReal rn;
     PetscCall(VecNorm(R_, NORM_2, &rn));
     if (!std::isfinite(rn)) break;
-    const double floor = 8.0 * DBL_EPSILON * jnorm * std::max(asm_.coordinateScale(), 1.0);
-    if (k > 0 && rn <= std::max(tol, floor)) {
+    if (newtonTest_.judge(iterate(k, rn, tol, jnorm)) > 0) {
       *ok = true;
       break;
     }
@@ -415,7 +433,6 @@ PetscErrorCode ContinuationAnalysis::step(Vec U, double* lambda, double ds, Vec 
     *lambda = lambda0 + dl;
   }
   // corrector
-  const double floor = 8.0 * DBL_EPSILON * jnorm * std::max(asm_.coordinateScale(), 1.0);
   for (int k = 0; k < maxIts_ && kr >= 0 && std::isfinite(*lambda); ++k) {
     LoadState ls;
     ls.loadFactor = ls.time = *lambda;
@@ -423,8 +440,8 @@ PetscErrorCode ContinuationAnalysis::step(Vec U, double* lambda, double ds, Vec 
     PetscReal rnorm;
     PetscCall(VecNorm(R_, NORM_2, &rnorm));
     if (!std::isfinite(rnorm)) break;
-    const double tol = std::max(rtol_ * qnorm * std::max(1.0, std::abs(*lambda)), floor);
-    if (k > 0 && rnorm <= tol) {
+    // the corrector's tolerance is relative to the load vector |dR/dlambda| max(1, |lambda|)
+    if (newtonTest_.judge(iterate(k, rnorm, rtol_ * qnorm * std::max(1.0, std::abs(*lambda)), jnorm)) > 0) {
       *ok = true;
       break;
     }

@@ -17,6 +17,7 @@
 #include "assembly/assembler.hpp"
 #include "settings/settings.hpp"
 #include "sinew/model.hpp"
+#include "solvers/newton_test.hpp"
 
 namespace sinew {
 
@@ -123,6 +124,9 @@ class ContinuationAnalysis {
   long multipliers_ = 0;      ///< global number of rigid-mode multipliers (each adds one negative pivot)
   bool haveControl_ = false;  ///< e_ selects the control DOF among the unknowns
   double rtol_ = 1e-9;
+  static NewtonRules newtonRules();
+  NewtonIterate iterate(int k, double rnorm, double tol, double jnorm) const;
+  NewtonTest newtonTest_{newtonRules()};  ///< the corrector's Newton test
   int maxIts_ = 15, maxCuts_ = 10, desiredIts_ = 5, initialSteps_ = 10;
   bool startCarriesInitial_ = false;
   bool inertia_ = true;

@@ -353,6 +353,7 @@ PetscErrorCode DynamicAnalysis::runArnoldBruls(Vec U, const StepCallback& onStep
   SNESLineSearch lsrch;
   PetscCall(SNESGetLineSearch(snes_, &lsrch));
   PetscCall(SNESLineSearchSetType(lsrch, SNESLINESEARCHBASIC));
+  newtonTest_.rules() = newtonRules();
   PetscCall(SNESSetConvergenceTest(snes_, convergenceTest, this, nullptr));
   KSP ksp;
   PetscCall(SNESGetKSP(snes_, &ksp));
@@ -561,6 +562,7 @@ PetscErrorCode DynamicAnalysis::runTSAlpha2(Vec U, const StepCallback& onStep, b
   KSP ksp;
   PetscCall(TSGetSNES(ts, &snes));
   PetscCall(SNESSetTolerances(snes, 1e-50, 1e-10, 1e-12, 50, 10000));
+  newtonTest_.rules() = newtonRules();
   PetscCall(SNESSetConvergenceTest(snes, convergenceTest, this, nullptr));
   PetscCall(SNESGetKSP(snes, &ksp));
   PetscCall(useDirectSolver(ksp));

@@ -26,6 +26,7 @@
 #include "assembly/assembler.hpp"
 #include "settings/settings.hpp"
 #include "sinew/model.hpp"
+#include "solvers/newton_test.hpp"
 
 namespace sinew {
 
@@ -195,10 +196,9 @@ class DynamicAnalysis {
   double forceRtol_ = 1e-10;
   int maxCuts_ = 10;
   int growAfter_ = 3;  ///< after a halving, double the sub-step after this many successes (0: never)
-  double jacobianNorm_ = 0, coordMax_ = 0, fnorm0_ = 0;  ///< round-off floor of the residual (convergenceTest)
-  double snormPrev_ = 0;                      ///< last Newton update norm of this solve (update test)
-  double theta_ = 0;                          ///< contraction |dU_k| / |dU_k-1| of the last two updates
-  double fnormPrevIt_ = 0;                    ///< residual norm of the previous iteration (update test)
+  double jacobianNorm_ = 0, coordMax_ = 0;  ///< round-off floor of the residual (convergenceTest)
+  NewtonTest newtonTest_;  ///< the Newton test with the dynamics rules (newtonRules(), set with the SNES)
+  NewtonRules newtonRules() const;
   static constexpr double kUpdateRtol = 1e-6;  ///< update test: estimated error <= this * |U|
   static constexpr double kMidpointUpdateRtol = 1e-14;  ///< midpoint: a step ends at an update <= this * |U|
   bool useTS_ = false;

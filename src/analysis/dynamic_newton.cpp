@@ -6,9 +6,9 @@
 #include "analysis/node_rotated_pc.hpp"
 #include "analysis/solver_defaults.hpp"
 #include "settings/read_settings.hpp"
+#include "solvers/newton_test.hpp"
 
 #include <algorithm>
-#include <cfloat>
 #include <cmath>
 
 namespace sinew {
@@ -72,14 +72,14 @@ PetscErrorCode DynamicAnalysis::formJacobian(SNES snes, Vec U, Mat, Mat P, void*
     PetscCall(SNESGetKSP(snes, &ksp));
     if (self->refineCheck_) {
       self->refineCheck_ = false;
-      if (self->theta_ > 0.5 * self->refineTheta_) {
+      if (self->newtonTest_.contraction() > 0.5 * self->refineTheta_) {
         self->refineAuto_ = false;
         PetscCall(self->setRefinements(ksp, self->refinements_ - 1));
       }
-    } else if (self->refinements_ < kMaxRefinements && self->theta_ > kRefineContraction) {
+    } else if (self->refinements_ < kMaxRefinements && self->newtonTest_.contraction() > kRefineContraction) {
       self->refineIt_ = it;
       self->refineCheck_ = true;
-      self->refineTheta_ = self->theta_;
+      self->refineTheta_ = self->newtonTest_.contraction();
       PetscCall(self->setRefinements(ksp, self->refinements_ + 1));
     }
   }
@@ -95,7 +95,7 @@ PetscErrorCode DynamicAnalysis::formJacobian(SNES snes, Vec U, Mat, Mat P, void*
     // when it grows (a stale Jacobian drifts in the stiff directions: small updates, residual up 1.5x)
     const bool slow = self->predictor_ == Predictor::State
                           ? (it == 1 && fnorm > (self->rotating_ ? kRotatedContractivity : kContractivity) * self->prevFnorm_) ||
-                                (it >= 2 && ((self->theta_ > kContractivity && self->matrixIt_ <= it - 2) ||
+                                (it >= 2 && ((self->newtonTest_.contraction() > kContractivity && self->matrixIt_ <= it - 2) ||
                                              fnorm > 1.5 * self->prevFnorm_))
                           : it > 0 && fnorm > kContractivity * self->prevFnorm_;
     self->prevFnorm_ = fnorm;
@@ -205,53 +205,53 @@ PetscErrorCode DynamicAnalysis::applyNewtonMatrix(Mat A, Vec x, Vec y) {
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-// Converged when the residual is at the round-off level of the forces it balances (as in statics),
-// or, with the state predictor (fine meshes), on the Newton update once the residual is below its
-// round-off floor estimate.
+// The dynamics rules of the Newton test (solvers/newton_test.hpp): SNES's default test (its update
+// verdict only at a residual below 1e-6 of the forces), the residual at -force_rtol of the forces it
+// balances (as in statics), or at its round-off floor 8 eps ||J||_inf max|X|:
+// - with the acceleration predictor, once it has dropped below 1e-3 of its start (stiff axial terms,
+//   small loads);
+// - starting at q_n (fine meshes), on the Newton update: the start residual is small and smooth, so a
+//   1e-3 drop proves nothing (A1g at 4096 elements: accepted after one iteration, tip x 1.1e-8 m off a
+//   run converged to 1e-9), and at 65536 elements no drop is possible (residual noise 0.09 N against a
+//   start of 10.7 N). With the contraction theta of the last two updates the iterate's error is
+//   ~ theta/(1 - theta) |dU|; converged below 1e-6 of |U| while the residual is not growing (a stale
+//   Jacobian's drift in the stiff directions has small updates but residuals of 1..33 N against the
+//   noise of 0.09 N, A1g at 65536 elements);
+// - at rest: a model at rest under loads that are still zero (functions of time that start later)
+//   starts at its floor and cannot drop by 1e-3; Newton's update is round-off too.
+// The implicit midpoint rule keeps momentum exact only for a solved step (the residual is the momentum
+// balance's error times 1/h, the floor estimate loose), so there a step ends when Newton's update is at
+// the round-off of the coordinates.
+NewtonRules DynamicAnalysis::newtonRules() const {
+  NewtonRules r;
+  r.snes = NewtonRules::Snes::KeepButUpdate;
+  r.snesUpdateForceRtol = 1e-6;
+  r.forceRtol = forceRtol_;
+  r.forceFromIteration = 1;
+  if (predictor_ == Predictor::Acceleration) {
+    r.droppedBelowFloor = true;
+  } else {
+    r.update = NewtonRules::Update::Contraction;
+    r.updateRtol = kUpdateRtol;
+  }
+  r.atRest = true;
+  if (midpoint_) r.finalUpdateRtol = kMidpointUpdateRtol;
+  return r;
+}
+
 PetscErrorCode DynamicAnalysis::convergenceTest(SNES snes, PetscInt it, PetscReal xnorm, PetscReal snorm, PetscReal fnorm,
                                                 SNESConvergedReason* reason, void* ctx) {
   PetscFunctionBeginUser;
   auto* self = static_cast<DynamicAnalysis*>(ctx);
-  PetscCall(SNESConvergedDefault(snes, it, xnorm, snorm, fnorm, reason, nullptr));
-  const double scale = std::max(self->asm_.externalForceNorm(), self->asm_.internalForceNorm());
-  if (*reason == SNES_CONVERGED_SNORM_RELATIVE && fnorm > 1e-6 * scale) *reason = SNES_CONVERGED_ITERATING;
-  if (*reason == SNES_CONVERGED_ITERATING && it > 0 && fnorm <= self->forceRtol_ * scale) *reason = SNES_CONVERGED_FNORM_ABS;
-  // round-off floor (as in statics): coordinates carry eps max|X|, so ||F|| <= 8 eps ||J||_inf max|X|
-  const double floor = 8.0 * DBL_EPSILON * self->jacobianNorm_ * self->coordMax_;
-  if (it == 0) {
-    self->fnorm0_ = fnorm;
-    self->snormPrev_ = 0.0;
-  }
-  self->theta_ = it >= 2 && self->snormPrev_ > 0 ? snorm / self->snormPrev_ : 0.0;
-  if (self->predictor_ == Predictor::Acceleration) {
-    // is equilibrium once the residual has dropped below 1e-3 of its start (stiff axial terms, small loads)
-    if (*reason == SNES_CONVERGED_ITERATING && it > 0 && fnorm <= 1e-3 * self->fnorm0_ && fnorm <= floor)
-      *reason = SNES_CONVERGED_FNORM_ABS;
-  } else if (*reason == SNES_CONVERGED_ITERATING && it >= 2 && fnorm <= floor && self->snormPrev_ > 0) {
-    // Start at q_n: the start residual is small and smooth, so a 1e-3 drop proves nothing (A1g at
-    // 4096 elements: accepted after one iteration, tip x 1.1e-8 m off a run converged to 1e-9), and
-    // at 65536 elements no drop is possible (residual noise 0.09 N against a start of 10.7 N). The
-    // Newton update measures the distance to the solution: with the contraction theta of the last two
-    // updates, the error of the iterate is ~ theta/(1 - theta) |dU| (|dU| itself once the updates
-    // stall at the noise); converged below 1e-6 of |U| (the displacement from the reference).
-    const double theta = self->theta_;
-    const double err = theta < 0.5 ? theta / (1.0 - theta) * snorm : snorm;
-    // and the residual must not be growing (a stale Jacobian's drift in the stiff directions has
-    // small updates but residuals of 1..33 N against the noise of 0.09 N, A1g at 65536 elements)
-    if (err <= kUpdateRtol * xnorm && fnorm <= 1.5 * self->fnormPrevIt_) *reason = SNES_CONVERGED_SNORM_RELATIVE;
-  }
-  // a model at rest under loads that are still zero (functions of time that start later): the
-  // residual starts at its round-off floor and cannot drop by 1e-3; Newton's update is round-off too
-  if (*reason == SNES_CONVERGED_ITERATING && it > 0 && fnorm <= floor && snorm <= 1e3 * DBL_EPSILON * self->coordMax_)
-    *reason = SNES_CONVERGED_SNORM_RELATIVE;
-  // midpoint: momentum is exact only for a solved step (the residual is the momentum balance's
-  // error times 1/h; the floor estimate above is loose: 8 eps ||J|| max|X|), so a step ends when
-  // Newton's update is at round-off of the coordinates
-  if (self->midpoint_ && *reason > 0 && !(it > 0 && snorm <= kMidpointUpdateRtol * std::max(xnorm, self->coordMax_)))
-    *reason = SNES_CONVERGED_ITERATING;
-  if (it > 0) self->snormPrev_ = snorm;
-  self->fnormPrevIt_ = fnorm;
-  if (!std::isfinite(fnorm)) *reason = SNES_DIVERGED_FNORM_NAN;
+  NewtonIterate x;
+  x.it = it;
+  x.xnorm = xnorm;
+  x.snorm = snorm;
+  x.fnorm = fnorm;
+  x.scale = forceScale(self->asm_.externalForceNorm(), self->asm_.internalForceNorm());
+  x.floor = roundoffFloor(self->jacobianNorm_, self->coordMax_);
+  x.coordMax = self->coordMax_;
+  PetscCall(self->newtonTest_.judge(snes, x, reason));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

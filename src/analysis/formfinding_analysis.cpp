@@ -10,6 +10,7 @@
 #include "elements/membrane.hpp"
 #include "mesh/collective_error.hpp"
 #include "settings/read_settings.hpp"
+#include "solvers/newton_test.hpp"
 
 namespace sinew {
 
@@ -75,6 +76,7 @@ PetscErrorCode checkFormFindingConstraints(Assembler& assembler, const Model& mo
 FormFindingAnalysis::FormFindingAnalysis(Assembler& assembler, const FormFinding& ff, const std::vector<ElementSet>& eprops,
                                          const FormFindingSettings& settings)
     : asm_(assembler), ff_(ff), eprops_(eprops) {
+  newtonTest_.rules().forceRtol = ff_.equilibrium_accuracy;
   DistributedMesh& m = asm_.mesh();
   MPI_Comm comm = m.comm;
   ffSets_ = formFoundSets(ff_, eprops_);
@@ -187,12 +189,13 @@ PetscErrorCode FormFindingAnalysis::convergenceTest(SNES snes, PetscInt it, Pets
                                                     PetscReal fnorm, SNESConvergedReason* reason, void* ctx) {
   PetscFunctionBeginUser;
   auto* self = static_cast<FormFindingAnalysis*>(ctx);
-  PetscCall(SNESConvergedDefault(snes, it, xnorm, snorm, fnorm, reason, nullptr));
-  if (*reason == SNES_CONVERGED_ITERATING) {
-    const double scale = std::max(self->asm_.externalForceNorm(), self->asm_.internalForceNorm());
-    if (fnorm <= self->ff_.equilibrium_accuracy * scale) *reason = SNES_CONVERGED_FNORM_ABS;
-  }
-  if (!std::isfinite(fnorm)) *reason = SNES_DIVERGED_FNORM_NAN;
+  NewtonIterate x;
+  x.it = it;
+  x.xnorm = xnorm;
+  x.snorm = snorm;
+  x.fnorm = fnorm;
+  x.scale = forceScale(self->asm_.externalForceNorm(), self->asm_.internalForceNorm());
+  PetscCall(self->newtonTest_.judge(snes, x, reason));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -55,6 +55,7 @@
 #include "assembly/assembler.hpp"
 #include "settings/settings.hpp"
 #include "sinew/model.hpp"
+#include "solvers/newton_test.hpp"
 
 namespace sinew {
 
@@ -126,6 +127,8 @@ class FormFindingAnalysis {
   Assembler& asm_;
   const bool* stop_ = nullptr;
   FormFinding ff_;
+  /// The Newton test: SNES's default test, or the residual below equilibrium_accuracy times the force scale.
+  NewtonTest newtonTest_;
   std::vector<ElementSet> eprops_;
   std::vector<int> ffSets_;
   std::vector<int> elems_;                       // local elements that are form-found

@@ -12,12 +12,6 @@
 
 namespace sinew {
 
-/// Newton has converged on its update: the relative update below `tight`, or below `loose` and no
-/// longer shrinking tenfold (round-off has ended quadratic convergence).
-inline bool updateConverged(double rel, double relPrev, double tight, double loose) {
-  return rel <= tight || (rel <= loose && rel > 0.1 * relPrev);
-}
-
 inline PetscErrorCode useDirectSolver(KSP ksp) {
   PetscFunctionBeginUser;
   PC pc;

@@ -1,9 +1,9 @@
 #include "analysis/solver_defaults.hpp"
 #include "analysis/static_analysis.hpp"
 #include "mesh/collective_error.hpp"
+#include "solvers/newton_test.hpp"
 
 #include <algorithm>
-#include <cfloat>
 #include <cmath>
 #include <sstream>
 
@@ -148,17 +148,35 @@ PetscErrorCode StaticAnalysis::formJacobian(SNES snes, Vec U, Mat, Mat P, void* 
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-// Newton has converged when SNES's default test says so, or when the residual is down to the
-// round-off level of the forces being balanced: ||F|| <= force_rtol * scale, scale = max(||f_ext||,
-// ||f_int||), with ||f_int|| capped at 10 max(||f_ext||, ||f_int|| of the last converged state) so
-// that a diverging iterate (huge internal forces) can never look converged.
-// Newton has converged when the residual is
-//   (1) below -snes_rtol times the residual of the increment at its start state (before the predictor),
-//   (2) below -force_rtol times the force scale (external loads, converged internal forces), or
-//   (3) at its round-off floor: positions carry eps * max|X|, so a stiffness entry k gives
-//       residual noise ~ k eps max|X| per row; once the residual is below 8 eps ||J||_inf max|X|
-//       and 1e-3 of its start (a diverged iterate never qualifies), Newton stops when an
-//       iteration no longer reduces it tenfold (quadratic convergence has ended in noise).
+PetscErrorCode StaticAnalysis::convergenceTest(SNES snes, PetscInt it, PetscReal xnorm, PetscReal snorm,
+                                               PetscReal fnorm, SNESConvergedReason* reason, void* ctx) {
+  PetscFunctionBeginUser;
+  auto* self = static_cast<StaticAnalysis*>(ctx);
+  if (it == 0 && self->unloaded_ && self->jacobianNorm_ == 0.0) {  // no load: the start state may be equilibrium
+    Vec U;
+    PetscCall(SNESGetSolution(snes, &U));
+    PetscCall(self->asm_.jacobian(U, self->ls_, self->J_));
+    PetscCall(MatNorm(self->J_, NORM_INFINITY, &self->jacobianNorm_));
+  }
+  const double fext = self->asm_.externalForceNorm();
+  NewtonIterate x;
+  x.it = it;
+  x.xnorm = xnorm;
+  x.snorm = snorm;
+  x.fnorm = fnorm;
+  x.scale = forceScale(fext, self->asm_.internalForceNorm(), 10.0 * std::max(fext, self->fintConverged_));
+  x.floor = roundoffFloor(self->jacobianNorm_, self->coordMax_);
+  x.coordMax = self->coordMax_;
+  PetscCall(self->newtonTest_.judge(snes, x, reason));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+// The statics rules of the Newton test (solvers/newton_test.hpp):
+//   (1) start: below -snes_rtol times the residual of the increment at its start state (before the predictor);
+//   (2) force: below -force_rtol times the force scale (external loads, converged internal forces);
+//   (3) start-at-floor and stalled: at the round-off floor 8 eps ||J||_inf max|X|, a start residual below
+//       1e-2 of it (no load: below it), or a residual below it and 1e-3 of the start that no longer
+//       drops tenfold per iteration;
 //   (4) converged on the update: with fine ANCF cables the round-off noise of the stored positions
 //       (eps |x| in each coordinate, amplified by the bending stiffness EI/h^3) can exceed the load
 //       itself, so no residual test can pass. The noise is a pattern of self-equilibrated element
@@ -168,69 +186,28 @@ PetscErrorCode StaticAnalysis::formJacobian(SNES snes, Vec U, Mat, Mat P, void* 
 //       8 eps ||J||_inf max|X| sqrt(unknowns). Only with an accurate linear solve (the element-wise
 //       operator, -tangent_operator) or when no residual test can pass (start residual below that floor).
 //       The update is the full Newton step (a line search's fraction lambda divided out). With the
-//       element-wise operator rule (3) is off: the floor estimate, dominated by EI/h^3, can exceed a
+//       element-wise operator rules (3) are off: the floor estimate, dominated by EI/h^3, can exceed a
 //       fine cable's whole load, so a stalled residual below it proves nothing there.
+//   A Newton that converges does so within a few iterations (mixed-stress tangent: 3-6 on the
+//   roll-ups); one still above its start residual after -newton_diverged_its iterations is wandering
+//   (a too large increment): it is given up early so the increment is halved.
 // A Newton update below -snes_stol * |x| alone proves nothing and does not end the iteration.
-PetscErrorCode StaticAnalysis::convergenceTest(SNES snes, PetscInt it, PetscReal xnorm, PetscReal snorm,
-                                               PetscReal fnorm, SNESConvergedReason* reason, void* ctx) {
-  PetscFunctionBeginUser;
-  auto* self = static_cast<StaticAnalysis*>(ctx);
-  PetscCall(SNESConvergedDefault(snes, it, xnorm, snorm, fnorm, reason, nullptr));
-  if (*reason > 0) *reason = SNES_CONVERGED_ITERATING;  // decided below
-  if (it == 0) self->fnorm0_ = fnorm;
-  PetscReal atol, rtol, stol;
-  PetscInt maxit, maxf;
-  PetscCall(SNESGetTolerances(snes, &atol, &rtol, &stol, &maxit, &maxf));
-  const double fext = self->asm_.externalForceNorm(), fint = self->asm_.internalForceNorm();
-  const double ref = std::max(fext, self->fintConverged_);
-  const double scale = std::max(fext, std::min(fint, 10.0 * ref));
-  if (it == 0 && self->unloaded_ && self->jacobianNorm_ == 0.0) {  // no load: the start state may be equilibrium
-    Vec U;
-    PetscCall(SNESGetSolution(snes, &U));
-    PetscCall(self->asm_.jacobian(U, self->ls_, self->J_));
-    PetscCall(MatNorm(self->J_, NORM_INFINITY, &self->jacobianNorm_));
-  }
-  const double floor = 8.0 * DBL_EPSILON * self->jacobianNorm_ * self->coordMax_;
-  if (fnorm <= atol) *reason = SNES_CONVERGED_FNORM_ABS;
-  else if (fnorm <= rtol * self->fnormStart_) *reason = SNES_CONVERGED_FNORM_RELATIVE;
-  else if (fnorm <= self->forceRtol_ * scale) *reason = SNES_CONVERGED_FNORM_ABS;
-  else if (it == 0 && fnorm <= (self->unloaded_ ? 1.0 : 1e-2) * floor && (self->unloaded_ || !self->Jop_))
-    *reason = SNES_CONVERGED_FNORM_ABS;  // the start state is in equilibrium to round-off (no load: any floor residual)
-  // (with the element-wise operator, i.e. ANCF cables, the floor estimate is dominated by the bending
-  // stiffness EI/h^3 and overstates the noise of a straight start state, whose lateral coordinates are
-  // exact: a fine cable's whole gravity load can lie below it. There a Newton update decides, rule 4.)
-  else if (it > 0 && !self->Jop_ && fnorm <= floor &&
-           (fnorm > 0.1 * self->fnormPrev_ || fnorm <= 1e-3 * self->fnormPrev_ || self->fnormPrev_ <= 1e2 * floor) &&
-           (fnorm <= 1e-3 * self->fnorm0_ || self->fnorm0_ <= floor))
-    *reason = SNES_CONVERGED_FNORM_ABS;  // below the floor estimate and stalled (less than 10x per iteration),
-                                         // fallen into it by a quadratic step (1000x and more), or come from
-                                         // just above it (a further iteration can only move it within the noise)
-  // A Newton that converges does so within a few iterations (mixed-stress tangent: 3-6 on the roll-ups);
-  // one still above its start residual after -newton_diverged_its iterations is wandering (a too large
-  // increment): give up early so the increment is halved instead of spending -snes_max_it iterations.
-  if (*reason == SNES_CONVERGED_ITERATING && !self->Jop_ && self->divergedIts_ > 0 && it >= self->divergedIts_ &&
-      fnorm > self->fnorm0_)
-    *reason = SNES_DIVERGED_DTOL;
-  if (it == 0) self->onUpdate_ = false;
-  if (it > 0) {  // the full Newton update: a line search may have taken only a fraction lambda of it
-    SNESLineSearch lsearch;
-    PetscReal lambda = 1.0;
-    PetscCall(SNESGetLineSearch(snes, &lsearch));
-    PetscCall(SNESLineSearchGetLambda(lsearch, &lambda));
-    self->relUpdate_ = xnorm > 0 ? snorm / std::max(lambda, 1e-300) / xnorm : 0.0;
-  }
-  const double floor2 = floor * std::sqrt(static_cast<double>(self->asm_.mesh().numGlobalUnknowns));
-  if (*reason == SNES_CONVERGED_ITERATING && it > 1 && fnorm <= floor2 && (self->Jop_ || self->fnorm0_ <= floor2)) {
-    const double rel = self->relUpdate_;
-    if (updateConverged(rel, self->relUpdatePrev_, 1e-8, 1e-6)) {
-      *reason = SNES_CONVERGED_SNORM_RELATIVE;
-      self->onUpdate_ = true;
-    }
-  }
-  if (!std::isfinite(fnorm)) *reason = SNES_DIVERGED_FNORM_NAN;
-  self->fnormPrev_ = fnorm;
-  self->relUpdatePrev_ = self->relUpdate_;
-  PetscFunctionReturn(PETSC_SUCCESS);
+NewtonRules StaticAnalysis::newtonRules() const {
+  NewtonRules r;
+  r.snes = NewtonRules::Snes::Own;
+  r.startRelative = true;
+  r.forceRtol = forceRtol_;
+  const bool elementwise = Jop_ != nullptr;
+  if (unloaded_ || !elementwise) r.startFloorFactor = unloaded_ ? 1.0 : 1e-2;
+  r.stalledAtFloor = !elementwise;
+  r.divergedIts = elementwise ? 0 : divergedIts_;
+  r.update = NewtonRules::Update::Relative;
+  r.updateTight = 1e-8;
+  r.updateLoose = 1e-6;
+  r.updateFloorFactor = std::sqrt(static_cast<double>(asm_.mesh().numGlobalUnknowns));
+  r.updateNeedsStartAtFloor = !elementwise;
+  r.updateDividesLineSearch = true;
+  return r;
 }
 
 PetscErrorCode StaticAnalysis::solveIncrement(Vec U, double lambda, bool* ok, int* its, double* fnorm,
@@ -248,7 +225,7 @@ PetscErrorCode StaticAnalysis::solveIncrement(Vec U, double lambda, bool* ok, in
   *fnorm = f;
   // a reported convergence with a residual above its start value (a line search ending on a wild
   // trial point) is a failure, whatever the reason code says
-  *ok = *why > 0 && (f <= fnorm0_ || onUpdate_);
+  *ok = *why > 0 && (f <= newtonTest_.startResidual() || newtonTest_.convergedOnUpdate());
   if (*why > 0 && !*ok) *why = SNES_DIVERGED_LINE_SEARCH;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -266,6 +243,7 @@ double StaticAnalysis::stepFactor(int step) const {
 PetscErrorCode StaticAnalysis::run(Vec U, const StepCallback& onStep, bool* converged) {
   PetscFunctionBeginUser;
   MPI_Comm comm = asm_.mesh().comm;
+  newtonTest_.rules() = newtonRules();
   Vec Usave;  // state before the increment; dU_: last converged increment (secant predictor)
   PetscCall(VecDuplicate(U, &Usave));
   if (!dU_) PetscCall(VecDuplicate(U, &dU_));
@@ -304,7 +282,9 @@ PetscErrorCode StaticAnalysis::run(Vec U, const StepCallback& onStep, bool* conv
       ls_.loadFactor = next;
       ls_.time = timeAt(next);
       PetscCall(asm_.residual(U, ls_, F_));
-      PetscCall(VecNorm(F_, NORM_2, &fnormStart_));
+      PetscReal fnormStart = 0;
+      PetscCall(VecNorm(F_, NORM_2, &fnormStart));
+      newtonTest_.setStartResidual(fnormStart);
       // predictor: extrapolate the last increment (rotation increments included)
       const bool predicted = dlPrev > 0 && predictor_ && predictNext;
       if (predicted) PetscCall(VecAXPY(U, (next - lambda) / dlPrev, dU));
@@ -317,8 +297,8 @@ PetscErrorCode StaticAnalysis::run(Vec U, const StepCallback& onStep, bool* conv
       rep.newtonIterations += its;
       ++rep.increments;
       rep.residualNorm = fnorm;
-      rep.convergedOnUpdate = rep.convergedOnUpdate || onUpdate_;
-      rep.relativeUpdate = relUpdate_;
+      rep.convergedOnUpdate = rep.convergedOnUpdate || newtonTest_.convergedOnUpdate();
+      rep.relativeUpdate = newtonTest_.relativeUpdate();
       if (ok) {
         predictNext = true;
         PetscCall(VecWAXPY(dU, -1.0, Usave, U));

@@ -12,6 +12,7 @@
 #include "analysis/cable_coarse_space.hpp"
 #include "assembly/assembler.hpp"
 #include "settings/settings.hpp"
+#include "solvers/newton_test.hpp"
 
 namespace sinew {
 
@@ -91,6 +92,7 @@ class StaticAnalysis {
   static PetscErrorCode formJacobian(SNES, Vec U, Mat J, Mat P, void* ctx);
   static PetscErrorCode convergenceTest(SNES, PetscInt it, PetscReal xnorm, PetscReal snorm, PetscReal fnorm,
                                         SNESConvergedReason* reason, void* ctx);
+  NewtonRules newtonRules() const;
   PetscErrorCode solveIncrement(Vec U, double lambda, bool* ok, int* its, double* fnorm, SNESConvergedReason* why);
 
   static PetscErrorCode tangentMult(Mat A, Vec x, Vec y);
@@ -116,11 +118,7 @@ class StaticAnalysis {
   LoadState ls_;
   double forceRtol_ = 1e-11;
   double jacobianNorm_ = 0;  ///< ||J||_inf at the start of the increment (round-off floor of the residual)
-  double fnormStart_ = 0;              ///< residual of the increment at its start state (before the predictor)
-  double fnorm0_ = 0, fnormPrev_ = 0;  ///< residual at iteration 0 and at the previous iteration
-  double relUpdatePrev_ = 0;           ///< relative Newton update of the previous iteration
-  bool onUpdate_ = false;              ///< the last SNES solve converged by rule (4)
-  double relUpdate_ = 0;               ///< ||dU|| / ||U|| of the last Newton update
+  NewtonTest newtonTest_;  ///< the Newton test with the statics rules (newtonRules(), set by run())
   double fintConverged_ = 0;          ///< ||f_int|| at the last converged state
   bool unloaded_ = false;
   double coordMax_ = 0;      ///< largest |node coordinate| (positions carry round-off eps * coordMax_)

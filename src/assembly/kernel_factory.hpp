@@ -5,8 +5,8 @@
 namespace sinew {
 
 /// Kernel factory for a model: beams (flexible, released and rigid modes; elements in no set are
-/// rigid and massless), cables, membranes and ANCF cables.
-KernelFactory makeKernelFactory(const Model& model);
+/// rigid and massless), cables, membranes and ANCF cables, with the loads of every eprops set.
+ElementKernels makeKernelFactory(const Model& model);
 
 /// Stiffness scale used for the rows of rigid-mode constraints: the largest EA / L of the
 /// flexible beams (1 when there are none), so multipliers are forces of the model's size.

@@ -64,6 +64,67 @@ class ElementValueError : public std::runtime_error {
   std::string law_, returned_, where_;
 };
 
+/// The part of a kernel that form finding (Updated Reference Strategy, src/analysis/formfinding_analysis.*)
+/// drives; ElementKernel::formFinding() returns it for the kinds that can be form-found (cables, membranes).
+class FormFindingKernel {
+ public:
+  /// How an element enters the shape measures of form finding: a line (direction tensor e e^T) or a
+  /// surface (area-weighted normal tensor A n n^T).
+  enum class Shape { Line, Surface };
+  virtual Shape shapeType() const = 0;
+  /// Form finding with homotopy factor lambda (xurs: extended URS, where the kind has it).
+  virtual void enterFormFinding(double lambda, bool xurs) = 0;
+  /// Back to the elastic problem (form finding and xURS off).
+  virtual void leaveFormFinding() = 0;
+  /// Stress adaption: lambdaMax > 1 on (<= 1 off), relaxation mueRelax; distortionMax > 1 switches shape
+  /// distortion control on where the kind has it.
+  virtual void setAdaption(double lambdaMax, double mueRelax, double distortionMax) = 0;
+  /// Size at state q: length (line) or area (surface).
+  virtual double size(const double* q) const = 0;
+  /// Collapsed at state q, given its size at the start of form finding and the model size.
+  virtual bool collapsed(const double* q, double initialSize, double modelSize) const = 0;
+  /// Shape quality at state q: 1 ideal, 0 degenerate (lines: 1).
+  virtual double meshQuality(const double* /*q*/) const { return 1.0; }
+  /// URS step: stress adaption (when on) for the step deformation, then reference := q. Throws
+  /// std::invalid_argument for a reference it cannot take (degenerate surface).
+  virtual void updateReference(const double* q) = 0;
+  /// Axis a of the element at q whose a a^T it adds to the shape measure: the unit direction (line),
+  /// the area vector divided by the square root of the area (surface: a a^T = A n n^T); 0 when degenerate.
+  virtual Vec3 shapeAxis(const double* q) const = 0;
+  /// Elastic restart without prestress (DISPLACEMENT, NONE): prestress := 0.
+  virtual void clearPrestress() = 0;
+  /// Elastic restart from the initial shape (NONE): reference := X (3 coordinates per node).
+  virtual void setReference(const double* X) = 0;
+
+  virtual ~FormFindingKernel() = default;
+};
+
+/// What an element sensor reads (SensorAnalysis) besides the variable and position.
+struct SensorInput {
+  const double* q = nullptr;       ///< node states (state layout)
+  const double* disp = nullptr;    ///< translations x - X0 of the Point3/Frame6 nodes (3 each)
+  const double* qdot = nullptr;    ///< DOF rates; nullptr at rest
+  const double* qddot = nullptr;   ///< DOF accelerations; nullptr at rest
+  const double* lambda = nullptr;  ///< the kernel's multipliers; nullptr when it has none
+  double t = 0.0;                  ///< time
+};
+
+/// Sensors along an element (scene block `sensors` with `element`); ElementKernel::sensors() returns
+/// it for the kinds that have them (beams, ANCF cables).
+class SensorKernel {
+ public:
+  /// A scene element split into numSub equal FE elements: where along it a sensor at axial position x
+  /// (length units) or xi (fraction of the scene element) falls, in FE element lengths (0..numSub);
+  /// the FE element floor(position) holds it.
+  virtual double sensorPosition(double x, double xi, int numSub) const = 0;
+  /// Values per output row of `variable` (3 for vectors, 1 for scalars).
+  virtual int sensorValueCount(const std::string& variable) const = 0;
+  /// `variable` at s in [0, 1] along this FE element (node 0 to node 1).
+  virtual std::vector<double> sensorValue(const std::string& variable, double s, const SensorInput& in) const = 0;
+
+  virtual ~SensorKernel() = default;
+};
+
 class ElementKernel {
  public:
   virtual ~ElementKernel() = default;
@@ -100,6 +161,19 @@ class ElementKernel {
   virtual bool strainEnergy(const double* /*q*/, double* /*energy*/) const { return false; }
   /// Element force output (cable axial force, membrane resultants n11 n22 n12); empty when none.
   virtual void elementForce(const double* /*q*/, std::vector<double>& out) const { out.clear(); }
+
+  /// Form finding interface (cables, membranes); nullptr when the kind takes no part in form finding.
+  virtual FormFindingKernel* formFinding() { return nullptr; }
+  /// Sensor interface (beams, ANCF cables); nullptr when the kind has no element sensors.
+  virtual const SensorKernel* sensors() const { return nullptr; }
+  /// Tension-only kernels (cables) can go slack: zero force and tangent (the assembler then keeps the
+  /// Newton matrix regular, Assembler::addLoadTangents).
+  virtual bool tensionOnly() const { return false; }
+  /// A tension-only kernel slack at state q (never in form finding): true, with *axialStiffness the
+  /// stiffness of its regularising spring times its reference length (EA, or the prestress force when EA = 0).
+  virtual bool slack(const double* /*q*/, double* /*axialStiffness*/) const { return false; }
+  /// Reference length of a two-node line element (cables, ANCF cables, beams); 0 for other kinds.
+  virtual double referenceLength() const { return 0.0; }
 
   /// Internal state that analyses change (form finding: reference geometry, adapted prestress), for
   /// checkpoints (output/checkpoint.hpp): size, save into / restore from checkpointSize() values.

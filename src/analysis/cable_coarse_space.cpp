@@ -6,7 +6,6 @@
 #include <map>
 
 #include "analysis/solver_defaults.hpp"
-#include "elements/ancf_cable2d.hpp"
 #include "mesh/collective_error.hpp"
 #include "solvers/newton_test.hpp"
 
@@ -49,7 +48,7 @@ CableCoarseSpace::CableCoarseSpace(Assembler& assembler, int ratio) : asm_(assem
     SceneElementInfo& info = mine[el.sceneElement];
     info.s = el.sceneElement;
     info.numSub = el.numSub;
-    info.lfe = static_cast<const AncfCable2D*>(el.kernel.get())->length();
+    info.lfe = el.kernel->referenceLength();
     if (el.subIndex == 0) info.en0 = m.nodes[el.node[0]].sceneNode;
     if (el.subIndex == el.numSub - 1) info.en1 = m.nodes[el.node[1]].sceneNode;
   }

@@ -6,8 +6,6 @@
 #include <stdexcept>
 #include <tuple>
 
-#include "elements/cable3d.hpp"
-#include "elements/membrane.hpp"
 #include "mesh/collective_error.hpp"
 #include "settings/read_settings.hpp"
 #include "solvers/newton_test.hpp"
@@ -17,14 +15,6 @@ namespace sinew {
 namespace {
 /// Above this many unknowns form finding solves iteratively by default (-ff_ksp_type/-ff_pc_type override).
 constexpr long kIterativeAbove = 50000;
-}  // namespace
-
-namespace {
-/// Area of a triangle or (half the diagonal cross product of) a quad at the states q.
-double elementArea(int nn, const double* q) {
-  auto v = [&](int a, int b) { return Vec3{q[3 * b] - q[3 * a], q[3 * b + 1] - q[3 * a + 1], q[3 * b + 2] - q[3 * a + 2]}; };
-  return nn == 3 ? 0.5 * norm(cross(v(0, 1), v(0, 2))) : 0.5 * norm(cross(v(0, 2), v(1, 3)));
-}
 }  // namespace
 
 std::vector<int> formFoundSets(const FormFinding& ff, const std::vector<ElementSet>& eprops) {
@@ -48,11 +38,10 @@ std::pair<double, bool> stepMode(const FormFinding& ff, int k) {
 void setFormFindingMode(DistributedMesh& m, const std::vector<int>& sets, bool on, double lambda, bool xurs) {
   for (const LocalElement& el : m.elements) {
     if (el.set < 0 || std::find(sets.begin(), sets.end(), el.set) == sets.end()) continue;
-    if (auto* c = dynamic_cast<Cable3D*>(el.kernel.get())) c->setFormFinding(on, lambda);
-    if (auto* mem = dynamic_cast<Membrane*>(el.kernel.get())) {
-      mem->setFormFinding(on, lambda);
-      mem->setXurs(on && xurs);
-    }
+    FormFindingKernel* f = el.kernel->formFinding();
+    if (!f) continue;
+    if (on) f->enterFormFinding(lambda, xurs);
+    else f->leaveFormFinding();
   }
 }
 }  // namespace
@@ -93,21 +82,17 @@ FormFindingAnalysis::FormFindingAnalysis(Assembler& assembler, const FormFinding
   for (size_t e = 0; e < m.elements.size(); ++e) {
     const LocalElement& el = m.elements[e];
     if (el.set < 0 || !inList(ffSets_, el.set)) continue;
-    ElementKernel* k = el.kernel.get();
-    auto* cable = dynamic_cast<Cable3D*>(k);
-    auto* mem = dynamic_cast<Membrane*>(k);
-    if (!cable && !mem) continue;
+    FormFindingKernel* f = el.kernel->formFinding();
+    if (!f) continue;
     asm_.gather(el, q.data(), idx.data());
     elems_.push_back(static_cast<int>(e));
     std::array<double, 12> s{};
     std::copy(q.begin(), q.begin() + 3 * el.numNodes, s.begin());
     initial_.push_back(s);
-    area0_.push_back(mem ? elementArea(el.numNodes, q.data()) : 0.0);
-    if (mem) quality = std::min(quality, mem->meshQuality(q.data()));
+    size0_.push_back(f->size(q.data()));
+    quality = std::min(quality, f->meshQuality(q.data()));
     const bool adapt = inList(ff_.stress_adaption, el.set);
-    if (cable) cable->setStressAdaption(adapt ? ff_.lambda_max : 0.0, ff_.mue_relax);
-    if (mem) mem->setStressAdaption(adapt ? ff_.lambda_max : 0.0, ff_.mue_relax);
-    if (mem) mem->setDistortionControl(adapt ? ff_.distortion_max : 0.0);
+    f->setAdaption(adapt ? ff_.lambda_max : 0.0, ff_.mue_relax, adapt ? ff_.distortion_max : 0.0);
   }
   double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
   for (int i = 0; i < m.numOwnedNodes; ++i)
@@ -201,12 +186,7 @@ PetscErrorCode FormFindingAnalysis::convergenceTest(SNES snes, PetscInt it, Pets
 
 void FormFindingAnalysis::setMode(double lambda, bool xurs) {
   for (int e : elems_) {
-    ElementKernel* k = asm_.mesh().elements[static_cast<size_t>(e)].kernel.get();
-    if (auto* c = dynamic_cast<Cable3D*>(k)) c->setFormFinding(true, lambda);
-    if (auto* mem = dynamic_cast<Membrane*>(k)) {
-      mem->setFormFinding(true, lambda);
-      mem->setXurs(xurs);
-    }
+    asm_.mesh().elements[static_cast<size_t>(e)].kernel->formFinding()->enterFormFinding(lambda, xurs);
   }
 }
 
@@ -222,22 +202,17 @@ PetscErrorCode FormFindingAnalysis::updateReferences(Vec U, long* badElement, do
   for (size_t i = 0; i < elems_.size(); ++i) {
     const LocalElement& el = m.elements[static_cast<size_t>(elems_[i])];
     asm_.gather(el, q.data(), idx.data());
-    ElementKernel* k = el.kernel.get();
-    if (auto* c = dynamic_cast<Cable3D*>(k)) {
-      if (c->length(q.data()) <= 1e-12 * size_) bad = std::max(bad, static_cast<long>(el.sceneElement) + 1);
-      else c->updateReference(q.data());
-    } else if (auto* mem = dynamic_cast<Membrane*>(k)) {
-      const double a = elementArea(el.numNodes, q.data());
-      if (!(a > 1e-3 * area0_[i])) {
-        bad = std::max(bad, static_cast<long>(el.sceneElement) + 1);
-        continue;
-      }
-      qmin = std::min(qmin, mem->meshQuality(q.data()));
-      try {
-        mem->updateReference(q.data());
-      } catch (const std::invalid_argument&) {
-        bad = std::max(bad, static_cast<long>(el.sceneElement) + 1);
-      }
+    FormFindingKernel* f = el.kernel->formFinding();
+    // a line of zero length, a surface below 1e-3 of its initial area
+    if (f->collapsed(q.data(), size0_[i], size_)) {
+      bad = std::max(bad, static_cast<long>(el.sceneElement) + 1);
+      continue;
+    }
+    qmin = std::min(qmin, f->meshQuality(q.data()));
+    try {
+      f->updateReference(q.data());
+    } catch (const std::invalid_argument&) {
+      bad = std::max(bad, static_cast<long>(el.sceneElement) + 1);
     }
   }
   PetscCall(asm_.endLocal(&u));
@@ -302,18 +277,9 @@ PetscErrorCode FormFindingAnalysis::normalShapeChange(Vec U, Vec Uprev, double* 
   for (int e : elems_) {
     const LocalElement& el = m.elements[static_cast<size_t>(e)];
     asm_.gather(el, q.data(), idx.data());
-    auto v = [&](int a, int b) { return Vec3{q[3 * b] - q[3 * a], q[3 * b + 1] - q[3 * a + 1], q[3 * b + 2] - q[3 * a + 2]}; };
-    const bool cable = dynamic_cast<Cable3D*>(el.kernel.get()) != nullptr;
-    Vec3 a{};
-    if (cable) {
-      a = v(0, 1);
-      const double l = norm(a);
-      if (l > 0.0) a = (1.0 / l) * a;
-    } else {
-      a = el.numNodes == 3 ? 0.5 * cross(v(0, 1), v(0, 2)) : 0.5 * cross(v(0, 2), v(1, 3));
-      const double l = norm(a);
-      if (l > 0.0) a = (1.0 / std::sqrt(l)) * a;  // a a^T = A n n^T
-    }
+    const FormFindingKernel* f = el.kernel->formFinding();
+    const bool cable = f->shapeType() == FormFindingKernel::Shape::Line;
+    const Vec3 a = f->shapeAxis(q.data());  // line: unit direction; surface: a a^T = A n n^T
     for (int j = 0; j < el.numNodes; ++j) {
       const LocalNode& n = m.nodes[static_cast<size_t>(el.node[static_cast<size_t>(j)])];
       if (!freeXYZ(n)) continue;
@@ -529,22 +495,11 @@ PetscErrorCode FormFindingAnalysis::restart(Vec U) {
   DistributedMesh& m = asm_.mesh();
   const std::string& method = ff_.elastic_restart_method;
   for (size_t i = 0; i < elems_.size(); ++i) {
-    ElementKernel* k = m.elements[static_cast<size_t>(elems_[i])].kernel.get();
-    auto* c = dynamic_cast<Cable3D*>(k);
-    auto* mem = dynamic_cast<Membrane*>(k);
-    if (c) c->setFormFinding(false, 0.0);
-    if (mem) {
-      mem->setFormFinding(false, 0.0);
-      mem->setXurs(false);
-    }
+    FormFindingKernel* f = m.elements[static_cast<size_t>(elems_[i])].kernel->formFinding();
+    f->leaveFormFinding();
     if (method == "FORCE") continue;
-    if (c) c->setPrestressForce(0.0);
-    if (mem) mem->setPrestress({0.0, 0.0, 0.0});
-    if (method == "NONE") {
-      const double* X = initial_[i].data();
-      if (c) c->setReferenceLength(norm(Vec3{X[3] - X[0], X[4] - X[1], X[5] - X[2]}));
-      if (mem) mem->setReference(X);
-    }
+    f->clearPrestress();
+    if (method == "NONE") f->setReference(initial_[i].data());
   }
   if (method == "NONE") {
     PetscCall(VecSet(U, 0.0));

@@ -133,7 +133,7 @@ class FormFindingAnalysis {
   std::vector<int> ffSets_;
   std::vector<int> elems_;                       // local elements that are form-found
   std::vector<std::array<double, 12>> initial_;  // their initial state (NONE restart)
-  std::vector<double> area0_;                    // initial membrane areas (0 for cables)
+  std::vector<double> size0_;                    // their initial size (length or area)
   SNES snes_ = nullptr;
   Mat J_ = nullptr;
   Vec F_ = nullptr;

@@ -4,8 +4,6 @@
 #include <array>
 #include <cmath>
 
-#include "elements/ancf_cable2d.hpp"
-#include "elements/beam_corotational.hpp"
 #include "sinew/rotation.hpp"
 
 namespace sinew {
@@ -35,12 +33,6 @@ PetscErrorCode localRestore(Vec X, Vec* xl, const PetscScalar** x) {
 }
 }  // namespace
 
-int SensorAnalysis::valueCount(const std::string& v) {
-  static const std::array<const char*, 8> vectors = {"Position", "Displacement", "Velocity", "VelocityLocal",
-                                                     "Acceleration", "Director1", "AngularVelocity", "AngularAcceleration"};
-  return std::any_of(vectors.begin(), vectors.end(), [&](const char* s) { return v == s; }) ? 3 : 1;
-}
-
 SensorAnalysis::SensorAnalysis(Assembler& assembler, const std::vector<Sensor>& sensors) : asm_(assembler) {
   const auto& elements = asm_.mesh().elements;
   for (const Sensor& s : sensors) {
@@ -55,35 +47,26 @@ SensorAnalysis::SensorAnalysis(Assembler& assembler, const std::vector<Sensor>& 
     for (size_t e = 0; e < elements.size(); ++e) {
       const LocalElement& el = elements[e];
       if (el.sceneElement != s.element) continue;
-      if (const auto* b = dynamic_cast<const BeamCorotational*>(el.kernel.get())) {
-        // xi along the scene element -> FE element sub = floor(xi numSub), s = xi numSub - sub
-        const double t = s.xi * el.numSub;
-        const int sub = std::clamp(static_cast<int>(std::floor(t)), 0, el.numSub - 1);
-        if (sub != el.subIndex) continue;
-        p.element = static_cast<int>(e);
-        p.xLocal = std::clamp(t - sub, 0.0, 1.0);
-        p.beam = b;
-        continue;
-      }
-      const auto* k = dynamic_cast<const AncfCable2D*>(el.kernel.get());
+      const SensorKernel* k = el.kernel->sensors();
       if (!k) continue;
-      // the scene element is split into numSub equal FE elements of length L_fe
-      const double Lfe = k->length(), xi = s.x / (Lfe * el.numSub) * el.numSub;
-      const int sub = std::clamp(static_cast<int>(std::floor(xi)), 0, el.numSub - 1);
+      // the scene element is split into numSub equal FE elements: t along it in FE element lengths ->
+      // FE element sub = floor(t), s = t - sub along it
+      const double t = k->sensorPosition(s.x, s.xi, el.numSub);
+      const int sub = std::clamp(static_cast<int>(std::floor(t)), 0, el.numSub - 1);
       if (sub != el.subIndex) continue;
       p.element = static_cast<int>(e);
-      p.xLocal = std::clamp((xi - sub) * Lfe, 0.0, Lfe);
+      p.xLocal = std::clamp(t - sub, 0.0, 1.0);
       p.kernel = k;
     }
     probes_.push_back(p);
   }
-  // values per row: ANCF ForceLocal etc. are scalars, every beam variable is a vector; the owning
-  // rank knows the element kind, the others learn it here
+  // values per row (ANCF ForceLocal etc. are scalars, every beam variable is a vector): the owning
+  // rank's kernel knows, the others learn it here
   std::vector<int> counts(probes_.size(), 0);
   for (size_t i = 0; i < probes_.size(); ++i) {
     const Probe& p = probes_[i];
-    if (p.node >= 0 || p.beam) counts[i] = 3;
-    else if (p.kernel) counts[i] = valueCount(p.sensor.variable);
+    if (p.node >= 0) counts[i] = 3;
+    else if (p.kernel) counts[i] = p.kernel->sensorValueCount(p.sensor.variable);
   }
   MPI_Allreduce(MPI_IN_PLACE, counts.data(), static_cast<int>(counts.size()), MPI_INT, MPI_MAX, asm_.mesh().comm);
   for (size_t i = 0; i < probes_.size(); ++i)
@@ -127,28 +110,30 @@ PetscErrorCode SensorAnalysis::atStep(Vec U, const LoadState& ls, ResultFile& fi
   std::vector<double> values;
   std::array<double, 48> q{};
   std::array<int, 48> idx{};
-  std::array<double, 12> qd{};
-  std::array<double, 8> qdd{};
+  std::array<double, kMaxElementRows> qd{}, qdd{};
+  std::array<double, 12> disp{};
   for (const Probe& p : probes_) {
     std::vector<double> out(p.count, 0.0);
     if (p.node >= 0) nodeValues(p, asm_.mesh().nodes[p.node], asm_.nodeState(p.node), v, a, out.data());
-    if (p.element >= 0 && p.beam) {
+    if (p.element >= 0) {
       const LocalElement& el = asm_.mesh().elements[p.element];
       asm_.gather(el, q.data(), idx.data());
-      gatherDofs(v, idx.data(), 12, qd.data());
-      std::array<double, 6> disp{};  // x - X0 of both nodes, as the node sensors' Displacement
-      for (int i = 0; i < 2; ++i)
-        for (int c = 0; c < 3; ++c) disp[3 * i + c] = q[12 * i + c] - asm_.mesh().nodes[el.node[i]].X0[c];
-      const std::array<double, 3> r = p.beam->sensorValue(p.sensor.variable, p.xLocal, q.data(), disp.data(), v ? qd.data() : nullptr,
-                                                         el.firstMultiplier >= 0 ? u + el.firstMultiplier : nullptr);
-      out.assign(r.begin(), r.end());
-    } else if (p.element >= 0) {
-      const LocalElement& el = asm_.mesh().elements[p.element];
-      asm_.gather(el, q.data(), idx.data());
-      gatherDofs(v, idx.data(), 8, qd.data());
-      gatherDofs(a, idx.data(), 8, qdd.data());
-      out = p.kernel->output(p.sensor.variable, p.xLocal, q.data(), v ? qd.data() : nullptr, a ? qdd.data() : nullptr,
-                             ls.time);
+      const int ndofs = el.kernel->numDofs();
+      gatherDofs(v, idx.data(), ndofs, qd.data());
+      gatherDofs(a, idx.data(), ndofs, qdd.data());
+      // x - X0 of the position nodes, as the node sensors' Displacement
+      const std::span<const NodeKind> kinds = el.kernel->nodeKinds();
+      for (size_t i = 0, off = 0; i < kinds.size(); off += stateSize(kinds[i]), ++i)
+        for (int c = 0; c < 3; ++c)
+          disp[3 * i + c] = kinds[i] == NodeKind::Ancf2D ? 0.0 : q[off + c] - asm_.mesh().nodes[el.node[i]].X0[c];
+      SensorInput in;
+      in.q = q.data();
+      in.disp = disp.data();
+      in.qdot = v ? qd.data() : nullptr;
+      in.qddot = a ? qdd.data() : nullptr;
+      in.lambda = el.firstMultiplier >= 0 ? u + el.firstMultiplier : nullptr;
+      in.t = ls.time;
+      out = p.kernel->sensorValue(p.sensor.variable, p.xLocal, in);
     }
     values.insert(values.end(), out.begin(), out.end());
   }

@@ -1,13 +1,15 @@
 // Sensors (scene block `sensors`): Exudyn output variables of ancf_cable2d elements sampled at an
 // axial position x of a scene element at every written step. The FE element that holds x is
-// found from the nbeams split (LocalElement::subIndex/numSub); the value is computed by the
-// rank that owns that element with AncfCable2D::output(q, qdot, qddot) and reduced to rank 0,
+// found from the nbeams split (LocalElement::subIndex/numSub, SensorKernel::sensorPosition); the
+// value is computed by the rank that owns that element with its kernel's SensorKernel interface
+// (ancf_cable2d: AncfCable2D::output(q, qdot, qddot)) and reduced to rank 0,
 // which writes /sensors/<name> [ns, k]. Node sensors (`node`, Exudyn's SensorNode) sample a beam
 // (Frame6) node: Position, Displacement (x - X0), Rotation (rotation vector of R, angle times axis,
 // as /node/r_axang), Velocity, Acceleration, AngularVelocity, AngularAcceleration (spatial: global
 // frame), 3 values each, from the owning rank. Beam element sensors (`element` with `xi` or `x` on a
 // beam or rigid element, Exudyn's SensorBody) sample the FE element of the nbeams split that holds
-// xi with BeamCorotational::sensorValue (3 values, docs/dynamics.md "Sensors along beam elements").
+// xi with the same interface (BeamCorotational::sensorValue, 3 values, docs/dynamics.md "Sensors
+// along beam elements").
 #pragma once
 #include <string>
 #include <vector>
@@ -16,9 +18,6 @@
 #include "sinew/model.hpp"
 
 namespace sinew {
-
-class AncfCable2D;
-class BeamCorotational;
 
 class SensorAnalysis : public StepAnalysis {
  public:
@@ -30,17 +29,14 @@ class SensorAnalysis : public StepAnalysis {
     A_ = A;
   }
   PetscErrorCode atStep(Vec U, const LoadState& ls, ResultFile& file, bool* ok) override;
-  /// Number of values of an output variable (3 for vectors, 1 for scalars).
-  static int valueCount(const std::string& variable);
 
  private:
   struct Probe {
     Sensor sensor;
     int element = -1;  ///< local element index on the owning rank, -1 elsewhere
-    double xLocal = 0;
-    const AncfCable2D* kernel = nullptr;
-    const BeamCorotational* beam = nullptr;  ///< beam element sensor: its kernel, xLocal = s in [0, 1]
-    int count = 1;                           ///< values per row (agreed over the ranks)
+    double xLocal = 0;                  ///< position s in [0, 1] along that FE element
+    const SensorKernel* kernel = nullptr;  ///< its kernel's sensor interface
+    int count = 1;                         ///< values per row (agreed over the ranks)
     int node = -1;  ///< node sensor: local owned node index on the owning rank, -1 elsewhere
   };
   /// A node sensor's 3 values from the node state (s: x, R) and the rates (local forms or null).

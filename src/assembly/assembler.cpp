@@ -36,19 +36,11 @@ const SinewEvents& SinewEvents::get() {
   return ev;
 }
 
-namespace {
-
-std::vector<std::optional<Vec3>>& accelerationTable() {
-  static std::vector<std::optional<Vec3>> table;
-  return table;
-}
-}  // namespace
-
-void registerSetAccelerations(std::vector<std::optional<Vec3>> table) { accelerationTable() = std::move(table); }
-
 bool Assembler::bodyAcceleration(const LocalElement& el, const LoadState& ls, Vec3* a) const {
-  const std::optional<Vec3>* own =
-      el.set >= 0 && static_cast<size_t>(el.set) < setAccel_.size() && setAccel_[el.set] ? &setAccel_[el.set] : nullptr;
+  const std::vector<SetLoads>& loads = mesh_.setLoads;
+  const std::optional<Vec3>* own = el.set >= 0 && static_cast<size_t>(el.set) < loads.size() && loads[el.set].acceleration
+                                       ? &loads[el.set].acceleration
+                                       : nullptr;
   if ((!gravity_ && !own) || !el.kernel->hasInertia()) return false;
   const double scale = ls.gravityRamped ? ls.loadFactor : 1.0;
   Vec3 b = gravity_ ? *gravity_ : Vec3{};
@@ -65,7 +57,6 @@ Assembler::Assembler(DistributedMesh& mesh, const std::optional<Vec3>& gravity, 
   Rref_.assign(nl, identity3());
   T_.assign(nl, identity3());
   hasTheta_.assign(nl, 0);
-  setAccel_ = accelerationTable();
   SinewCallThrow(mesh_.comm, addLumpedInertia());
   int inertia = 0;
   for (const LocalElement& e : mesh_.elements) inertia |= e.kernel->hasInertia();

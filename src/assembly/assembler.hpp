@@ -34,20 +34,6 @@ struct RotaryMomentumStep;  // elements/rotary_momentum.hpp
 /// Largest element block: 4 nodes of 6 DOFs and 6 rigid-mode multipliers (index and work arrays).
 inline constexpr int kMaxElementRows = 4 * 6 + 6;
 
-/// Surface pressure of an eprops set (membranes): pressureInitial + loadFactor * pressure, a follower
-/// load along the current element normal n = g1 x g2 / |g1 x g2| (node order, right-hand rule).
-struct SetPressure {
-  double pressure = 0, pressureInitial = 0;
-};
-/// Registers the pressure of every eprops set; makeKernelFactory does this from the model and the
-/// Assembler constructor reads it. An empty or all-zero table means no pressure terms at all.
-void registerSetPressures(std::vector<SetPressure> table);
-
-/// Mass-proportional load of every eprops set (Exudyn LoadMassProportional, `massProportionalLoad`):
-/// a body-force acceleration on the set's elements with inertia, added to gravity (ramped with the
-/// load factor in statics, constant in dynamics). makeKernelFactory registers it from the model.
-void registerSetAccelerations(std::vector<std::optional<Vec3>> table);
-
 struct LoadState {
   double loadFactor = 0.0;     ///< ramps `force`, `moment`, `displ_*`, `rot`, gravity
   double time = 0.0;           ///< passed to kernels (user functions)
@@ -398,8 +384,7 @@ class Assembler {
   bool slopeTorqueBlock(int i, const LoadState& ls, double* K) const;
   std::vector<std::pair<int, SetPressure>> pressureElems_;  // local element index, pressure
   bool anyPressure_ = false;
-  std::vector<int> cableElems_;  // local elements with a Cable3D kernel
-  std::vector<std::optional<Vec3>> setAccel_;  // massProportionalLoad per eprops set
+  std::vector<int> cableElems_;  // local elements with a tension-only kernel (cables)
   double slackStiffness_ = 1e-8;
   long slackCables_ = 0;
 };

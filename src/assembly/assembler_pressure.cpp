@@ -7,23 +7,18 @@
 // current area. Triangles: one point (exact: g1 x g2 is constant); quads: 2x2 Gauss (exact). The
 // load stiffness (Jacobian of the residual f_int - f_ext) is
 //   -d f_a / d x_b = -p int N_a [ N_b,eta skew(g1) - N_b,xi skew(g2) ] dxi deta.
-// Slack cables: an elastic Cable3D with N <= 0 has zero force and tangent; a node held only by slack
-// cables would make the Jacobian singular. The Jacobian (never the residual) gets k [I -I; -I I],
-// k = slackStiffness * EA / L (N0 / L when EA = 0), so equilibrium states are unchanged.
+// Slack cables: a tension-only kernel (ElementKernel::tensionOnly, an elastic cable with N <= 0) has
+// zero force and tangent; a node held only by slack cables would make the Jacobian singular. The
+// Jacobian (never the residual) gets k [I -I; -I I], k = slackStiffness * EA / L (N0 / L when EA = 0;
+// ElementKernel::slack), so equilibrium states are unchanged.
 #include <array>
 #include <cmath>
 
 #include "assembly/assembler.hpp"
-#include "elements/cable3d.hpp"
 
 namespace sinew {
 
 namespace {
-
-std::vector<SetPressure>& pressureTable() {
-  static std::vector<SetPressure> table;
-  return table;
-}
 
 /// p * int N_a (g1 x g2) and, when K != nullptr, K = d f / d x (3 nn x 3 nn, row-major).
 void pressureElement(int nn, const double* x, double p, double* f, double* K) {
@@ -73,15 +68,13 @@ void pressureElement(int nn, const double* x, double p, double* f, double* K) {
 }
 }  // namespace
 
-void registerSetPressures(std::vector<SetPressure> table) { pressureTable() = std::move(table); }
-
 void Assembler::initLoads() {
-  const auto& table = pressureTable();
+  const std::vector<SetLoads>& table = mesh_.setLoads;
   for (size_t e = 0; e < mesh_.elements.size(); ++e) {
     const LocalElement& el = mesh_.elements[e];
-    if (dynamic_cast<const Cable3D*>(el.kernel.get())) cableElems_.push_back(static_cast<int>(e));
+    if (el.kernel->tensionOnly()) cableElems_.push_back(static_cast<int>(e));
     if (el.set < 0 || static_cast<size_t>(el.set) >= table.size() || (el.numNodes != 3 && el.numNodes != 4)) continue;
-    const SetPressure& sp = table[static_cast<size_t>(el.set)];
+    const SetPressure& sp = table[static_cast<size_t>(el.set)].pressure;
     if (sp.pressure != 0.0 || sp.pressureInitial != 0.0) pressureElems_.emplace_back(static_cast<int>(e), sp);
   }
   int any = pressureElems_.empty() ? 0 : 1;
@@ -128,13 +121,12 @@ PetscErrorCode Assembler::addLoadTangents(const LoadState& ls, Mat J) {
   long slack = 0;
   for (int e : cableElems_) {
     const LocalElement& el = mesh_.elements[static_cast<size_t>(e)];
-    const auto* c = static_cast<const Cable3D*>(el.kernel.get());
-    if (c->formFinding()) continue;
+    const ElementKernel& c = *el.kernel;
     gatherElement(el, q.data(), nullptr, idx.data(), nullptr);
-    if (!c->isSlack(q.data())) continue;
+    double axial = 0.0;
+    if (!c.slack(q.data(), &axial)) continue;
     ++slack;
-    const double EA = c->emod() * c->area();
-    const double k = slackStiffness_ * (EA > 0.0 ? EA : c->prestressForce()) / c->referenceLength();
+    const double k = slackStiffness_ * axial / c.referenceLength();
     if (!(k > 0.0)) continue;
     K.fill(0.0);
     for (int i = 0; i < 3; ++i) {

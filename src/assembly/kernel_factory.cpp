@@ -1,6 +1,6 @@
 #include "assembly/kernel_factory.hpp"
 
-#include "assembly/assembler.hpp"
+#include <petscsys.h>
 
 #include <algorithm>
 #include <map>
@@ -47,17 +47,15 @@ double constraintScaleOf(const Model& model) {
   return scale > 0 ? scale : 1.0;
 }
 
-KernelFactory makeKernelFactory(const Model& model, BeamMass beamMass) {
+ElementKernels makeKernelFactory(const Model& model, BeamMass beamMass) {
   const double scale = constraintScaleOf(model);
-  // membrane pressures per set, for the assembler's follower-load terms
-  std::vector<SetPressure> pressures(model.eprops.size());
-  for (size_t set = 0; set < model.eprops.size(); ++set)
+  // per set: membrane pressures (the assembler's follower-load terms) and mass-proportional loads
+  std::vector<SetLoads> setLoads(model.eprops.size());
+  for (size_t set = 0; set < model.eprops.size(); ++set) {
     if (model.eprops[set].type == ElementType::Membrane)
-      pressures[set] = {model.eprops[set].pressure, model.eprops[set].pressure_initial};
-  registerSetPressures(std::move(pressures));
-  std::vector<std::optional<Vec3>> accelerations(model.eprops.size());
-  for (size_t set = 0; set < model.eprops.size(); ++set) accelerations[set] = model.eprops[set].massProportionalLoad;
-  registerSetAccelerations(std::move(accelerations));
+      setLoads[set].pressure = {model.eprops[set].pressure, model.eprops[set].pressure_initial};
+    setLoads[set].acceleration = model.eprops[set].massProportionalLoad;
+  }
   // ANCF parameters (and their compiled user functions) once per property set
   auto ancf = std::make_shared<std::map<int, std::shared_ptr<const AncfCable2DParameters>>>();
   for (size_t set = 0; set < model.eprops.size(); ++set) {
@@ -70,7 +68,7 @@ KernelFactory makeKernelFactory(const Model& model, BeamMass beamMass) {
   }
   // -beam_mass lumped: beams give their inertia to their nodes (docs/dynamics.md, "Free-floating beams")
   const bool lumped = beamMass == BeamMass::Lumped;
-  return [scale, ancf, lumped](const Model& m, const FeMesh& fe, int e) -> std::unique_ptr<ElementKernel> {
+  KernelFactory kernelOf = [scale, ancf, lumped](const Model& m, const FeMesh& fe, int e) -> std::unique_ptr<ElementKernel> {
     const FeElement& el = fe.elements[e];
     const int set = el.set;
     const Vec3& Xp = fe.X[el.nodes[0]];
@@ -132,6 +130,7 @@ KernelFactory makeKernelFactory(const Model& model, BeamMass beamMass) {
     }
     throw std::logic_error("unknown element type");
   };
+  return {std::move(kernelOf), std::move(setLoads)};
 }
 
 }  // namespace sinew

@@ -6,9 +6,9 @@
 namespace sinew {
 
 /// Kernel factory for a model: beams (flexible, released and rigid modes; elements in no set are
-/// rigid and massless), cables, membranes and ANCF cables. beamMass: the beams' inertia (-beam_mass,
-/// DynamicsSettings::beamMass).
-KernelFactory makeKernelFactory(const Model& model, BeamMass beamMass);
+/// rigid and massless), cables, membranes and ANCF cables, with the loads of every eprops set.
+/// beamMass: the beams' inertia (-beam_mass, DynamicsSettings::beamMass).
+ElementKernels makeKernelFactory(const Model& model, BeamMass beamMass);
 
 /// Stiffness scale used for the rows of rigid-mode constraints: the largest EA / L of the
 /// flexible beams (1 when there are none), so multipliers are forces of the model's size.

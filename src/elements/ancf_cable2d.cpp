@@ -1,6 +1,8 @@
 // Exudyn ObjectANCFCable2D kernel (see ancf_cable2d.hpp for the formulation).
 #include "elements/ancf_cable2d.hpp"
 
+#include <algorithm>
+#include <array>
 #include <atomic>
 #include <cmath>
 #include <cstdio>
@@ -631,6 +633,12 @@ const std::vector<std::string>& AncfCable2D::outputVariables() {
       "Director1",      "StrainLocal",  "CurvatureLocal", "ForceLocal",   "TorqueLocal",
       "AngularVelocity", "Acceleration", "AngularAcceleration"};
   return names;
+}
+
+int AncfCable2D::sensorValueCount(const std::string& v) const {
+  static const std::array<const char*, 8> vectors = {"Position", "Displacement", "Velocity", "VelocityLocal",
+                                                     "Acceleration", "Director1", "AngularVelocity", "AngularAcceleration"};
+  return std::any_of(vectors.begin(), vectors.end(), [&](const char* s) { return v == s; }) ? 3 : 1;
 }
 
 std::vector<double> AncfCable2D::output(const std::string& variable, double x, const double* q, const double* qdot,

@@ -43,7 +43,7 @@ struct AncfCable2DParameters {
 /// std::invalid_argument with the expression, column and caret on a syntax error).
 AncfCable2DParameters ancfCable2DParameters(const ElementSet& set);
 
-class AncfCable2D : public ElementKernel {
+class AncfCable2D : public ElementKernel, public SensorKernel {
  public:
   /// qRef: both nodes' reference coordinates [x0, y0, sx0, sy0, x1, y1, sx1, sy1]; L: reference length.
   AncfCable2D(const std::array<double, 8>& qRef, double L, const AncfCable2DParameters& p);
@@ -78,6 +78,16 @@ class AncfCable2D : public ElementKernel {
                              const double* qddot, double t) const;
   static const std::vector<std::string>& outputVariables();
 
+  // --- the SensorKernel interface: output() at x = s L
+  const SensorKernel* sensors() const override { return this; }
+  /// x / (L numSub) numSub: the sensors' axial position x counts along the split scene element.
+  double sensorPosition(double x, double /*xi*/, int numSub) const override { return x / (L_ * numSub) * numSub; }
+  /// 3 for the vector variables (Position, ..., AngularAcceleration), 1 for the scalars.
+  int sensorValueCount(const std::string& variable) const override;
+  std::vector<double> sensorValue(const std::string& variable, double s, const SensorInput& in) const override {
+    return output(variable, s * L_, in.q, in.qdot, in.qddot, in.t);
+  }
+
   // Strain measures at x, exposed for tests and sensors.
   double axialStrain(const double* q, double x) const;
   double curvature(const double* q, double x) const;
@@ -86,6 +96,7 @@ class AncfCable2D : public ElementKernel {
   double curvatureRef(double x) const;
 
   double length() const { return L_; }
+  double referenceLength() const override { return L_; }
   /// int EA/2 (eps - eps_ref)^2 + EI/2 (K - K_ref)^2 dx with the rules of evaluate (its gradient is
   /// the internal force); false with user force laws (no energy given).
   bool strainEnergy(const double* q, double* energy) const override;

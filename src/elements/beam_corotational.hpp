@@ -24,7 +24,7 @@ namespace sinew {
 
 enum class BeamMode { Flexible, Rigid, Released };
 
-class BeamCorotational : public ElementKernel {
+class BeamCorotational : public ElementKernel, public SensorKernel {
  public:
   /// Xp, Xq: initial node positions; orien: local y direction (default global z, or global y when the
   /// chord is parallel to z); modes: per deformation mode 1..6; constraintScale multiplies every
@@ -61,6 +61,7 @@ class BeamCorotational : public ElementKernel {
   std::array<double, 6> generalizedStresses(const double* q, const double* lambda, const double* disp = nullptr) const;
 
   double l0() const { return l0_; }
+  double referenceLength() const override { return l0_; }
   const Vec3& ey0() const { return ey0_; }
   const Vec3& ez0() const { return ez0_; }
   /// Effective 6x6 stiffness of the generalized strains (released modes condensed out, rigid ones zero).
@@ -78,6 +79,14 @@ class BeamCorotational : public ElementKernel {
   std::array<double, 3> sensorValue(const std::string& variable, double s, const double* q, const double* disp,
                                     const double* rates, const double* lambda) const;
   static const std::vector<std::string>& sensorVariables();
+  // --- the SensorKernel interface: sensorValue above at s (the sensors' xi counts along the split scene element)
+  const SensorKernel* sensors() const override { return this; }
+  double sensorPosition(double /*x*/, double xi, int numSub) const override { return xi * numSub; }
+  int sensorValueCount(const std::string& /*variable*/) const override { return 3; }
+  std::vector<double> sensorValue(const std::string& variable, double s, const SensorInput& in) const override {
+    const std::array<double, 3> r = sensorValue(variable, s, in.q, in.disp, in.qdot, in.lambda);
+    return {r.begin(), r.end()};
+  }
   /// Current element frame (columns: chord, averaged rotated local y made normal to it, their cross product).
   Mat3 currentFrame(const double* q) const;
 

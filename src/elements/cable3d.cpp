@@ -59,6 +59,22 @@ void Cable3D::updateReference(const double* q) {
   L_ = l;
 }
 
+bool Cable3D::slack(const double* q, double* axialStiffness) const {
+  if (ff_ || !isSlack(q)) return false;
+  const double EA = E_ * A_;
+  *axialStiffness = EA > 0.0 ? EA : N0_;
+  return true;
+}
+
+Vec3 Cable3D::shapeAxis(const double* q) const {
+  Vec3 a = chord(q);
+  const double l = norm(a);
+  if (l > 0.0) a = (1.0 / l) * a;
+  return a;
+}
+
+void Cable3D::setReference(const double* X) { setReferenceLength(norm(Vec3{X[3] - X[0], X[4] - X[1], X[5] - X[2]})); }
+
 void Cable3D::evaluate(const KernelInput& in, const KernelNeeds& needs, KernelOutput& out) const {
   const double* q = in.q;
   out.f.assign(6, 0.0);

@@ -18,7 +18,7 @@
 
 namespace sinew {
 
-class Cable3D final : public ElementKernel {
+class Cable3D final : public ElementKernel, public FormFindingKernel {
  public:
   /// Reference positions of the two nodes, cross-section area, Young's modulus, density and
   /// prestress force N0. The reference length is |Xq - Xp| until setReferenceLength().
@@ -47,9 +47,15 @@ class Cable3D final : public ElementKernel {
     N0_ = in[1];
   }
 
+  FormFindingKernel* formFinding() override { return this; }
+  /// Slack when the elastic force N0 + EA (l/L - 1) <= 0 (not in form finding): axialStiffness = EA
+  /// (N0 when EA = 0).
+  bool tensionOnly() const override { return true; }
+  bool slack(const double* q, double* axialStiffness) const override;
+
   // --- properties
   void setReferenceLength(double L0) { L_ = L0; }
-  double referenceLength() const { return L_; }
+  double referenceLength() const override { return L_; }
   void setEmod(double emod) { E_ = emod; }
   void setPrestressForce(double N0) { N0_ = N0; }
   void setPrestressStress(double s0) { N0_ = s0 * A_; }
@@ -60,14 +66,30 @@ class Cable3D final : public ElementKernel {
 
   // --- form finding (URS)
   void setFormFinding(bool on, double lambda);
-  bool formFinding() const { return ff_; }
+  bool inFormFinding() const { return ff_; }
   double homotopy() const { return lambda_; }
   /// True in form finding: the tangent is purely geometric (material part zero when split).
   bool formFindingGeometricOnly() const { return ff_; }
   /// URS step: reference length := current length (stress adaption applied first when active).
-  void updateReference(const double* q);
+  void updateReference(const double* q) override;
   /// lambdaMax > 1 switches stress adaption on, <= 1 off.
   void setStressAdaption(double lambdaMax, double mueRelax);
+
+  // --- the FormFindingKernel interface (a line; no xURS, no distortion control)
+  Shape shapeType() const override { return Shape::Line; }
+  void enterFormFinding(double lambda, bool /*xurs*/) override { setFormFinding(true, lambda); }
+  void leaveFormFinding() override { setFormFinding(false, 0.0); }
+  void setAdaption(double lambdaMax, double mueRelax, double /*distortionMax*/) override { setStressAdaption(lambdaMax, mueRelax); }
+  double size(const double* q) const override { return length(q); }
+  /// Zero length: l <= 1e-12 of the model size.
+  bool collapsed(const double* q, double /*initialSize*/, double modelSize) const override {
+    return length(q) <= 1e-12 * modelSize;
+  }
+  /// Unit chord direction (x_q - x_p)/l.
+  Vec3 shapeAxis(const double* q) const override;
+  void clearPrestress() override { setPrestressForce(0.0); }
+  /// Reference length := |X_q - X_p|.
+  void setReference(const double* X) override;
 
   // --- state queries
   double length(const double* q) const;

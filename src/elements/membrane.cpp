@@ -556,4 +556,21 @@ double Membrane::meshQuality(const double* q) const {
 
 template void Membrane::ffForce<double>(const double*, double*) const;
 
+namespace {
+/// Area vector of a triangle, or half the cross product of a quad's diagonals, at the states q.
+Vec3 areaVector(int nn, const double* q) {
+  auto v = [&](int a, int b) { return Vec3{q[3 * b] - q[3 * a], q[3 * b + 1] - q[3 * a + 1], q[3 * b + 2] - q[3 * a + 2]}; };
+  return nn == 3 ? 0.5 * cross(v(0, 1), v(0, 2)) : 0.5 * cross(v(0, 2), v(1, 3));
+}
+}  // namespace
+
+double Membrane::size(const double* q) const { return norm(areaVector(nn_, q)); }
+
+Vec3 Membrane::shapeAxis(const double* q) const {
+  Vec3 a = areaVector(nn_, q);
+  const double l = norm(a);
+  if (l > 0.0) a = (1.0 / std::sqrt(l)) * a;  // a a^T = A n n^T
+  return a;
+}
+
 }  // namespace sinew

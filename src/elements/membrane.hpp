@@ -65,7 +65,7 @@ struct MembraneProps {
   std::array<double, 3> prestress{};  ///< [s11, s22, s12] (stress) in the prestress frame
 };
 
-class Membrane final : public ElementKernel {
+class Membrane final : public ElementKernel, public FormFindingKernel {
  public:
   /// X: 3 (triangle) or 4 (quad, counter-clockwise) reference node positions.
   Membrane(std::span<const Vec3> X, const MembraneProps& props, const PrestressFrame& frame = {});
@@ -88,12 +88,14 @@ class Membrane final : public ElementKernel {
   void saveCheckpoint(double* out) const override;
   void loadCheckpoint(const double* in) override;
 
+  FormFindingKernel* formFinding() override { return this; }
+
   int numNodes() const { return nn_; }
   const MembraneProps& props() const { return props_; }
   const PrestressFrame& frame() const { return frame_; }
 
   // --- reference configuration and prestress
-  void setReference(const double* X);  ///< 3*numNodes coordinates
+  void setReference(const double* X) override;  ///< 3*numNodes coordinates
   const std::array<Vec3, 4>& reference() const { return X_; }
   void setPrestress(const std::array<double, 3>& s0);  ///< resets the active (adapted) prestress
   const std::array<double, 3>& activePrestress() const { return sAct_; }
@@ -102,11 +104,11 @@ class Membrane final : public ElementKernel {
 
   // --- form finding
   void setFormFinding(bool on, double lambda);
-  bool formFinding() const { return ff_; }
+  bool inFormFinding() const { return ff_; }
   double homotopy() const { return lambda_; }
   bool formFindingGeometricOnly() const { return ff_; }
   /// URS step: apply stress adaption (when on) for the step deformation, then reference := q.
-  void updateReference(const double* q);
+  void updateReference(const double* q) override;
   /// lambdaMax > 1 switches stress adaption on, <= 1 off.
   void setStressAdaption(double lambdaMax, double mueRelax);
   /// muMax > 1 switches shape distortion control on (see the file comment), <= 1 off.
@@ -119,7 +121,31 @@ class Membrane final : public ElementKernel {
 
   /// Shape quality at state q: minimum corner sine normalised so that the equilateral triangle and
   /// the square give 1 (0 = degenerate). For quads the corner sines are those of the four corners.
-  double meshQuality(const double* q) const;
+  double meshQuality(const double* q) const override;
+
+  // --- the FormFindingKernel interface (a surface)
+  Shape shapeType() const override { return Shape::Surface; }
+  void enterFormFinding(double lambda, bool xurs) override {
+    setFormFinding(true, lambda);
+    setXurs(xurs);
+  }
+  void leaveFormFinding() override {
+    setFormFinding(false, 0.0);
+    setXurs(false);
+  }
+  void setAdaption(double lambdaMax, double mueRelax, double distortionMax) override {
+    setStressAdaption(lambdaMax, mueRelax);
+    setDistortionControl(distortionMax);
+  }
+  /// Area at q (a quad: half the cross product of its diagonals).
+  double size(const double* q) const override;
+  /// Area at most 1e-3 of the initial area.
+  bool collapsed(const double* q, double initialSize, double /*modelSize*/) const override {
+    return !(size(q) > 1e-3 * initialSize);
+  }
+  /// Area vector a (quad: from the diagonals) divided by sqrt(|a|).
+  Vec3 shapeAxis(const double* q) const override;
+  void clearPrestress() override { setPrestress({0.0, 0.0, 0.0}); }
 
   /// Internal force of the form-finding weak form (T = double or an AD scalar).
   template <class T> void ffForce(const T* x, T* f) const;

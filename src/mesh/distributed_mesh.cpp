@@ -179,9 +179,10 @@ int rigidModeCount(const Model& model, int e) {
   return count;
 }
 
-DistributedMesh distributeMesh(MPI_Comm comm, const Model& model, const FeMesh& fe, const KernelFactory& factory) {
+DistributedMesh distributeMesh(MPI_Comm comm, const Model& model, const FeMesh& fe, const ElementKernels& kernels) {
   DistributedMesh dm;
   dm.comm = comm;
+  dm.setLoads = kernels.setLoads;
   MPI_Comm_rank(comm, &dm.rank);
   MPI_Comm_size(comm, &dm.size);
   const int ne = static_cast<int>(fe.elements.size());
@@ -319,7 +320,7 @@ DistributedMesh distributeMesh(MPI_Comm comm, const Model& model, const FeMesh& 
     for (int i = 0; i < le.numNodes; ++i) le.node[i] = localOf[fe.elements[e].nodes[i]];
     if (elemMult[e] > 0) le.firstMultiplier = static_cast<int>(elemMultGlobal[e] - dm.firstOwnedUnknown);
     try {
-      le.kernel = factory(model, fe, e);
+      le.kernel = kernels.kernelOf(model, fe, e);
     } catch (const std::exception& ex) {
       kernelFailure(ex, fe, e, &failure, &failedElement);
       continue;

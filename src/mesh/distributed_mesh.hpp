@@ -66,6 +66,28 @@ struct LocalElement {
 /// Creates the kernel of FE element `e` (reference geometry from the mesh, properties from the model).
 using KernelFactory = std::function<std::unique_ptr<ElementKernel>(const Model&, const FeMesh&, int e)>;
 
+/// Surface pressure of an eprops set (membranes): pressureInitial + loadFactor * pressure, a follower
+/// load along the current element normal n = g1 x g2 / |g1 x g2| (node order, right-hand rule).
+struct SetPressure {
+  double pressure = 0, pressureInitial = 0;
+};
+
+/// Loads an eprops set puts on its elements besides their kernels (applied by the Assembler).
+struct SetLoads {
+  SetPressure pressure;  ///< all zero: no pressure terms
+  /// Mass-proportional load (Exudyn LoadMassProportional, `massProportionalLoad`): a body-force
+  /// acceleration on the set's elements with inertia, added to gravity (ramped with the load factor
+  /// in statics, constant in dynamics).
+  std::optional<Vec3> acceleration;
+};
+
+/// The element kinds' part of the mesh (makeKernelFactory, src/assembly/kernel_factory.hpp): the
+/// kernel of every FE element and the loads of every eprops set.
+struct ElementKernels {
+  KernelFactory kernelOf;
+  std::vector<SetLoads> setLoads;  ///< per eprops set
+};
+
 class DistributedMesh {
  public:
   MPI_Comm comm = MPI_COMM_WORLD;
@@ -73,6 +95,7 @@ class DistributedMesh {
   std::vector<LocalNode> nodes;  ///< owned nodes first (ascending gid), then ghosts (ascending gid)
   int numOwnedNodes = 0;
   std::vector<LocalElement> elements;
+  std::vector<SetLoads> setLoads;  ///< per eprops set (ElementKernels::setLoads)
   // unknowns: owned free node DOFs, then owned multipliers
   long numGlobalUnknowns = 0, firstOwnedUnknown = 0;
   int numOwnedUnknowns = 0;
@@ -97,6 +120,6 @@ class DistributedMesh {
 int rigidModeCount(const Model& model, int sceneElement);
 
 /// Partitions the FE elements with METIS on rank 0 and builds this rank's part. Collective.
-DistributedMesh distributeMesh(MPI_Comm comm, const Model& model, const FeMesh& fe, const KernelFactory& factory);
+DistributedMesh distributeMesh(MPI_Comm comm, const Model& model, const FeMesh& fe, const ElementKernels& kernels);
 
 }  // namespace sinew

@@ -53,12 +53,10 @@
 
 #include "analysis/constraint_check.hpp"
 #include "assembly/assembler.hpp"
+#include "elements/element_kinds.hpp"  // formFoundSets
 #include "sinew/model.hpp"
 
 namespace sinew {
-
-/// The form-found eprops sets: formfinding_elements, or every cable and membrane set when it is empty.
-std::vector<int> formFoundSets(const FormFinding& ff, const std::vector<ElementSet>& eprops);
 
 struct FormFindingStepReport {
   int step = 0;

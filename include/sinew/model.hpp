@@ -7,8 +7,10 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <variant>
 #include <vector>
 
+#include "sinew/element_properties.hpp"
 #include "sinew/linalg3.hpp"
 
 namespace sinew {
@@ -48,6 +50,7 @@ struct NodeProps {
   std::vector<std::string> transfer_out;  ///< displ_x ... veloc_x ...
 };
 
+/// The element kind of an eprops set (`type`); the order of ElementSet::Properties.
 enum class ElementType { Beam, Cable, Membrane, AncfCable2D };
 /// The scene's name of an element type (eprops type).
 inline const char* elementTypeName(ElementType t) {
@@ -59,39 +62,25 @@ inline const char* elementTypeName(ElementType t) {
   }
   return "beam";
 }
-enum class CrossSection { None, Rect, Circ };
 
+/// An eprops set: the fields every kind has, and the properties of its kind (element_properties.hpp).
 struct ElementSet {
+  using Properties = std::variant<BeamProperties, CableProperties, MembraneProperties, AncfCable2DProperties>;
   std::vector<int> elems;  ///< 0-based scene element numbers
-  ElementType type = ElementType::Beam;
-  int nbeams = 1;
-  // beam (SPACAR Light)
-  std::array<bool, 6> flex{};  ///< flexible deformation modes 1..6
-  bool cw = false;
-  double emod = 0, smod = 0, dens = 0;
-  CrossSection cshape = CrossSection::None;
-  std::vector<double> dim;      ///< rect: [width, height]; circ: [diameter]
-  std::optional<Vec3> orien;    ///< local y axis of the section (rect: width direction)
+  int nbeams = 1;          ///< FE elements per scene element (beams, ANCF cables)
+  // look (SPACAR Light)
   std::optional<std::array<double, 3>> color;
   double opacity = 1.0;
   bool hide = false;
-  // cable (3D, tension only)
-  double area = 0;
-  std::optional<double> prestress;         ///< force
-  std::optional<double> prestress_stress;  ///< stress
-  // membrane
-  double thickness = 0, nu = 0;
-  std::array<double, 3> membrane_prestress{};  ///< s11 s22 s12
-  std::optional<Vec3> prestress_dir, prestress_radial_axis;
-  double pressure = 0, pressure_initial = 0;  ///< follower surface pressure along the element normal (ramped / initial)
-  // ANCF cable 2D (Exudyn names)
-  double physicsMassPerLength = 0, physicsBendingStiffness = 0, physicsAxialStiffness = 0;
-  double physicsBendingDamping = 0, physicsAxialDamping = 0;
-  double physicsReferenceAxialStrain = 0, physicsReferenceCurvature = 0;
-  double strainIsRelativeToReference = 0;
-  int useReducedOrderIntegration = 0;
-  std::string axialForceUserFunction, bendingMomentUserFunction;
-  std::optional<Vec3> massProportionalLoad;
+  Properties props;  ///< the kind's properties (default: a beam)
+
+  ElementType type() const { return static_cast<ElementType>(props.index()); }
+  /// The properties of kind P, nullptr when the set is of another kind.
+  template <class P> const P* as() const { return std::get_if<P>(&props); }
+  template <class P> P* as() { return std::get_if<P>(&props); }
+  /// The properties of kind P (throws std::bad_variant_access for another kind).
+  template <class P> const P& get() const { return std::get<P>(props); }
+  template <class P> P& get() { return std::get<P>(props); }
 };
 
 /// Sinew: opt.dynamics.adaptive, optional time-step control (docs/dynamics.md "Time-step control").

@@ -18,11 +18,11 @@ const char* kDofNames[6] = {"translation x", "translation y", "translation z", "
 /// Rigid deformation modes (1-based) of a beam element, in multiplier order (as BeamCorotational).
 std::vector<int> rigidModes(const Model& model, const LocalElement& el) {
   std::vector<int> modes;
-  if (el.set >= 0 && model.eprops[el.set].type != ElementType::Beam) return modes;
+  if (el.set >= 0 && model.eprops[el.set].type() != ElementType::Beam) return modes;
   std::set<int> released;
   if (auto it = model.opt.rls.find(el.sceneElement); it != model.opt.rls.end()) released.insert(it->second.begin(), it->second.end());
   for (int i = 1; i <= 6; ++i)
-    if (!released.count(i) && (el.set < 0 || !model.eprops[el.set].flex[i - 1])) modes.push_back(i);
+    if (!released.count(i) && (el.set < 0 || !model.eprops[el.set].get<BeamProperties>().flex[i - 1])) modes.push_back(i);
   return modes;
 }
 

@@ -17,14 +17,6 @@ namespace {
 constexpr long kIterativeAbove = 50000;
 }  // namespace
 
-std::vector<int> formFoundSets(const FormFinding& ff, const std::vector<ElementSet>& eprops) {
-  std::vector<int> sets = ff.formfinding_elements;
-  if (sets.empty())
-    for (size_t s = 0; s < eprops.size(); ++s)
-      if (eprops[s].type == ElementType::Cable || eprops[s].type == ElementType::Membrane) sets.push_back(static_cast<int>(s));
-  return sets;
-}
-
 namespace {
 
 /// Homotopy factor and xURS of form-finding step k (1-based).
@@ -376,8 +368,7 @@ std::string FormFindingAnalysis::setNames() const {
   std::ostringstream s;
   for (size_t i = 0; i < ffSets_.size(); ++i) {
     const ElementSet& es = eprops_[static_cast<size_t>(ffSets_[i])];
-    s << (i ? ", " : "") << "eprops[" << ffSets_[i] << "] ("
-      << (es.type == ElementType::Membrane ? "membrane" : "cable") << " set " << ffSets_[i] + 1 << ")";
+    s << (i ? ", " : "") << "eprops[" << ffSets_[i] << "] (" << elementTypeName(es.type()) << " set " << ffSets_[i] + 1 << ")";
   }
   return s.str();
 }

@@ -53,14 +53,12 @@
 
 #include "analysis/constraint_check.hpp"
 #include "assembly/assembler.hpp"
+#include "elements/element_kinds.hpp"  // formFoundSets
 #include "settings/settings.hpp"
 #include "sinew/model.hpp"
 #include "solvers/newton_test.hpp"
 
 namespace sinew {
-
-/// The form-found eprops sets: formfinding_elements, or every cable and membrane set when it is empty.
-std::vector<int> formFoundSets(const FormFinding& ff, const std::vector<ElementSet>& eprops);
 
 struct FormFindingStepReport {
   int step = 0;

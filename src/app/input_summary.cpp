@@ -46,33 +46,37 @@ void list(std::ostringstream& o, const std::string& title, const std::vector<std
 
 std::string setLine(const ElementSet& s, std::size_t index) {
   std::ostringstream o;
-  o << "eprops[" << index << "] " << elementTypeName(s.type) << ", element" << (s.elems.size() > 1 ? "s " : " ") << numbers(s.elems)
-    << ":";
-  if (s.type == ElementType::Beam) {
+  o << "eprops[" << index << "] " << elementTypeName(s.type()) << ", element" << (s.elems.size() > 1 ? "s " : " ")
+    << numbers(s.elems) << ":";
+  double dens = 0;
+  if (const auto* b = s.as<BeamProperties>()) {
     std::vector<double> flex;
     for (int m = 0; m < 6; ++m)
-      if (s.flex[m]) flex.push_back(m + 1);
+      if (b->flex[m]) flex.push_back(m + 1);
     o << " flex " << vec(flex);
-    if (s.cshape != CrossSection::None) o << ", " << (s.cshape == CrossSection::Rect ? "rect " : "circ ") << vec(s.dim);
-    if (s.orien) o << ", orien " << vec(*s.orien);
+    if (b->cshape != CrossSection::None) o << ", " << (b->cshape == CrossSection::Rect ? "rect " : "circ ") << vec(b->dim);
+    if (b->orien) o << ", orien " << vec(*b->orien);
     if (s.nbeams > 1) o << ", nbeams " << s.nbeams;
-    if (s.emod > 0) o << ", emod " << num(s.emod);
-    if (s.smod > 0) o << ", smod " << num(s.smod);
-    if (s.cw) o << ", cw";
-  } else if (s.type == ElementType::Cable) {
-    o << " area " << num(s.area) << ", emod " << num(s.emod);
-    if (s.prestress) o << ", prestress " << num(*s.prestress);
-    if (s.prestress_stress) o << ", prestress_stress " << num(*s.prestress_stress);
-  } else if (s.type == ElementType::Membrane) {
-    o << " thickness " << num(s.thickness) << ", emod " << num(s.emod) << ", nu " << num(s.nu) << ", prestress "
-      << vec(s.membrane_prestress);
-    if (s.pressure != 0.0) o << ", pressure " << num(s.pressure);
-    if (s.pressure_initial != 0.0) o << ", pressure_initial " << num(s.pressure_initial);
-  } else {
-    o << " physicsAxialStiffness " << num(s.physicsAxialStiffness) << ", physicsBendingStiffness "
-      << num(s.physicsBendingStiffness) << ", physicsMassPerLength " << num(s.physicsMassPerLength);
+    if (b->emod > 0) o << ", emod " << num(b->emod);
+    if (b->smod > 0) o << ", smod " << num(b->smod);
+    if (b->cw) o << ", cw";
+    dens = b->dens;
+  } else if (const auto* c = s.as<CableProperties>()) {
+    o << " area " << num(c->area) << ", emod " << num(c->emod);
+    if (c->prestress) o << ", prestress " << num(*c->prestress);
+    if (c->prestress_stress) o << ", prestress_stress " << num(*c->prestress_stress);
+    dens = c->dens;
+  } else if (const auto* mp = s.as<MembraneProperties>()) {
+    o << " thickness " << num(mp->thickness) << ", emod " << num(mp->emod) << ", nu " << num(mp->nu) << ", prestress "
+      << vec(mp->prestress);
+    if (mp->pressure != 0.0) o << ", pressure " << num(mp->pressure);
+    if (mp->pressure_initial != 0.0) o << ", pressure_initial " << num(mp->pressure_initial);
+    dens = mp->dens;
+  } else if (const auto* a = s.as<AncfCable2DProperties>()) {
+    o << " physicsAxialStiffness " << num(a->physicsAxialStiffness) << ", physicsBendingStiffness "
+      << num(a->physicsBendingStiffness) << ", physicsMassPerLength " << num(a->physicsMassPerLength);
   }
-  if (s.dens > 0) o << ", dens " << num(s.dens);
+  if (dens > 0) o << ", dens " << num(dens);
   return o.str();
 }
 

@@ -4,7 +4,7 @@
 #include <sstream>
 #include <string>
 
-#include "elements/beam_corotational.hpp"
+#include "elements/element_kinds.hpp"
 
 namespace sinew {
 
@@ -28,10 +28,10 @@ Plan makePlan(const Model& model) {
       continue;
     }
     const ElementSet& s = model.eprops[set];
-    p.inertia |= s.dens > 0 || (s.type == ElementType::AncfCable2D && s.physicsMassPerLength > 0);
-    beams |= s.type == ElementType::Beam;
-    sections |= s.type == ElementType::Beam && s.cshape != CrossSection::None &&
-                std::any_of(s.flex.begin(), s.flex.end(), [](bool b) { return b; });
+    const ElementKind& kind = elementKind(s.type());
+    p.inertia |= kind.hasInertia(s);
+    beams |= s.type() == ElementType::Beam;
+    sections |= kind.stressOutput(s);
   }
   for (size_t i = 0; i < model.sensors.size(); ++i) {
     if (model.sensors[i].node >= 0) {
@@ -40,7 +40,7 @@ Plan makePlan(const Model& model) {
       bool frame = false;
       for (size_t e = 0; e < model.elements.size() && !frame; ++e) {
         const int set = model.elementSet[e];
-        if (set >= 0 && model.eprops[set].type != ElementType::Beam) continue;
+        if (set >= 0 && model.eprops[set].type() != ElementType::Beam) continue;
         for (int k : model.elements[e]) frame |= k == nd;
       }
       if (!frame)
@@ -49,22 +49,21 @@ Plan makePlan(const Model& model) {
       continue;
     }
     const int e = model.sensors[i].element, set = model.elementSet[e];
-    if (set < 0 || model.eprops[set].type == ElementType::Beam) {
-      // element sensors along beam (and rigid) elements: src/elements/beam_corotational_sensor.cpp
-      const auto& vars = BeamCorotational::sensorVariables();
-      if (std::find(vars.begin(), vars.end(), model.sensors[i].variable) == vars.end()) {
-        std::string list;
-        for (const auto& v : vars) list += (list.empty() ? "" : ", ") + v;
-        throw SceneError("sensors[" + std::to_string(i) + "].variable",
-                         "'" + model.sensors[i].variable + "' is not available along beam element " + std::to_string(e + 1) +
-                             "; beam sensors give " + list);
-      }
-      continue;
-    }
-    if (model.eprops[set].type != ElementType::AncfCable2D)
+    const ElementType type = set < 0 ? ElementType::Beam : model.eprops[set].type();  // rigid elements are beams
+    const ElementKind& kind = elementKind(type);
+    if (!kind.elementSensors)
       throw SceneError("sensors[" + std::to_string(i) + "].element",
                        "sensors sample ancf_cable2d and beam elements; element " + std::to_string(e + 1) + " is a " +
-                           elementTypeName(model.eprops[set].type));
+                           elementTypeName(type));
+    // the kind's sensor variables (beams: src/elements/beam_corotational_sensor.cpp; ancf_cable2d: the scene reader checks them)
+    if (const std::vector<std::string>* vars = kind.sensorVariables ? kind.sensorVariables() : nullptr;
+        vars && std::find(vars->begin(), vars->end(), model.sensors[i].variable) == vars->end()) {
+      std::string list;
+      for (const auto& v : *vars) list += (list.empty() ? "" : ", ") + v;
+      throw SceneError("sensors[" + std::to_string(i) + "].variable",
+                       "'" + model.sensors[i].variable + "' is not available along " + elementTypeName(type) + " element " +
+                           std::to_string(e + 1) + "; " + elementTypeName(type) + " sensors give " + list);
+    }
   }
   for (const auto& [node, np] : model.nprops) {
     p.inertia |= np.mass > 0;

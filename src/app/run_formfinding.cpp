@@ -17,7 +17,7 @@ namespace sinew {
 namespace {
 bool hasFormFound(const Model& m, ElementType type) {
   for (int s : formFoundSets(*m.formfinding, m.eprops))
-    if (m.eprops[static_cast<size_t>(s)].type == type) return true;
+    if (m.eprops[static_cast<size_t>(s)].type() == type) return true;
   return false;
 }
 
@@ -33,8 +33,8 @@ std::string formFindingCollapseCauses(const Model& m) {
   std::map<std::pair<int, int>, int> edges;
   for (int s : sets) {
     const ElementSet& es = m.eprops[static_cast<size_t>(s)];
-    cables |= es.type == ElementType::Cable;
-    if (es.type != ElementType::Membrane) continue;
+    cables |= es.type() == ElementType::Cable;
+    if (es.type() != ElementType::Membrane) continue;
     membranes = true;
     for (int e : es.elems) {
       const auto& el = m.elements[static_cast<size_t>(e)];
@@ -44,7 +44,8 @@ std::string formFindingCollapseCauses(const Model& m) {
       }
     }
   }
-  for (const ElementSet& es : m.eprops) loads |= es.pressure_initial != 0.0;
+  for (const ElementSet& es : m.eprops)
+    if (const auto* mp = es.as<MembraneProperties>()) loads |= mp->pressure_initial != 0.0;
   auto held = [&](int node) {
     auto it = m.nprops.find(node);
     if (it == m.nprops.end()) return false;

@@ -25,8 +25,7 @@
 #include "app/summary.hpp"
 #include "assembly/assembler.hpp"
 #include "assembly/kernel_factory.hpp"
-#include "elements/ancf_cable2d.hpp"
-#include "elements/beam_section.hpp"
+#include "elements/element_kinds.hpp"
 #include "mesh/collective_error.hpp"
 #include "mesh/distributed_mesh.hpp"
 #include "mesh/fe_mesh.hpp"
@@ -50,16 +49,13 @@ void warnings(MPI_Comm comm, const Model& model) {
   if (model.formfinding) {  // form-found sets without prestress (issue 10 item 17)
     for (const int set : formFoundSets(*model.formfinding, model.eprops)) {
       const ElementSet& s = model.eprops[static_cast<size_t>(set)];
-      const bool cable = s.type == ElementType::Cable, membrane = s.type == ElementType::Membrane;
-      if (!cable && !membrane) continue;
-      const bool zero = cable ? s.prestress.value_or(0.0) == 0.0 && s.prestress_stress.value_or(0.0) == 0.0
-                              : s.membrane_prestress[0] == 0.0 && s.membrane_prestress[1] == 0.0 && s.membrane_prestress[2] == 0.0;
-      if (zero)
+      const ElementKind& kind = elementKind(s.type());
+      const char* fields = kind.missingPrestress ? kind.missingPrestress(s) : nullptr;
+      if (fields)
         PetscPrintf(comm,
                     "warning: eprops[%zu] (%s set %zu) is form-found with zero prestress (%s): it carries no force and "
                     "gives no stiffness in form finding\n",
-                    static_cast<size_t>(set), cable ? "cable" : "membrane", static_cast<size_t>(set) + 1,
-                    cable ? "prestress / prestress_stress" : "prestress [s11, s22, s12]");
+                    static_cast<size_t>(set), elementTypeName(s.type()), static_cast<size_t>(set) + 1, fields);
     }
   }
   if (model.nodes.size() > model.connectedNodes) {
@@ -70,32 +66,15 @@ void warnings(MPI_Comm comm, const Model& model) {
                 first == last ? "" : "s", first, first == last ? "" : "..", first == last ? "" : std::to_string(last).c_str(),
                 first == last ? "is" : "are", first == last ? "its" : "their", first == last ? "" : "s");
   }
+  // the kinds' own warnings about their sets (beams: rect without orien, L/w < 3 without cw)
   for (size_t set = 0; set < model.eprops.size(); ++set) {
-    const ElementSet& s = model.eprops[set];
-    if (s.type == ElementType::Beam && s.cshape == CrossSection::Rect && !s.orien && !s.elems.empty())
-      PetscPrintf(comm,
-                  "warning: eprops[%zu] element%s %s: cshape rect without orien (SPACAR Light requires it); the width "
-                  "dim[0] is taken along the global z axis (global y for an element along z): give orien\n",
-                  set, s.elems.size() > 1 ? "s" : "", oneBasedList(s.elems, 5).c_str());
+    const ElementKind& kind = elementKind(model.eprops[set].type());
+    if (!kind.warnings) continue;
+    for (const std::string& w : kind.warnings(model, set)) PetscPrintf(comm, "warning: %s\n", w.c_str());
   }
   if (model.opt.customvis)
     PetscPrintf(comm, "note: opt.customvis (SPACAR Light's custom visualization) is accepted but not drawn by Sinew; "
                       "the XDMF file beside the result file shows the mesh (eprops color, opacity, hide)\n");
-  for (size_t set = 0; set < model.eprops.size(); ++set) {
-    const ElementSet& s = model.eprops[set];
-    if (s.type != ElementType::Beam) continue;
-    for (int e : s.elems) {
-      const auto& en = model.elements[e];
-      const double L = norm(model.nodes[en[1]] - model.nodes[en[0]]);
-      if (beamNeedsWarpingWarning(s, L)) {
-        PetscPrintf(comm,
-                    "warning: eprops[%zu] element %d: L/w = %.3g < 3 without cw; constrained warping stiffens "
-                    "torsion (set cw: true)\n",
-                    set, e + 1, L / s.dim[0]);
-        break;
-      }
-    }
-  }
 }
 
 /// SPACAR Light's element look (eprops color, opacity, hide) per visualization cell, in the order of
@@ -118,7 +97,7 @@ void fillLook(const Model& model, const DistributedMesh& mesh, ResultLayout& lay
 /// [0, 0], is none), and zero nodal loads and prescribed motions on every node (collective).
 bool unloaded(const Model& model, const DistributedMesh& mesh, const Assembler& assembler) {
   int loaded = (model.opt.gravity.has_value() && norm(*model.opt.gravity) > 0.0) || assembler.hasPressure();
-  for (const ElementSet& s : model.eprops) loaded |= s.massProportionalLoad.has_value() && norm(*s.massProportionalLoad) > 0.0;
+  for (const ElementSet& s : model.eprops) loaded |= elementKind(s.type()).bodyLoaded(s);
   for (const LocalNode& n : mesh.nodes) {
     for (int k = 0; k < 6; ++k)
       loaded |= n.load[k] != 0.0 || n.loadInitial[k] != 0.0 || n.prescribed[k] != 0.0 || n.prescribedInitial[k] != 0.0;
@@ -134,12 +113,7 @@ bool unloaded(const Model& model, const DistributedMesh& mesh, const Assembler& 
 /// form-found start state. Without any, step 1 is the start state itself and needs no solve.
 bool initiallyLoaded(const Model& model, const DistributedMesh& mesh) {
   int loaded = model.formfinding.has_value();
-  for (const ElementSet& s : model.eprops) {
-    loaded |= s.pressure_initial != 0.0 || s.physicsReferenceAxialStrain != 0.0 || s.physicsReferenceCurvature != 0.0;
-    loaded |= (s.prestress && *s.prestress != 0.0) || (s.prestress_stress && *s.prestress_stress != 0.0);
-    for (double p : s.membrane_prestress) loaded |= p != 0.0;
-    loaded |= !s.axialForceUserFunction.empty() || !s.bendingMomentUserFunction.empty();
-  }
+  for (const ElementSet& s : model.eprops) loaded |= elementKind(s.type()).initiallyLoaded(s);
   for (const LocalNode& n : mesh.nodes) {
     for (int k = 0; k < 6; ++k) loaded |= n.loadInitial[k] != 0.0 || n.prescribedInitial[k] != 0.0;
     for (int k = 0; k < 3; ++k) loaded |= n.rotInitial[k] != 0.0;
@@ -641,12 +615,13 @@ PetscErrorCode runScene(int argc, char** argv, int* exitCode) {
   body.stressElement = results.lastStressElement();
   body.analysisLines = ctx.summaryLines;
   for (auto& a : ctx.stepAnalyses) body.analysisLines += a->summary();
-  if (std::any_of(model.eprops.begin(), model.eprops.end(), [](const ElementSet& s) { return s.type == ElementType::AncfCable2D; })) {
-    const AncfCable2D::EvaluationCounts c = AncfCable2D::evaluationCounts();
-    long n[2] = {c.userFunctions, c.dampingTerms};
-    MPI_Allreduce(MPI_IN_PLACE, n, 2, MPI_LONG, MPI_SUM, comm);
-    body.analysisLines += "  ancf_cable2d force laws: " + std::to_string(n[0]) + " user-function evaluations, " +
-                          std::to_string(n[1]) + " damping-term evaluations\n";
+  for (const ElementKind& kind : elementKinds()) {  // the evaluation counters of the kinds the model uses
+    if (!kind.counters || std::none_of(model.eprops.begin(), model.eprops.end(),
+                                       [&](const ElementSet& s) { return s.type() == kind.type; }))
+      continue;
+    std::vector<long> n = kind.counters();
+    MPI_Allreduce(MPI_IN_PLACE, n.data(), static_cast<int>(n.size()), MPI_LONG, MPI_SUM, comm);
+    body.analysisLines += kind.countersLine(n);
   }
   body.counters = assembler.counters();
   body.times = ctx.times;

@@ -21,7 +21,7 @@ double sceneElementLength(const Model& model, int e) {
 
 /// beamSection of set `set` for scene element e; its errors ("eprops.smod") name the set and the
 /// element ("eprops[0].smod", as the scene check does).
-BeamSection sectionOf(const ElementSet& s, int set, const Model& model, int e) {
+BeamSection sectionOf(const BeamProperties& s, int set, const Model& model, int e) {
   try {
     return beamSection(s, sceneElementLength(model, e));
   } catch (const SceneError& ex) {
@@ -38,11 +38,10 @@ double constraintScaleOf(const Model& model) {
   double scale = 0.0;
   for (size_t e = 0; e < model.elements.size(); ++e) {
     const int set = model.elementSet[e];
-    if (set < 0 || model.eprops[set].type != ElementType::Beam) continue;
-    const ElementSet& s = model.eprops[set];
-    if (s.emod <= 0 || s.dim.empty()) continue;
-    const BeamSection sec = sectionOf(s, set, model, static_cast<int>(e));
-    scale = std::max(scale, sec.EA * s.nbeams / sceneElementLength(model, static_cast<int>(e)));
+    const BeamProperties* s = set < 0 ? nullptr : model.eprops[set].as<BeamProperties>();
+    if (!s || s->emod <= 0 || s->dim.empty()) continue;
+    const BeamSection sec = sectionOf(*s, set, model, static_cast<int>(e));
+    scale = std::max(scale, sec.EA * model.eprops[set].nbeams / sceneElementLength(model, static_cast<int>(e)));
   }
   return scale > 0 ? scale : 1.0;
 }
@@ -52,16 +51,16 @@ ElementKernels makeKernelFactory(const Model& model, BeamMass beamMass) {
   // per set: membrane pressures (the assembler's follower-load terms) and mass-proportional loads
   std::vector<SetLoads> setLoads(model.eprops.size());
   for (size_t set = 0; set < model.eprops.size(); ++set) {
-    if (model.eprops[set].type == ElementType::Membrane)
-      setLoads[set].pressure = {model.eprops[set].pressure, model.eprops[set].pressure_initial};
-    setLoads[set].acceleration = model.eprops[set].massProportionalLoad;
+    if (const auto* mp = model.eprops[set].as<MembraneProperties>()) setLoads[set].pressure = {mp->pressure, mp->pressure_initial};
+    if (const auto* a = model.eprops[set].as<AncfCable2DProperties>()) setLoads[set].acceleration = a->massProportionalLoad;
   }
   // ANCF parameters (and their compiled user functions) once per property set
   auto ancf = std::make_shared<std::map<int, std::shared_ptr<const AncfCable2DParameters>>>();
   for (size_t set = 0; set < model.eprops.size(); ++set) {
-    if (model.eprops[set].type != ElementType::AncfCable2D) continue;
+    const auto* a = model.eprops[set].as<AncfCable2DProperties>();
+    if (!a) continue;
     try {
-      (*ancf)[static_cast<int>(set)] = std::make_shared<const AncfCable2DParameters>(ancfCable2DParameters(model.eprops[set]));
+      (*ancf)[static_cast<int>(set)] = std::make_shared<const AncfCable2DParameters>(ancfCable2DParameters(*a));
     } catch (const std::invalid_argument& ex) {
       throw SceneError("eprops[" + std::to_string(set) + "]", ex.what());
     }
@@ -73,7 +72,7 @@ ElementKernels makeKernelFactory(const Model& model, BeamMass beamMass) {
     const int set = el.set;
     const Vec3& Xp = fe.X[el.nodes[0]];
     const Vec3& Xq = fe.X[el.nodes[1]];
-    const ElementType type = set < 0 ? ElementType::Beam : m.eprops[set].type;
+    const ElementType type = set < 0 ? ElementType::Beam : m.eprops[set].type();
     switch (type) {
       case ElementType::Beam: {
         std::array<BeamMode, 6> modes;
@@ -81,7 +80,7 @@ ElementKernels makeKernelFactory(const Model& model, BeamMass beamMass) {
         BeamSection sec;
         std::optional<Vec3> orien;
         if (set >= 0) {
-          const ElementSet& s = m.eprops[set];
+          const BeamProperties& s = m.eprops[set].get<BeamProperties>();
           for (int i = 0; i < 6; ++i)
             if (s.flex[i]) modes[i] = BeamMode::Flexible;
           const bool flexible = std::any_of(s.flex.begin(), s.flex.end(), [](bool b) { return b; });
@@ -90,7 +89,7 @@ ElementKernels makeKernelFactory(const Model& model, BeamMass beamMass) {
             sec = sectionOf(s, set, m, el.sceneElement);
           } else if (m.opt.rigidstress && s.cshape != CrossSection::None) {
             // rigid set reported with rigidstress: section geometry only (stresses from the multipliers)
-            ElementSet geometry = s;
+            BeamProperties geometry = s;
             geometry.dens = 1.0;
             sec = sectionOf(geometry, set, m, el.sceneElement);
             sec.rho = sec.rhoA = sec.rhoIy = sec.rhoIz = sec.rhoIp = 0.0;
@@ -101,13 +100,13 @@ ElementKernels makeKernelFactory(const Model& model, BeamMass beamMass) {
         }
         if (auto it = m.opt.rls.find(el.sceneElement); it != m.opt.rls.end())
           for (int mode : it->second) modes[mode - 1] = BeamMode::Released;
-        const bool inertia = set >= 0 && m.eprops[set].dens > 0;
+        const bool inertia = set >= 0 && m.eprops[set].get<BeamProperties>().dens > 0;
         auto beam = std::make_unique<BeamCorotational>(Xp, Xq, orien, sec, modes, inertia, scale);
         beam->setLumpedMass(lumped);
         return beam;
       }
       case ElementType::Cable: {
-        const ElementSet& s = m.eprops[set];
+        const CableProperties& s = m.eprops[set].get<CableProperties>();
         const double N0 = s.prestress ? *s.prestress : (s.prestress_stress ? *s.prestress_stress * s.area : 0.0);
         return std::make_unique<Cable3D>(Xp, Xq, s.area, s.emod, s.dens, N0);
       }
@@ -118,10 +117,10 @@ ElementKernels makeKernelFactory(const Model& model, BeamMass beamMass) {
         return std::make_unique<AncfCable2D>(qRef, norm(Xq - Xp), ancf->at(set));
       }
       case ElementType::Membrane: {
-        const ElementSet& s = m.eprops[set];
+        const MembraneProperties& s = m.eprops[set].get<MembraneProperties>();
         std::array<Vec3, 4> X;
         for (int i = 0; i < el.numNodes; ++i) X[i] = fe.X[el.nodes[i]];
-        MembraneProps props{s.thickness, s.emod, s.nu, s.dens, s.membrane_prestress};
+        MembraneProps props{s.thickness, s.emod, s.nu, s.dens, s.prestress};
         PrestressFrame frame;
         if (s.prestress_radial_axis) frame = PrestressFrame::radial(*s.prestress_radial_axis);
         else if (s.prestress_dir) frame = PrestressFrame::direction(*s.prestress_dir);

@@ -232,7 +232,7 @@ inline void addOuter(double c, const double u[8], const double v[8], double* __r
 }  // namespace
 
 // ------------------------------------------------------------------------------------------------
-AncfCable2DParameters ancfCable2DParameters(const ElementSet& set) {
+AncfCable2DParameters ancfCable2DParameters(const AncfCable2DProperties& set) {
   AncfCable2DParameters p;
   p.physicsMassPerLength = set.physicsMassPerLength;
   p.physicsBendingStiffness = set.physicsBendingStiffness;

@@ -20,7 +20,7 @@
 
 #include "elements/expression.hpp"
 #include "sinew/element_kernel.hpp"
-#include "sinew/model.hpp"
+#include "sinew/element_properties.hpp"
 
 namespace sinew {
 
@@ -41,7 +41,7 @@ struct AncfCable2DParameters {
 
 /// Parameters of a scene property set (compiles its user-function expressions; throws
 /// std::invalid_argument with the expression, column and caret on a syntax error).
-AncfCable2DParameters ancfCable2DParameters(const ElementSet& set);
+AncfCable2DParameters ancfCable2DParameters(const AncfCable2DProperties& set);
 
 class AncfCable2D : public ElementKernel, public SensorKernel {
  public:

@@ -35,7 +35,7 @@ double constrainedWarpingFactor(double L, double w, double nu) {
 }
 
 namespace {
-bool anyFlexible(const ElementSet& set) {
+bool anyFlexible(const BeamProperties& set) {
   return std::any_of(set.flex.begin(), set.flex.end(), [](bool b) { return b; });
 }
 void requirePositive(double v, const char* field, const std::string& why) {
@@ -47,9 +47,8 @@ void requirePositive(double v, const char* field, const std::string& why) {
 }
 }  // namespace
 
-BeamSection beamSection(const ElementSet& set, double flexureLength) {
+BeamSection beamSection(const BeamProperties& set, double flexureLength) {
   BeamSection s;
-  if (set.type != ElementType::Beam) throw SceneError("eprops.type", "beamSection called for a set that is not a beam");
   const bool flexible = anyFlexible(set);
   const bool massive = set.dens > 0.0;
   if (set.dens < 0.0) throw SceneError("eprops.dens", "density must be >= 0");
@@ -118,9 +117,9 @@ BeamSection beamSection(const ElementSet& set, double flexureLength) {
   return s;
 }
 
-bool beamNeedsWarpingWarning(const ElementSet& set, double L) {
+bool beamNeedsWarpingWarning(const BeamProperties& set, double L) {
   // only where torsion (deformation mode 2) is flexible: cw changes nothing else
-  return set.type == ElementType::Beam && set.cshape == CrossSection::Rect && !set.cw && set.flex[1] &&
+  return set.cshape == CrossSection::Rect && !set.cw && set.flex[1] &&
          set.dim.size() == 2 && set.dim[0] > 0.0 && L / set.dim[0] < 3.0;
 }
 

@@ -1,6 +1,7 @@
 // Cross-section constants of a SPACAR Light beam set (eprops: cshape, dim, emod, smod, dens, cw).
 // Local axes: x along the beam, y = orien direction (rect: width w), z = x cross y (rect: thickness t).
 #pragma once
+#include "sinew/element_properties.hpp"
 #include "sinew/model.hpp"
 
 namespace sinew {
@@ -33,12 +34,12 @@ double cowperShearCoefficient(CrossSection shape, double nu);
 /// Constrained-warping factor of reference B5: a c / (a c - 2 tanh(a c / 2)), a = L / w, c = sqrt(24/(1+nu)).
 double constrainedWarpingFactor(double L, double w, double nu);
 
-/// Section of a beam set; flexureLength = scene element length L (used by cw).
+/// Section of a beam set's properties; flexureLength = scene element length L (used by cw).
 /// Throws SceneError when a quantity needed by the set (flexible modes, mass) is missing or <= 0.
-BeamSection beamSection(const ElementSet& set, double flexureLength);
+BeamSection beamSection(const BeamProperties& set, double flexureLength);
 
 /// True for a rect section with flexible torsion (mode 2) without cw whose L / w < 3 (warping
 /// restraint matters).
-bool beamNeedsWarpingWarning(const ElementSet& set, double L);
+bool beamNeedsWarpingWarning(const BeamProperties& set, double L);
 
 }  // namespace sinew

@@ -175,7 +175,7 @@ int rigidModeCount(const Model& model, int e) {
     for (int m : it->second) released[m - 1] = true;
   int count = 0;
   for (int i = 0; i < 6; ++i)
-    if (!released[i] && (set < 0 || !model.eprops[set].flex[i])) ++count;
+    if (!released[i] && (set < 0 || !model.eprops[set].get<BeamProperties>().flex[i])) ++count;
   return count;
 }
 

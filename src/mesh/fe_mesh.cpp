@@ -7,7 +7,7 @@ namespace sinew {
 
 ElementType elementTypeOf(const Model& model, int e) {
   const int set = model.elementSet[e];
-  return set < 0 ? ElementType::Beam : model.eprops[set].type;
+  return set < 0 ? ElementType::Beam : model.eprops[set].type();
 }
 
 static NodeKind kindOf(ElementType t) {

@@ -67,55 +67,56 @@ std::string modeList(const std::vector<int>& modes) {
 }
 
 void parseBeam(const YAML::Node& n, const std::string& path, ElementSet& s) {
+  BeamProperties& b = s.get<BeamProperties>();
   std::vector<int> flexModes;
   if (const YAML::Node f = n["flex"]; f.IsDefined()) {
     const auto modes = getInts(f, childPath(path, "flex"), true);
     for (std::size_t i = 0; i < modes.size(); ++i) {
       const std::string p = f.IsSequence() ? indexPath(childPath(path, "flex"), i) : childPath(path, "flex");
       if (modes[i] < 1 || modes[i] > 6) fail(p, "expected a deformation mode 1..6, got " + std::to_string(modes[i]));
-      if (s.flex[static_cast<std::size_t>(modes[i] - 1)]) fail(p, "mode " + std::to_string(modes[i]) + " is listed twice");
-      s.flex[static_cast<std::size_t>(modes[i] - 1)] = true;
+      if (b.flex[static_cast<std::size_t>(modes[i] - 1)]) fail(p, "mode " + std::to_string(modes[i]) + " is listed twice");
+      b.flex[static_cast<std::size_t>(modes[i] - 1)] = true;
       flexModes.push_back(modes[i]);
     }
   }
   std::sort(flexModes.begin(), flexModes.end());
   if (const YAML::Node v = n["nbeams"]; v.IsDefined()) s.nbeams = getIntAtLeast(v, childPath(path, "nbeams"), 1);
-  if (const YAML::Node v = n["cw"]; v.IsDefined()) s.cw = getBool(v, childPath(path, "cw"));
+  if (const YAML::Node v = n["cw"]; v.IsDefined()) b.cw = getBool(v, childPath(path, "cw"));
   if (const YAML::Node v = n["warping"]; v.IsDefined()) {  // newer SPACAR Light scripts' name of cw
     if (n["cw"].IsDefined()) fail(childPath(path, "warping"), "warping is another name of cw; give one of them");
-    s.cw = getBool(v, childPath(path, "warping"));
+    b.cw = getBool(v, childPath(path, "warping"));
   }
   const bool hasE = n["emod"].IsDefined(), hasG = n["smod"].IsDefined(), hasRho = n["dens"].IsDefined();
-  if (hasE) s.emod = getNonNegative(n["emod"], childPath(path, "emod"), kMaterial);
-  if (hasG) s.smod = getNonNegative(n["smod"], childPath(path, "smod"), kMaterial);
-  if (hasRho) s.dens = getNonNegative(n["dens"], childPath(path, "dens"), kMaterial);
+  if (hasE) b.emod = getNonNegative(n["emod"], childPath(path, "emod"), kMaterial);
+  if (hasG) b.smod = getNonNegative(n["smod"], childPath(path, "smod"), kMaterial);
+  if (hasRho) b.dens = getNonNegative(n["dens"], childPath(path, "dens"), kMaterial);
   if (const YAML::Node v = n["cshape"]; v.IsDefined())
-    s.cshape = getChoice(v, childPath(path, "cshape"), {"rect", "circ"}) == "rect" ? CrossSection::Rect : CrossSection::Circ;
+    b.cshape = getChoice(v, childPath(path, "cshape"), {"rect", "circ"}) == "rect" ? CrossSection::Rect : CrossSection::Circ;
   if (const YAML::Node v = n["dim"]; v.IsDefined()) {
     const std::string p = childPath(path, "dim");
-    if (s.cshape == CrossSection::None)
+    if (b.cshape == CrossSection::None)
       fail(childPath(path, "cshape"), "missing: dim is given, so cshape (rect or circ) is needed to read it");
-    const std::size_t want = s.cshape == CrossSection::Rect ? 2 : 1;
-    const std::string shape = s.cshape == CrossSection::Rect ? "rect" : "circ";
+    const std::size_t want = b.cshape == CrossSection::Rect ? 2 : 1;
+    const std::string shape = b.cshape == CrossSection::Rect ? "rect" : "circ";
     if (want == 1 && v.IsScalar()) {  // the seed's double: dim: 0.01 is dim: [0.01]
-      s.dim.push_back(getPositive(v, p, kSectionLength));
+      b.dim.push_back(getPositive(v, p, kSectionLength));
     } else {
       if (!v.IsSequence()) fail(p, "expected a list of " + std::to_string(want) + (want == 1 ? " number" : " numbers") +
                                        " (or, for circ, one number) for cshape " + shape + ", got " + describe(v));
       if (v.size() != want)
         fail(p, "expected " + std::to_string(want) + (want == 1 ? " number" : " numbers") + " for cshape " + shape + " (" +
                     (want == 2 ? "[width, height]" : "[diameter]") + "), got " + std::to_string(v.size()));
-      for (std::size_t i = 0; i < want; ++i) s.dim.push_back(getPositive(v[i], indexPath(p, i), kSectionLength));
+      for (std::size_t i = 0; i < want; ++i) b.dim.push_back(getPositive(v[i], indexPath(p, i), kSectionLength));
     }
   }
-  if (const YAML::Node v = n["orien"]; v.IsDefined()) s.orien = getDirection(v, childPath(path, "orien"));
+  if (const YAML::Node v = n["orien"]; v.IsDefined()) b.orien = getDirection(v, childPath(path, "orien"));
 
   // The materials the flexible modes need, as the element (beamSection) needs them: emod for
   // elongation (1) and bending (3-6), smod for torsion (2) and for the shear deformation of bending
   // (3-6, Timoshenko); constrained warping (cw) needs both (Poisson's ratio emod / (2 smod) - 1).
   std::vector<int> needE, needG;
   for (int m : flexModes) {
-    if (m != 2 || s.cw) needE.push_back(m);
+    if (m != 2 || b.cw) needE.push_back(m);
     if (m != 1) needG.push_back(m);
   }
   auto what = [](const std::vector<int>& modes) {
@@ -126,101 +127,102 @@ void parseBeam(const YAML::Node& n, const std::string& path, ElementSet& s) {
     }
     return w;
   };
-  if (!needE.empty() && (!hasE || s.emod == 0))
+  if (!needE.empty() && (!hasE || b.emod == 0))
     fail(childPath(path, "emod"), std::string(hasE ? "expected emod > 0" : "missing") + ": flexible mode" +
                                       (needE.size() > 1 ? "s " : " ") + modeList(needE) + " (" + what(needE) +
-                                      (s.cw && s.flex[1] ? "; torsion with cw" : "") + ") need" +
+                                      (b.cw && b.flex[1] ? "; torsion with cw" : "") + ") need" +
                                       (needE.size() > 1 ? " " : "s ") + "emod (Young's modulus)");
-  if (!needG.empty() && (!hasG || s.smod == 0))
+  if (!needG.empty() && (!hasG || b.smod == 0))
     fail(childPath(path, "smod"), std::string(hasG ? "expected smod > 0" : "missing") + ": flexible mode" +
                                       (needG.size() > 1 ? "s " : " ") + modeList(needG) + " (" + what(needG) +
                                       (needG.back() > 2 ? ", with shear deformation" : "") + ") need" +
                                       (needG.size() > 1 ? " " : "s ") + "smod (shear modulus)");
-  if (s.cw && s.cshape == CrossSection::Circ && !flexModes.empty())
+  if (b.cw && b.cshape == CrossSection::Circ && !flexModes.empty())
     fail(childPath(path, n["warping"].IsDefined() ? "warping" : "cw"),
          "constrained warping (cw) applies to rect sections only (cshape is circ)");
-  if (!flexModes.empty() || s.dens > 0) {
+  if (!flexModes.empty() || b.dens > 0) {
     const std::string why = flexModes.empty() ? "a beam with dens > 0" : "a flexible beam";
-    if (s.cshape == CrossSection::None) fail(childPath(path, "cshape"), "missing: " + why + " needs cshape (rect or circ) and dim");
-    if (s.dim.empty())
+    if (b.cshape == CrossSection::None) fail(childPath(path, "cshape"), "missing: " + why + " needs cshape (rect or circ) and dim");
+    if (b.dim.empty())
       fail(childPath(path, "dim"), "missing: " + why + " needs dim (" +
-                                       (s.cshape == CrossSection::Rect ? "[width, height] for cshape rect" : "[diameter] for cshape circ") + ")");
+                                       (b.cshape == CrossSection::Rect ? "[width, height] for cshape rect" : "[diameter] for cshape circ") + ")");
   }
 }
 
-void parseCable(const YAML::Node& n, const std::string& path, ElementSet& s) {
+void parseCable(const YAML::Node& n, const std::string& path, CableProperties& c) {
   if (!n["area"].IsDefined()) fail(childPath(path, "area"), "missing: a cable needs area (cross-section area)");
-  s.area = getPositive(n["area"], childPath(path, "area"), kArea);
+  c.area = getPositive(n["area"], childPath(path, "area"), kArea);
   if (!n["emod"].IsDefined()) fail(childPath(path, "emod"), "missing: a cable needs emod (Young's modulus)");
-  s.emod = getNonNegative(n["emod"], childPath(path, "emod"), kMaterial);
-  if (const YAML::Node v = n["dens"]; v.IsDefined()) s.dens = getNonNegative(v, childPath(path, "dens"), kMaterial);
-  if (const YAML::Node v = n["prestress"]; v.IsDefined()) s.prestress = getNonNegative(v, childPath(path, "prestress"), kLoad);
+  c.emod = getNonNegative(n["emod"], childPath(path, "emod"), kMaterial);
+  if (const YAML::Node v = n["dens"]; v.IsDefined()) c.dens = getNonNegative(v, childPath(path, "dens"), kMaterial);
+  if (const YAML::Node v = n["prestress"]; v.IsDefined()) c.prestress = getNonNegative(v, childPath(path, "prestress"), kLoad);
   if (const YAML::Node v = n["prestress_stress"]; v.IsDefined()) {
-    if (s.prestress)
+    if (c.prestress)
       fail(childPath(path, "prestress_stress"), "give either prestress (a force) or prestress_stress (a stress), not both");
-    s.prestress_stress = getNonNegative(v, childPath(path, "prestress_stress"), kLoad);
+    c.prestress_stress = getNonNegative(v, childPath(path, "prestress_stress"), kLoad);
   }
 }
 
-void parseMembrane(const YAML::Node& n, const std::string& path, ElementSet& s) {
+void parseMembrane(const YAML::Node& n, const std::string& path, MembraneProperties& mp) {
   if (!n["thickness"].IsDefined()) fail(childPath(path, "thickness"), "missing: a membrane needs thickness");
-  s.thickness = getPositive(n["thickness"], childPath(path, "thickness"), kSectionLength);
+  mp.thickness = getPositive(n["thickness"], childPath(path, "thickness"), kSectionLength);
   if (!n["emod"].IsDefined()) fail(childPath(path, "emod"), "missing: a membrane needs emod (Young's modulus)");
   // emod: 0 for a form-finding-only set (Kratos' form-finding tests use E = 0); checked against the
   // analyses by checkZeroModulusMembranes once the formfinding block is read
-  s.emod = getNonNegative(n["emod"], childPath(path, "emod"), kMaterial);
+  mp.emod = getNonNegative(n["emod"], childPath(path, "emod"), kMaterial);
   if (!n["nu"].IsDefined()) fail(childPath(path, "nu"), "missing: a membrane needs nu (Poisson's ratio, in [0, 0.5))");
-  s.nu = getInRange(n["nu"], childPath(path, "nu"), 0.0, 0.5, true);
-  if (const YAML::Node v = n["dens"]; v.IsDefined()) s.dens = getNonNegative(v, childPath(path, "dens"), kMaterial);
+  mp.nu = getInRange(n["nu"], childPath(path, "nu"), 0.0, 0.5, true);
+  if (const YAML::Node v = n["dens"]; v.IsDefined()) mp.dens = getNonNegative(v, childPath(path, "dens"), kMaterial);
   if (const YAML::Node v = n["prestress"]; v.IsDefined()) {
     const std::string p = childPath(path, "prestress");
     if (!v.IsSequence() || v.size() != 3)
       fail(p, "expected 3 numbers [s11, s22, s12], got " + (v.IsSequence() ? std::to_string(v.size()) : describe(v)));
     const auto x = getNumbers(v, p, 3, kLoad);
-    s.membrane_prestress = {x[0], x[1], x[2]};
+    mp.prestress = {x[0], x[1], x[2]};
   }
-  if (const YAML::Node v = n["prestress_dir"]; v.IsDefined()) s.prestress_dir = getDirection(v, childPath(path, "prestress_dir"));
+  if (const YAML::Node v = n["prestress_dir"]; v.IsDefined()) mp.prestress_dir = getDirection(v, childPath(path, "prestress_dir"));
   if (const YAML::Node v = n["prestress_radial_axis"]; v.IsDefined()) {
-    if (s.prestress_dir)
+    if (mp.prestress_dir)
       fail(childPath(path, "prestress_radial_axis"), "give either prestress_dir or prestress_radial_axis, not both");
-    s.prestress_radial_axis = getDirection(v, childPath(path, "prestress_radial_axis"));
+    mp.prestress_radial_axis = getDirection(v, childPath(path, "prestress_radial_axis"));
   }
-  if (const YAML::Node v = n["pressure"]; v.IsDefined()) s.pressure = getNumber(v, childPath(path, "pressure"), kLoad);
+  if (const YAML::Node v = n["pressure"]; v.IsDefined()) mp.pressure = getNumber(v, childPath(path, "pressure"), kLoad);
   if (const YAML::Node v = n["pressure_initial"]; v.IsDefined())
-    s.pressure_initial = getNumber(v, childPath(path, "pressure_initial"), kLoad);
+    mp.pressure_initial = getNumber(v, childPath(path, "pressure_initial"), kLoad);
 }
 
 void parseAncf(const YAML::Node& n, const std::string& path, ElementSet& s) {
+  AncfCable2DProperties& a = s.get<AncfCable2DProperties>();
   auto p = [&](const char* k) { return childPath(path, k); };
-  if (const YAML::Node v = n["physicsMassPerLength"]; v.IsDefined()) s.physicsMassPerLength = getNonNegative(v, p("physicsMassPerLength"), kMaterial);
+  if (const YAML::Node v = n["physicsMassPerLength"]; v.IsDefined()) a.physicsMassPerLength = getNonNegative(v, p("physicsMassPerLength"), kMaterial);
   if (!n["physicsBendingStiffness"].IsDefined())
     fail(p("physicsBendingStiffness"), "missing: ancf_cable2d needs physicsBendingStiffness (EI) > 0");
-  s.physicsBendingStiffness = getPositive(n["physicsBendingStiffness"], p("physicsBendingStiffness"), kMaterial);
+  a.physicsBendingStiffness = getPositive(n["physicsBendingStiffness"], p("physicsBendingStiffness"), kMaterial);
   if (!n["physicsAxialStiffness"].IsDefined())
     fail(p("physicsAxialStiffness"), "missing: ancf_cable2d needs physicsAxialStiffness (EA) > 0");
-  s.physicsAxialStiffness = getPositive(n["physicsAxialStiffness"], p("physicsAxialStiffness"), kMaterial);
-  if (const YAML::Node v = n["physicsBendingDamping"]; v.IsDefined()) s.physicsBendingDamping = getNonNegative(v, p("physicsBendingDamping"), kMaterial);
-  if (const YAML::Node v = n["physicsAxialDamping"]; v.IsDefined()) s.physicsAxialDamping = getNonNegative(v, p("physicsAxialDamping"), kMaterial);
+  a.physicsAxialStiffness = getPositive(n["physicsAxialStiffness"], p("physicsAxialStiffness"), kMaterial);
+  if (const YAML::Node v = n["physicsBendingDamping"]; v.IsDefined()) a.physicsBendingDamping = getNonNegative(v, p("physicsBendingDamping"), kMaterial);
+  if (const YAML::Node v = n["physicsAxialDamping"]; v.IsDefined()) a.physicsAxialDamping = getNonNegative(v, p("physicsAxialDamping"), kMaterial);
   if (const YAML::Node v = n["physicsReferenceAxialStrain"]; v.IsDefined())
-    s.physicsReferenceAxialStrain = getNumber(v, p("physicsReferenceAxialStrain"), kRatio);
+    a.physicsReferenceAxialStrain = getNumber(v, p("physicsReferenceAxialStrain"), kRatio);
   if (const YAML::Node v = n["physicsReferenceCurvature"]; v.IsDefined())
-    s.physicsReferenceCurvature = getNumber(v, p("physicsReferenceCurvature"), kCurvature);
+    a.physicsReferenceCurvature = getNumber(v, p("physicsReferenceCurvature"), kCurvature);
   if (const YAML::Node v = n["strainIsRelativeToReference"]; v.IsDefined())
-    s.strainIsRelativeToReference = getInRange(v, p("strainIsRelativeToReference"), 0.0, 1.0);
+    a.strainIsRelativeToReference = getInRange(v, p("strainIsRelativeToReference"), 0.0, 1.0);
   if (const YAML::Node v = n["useReducedOrderIntegration"]; v.IsDefined()) {
-    s.useReducedOrderIntegration = getInt(v, p("useReducedOrderIntegration"));
-    if (s.useReducedOrderIntegration < 0 || s.useReducedOrderIntegration > 2)
-      fail(p("useReducedOrderIntegration"), "expected 0, 1 or 2, got " + std::to_string(s.useReducedOrderIntegration));
+    a.useReducedOrderIntegration = getInt(v, p("useReducedOrderIntegration"));
+    if (a.useReducedOrderIntegration < 0 || a.useReducedOrderIntegration > 2)
+      fail(p("useReducedOrderIntegration"), "expected 0, 1 or 2, got " + std::to_string(a.useReducedOrderIntegration));
   }
   for (const char* k : {"axialForceUserFunction", "bendingMomentUserFunction"}) {
     const YAML::Node v = n[k];
     if (!v.IsDefined()) continue;
     const std::string f = getString(v, p(k));
     if (f.find_first_not_of(" \t\n") == std::string::npos) fail(p(k), "expected an expression, got an empty string");
-    (std::string(k) == "axialForceUserFunction" ? s.axialForceUserFunction : s.bendingMomentUserFunction) = f;
+    (std::string(k) == "axialForceUserFunction" ? a.axialForceUserFunction : a.bendingMomentUserFunction) = f;
   }
   if (const YAML::Node v = n["nbeams"]; v.IsDefined()) s.nbeams = getIntAtLeast(v, p("nbeams"), 1);
-  if (const YAML::Node v = n["massProportionalLoad"]; v.IsDefined()) s.massProportionalLoad = getVec3(v, p("massProportionalLoad"), true, kLoad);
+  if (const YAML::Node v = n["massProportionalLoad"]; v.IsDefined()) a.massProportionalLoad = getVec3(v, p("massProportionalLoad"), true, kLoad);
 }
 
 void parseLook(const YAML::Node& n, const std::string& path, ElementSet& s) {
@@ -269,7 +271,7 @@ std::string nodeList(const std::vector<int>& nodes) {
 std::string elementKind(const Model& m, int e) {
   const int set = m.elementSet[static_cast<std::size_t>(e)];
   if (set < 0) return "a rigid beam (in no eprops set)";
-  return std::string("a ") + elementTypeName(m.eprops[static_cast<std::size_t>(set)].type) + " element (eprops[" + std::to_string(set) + "])";
+  return std::string("a ") + elementTypeName(m.eprops[static_cast<std::size_t>(set)].type()) + " element (eprops[" + std::to_string(set) + "])";
 }
 
 /// Two elements of the same type on the same node set (in any order) are one element given twice;
@@ -279,7 +281,7 @@ void checkDuplicateElements(const SceneContext& ctx) {
   std::map<std::pair<int, std::vector<int>>, int> seen;  // (type, sorted nodes) -> element
   for (std::size_t e = 0; e < m.elements.size(); ++e) {
     const int set = m.elementSet[e];
-    const ElementType type = set < 0 ? ElementType::Beam : m.eprops[static_cast<std::size_t>(set)].type;
+    const ElementType type = set < 0 ? ElementType::Beam : m.eprops[static_cast<std::size_t>(set)].type();
     std::vector<int> nodes = m.elements[e];
     std::sort(nodes.begin(), nodes.end());
     const int ei = static_cast<int>(e);
@@ -341,12 +343,11 @@ void parseEprops(const YAML::Node& eprops, SceneContext& ctx) {
     ElementSet s;
     if (const YAML::Node t = n["type"]; t.IsDefined()) {
       const std::string type = getChoice(t, childPath(path, "type"), kTypes);
-      s.type = type == "cable" ? ElementType::Cable
-               : type == "membrane" ? ElementType::Membrane
-               : type == "ancf_cable2d" ? ElementType::AncfCable2D
-                                        : ElementType::Beam;
+      if (type == "cable") s.props = CableProperties{};
+      else if (type == "membrane") s.props = MembraneProperties{};
+      else if (type == "ancf_cable2d") s.props = AncfCable2DProperties{};
     }
-    checkSetKeys(n, path, s.type);
+    checkSetKeys(n, path, s.type());
 
     std::vector<std::pair<int, std::string>> members;  // element, path naming it
     const YAML::Node elems = n["elems"], physical = n["physical"];
@@ -392,10 +393,10 @@ void parseEprops(const YAML::Node& eprops, SceneContext& ctx) {
       s.elems.push_back(e);
     }
 
-    switch (s.type) {
+    switch (s.type()) {
       case ElementType::Beam: parseBeam(n, path, s); break;
-      case ElementType::Cable: parseCable(n, path, s); break;
-      case ElementType::Membrane: parseMembrane(n, path, s); break;
+      case ElementType::Cable: parseCable(n, path, s.get<CableProperties>()); break;
+      case ElementType::Membrane: parseMembrane(n, path, s.get<MembraneProperties>()); break;
       case ElementType::AncfCable2D: parseAncf(n, path, s); break;
     }
     parseLook(n, path, s);
@@ -408,11 +409,11 @@ void checkElementTypes(SceneContext& ctx) {
   Model& m = ctx.model;
   int ancfSet = -1;
   for (std::size_t i = 0; i < m.eprops.size(); ++i)
-    if (m.eprops[i].type == ElementType::AncfCable2D && ancfSet < 0) ancfSet = static_cast<int>(i);
+    if (m.eprops[i].type() == ElementType::AncfCable2D && ancfSet < 0) ancfSet = static_cast<int>(i);
   const std::string ancfPath = "eprops[" + std::to_string(ancfSet) + "]";
 
   for (std::size_t i = 0; i < m.eprops.size(); ++i) {
-    const ElementType t = m.eprops[i].type;
+    const ElementType t = m.eprops[i].type();
     const std::string p = childPath(indexPath("eprops", i), "type");
     if ((t == ElementType::Cable || t == ElementType::Membrane) && m.dimension == 2)
       fail(p, std::string(elementTypeName(t)) + " elements need a 3D model, but the nodes have 2 coordinates (x, y)");
@@ -440,7 +441,7 @@ void checkElementTypes(SceneContext& ctx) {
                                       "3- or 4-node elements need a membrane set");
       continue;
     }
-    const ElementType t = m.eprops[static_cast<std::size_t>(set)].type;
+    const ElementType t = m.eprops[static_cast<std::size_t>(set)].type();
     const bool ok = t == ElementType::Membrane ? (nn == 3 || nn == 4) : nn == 2;
     if (!ok)
       fail(ctx.elementPath(ei), ctx.elementLabel(ei) + " has " + std::to_string(nn) + " nodes, but eprops[" + std::to_string(set) +

@@ -265,7 +265,7 @@ void parseNprops(const YAML::Node& nprops, SceneContext& ctx) {
   std::vector<bool> ancfNode(m.nodes.size(), false);
   for (std::size_t e = 0; e < m.elements.size(); ++e) {
     const int s = m.elementSet[e];
-    if (s >= 0 && m.eprops[static_cast<std::size_t>(s)].type == ElementType::AncfCable2D)
+    if (s >= 0 && m.eprops[static_cast<std::size_t>(s)].type() == ElementType::AncfCable2D)
       for (int n : m.elements[e]) ancfNode[static_cast<std::size_t>(n)] = true;
   }
 

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <set>
 
+#include "elements/element_kinds.hpp"
 #include "scene/nearest_name.hpp"
 #include "scene/scene_detail.hpp"
 #include "scene/scene_reader.hpp"
@@ -96,8 +97,8 @@ void parseRls(const YAML::Node& v, const std::string& path, SceneContext& ctx) {
     if (m.opt.rls.count(e)) fail(p, "element " + std::to_string(e + 1) + " is given twice");
     const int set = m.elementSet[static_cast<std::size_t>(e)];
     const ElementSet* s = set >= 0 ? &m.eprops[static_cast<std::size_t>(set)] : nullptr;
-    if (s && s->type != ElementType::Beam)
-      fail(p, "element " + std::to_string(e + 1) + " is a " + elementTypeName(s->type) +
+    if (s && s->type() != ElementType::Beam)
+      fail(p, "element " + std::to_string(e + 1) + " is a " + elementTypeName(s->type()) +
                   " (eprops[" + std::to_string(set) + "]); rls releases deformation modes of beam elements");
     const auto modes = getInts(it->second, p, true);
     std::vector<int> released;
@@ -106,7 +107,7 @@ void parseRls(const YAML::Node& v, const std::string& path, SceneContext& ctx) {
       if (modes[i] < 1 || modes[i] > 6) fail(pi, "expected a deformation mode 1..6, got " + std::to_string(modes[i]));
       if (std::find(released.begin(), released.end(), modes[i]) != released.end())
         fail(pi, "mode " + std::to_string(modes[i]) + " is listed twice");
-      if (s && s->flex[static_cast<std::size_t>(modes[i] - 1)])
+      if (s && s->get<BeamProperties>().flex[static_cast<std::size_t>(modes[i] - 1)])
         fail(pi, "mode " + std::to_string(modes[i]) + " of element " + std::to_string(e + 1) + " is flexible (eprops[" +
                      std::to_string(set) + "].flex); a mode is either flexible or released");
       released.push_back(modes[i]);
@@ -359,7 +360,7 @@ void parseFormfinding(const YAML::Node& ff, SceneContext& ctx) {
     f.formfinding_tolerance = getNonNegative(ff["formfinding_tolerance"], p("formfinding_tolerance"), kRatio);
   if (ff["max_shape_change"].IsDefined()) f.max_shape_change = getPositive(ff["max_shape_change"], p("max_shape_change"), kRatio);
   for (int s : f.formfinding_elements)
-    if (m.eprops[static_cast<std::size_t>(s)].type != ElementType::Cable && m.eprops[static_cast<std::size_t>(s)].type != ElementType::Membrane)
+    if (!elementKind(m.eprops[static_cast<std::size_t>(s)].type()).formFindable)
       fail(p("formfinding_elements"), "eprops set " + std::to_string(s + 1) + " is not a cable or membrane set (only those can be form-found)");
   for (int s : f.stress_adaption)
     if (std::find(f.formfinding_elements.begin(), f.formfinding_elements.end(), s) == f.formfinding_elements.end() &&

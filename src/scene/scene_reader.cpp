@@ -202,10 +202,13 @@ void checkZeroModulusMembranes(const Model& m) {
     loaded |= norm(np.force) > 0.0 || norm(np.moment) > 0.0 || np.rot.has_value();
     for (const auto& d : np.displ) loaded |= d.has_value() && *d != 0.0;
   }
-  for (const ElementSet& s : m.eprops) loaded |= s.pressure != 0.0 || (s.massProportionalLoad && norm(*s.massProportionalLoad) > 0.0);
+  for (const ElementSet& s : m.eprops) {
+    if (const auto* mp = s.as<MembraneProperties>()) loaded |= mp->pressure != 0.0;
+    if (const auto* a = s.as<AncfCable2DProperties>()) loaded |= a->massProportionalLoad && norm(*a->massProportionalLoad) > 0.0;
+  }
   for (std::size_t i = 0; i < m.eprops.size(); ++i) {
-    const ElementSet& s = m.eprops[i];
-    if (s.type != ElementType::Membrane || s.emod != 0.0) continue;
+    const MembraneProperties* mp = m.eprops[i].as<MembraneProperties>();
+    if (!mp || mp->emod != 0.0) continue;
     const std::string path = childPath(indexPath("eprops", i), "emod");
     if (!m.formfinding)
       fail(path, "emod: 0 is only for membranes that are form-found (a formfinding block); an elastic membrane needs emod > 0");

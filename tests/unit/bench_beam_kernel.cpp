@@ -12,7 +12,7 @@
 using namespace sinew;
 
 int main() {
-  ElementSet set;
+  BeamProperties set;
   set.flex = {true, true, true, true, true, true};
   set.emod = 210e9;
   set.smod = 80e9;

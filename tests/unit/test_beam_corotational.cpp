@@ -414,7 +414,7 @@ TEST(BeamCorotational, LumpedInertia) {
 
 TEST(BeamCorotational, VonMisesPureBendingAndTorsion) {
   // Rect w x t along x, local y = global y. Bending about y by theta: sigma = E t/2 theta/l0.
-  ElementSet set;
+  BeamProperties set;
   set.flex = {true, true, true, true, true, true};
   set.emod = 200e9; set.smod = 80e9; set.cshape = CrossSection::Rect; set.dim = {0.02, 0.001};
   const BeamSection s = beamSection(set, 0.1);

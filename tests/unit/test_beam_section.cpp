@@ -9,8 +9,8 @@
 using namespace sinew;
 
 namespace {
-ElementSet rectSet(double w, double t) {
-  ElementSet s;
+BeamProperties rectSet(double w, double t) {
+  BeamProperties s;
   s.flex = {true, true, true, true, true, true};
   s.emod = 210e9;
   s.smod = 80e9;
@@ -72,7 +72,7 @@ TEST(BeamSection, CowperShearCoefficient) {
 }
 
 TEST(BeamSection, CircConstants) {
-  ElementSet set = rectSet(0, 0);
+  BeamProperties set = rectSet(0, 0);
   set.cshape = CrossSection::Circ;
   set.dim = {0.01};
   const BeamSection s = beamSection(set, 1.0);
@@ -87,7 +87,7 @@ TEST(BeamSection, CircConstants) {
 }
 
 TEST(BeamSection, ConstrainedWarpingFactorB5) {
-  ElementSet set = rectSet(0.05, 0.0002);
+  BeamProperties set = rectSet(0.05, 0.0002);
   set.cw = true;
   const double L = 0.1;
   const BeamSection s = beamSection(set, L);
@@ -102,7 +102,7 @@ TEST(BeamSection, ConstrainedWarpingFactorB5) {
 }
 
 TEST(BeamSection, WarpingWarning) {
-  ElementSet set = rectSet(0.05, 0.001);
+  BeamProperties set = rectSet(0.05, 0.001);
   EXPECT_TRUE(beamNeedsWarpingWarning(set, 0.1));    // L/w = 2
   EXPECT_FALSE(beamNeedsWarpingWarning(set, 0.2));   // L/w = 4
   set.cw = true;
@@ -114,7 +114,7 @@ TEST(BeamSection, WarpingWarning) {
 }
 
 TEST(BeamSection, MissingDataThrowsSceneError) {
-  ElementSet set = rectSet(0.05, 0.001);
+  BeamProperties set = rectSet(0.05, 0.001);
   set.emod = 0;
   try {
     beamSection(set, 1.0);
@@ -134,10 +134,10 @@ TEST(BeamSection, MissingDataThrowsSceneError) {
   set.smod = 0;
   EXPECT_THROW(beamSection(set, 1.0), SceneError);
   // a rigid massless set needs nothing
-  ElementSet rigid;
+  BeamProperties rigid;
   EXPECT_NO_THROW(beamSection(rigid, 1.0));
   // rigid with density needs the section but not emod
-  ElementSet heavy;
+  BeamProperties heavy;
   heavy.dens = 1000;
   heavy.cshape = CrossSection::Circ;
   heavy.dim = {0.01};

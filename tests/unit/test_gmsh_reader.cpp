@@ -163,16 +163,16 @@ TEST(GmshReader, SceneMapsPhysicalGroups) {
   ASSERT_EQ(m.elements.size(), 11u);    // 1 scene element + 2 edge cables + 8 triangles (edge_fixed lines only select nodes)
   EXPECT_EQ(m.elements[0], (std::vector<int>{0, 9}));
   ASSERT_EQ(m.eprops.size(), 3u);
-  EXPECT_EQ(m.eprops[0].type, sinew::ElementType::Membrane);
+  EXPECT_EQ(m.eprops[0].type(), sinew::ElementType::Membrane);
   EXPECT_EQ(m.eprops[0].elems.size(), 8u);
   for (int e : m.eprops[0].elems) EXPECT_EQ(m.elements[static_cast<std::size_t>(e)].size(), 3u);
-  EXPECT_EQ(m.eprops[0].membrane_prestress[0], 1e6);
-  EXPECT_EQ(m.eprops[1].type, sinew::ElementType::Cable);
+  EXPECT_EQ(m.eprops[0].get<sinew::MembraneProperties>().prestress[0], 1e6);
+  EXPECT_EQ(m.eprops[1].type(), sinew::ElementType::Cable);
   EXPECT_EQ(m.eprops[1].elems, (std::vector<int>{1, 2}));
   for (int e : m.eprops[1].elems)
     for (int n : m.elements[static_cast<std::size_t>(e)]) EXPECT_DOUBLE_EQ(m.nodes[static_cast<std::size_t>(n)][1], 1.0);
   EXPECT_EQ(m.eprops[2].elems, (std::vector<int>{0}));
-  ASSERT_TRUE(m.eprops[2].prestress_stress.has_value());
+  ASSERT_TRUE(m.eprops[2].get<sinew::CableProperties>().prestress_stress.has_value());
   for (std::size_t e = 0; e < m.elements.size(); ++e) EXPECT_GE(m.elementSet[e], 0) << e;
 
   // edge_fixed: the three mesh nodes at x = 0; corner: the node at (1, 1).

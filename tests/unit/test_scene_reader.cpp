@@ -65,9 +65,10 @@ TEST(SceneReader, CrossHingeScene) {
   EXPECT_NE(m.sceneText.find("Cross-flexure hinge"), std::string::npos);
 
   ASSERT_EQ(m.eprops.size(), 2u);
-  const auto& flex = m.eprops[0];
-  EXPECT_EQ(flex.type, ElementType::Beam);
-  EXPECT_EQ(flex.elems, (std::vector<int>{0, 1}));
+  const auto& flexSet = m.eprops[0];
+  EXPECT_EQ(flexSet.type(), ElementType::Beam);
+  EXPECT_EQ(flexSet.elems, (std::vector<int>{0, 1}));
+  const auto& flex = flexSet.get<sinew::BeamProperties>();
   for (bool f : flex.flex) EXPECT_TRUE(f);
   EXPECT_DOUBLE_EQ(flex.emod, 210e9);
   EXPECT_DOUBLE_EQ(flex.smod, 70e9);
@@ -76,15 +77,15 @@ TEST(SceneReader, CrossHingeScene) {
   EXPECT_EQ(flex.dim, (std::vector<double>{0.05, 0.0002}));
   ASSERT_TRUE(flex.orien.has_value());
   EXPECT_DOUBLE_EQ((*flex.orien)[2], 1.0);
-  EXPECT_EQ(flex.nbeams, 3);
+  EXPECT_EQ(flexSet.nbeams, 3);
   EXPECT_TRUE(flex.cw);
-  ASSERT_TRUE(flex.color.has_value());
-  EXPECT_DOUBLE_EQ((*flex.color)[1], 0.4);
-  EXPECT_DOUBLE_EQ(flex.opacity, 0.5);
+  ASSERT_TRUE(flexSet.color.has_value());
+  EXPECT_DOUBLE_EQ((*flexSet.color)[1], 0.4);
+  EXPECT_DOUBLE_EQ(flexSet.opacity, 0.5);
   const auto& arm = m.eprops[1];
   EXPECT_EQ(arm.elems, (std::vector<int>{3}));
-  for (bool f : arm.flex) EXPECT_FALSE(f);
-  EXPECT_EQ(arm.cshape, sinew::CrossSection::Circ);
+  for (bool f : arm.get<sinew::BeamProperties>().flex) EXPECT_FALSE(f);
+  EXPECT_EQ(arm.get<sinew::BeamProperties>().cshape, sinew::CrossSection::Circ);
   EXPECT_TRUE(arm.hide);
   EXPECT_EQ(m.elementSet, (std::vector<int>{0, 0, -1, 1}));
 
@@ -140,12 +141,12 @@ TEST(SceneReader, Ancf2DScene) {
   EXPECT_EQ(m.dimension, 2);
   EXPECT_DOUBLE_EQ(m.nodes[2][2], 0.0);
   ASSERT_EQ(m.eprops.size(), 1u);
-  const auto& s = m.eprops[0];
-  EXPECT_EQ(s.type, ElementType::AncfCable2D);
+  EXPECT_EQ(m.eprops[0].type(), ElementType::AncfCable2D);
+  EXPECT_EQ(m.eprops[0].nbeams, 4);
+  const auto& s = m.eprops[0].get<sinew::AncfCable2DProperties>();
   EXPECT_DOUBLE_EQ(s.physicsBendingStiffness, 2.5);
   EXPECT_DOUBLE_EQ(s.strainIsRelativeToReference, 1.0);
   EXPECT_EQ(s.useReducedOrderIntegration, 2);
-  EXPECT_EQ(s.nbeams, 4);
   EXPECT_EQ(s.axialForceUserFunction, "physicsAxialStiffness*(axialStrain-axialStrainRef)");
   ASSERT_TRUE(s.massProportionalLoad.has_value());
   EXPECT_DOUBLE_EQ((*s.massProportionalLoad)[1], -9.81);

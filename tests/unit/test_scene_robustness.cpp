@@ -106,7 +106,7 @@ TEST(SceneRobustness, EngineeringUnitsAreAccepted) {
   text = replaced(text, "[1, 0, 0]", "[1000, 0, 0]");
   text = replaced(text, "dim: [0.05, 0.001]", "dim: [50, 1]");
   const Model m = sinew::parseScene(text, "");
-  EXPECT_DOUBLE_EQ(m.eprops[0].dens, 7.85e-9);
+  EXPECT_DOUBLE_EQ(m.eprops[0].get<sinew::BeamProperties>().dens, 7.85e-9);
   EXPECT_DOUBLE_EQ(m.nodes[1][0], 1000.0);
 }
 

@@ -38,13 +38,13 @@ TEST(SpacarScene, ScalarAndOneElementListAreTheSame) {
   const std::string set = "flex: [1, 2, 3, 4, 5, 6], emod: 210e9, smod: 80e9, cshape: circ, dim: ";
   const Model a = parse(beam("1: {fix: true}", set + "0.01"));
   const Model b = parse(beam("1: {fix: true}", set + "[0.01]"));
-  ASSERT_EQ(a.eprops[0].dim.size(), 1u);
-  EXPECT_EQ(a.eprops[0].dim, b.eprops[0].dim);
+  ASSERT_EQ(a.eprops[0].get<sinew::BeamProperties>().dim.size(), 1u);
+  EXPECT_EQ(a.eprops[0].get<sinew::BeamProperties>().dim, b.eprops[0].get<sinew::BeamProperties>().dim);
   // [x] where a number is expected, x where a 1-element list is expected
   const Model c = parse(beam("1: {fix: true}, 2: {mass: [0.5]}", "flex: 1, emod: [210e9], cshape: circ, dim: [0.01]",
                              "loadsteps: [3], nfreq: [2]"));
-  EXPECT_EQ(c.eprops[0].emod, 210e9);
-  EXPECT_TRUE(c.eprops[0].flex[0]);
+  EXPECT_EQ(c.eprops[0].get<sinew::BeamProperties>().emod, 210e9);
+  EXPECT_TRUE(c.eprops[0].get<sinew::BeamProperties>().flex[0]);
   EXPECT_EQ(c.nprops.at(1).mass, 0.5);
   EXPECT_EQ(c.opt.loadsteps, 3);
   EXPECT_EQ(c.opt.nfreq, 2);
@@ -104,7 +104,7 @@ TEST(SpacarScene, VisualizationVocabulary) {
   const Model m = parse(beam("1: {fix: true}", "flex: [1, 2], emod: 1e9, smod: 4e8, cshape: rect, dim: [0.01, 0.001], "
                                                "warping: true, opacity: 0.5, hide: true",
                              "spavisual: false, customvis: {file: part.stl}"));
-  EXPECT_TRUE(m.eprops[0].cw);
+  EXPECT_TRUE(m.eprops[0].get<sinew::BeamProperties>().cw);
   EXPECT_EQ(m.eprops[0].opacity, 0.5);
   EXPECT_TRUE(m.eprops[0].hide);
   EXPECT_TRUE(m.opt.customvis);
@@ -126,8 +126,7 @@ TEST(SpacarScene, ModulusRequirementsAgree) {
       for (int cw = 0; cw < 2; ++cw) {
         const bool hasE = materials & 1, hasG = materials & 2;
         std::string flex = "[";
-        sinew::ElementSet set;
-        set.type = sinew::ElementType::Beam;
+        sinew::BeamProperties set;
         set.cshape = sinew::CrossSection::Rect;
         set.dim = {0.01, 0.001};
         set.orien = sinew::Vec3{0, 0, 1};

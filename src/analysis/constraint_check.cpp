@@ -1,4 +1,4 @@
-#include "analysis/solver_defaults.hpp"
+#include "solvers/solver_defaults.hpp"
 #include "analysis/constraint_check.hpp"
 
 #include <petscksp.h>

@@ -8,8 +8,8 @@
 #include <petscmat.h>
 #include <slepceps.h>
 
-#include "analysis/solver_defaults.hpp"
-#include "mesh/collective_error.hpp"
+#include "solvers/solver_defaults.hpp"
+#include "parallel/collective_error.hpp"
 #include "solvers/newton_test.hpp"
 
 namespace sinew {

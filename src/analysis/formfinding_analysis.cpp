@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <tuple>
 
-#include "mesh/collective_error.hpp"
+#include "parallel/collective_error.hpp"
 #include "settings/read_settings.hpp"
 #include "solvers/newton_test.hpp"
 

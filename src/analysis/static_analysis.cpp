@@ -1,6 +1,6 @@
-#include "analysis/solver_defaults.hpp"
+#include "solvers/solver_defaults.hpp"
 #include "analysis/static_analysis.hpp"
-#include "mesh/collective_error.hpp"
+#include "parallel/collective_error.hpp"
 #include "solvers/newton_test.hpp"
 
 #include <algorithm>

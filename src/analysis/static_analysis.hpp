@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "analysis/cable_coarse_space.hpp"
+#include "solvers/ancf/cable_coarse_space.hpp"
 #include "assembly/assembler.hpp"
 #include "settings/settings.hpp"
 #include "solvers/newton_test.hpp"

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "analysis/static_analysis.hpp"
-#include "analysis/step_results.hpp"
+#include "step/step_results.hpp"
 
 namespace sinew {
 

@@ -12,7 +12,7 @@
 #include <cmath>
 
 #include "sinew/rotation.hpp"
-#include "mesh/collective_error.hpp"
+#include "parallel/collective_error.hpp"
 
 namespace sinew {
 

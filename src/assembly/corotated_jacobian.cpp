@@ -11,7 +11,7 @@
 // were kept. Rotating per node instead breaks the blocks' translation invariance (neighbouring
 // nodes turn by different angles) and is worse than not rotating at all on coarser cables as a
 // matrix; as a preconditioner of the element-wise product it serves fine cables (turnToIterate,
-// rotateNodes; src/analysis/node_rotated_pc.hpp).
+// rotateNodes; src/solvers/ancf/node_rotated_pc.hpp).
 #include <algorithm>
 #include <cmath>
 

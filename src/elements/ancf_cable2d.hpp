@@ -18,7 +18,7 @@
 #include <string>
 #include <vector>
 
-#include "elements/expression.hpp"
+#include "math/expression.hpp"
 #include "sinew/element_kernel.hpp"
 #include "sinew/element_properties.hpp"
 

@@ -7,7 +7,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "mesh/collective_error.hpp"
+#include "parallel/collective_error.hpp"
 
 namespace sinew {
 namespace {

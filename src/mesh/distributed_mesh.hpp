@@ -10,7 +10,7 @@
 #include <optional>
 #include <vector>
 
-#include "elements/expression.hpp"
+#include "math/expression.hpp"
 #include "mesh/fe_mesh.hpp"
 #include "sinew/element_kernel.hpp"
 #include "sinew/model.hpp"

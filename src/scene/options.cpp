@@ -116,7 +116,7 @@ void parseRls(const YAML::Node& v, const std::string& path, SceneContext& ctx) {
   }
 }
 
-// Rayleigh (alpha M0 + beta K0) and modal (zeta per mode) damping of opt.dynamics (src/analysis/damping.hpp)
+// Rayleigh (alpha M0 + beta K0) and modal (zeta per mode) damping of opt.dynamics (src/dynamics/damping.hpp)
 void parseDamping(const YAML::Node& v, const std::string& path, DynamicsOptions& d) {
   auto nonNegative = [&](const char* key) {
     const std::string p = childPath(path, key);

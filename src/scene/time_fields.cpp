@@ -3,7 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "elements/expression.hpp"
+#include "math/expression.hpp"
 
 namespace sinew::scene {
 

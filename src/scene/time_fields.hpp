@@ -1,5 +1,5 @@
 // Scene fields that may be functions of time (nprops force, moment, displ_x/y/z, rot): a number, or
-// an expression string of t in the language of the ANCF user functions (src/elements/expression.hpp).
+// an expression string of t in the language of the ANCF user functions (src/math/expression.hpp).
 #pragma once
 #include <array>
 #include <string>

@@ -2,7 +2,7 @@
 factors its part of the chain with PETSc's LU in reverse Cuthill-McKee order and the unknowns
 coupling the ranks are corrected exactly (useCutCorrectedLU, -dynamics_chain_lu, default auto = cut
 here); -dynamics_chain_lu redundant and statics: every process factors the whole matrix
-(PCREDUNDANT, useChainLU in src/analysis/solver_defaults.hpp). Both instead of MUMPS, whose factorization of a chain is 5-10x slower
+(PCREDUNDANT, useChainLU in src/solvers/solver_defaults.hpp). Both instead of MUMPS, whose factorization of a chain is 5-10x slower
 (A1g, 16384 elements, 2 ranks: 100 ms against 12 ms per factorization, 30 ms against 2 ms per solve;
 docs/performance.md, Dynamics). In dynamics (the time-step matrix) and in statics (the fine LU of the
 two-level preconditioner, options prefix fine_).

@@ -7,7 +7,7 @@ The former start of each step, the extrapolation q_n + h qd_n + h^2/2 a_n, carri
 accelerations of the axial and short bending waves that h = 1e-3 does not resolve (h omega >> 1):
 Newton started at residuals of 1e5..5e8 N, full Newton diverged, modified Newton stalled and
 refactored. Now Newton starts at q_n (-dynamics_predictor auto: state from 200 unknowns) and
-converges on its update where the residual is round-off noise (src/analysis/dynamic_analysis.cpp).
+converges on its update where the residual is round-off noise (src/dynamics/dynamic_analysis.cpp).
 
 Reference: the tip of the former path, main at 77256a8 on the same scene and 2 ranks (116 Newton
 iterations on 52 Jacobians, 3 steps retried): (-2.07697853e-06, -4.39164168e-03) m. Measured

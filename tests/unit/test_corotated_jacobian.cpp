@@ -19,7 +19,7 @@
 #include <cmath>
 #include <string>
 
-#include "analysis/cut_corrected_lu.hpp"
+#include "solvers/cut_corrected_lu.hpp"
 #include "assembly/assembler.hpp"
 #include "assembly/kernel_factory.hpp"
 #include "mesh/distributed_mesh.hpp"

@@ -1,4 +1,4 @@
-// Unit tests of the user force-law expression compiler (src/elements/expression.hpp):
+// Unit tests of the user force-law expression compiler (src/math/expression.hpp):
 // values, exact dual-number derivatives vs. central differences, syntax errors with columns.
 #include <gtest/gtest.h>
 
@@ -8,7 +8,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "elements/expression.hpp"
+#include "math/expression.hpp"
 
 using sinew::Expression;
 using sinew::UfVar;

@@ -1,0 +1,117 @@
+// Everything an analysis of a run needs: the model, the plan, the assembler, the result file and
+// the step counter shared by form finding, statics and dynamics (their rows follow each other).
+#pragma once
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "analysis/static_analysis.hpp"
+#include "step/step_analysis.hpp"
+#include "step/step_results.hpp"
+#include "app/plan.hpp"
+#include "app/progress.hpp"
+#include "app/summary.hpp"
+#include "assembly/assembler.hpp"
+#include "restart/checkpoint.hpp"
+#include "settings/settings.hpp"
+#include "sinew/model.hpp"
+#include "sinew/result_file.hpp"
+
+namespace sinew {
+
+class Restart;
+
+struct RunContext {
+  MPI_Comm comm = MPI_COMM_WORLD;
+  Model& model;  ///< global node/element arrays are released after set-up; eprops, opt, formfinding, sensors stay
+  const Plan& plan;
+  const Settings& settings;  ///< every flag's setting (read once at start-up)
+  Assembler& assembler;
+  StepResults& results;
+  ResultFile& file;
+  Vec U = nullptr;  ///< the current state (unknowns layout)
+  std::vector<std::unique_ptr<StepAnalysis>> stepAnalyses;
+  int nextStep = 0;  ///< next row of the step-indexed datasets
+  Timings times;
+  std::vector<StepReport> reports;
+  bool converged = true;
+  std::string failure;
+  std::string summaryLines;  ///< extra lines for the stdout summary (rank 0)
+  Progress progress;
+  /// The step loops end after the current step (equal on every rank): a signal arrived
+  /// (interruptSignal) or the result file failed (ioError).
+  bool stop = false;
+  int interruptSignal = 0;
+  std::string ioError;
+  int lastStepIndex = 0;       ///< index of the last converged step (in its phase)
+  std::string formfindingHint;  ///< formFindingCollapseCauses of the scene (set before form finding)
+  std::string lastStepName;    ///< "load step", "time step", "form-finding step"
+  /// Checkpoints (src/output/checkpoint.*, src/app/restart.*): the writer, the running phase's
+  /// state after its last converged step (set by the phase before its loop; none: no checkpoint),
+  /// and the earlier run a -restart continues.
+  CheckpointWriter* checkpoint = nullptr;
+  std::function<PetscErrorCode(CheckpointData&)> checkpointState;
+  const Restart* restart = nullptr;
+  /// -stop_after_step k (a testing aid): the run stops as on SIGTERM once the file holds k step rows.
+  int stopAfterRows = 0;
+  static constexpr int kStopAfterStep = -1;  ///< interruptSignal of a -stop_after_step stop
+
+  RunContext(Model& m, const Plan& p, const Settings& s, Assembler& a, StepResults& r, ResultFile& f)
+      : model(m), plan(p), settings(s), assembler(a), results(r), file(f), progress(MPI_COMM_WORLD, m.opt.silent) {}
+
+  /// A converged step of a step loop.
+  struct Step {
+    int index = 0;            ///< 1-based in its phase (time step 0: the initial state)
+    bool last = false;        ///< the final step of the phase
+    double value = 0;         ///< load factor or time (row of /load_factor or /time)
+    std::string detail;       ///< middle of the progress line
+    bool selectable = true;   ///< false: always written (form-finding steps)
+    /// A load step of a dynamics run that starts from the static load steps (opt.dynamics start:
+    /// static): its load factor, written as the row of /load_factor (NaN on the other rows)
+    std::optional<double> loadFactorRow = std::nullopt;
+  };
+  /// Called by every step loop after a converged step: agrees on a pending interrupt (one
+  /// allreduce), writes the step when opt.output_steps selects it (always the last one, and the
+  /// one a run stops at), then `afterWrite` (extra rows of that step), commits the result file and
+  /// prints the progress line. A result file error sets ioError and stop instead of throwing.
+  PetscErrorCode convergedStep(const Step& s, Vec Ustate, const LoadState& ls,
+                               const std::function<PetscErrorCode()>& afterWrite = {});
+  /// Writes the last converged step from Ustate when output_steps skipped it and the phase ended
+  /// early (a failed step): the file always ends with the last converged state.
+  PetscErrorCode writeSkippedLast(Vec Ustate);
+  /// Runs `write` (result file calls); a ResultFileError or other exception sets ioError and stop.
+  bool guardedWrite(const std::function<void()>& write);
+
+  /// Writes one step row: beginStep(stepValue), node/element/mesh results of U, then every step
+  /// analysis (frequencies, buckling, ...). A failing step analysis sets converged = false.
+  PetscErrorCode writeStep(double stepValue, Vec Ustate, const LoadState& ls);
+  /// Writes the running phase's checkpoint (checkpointState) into the result file, to be published
+  /// by the next commit with the step just written. ResultFileError on HDF5 failures.
+  PetscErrorCode writeCheckpoint(const std::string& group = "checkpoint");
+
+ private:
+  struct Skipped {
+    bool any = false;
+    double value = 0;
+    LoadState ls;
+    std::optional<double> loadFactorRow;
+  } skipped_;
+  PetscErrorCode writeLoadFactorRow(const std::optional<double>& loadFactor);
+};
+
+/// Per-step analyses the plan asks for (frequencies, buckling, compliance, state-space).
+PetscErrorCode addStepAnalyses(RunContext& ctx);
+/// Form finding (formfinding block): writes its steps and leaves the found shape in ctx.U.
+PetscErrorCode runFormFinding(RunContext& ctx);
+/// What can make this model's form finding collapse (for the messages; computed before set-up
+/// releases the scene's elements, src/app/phases/run_formfinding.cpp).
+std::string formFindingCollapseCauses(const Model& m);
+/// Time integration (opt.dynamics) instead of statics.
+PetscErrorCode runDynamics(RunContext& ctx);
+/// Path following (opt.continuation) instead of load steps: one result row per path point, and
+/// /path/negative_eigenvalues, /path/critical_points.
+PetscErrorCode runContinuation(RunContext& ctx);
+
+}  // namespace sinew

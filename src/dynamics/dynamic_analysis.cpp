@@ -1,0 +1,654 @@
+#include "solvers/solver_defaults.hpp"
+#include "dynamics/dynamic_analysis.hpp"
+#include "solvers/cut_corrected_lu.hpp"
+#include "parallel/collective_error.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace sinew {
+
+LoadState DynamicAnalysis::loadsAt(double t) {
+  LoadState ls;
+  ls.loadFactor = 1.0;       // loads act from t = 0 (step loads); user functions see t
+  ls.gravityRamped = false;
+  ls.timeFunctions = true;   // loads and prescribed motions given as functions of time act at t
+  ls.time = t;
+  return ls;
+}
+
+DynamicAnalysis::Scheme DynamicAnalysis::checkScheme(const DistributedMesh& mesh, Scheme scheme) {
+  if (scheme == Scheme::TSAlpha2 && mesh.anyRotations)
+    throw SceneError("-dynamics_scheme", "tsalpha2 integrates the unknowns as a vector space; beam rotations need the "
+                                         "Lie-group form of the default scheme (arnold_bruls)");
+  return scheme;
+}
+
+DynamicAnalysis::DynamicAnalysis(Assembler& assembler, const DynamicsOptions& opts, const Settings& all)
+    : asm_(assembler), opts_(opts), damping_(assembler, opts, all.eigen) {
+  const DynamicsSettings& settings = all.dynamics;
+  const StaticsSettings& newton = all.statics;
+  const double rho = opts_.spectral_radius;
+  alphaM_ = (2.0 * rho - 1.0) / (rho + 1.0);
+  alphaF_ = rho / (rho + 1.0);
+  gamma_ = 0.5 + alphaF_ - alphaM_;
+  beta_ = 0.25 * (gamma_ + 0.5) * (gamma_ + 0.5);
+  ls_ = loadsAt(0.0);
+  MPI_Comm comm = asm_.mesh().comm;
+  SinewCallThrow(comm, asm_.createMatrix(&J_));
+  SinewCallThrow(comm, asm_.createVector(&F_));
+  for (Vec* v : {&Un_, &Vn_, &An_, &Qn_, &V1_, &A1_, &Q1_, &Cu_}) SinewCallThrow(comm, VecDuplicate(F_, v));
+  const Scheme scheme = checkScheme(asm_.mesh(), settings.scheme);
+  useTS_ = scheme == Scheme::TSAlpha2;
+  midpoint_ = scheme == Scheme::Midpoint;
+  if (midpoint_) for (Vec* v : {&Um_, &Vm_}) SinewCallThrow(comm, VecDuplicate(F_, v));
+  maxCuts_ = newton.maxCuts;
+  growAfter_ = settings.dtGrowAfter;
+  if (growAfter_ < 0) throw SceneError("-dt_grow_after", "expected a count >= 0, got " + std::to_string(growAfter_));
+  const StepControlSettings sc = stepControl(opts_, settings, scheme);
+  control_ = sc.control;
+  dtMin_ = sc.dtMin;
+  dtMax_ = sc.dtMax;
+  adaptTol_ = sc.tol;
+  adaptIts_ = sc.its;
+  forceRtol_ = newton.forceRtol.value_or(forceRtol_);
+  // modified Newton pays where a Jacobian and its factorization cost much more than a residual and
+  // a solve; measured (docs/ancf_cable2d.md): A3 with 64 elements (258 unknowns) 1.8x faster, 512
+  // elements 1.4x, a 16-element pendulum (66 unknowns) 1.1x slower: auto = from 200 unknowns
+  const AutoSwitch mode = settings.modifiedNewton;
+  modifiedNewton_ = mode == AutoSwitch::On || (mode == AutoSwitch::Auto && asm_.mesh().numGlobalUnknowns >= 200);
+  chain_ = ancfChain(asm_.mesh());
+  corotated_ = settings.corotatedJacobian && modifiedNewton_ && scheme == Scheme::ArnoldBruls && chain_;
+  asm_.keepCorotatedBlocks(corotated_);
+  // refined step solves (setRefinements): once (true), never (false), or auto: added while Newton's
+  // updates on an unchanged matrix contract by less than kRefineContraction (the LU's accuracy in the
+  // smooth modes limits Newton: A1g at 65536 elements 7.5e-3; at 4096 1e-5..1e-4, where a refinement
+  // would only cost), see formJacobian; not when the user chose another KSP for the step solves
+  // (runArnoldBruls)
+  refineAuto_ = corotated_ && settings.refine == AutoSwitch::Auto;
+  refinements_ = corotated_ && settings.refine == AutoSwitch::On ? 1 : 0;
+  // ANCF chains on several ranks: rank-local LU with the exact correction of the few coupling
+  // unknowns (useCutCorrectedLU) instead of every rank factoring the whole chain (PCREDUNDANT); A1g
+  // at 65536 elements, 2 ranks: 28 ms against 42 ms per factorization, 2.1 ms against 5.2 ms per
+  // solve (docs/performance.md, "The direct solver of a chain")
+  // the kept LU turned with the nodes (useNodeRotatedPC): always (true), never (false), or auto: from
+  // the first kept matrix that stalled by an element turn below kRotationTurn (A1g: from 16384
+  // elements), where turned kept matrices would otherwise be rebuilt and refactored in every step
+  // (docs/performance.md)
+  const AutoSwitch nr = settings.nodeRotation;
+  nodeRotation_ = !corotated_ || nr == AutoSwitch::Off ? NodeRotation::Off
+                  : nr == AutoSwitch::On               ? NodeRotation::On
+                                                       : NodeRotation::Auto;
+  rotating_ = nodeRotation_ == NodeRotation::On;
+  const ChainLU lu = settings.chainLU;
+  cutLU_ = chain_ && (lu == ChainLU::Cut ||
+                      (lu == ChainLU::Auto && couplingUnknowns(asm_.mesh()) <= kCutCorrectedMaxCoupling));
+  mumpsWorkspace_ = settings.mumpsWorkspace;
+  // Newton with mixed stresses for beams, as in statics (docs/beam.md): a large rotation step moves
+  // the nodes along straight lines and stretches axially stiff elements; the displacement-based
+  // tangent would carry that spurious axial force (residuals alternating by 1e2 per iteration on a
+  // swinging leaf spring at dt = T1/24). Each step's stresses are linearized from q_n.
+  asm_.setMixedStressNewton(newton.mixedStresses && asm_.hasMixedStressKernels());
+  // Newton's start of a step. The extrapolation q_n + h qd_n + h^2/2 a_n carries the algorithmic
+  // accelerations of the modes the step does not resolve (h omega >> 1: the axial and the short
+  // bending waves of a fine cable, omega ~ 1/l_e resp. 1/l_e^2). Those are noise of amplitude
+  // ~ (their displacement error)/(beta h^2), only damped by rho per step; extrapolated, they put
+  // each element far off its quasi-static state: A1g at 4096 elements started Newton at a residual
+  // of 1e5..5e8 (full Newton diverged to 1e14, modified Newton stalled and refactored: 104 Newton
+  // iterations on 49 Jacobians in 20 steps, 61 retried steps in 100 on one process). q_n has a
+  // smooth error (the inertia M qd_n/(beta h) of one step's motion): from a residual of 43..1400
+  // Newton converges in 2 iterations per step (the update test of convergenceTest), no retries.
+  // auto: q_n from 200 unknowns (where modified Newton keeps the Jacobian) and for beams (below); else
+  // the extrapolation (A3 with 1 element: 2000 iterations against 2779 from q_n).
+  const DynamicsPredictor pr = settings.predictor;
+  const bool fine = asm_.mesh().numGlobalUnknowns >= 200;
+  // Beams (mixed-stress Newton) start from q_n at any size, as statics has no secant predictor for
+  // them: the additive extrapolation of positions and rotation vectors stretches the elements. The
+  // leaf spring swinging under its weight (scripts/study_beam_dynamics.py, 16 elements, dt = T1/24)
+  // took 303 Newton iterations with 5 retried steps from the extrapolation, 36 from q_n; without the
+  // mixed stresses the extrapolation even converged to another root of the step equations (tip
+  // -0.318 m at t = 0.3 s against -0.266 m from q_n and from every smaller step: -0.268 m).
+  predictor_ = pr == DynamicsPredictor::State || (pr == DynamicsPredictor::Auto && (fine || asm_.mixedStressNewton()))
+                   ? Predictor::State
+                   : Predictor::Acceleration;
+  coordMax_ = asm_.coordinateScale();
+  int mult = 0;
+  for (const LocalElement& e : asm_.mesh().elements) mult |= e.firstMultiplier >= 0;
+  MPI_Allreduce(MPI_IN_PLACE, &mult, 1, MPI_INT, MPI_LOR, comm);
+  if (mult) {
+    SinewCallThrow(comm, VecDuplicate(F_, &keep_));
+    SinewCallThrow(comm, VecSet(keep_, 1.0));
+    PetscScalar* k = nullptr;
+    SinewCallThrow(comm, VecGetArray(keep_, &k));
+    for (const LocalElement& e : asm_.mesh().elements)
+      for (int j = 0; e.firstMultiplier >= 0 && j < e.kernel->numConstraints(); ++j) k[e.firstMultiplier + j] = 0.0;
+    SinewCallThrow(comm, VecRestoreArray(keep_, &k));
+    if (midpoint_) {  // the constraint rows of the midpoint rule: notKeep_ = 1 - keep_, scale 1 + notKeep_
+      SinewCallThrow(comm, VecDuplicate(F_, &notKeep_));
+      SinewCallThrow(comm, VecDuplicate(F_, &Fend_));
+      SinewCallThrow(comm, VecDuplicate(F_, &constraintScale_));
+      SinewCallThrow(comm, VecSet(notKeep_, 1.0));
+      SinewCallThrow(comm, VecAXPY(notKeep_, -1.0, keep_));
+      SinewCallThrow(comm, VecWAXPY(constraintScale_, 1.0, notKeep_, keep_));
+      SinewCallThrow(comm, VecAXPY(constraintScale_, 1.0, notKeep_));
+    }
+  }
+}
+
+DynamicAnalysis::~DynamicAnalysis() {
+  SNESDestroy(&snes_);
+  MatDestroy(&J_);
+  MatDestroy(&Jop_);
+  for (Vec* v : {&F_, &Un_, &Vn_, &An_, &Qn_, &V1_, &A1_, &Q1_, &Cu_, &keep_, &Um_, &Vm_, &U0_, &notKeep_, &Fend_, &constraintScale_})
+    VecDestroy(v);
+}
+
+// ---------------------------------------------------------------- Arnold-Brüls, own step loop
+// (its Newton step: dynamic_newton.cpp)
+
+PetscErrorCode DynamicAnalysis::rates(Vec U) {
+  PetscFunctionBeginUser;
+  if (midpoint_) {
+    // qd_{n+1} = 2 (q_{n+1} - q_n) / h - qd_n; spins (Simo & Wong 1991, spatial form):
+    // w_{n+1} = 2 theta / h - exp(theta) w_n, theta = log(R_{n+1} R_n^T) (q_n = 0 there)
+    PetscCall(VecCopy(Vn_, Cu_));
+    PetscCall(asm_.rotateSpins(U, Cu_));
+    PetscCall(VecWAXPY(V1_, -1.0, Un_, U));
+    PetscCall(VecAXPBY(V1_, -1.0, 2.0 / h_, Cu_));
+    // (qd_{n+1} - qd_n) / h: the inertia of the translations (and output accelerations)
+    PetscCall(VecWAXPY(A1_, -1.0, Vn_, V1_));
+    PetscCall(VecScale(A1_, 1.0 / h_));
+    PetscCall(VecCopy(A1_, Q1_));
+    // mid configuration and velocity: q_n + (q_{n+1} - q_n) / 2 (rotations exp(theta / 2) R_n)
+    PetscCall(VecAXPBYPCZ(Um_, 0.5, 0.5, 0.0, Un_, U));
+    PetscCall(VecAXPBYPCZ(Vm_, 0.5, 0.5, 0.0, Vn_, V1_));
+    if (notKeep_) {  // the multipliers are those of the mid-step forces themselves (no average)
+      PetscCall(VecPointwiseMult(Um_, keep_, Um_));
+      PetscCall(VecPointwiseMult(Cu_, notKeep_, U));
+      PetscCall(VecAXPY(Um_, 1.0, Cu_));
+    }
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  const double h = h_, bh2 = beta_ * h * h;
+  // a_{n+1} = (q_{n+1} - Cu) / (beta h^2)
+  PetscCall(VecWAXPY(A1_, -1.0, Cu_, U));
+  PetscCall(VecScale(A1_, 1.0 / bh2));
+  // qd_{n+1} = qd_n + h (1 - gamma) a_n + h gamma a_{n+1}
+  PetscCall(VecCopy(Vn_, V1_));
+  PetscCall(VecAXPBYPCZ(V1_, h * (1.0 - gamma_), h * gamma_, 1.0, An_, A1_));
+  // qdd_{n+1} = ((1 - alpha_m) a_{n+1} + alpha_m a_n - alpha_f qdd_n) / (1 - alpha_f)
+  PetscCall(VecSet(Q1_, 0.0));
+  PetscCall(VecAXPBYPCZ(Q1_, (1.0 - alphaM_) / (1.0 - alphaF_), alphaM_ / (1.0 - alphaF_), 0.0, A1_, An_));
+  PetscCall(VecAXPY(Q1_, -alphaF_ / (1.0 - alphaF_), Qn_));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode DynamicAnalysis::formFunction(SNES, Vec U, Vec F, void* ctx) {
+  PetscFunctionBeginUser;
+  auto* self = static_cast<DynamicAnalysis*>(ctx);
+  PetscCall(self->rates(U));
+  if (self->midpoint_) PetscFunctionReturn(self->midpointResidual(U, F));
+  PetscCall(self->asm_.dynamicResidual(U, self->V1_, self->Q1_, self->ls_, F));
+  PetscCall(self->damping_.addForce(self->V1_, F));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+// M qdd_0 = f_ext(0) - f_int(q_0, qd_0, 0): one KSP solve (options prefix init_, LU by default).
+PetscErrorCode DynamicAnalysis::initialAccelerations(Vec U, Vec V, Vec Qdd, bool* ok) {
+  PetscFunctionBeginUser;
+  MPI_Comm comm = asm_.mesh().comm;
+  Mat M;
+  PetscCall(asm_.createMatrix(&M));
+  LoadState ls0 = ls_;
+  ls0.time = 0.0;
+  PetscCall(asm_.mass(U, ls0, M));
+  PetscCall(VecSet(Qdd, 0.0));
+  PetscCall(asm_.dynamicResidual(U, V, Qdd, ls0, F_));  // f_int - f_ext
+  PetscCall(VecScale(F_, -1.0));
+  KSP ksp;
+  PetscCall(KSPCreate(comm, &ksp));
+  PetscCall(KSPSetOptionsPrefix(ksp, "init_"));
+  Mat K = nullptr, A = nullptr;
+  double s = 1.0;
+  if (keep_) {
+    // Constraints (index 3): M a0 + G^T lambda0 = r, G a0 = 0 (at rest). The tangent at shiftA = s
+    // is A_s = [K + s M, G^T; G, 0]; with x = a0 / s, A_s [x; lambda0] = [r + K x; 0], solved by
+    // fixed-point iteration from x = 0 (rate ||K|| / (s ||M||) = 1e-4 with s below).
+    PetscCall(asm_.createMatrix(&K));
+    PetscCall(asm_.createMatrix(&A));
+    PetscCall(asm_.dynamicJacobian(U, V, ls0, 0.0, 0.0, K));
+    PetscReal nk = 0, nm = 0;
+    PetscCall(MatNorm(K, NORM_INFINITY, &nk));
+    PetscCall(MatNorm(M, NORM_INFINITY, &nm));
+    s = nm > 0 && nk > 0 ? 1e4 * nk / nm : 1.0;
+    PetscCall(asm_.dynamicJacobian(U, V, ls0, 0.0, s, A));
+    PetscCall(KSPSetOperators(ksp, A, A));
+  } else {
+    PetscCall(KSPSetOperators(ksp, M, M));
+  }
+  PetscCall(useDirectSolver(ksp));
+  if (chain_) PetscCall(useChainLU(ksp, comm));
+  PetscCall(KSPSetFromOptions(ksp));
+  PetscCall(KSPSolve(ksp, F_, Qdd));
+  KSPConvergedReason why;
+  PetscCall(KSPGetConvergedReason(ksp, &why));
+  if (keep_) {
+    Vec x, rhs;
+    PetscCall(VecDuplicate(Qdd, &x));
+    PetscCall(VecDuplicate(Qdd, &rhs));
+    for (int it = 0; it < 6 && why >= 0; ++it) {
+      PetscCall(VecPointwiseMult(x, keep_, Qdd));
+      PetscCall(MatMult(K, x, rhs));
+      PetscCall(VecPointwiseMult(rhs, keep_, rhs));  // K x on the coordinate rows, 0 on the constraints
+      PetscCall(VecAXPY(rhs, 1.0, F_));
+      PetscCall(KSPSolve(ksp, rhs, Qdd));
+      PetscCall(KSPGetConvergedReason(ksp, &why));
+    }
+    // Qdd = [x; lambda0]: a0 = s x on the coordinates; lambda0 goes into U (consistent start)
+    PetscCall(VecPointwiseMult(x, keep_, Qdd));
+    PetscCall(VecAXPY(U, 1.0, Qdd));
+    PetscCall(VecAXPY(U, -1.0, x));
+    PetscCall(VecScale(x, s));
+    PetscCall(VecCopy(x, Qdd));
+    PetscCall(VecDestroy(&x));
+    PetscCall(VecDestroy(&rhs));
+    PetscCall(MatDestroy(&K));
+    PetscCall(MatDestroy(&A));
+  }
+  PetscReal nrm = 0;
+  PetscCall(VecNorm(Qdd, NORM_INFINITY, &nrm));
+  *ok = why >= 0 && std::isfinite(nrm);
+  if (!*ok)
+    failure_ = std::string("opt.dynamics: the initial accelerations M a0 = f_ext - f_int could not be solved (") +
+               KSPConvergedReasons[why] +
+               "); the mass matrix is singular: every free coordinate needs mass (physicsMassPerLength, dens or nodal mass)";
+  PetscCall(KSPDestroy(&ksp));
+  PetscCall(MatDestroy(&M));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode DynamicAnalysis::step(double t1, bool* ok, int* its, double* fnorm, SNESConvergedReason* why, bool commit) {
+  PetscFunctionBeginUser;
+  const double h = h_;
+  if (asm_.mixedStressNewton()) {  // the mixed-stress tangent linearizes from the converged q_n (also on a retry)
+    LoadState lsn = ls_;
+    lsn.time = t1 - h;
+    PetscCall(asm_.setMixedReference(Un_, lsn));
+  }
+  ls_.time = t1;
+  // Cu = q_n + h qd_n + h^2 (1/2 - beta) a_n; predictor q = q_n + h qd_n + h^2/2 a_n or q_n
+  PetscCall(VecCopy(Un_, Cu_));
+  PetscCall(VecAXPBYPCZ(Cu_, h, h * h * (0.5 - beta_), 1.0, Vn_, An_));
+  Vec U;
+  PetscCall(SNESGetSolution(snes_, &U));
+  // guarded: start Newton at q_n (an extrapolation by the accelerations of a step load on a fine
+  // mesh lands far outside Newton's reach: stiff axial waves)
+  if (restPredictor_ || predictor_ == Predictor::State) PetscCall(VecCopy(Un_, U));
+  else if (midpoint_) PetscCall(VecWAXPY(U, h, Vn_, Un_));
+  else PetscCall(VecWAXPY(U, h * h * beta_, An_, Cu_));
+  PetscCall(SNESSolve(snes_, nullptr, U));
+  PetscCall(SNESGetConvergedReason(snes_, why));
+  PetscInt n;
+  PetscCall(SNESGetIterationNumber(snes_, &n));
+  PetscReal f;
+  PetscCall(SNESGetFunctionNorm(snes_, &f));
+  *its = static_cast<int>(n);
+  *fnorm = f;
+  *ok = *why > 0;
+  if (!*ok) jacobianValid_ = false;  // a failed solve starts the retry from a fresh Jacobian
+  if (*ok) {
+    PetscCall(rates(U));
+    if (commit) PetscCall(commitStep(U));
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode DynamicAnalysis::commitStep(Vec U) {
+  PetscFunctionBeginUser;
+  PetscCall(VecCopy(U, Un_));
+  PetscCall(VecCopy(V1_, Vn_));
+  PetscCall(VecCopy(A1_, An_));
+  PetscCall(VecCopy(Q1_, Qn_));
+  if (keep_)  // multipliers are algebraic (index 3): no velocity or acceleration; predictor lambda_n
+    for (Vec v : {Vn_, An_, Qn_}) PetscCall(VecPointwiseMult(v, keep_, v));
+  // Lie-group form for Frame6 nodes: R_{n+1} = exp(theta) R_n, then theta_{n+1} = 0, so the next
+  // step's rotation unknowns are again the spatial increment h Delta q from R_{n+1}. V and A
+  // hold spatial angular velocities and accelerations (vectors in the fixed frame): no transport.
+  PetscCall(asm_.absorbRotations(Un_));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+void DynamicAnalysis::setGuarded(bool on) {
+  restPredictor_ = on;
+  modifiedNewton_ = on ? false : modifiedDefault_;
+}
+
+PetscErrorCode DynamicAnalysis::retryGuarded(double t1, SNESConvergedReason why) {
+  PetscFunctionBeginUser;
+  setGuarded(true);
+  ++report_.guardedSteps;
+  PetscCall(PetscPrintf(asm_.mesh().comm, "  t = %.6g: Newton failed (%s); retrying with full Newton from the last state\n",
+                        t1, SNESConvergedReasons[why]));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode DynamicAnalysis::runArnoldBruls(Vec U, const StepCallback& onStep, bool* converged) {
+  PetscFunctionBeginUser;
+  MPI_Comm comm = asm_.mesh().comm;
+  PetscCall(SNESCreate(comm, &snes_));
+  PetscCall(SNESSetType(snes_, SNESNEWTONLS));
+  PetscCall(SNESSetFunction(snes_, F_, formFunction, this));
+  if (refinements_ > 0 || refineAuto_) {
+    PetscInt m = 0, n = 0, M = 0, N = 0;
+    PetscCall(MatGetLocalSize(J_, &m, &n));
+    PetscCall(MatGetSize(J_, &M, &N));
+    PetscCall(MatCreateShell(comm, m, n, M, N, this, &Jop_));
+    PetscCall(MatShellSetOperation(Jop_, MATOP_MULT, reinterpret_cast<void (*)(void)>(applyNewtonMatrix)));
+  }
+  PetscCall(SNESSetJacobian(snes_, Jop_ ? Jop_ : J_, J_, formJacobian, this));
+  PetscCall(SNESSetTolerances(snes_, 1e-50, 1e-10, 1e-12, 50, 10000));
+  // a residual 1e6 times its start is a diverged Newton solve: retried at once, not after 50 iterations
+  PetscCall(SNESSetDivergenceTolerance(snes_, 1e6));
+  SNESLineSearch lsrch;
+  PetscCall(SNESGetLineSearch(snes_, &lsrch));
+  PetscCall(SNESLineSearchSetType(lsrch, SNESLINESEARCHBASIC));
+  newtonTest_.rules() = newtonRules();
+  PetscCall(SNESSetConvergenceTest(snes_, convergenceTest, this, nullptr));
+  KSP ksp;
+  PetscCall(SNESGetKSP(snes_, &ksp));
+  PetscCall(useDynamicsSolver(ksp));
+  if (refinements_ > 0) PetscCall(setRefinements(ksp, refinements_));
+  PetscCall(SNESSetFromOptions(snes_));
+  if (refineAuto_) {  // the step solves' KSP chosen by the user (-ksp_type): auto does not change it
+    KSPType type;
+    PetscBool preonly = PETSC_FALSE;
+    PetscCall(KSPGetType(ksp, &type));
+    PetscCall(PetscStrcmp(type, KSPPREONLY, &preonly));
+    refineAuto_ = preonly;
+  }
+  Vec Usol;
+  PetscCall(VecDuplicate(U, &Usol));
+  PetscCall(SNESSetSolution(snes_, Usol));
+  PetscCall(VecDestroy(&Usol));
+
+  bool ok = false;
+  // a resumed run: the damping of the start state (setupResumedDamping), or, from a checkpoint
+  // without that state (older files, Restart::resumeDynamics warns), of the resumed state
+  if (resumed_ && !dampingReady_) PetscCall(setupDamping(Un_));
+  if (!resumed_) {
+    PetscCall(VecCopy(U, Un_));
+    PetscCall(asm_.absorbRotations(Un_));  // rotation unknowns are increments from R_n (0 at a step start)
+    PetscCall(setupDamping(Un_));
+    PetscCall(VecSet(Vn_, 0.0));
+    PetscCall(initialAccelerations(Un_, Vn_, Qn_, &ok));
+    if (!ok) {
+      *converged = false;
+      PetscFunctionReturn(PETSC_SUCCESS);
+    }
+    PetscCall(VecCopy(Qn_, An_));  // a_0 = qdd_0
+    progress_ = {0, 0.0, opts_.dt, 0, 0.0};
+    if (onStep) PetscCall(onStep(0, 0.0, Un_, Vn_, Qn_));
+  }
+
+  if (adaptive()) {
+    PetscCall(runAdaptive(onStep, converged));
+    PetscCall(VecCopy(Un_, U));
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  const double dt = opts_.dt, tend = opts_.tend;
+  const int nsteps = std::max(1, static_cast<int>(std::ceil(tend / dt - 1e-9)));
+  double t = resumed_ ? progress_.time : 0.0;
+  *converged = true;
+  // Sub-step size h: halved when Newton fails, doubled again after growAfter_ successes in a row
+  // (never above dt), so one hard moment does not leave the rest of the run at a tiny step.
+  // growAfter_ = 0 is the former rule: every time step restarts at dt, no growth inside a step.
+  // A resumed run (resume()) continues with the state of its checkpoint.
+  double h = resumed_ ? progress_.h : dt;
+  int successes = resumed_ ? progress_.successes : 0;
+  // Guarded mode: a failed solve is first retried at the same step size with full Newton started
+  // at q_n instead of the extrapolated predictor, then by halving (still guarded); the next time
+  // step starts plain again (a diverging extrapolation is caught early: DIVERGED_DTOL).
+  modifiedDefault_ = modifiedNewton_;
+  for (int k = (resumed_ ? progress_.step : 0) + 1; k <= nsteps; ++k) {
+    const double target = k == nsteps ? tend : k * dt;
+    int cuts = 0;
+    if (growAfter_ == 0) h = dt;
+    bool reduced = h < dt;
+    setGuarded(false);
+    while (t < target) {
+      // a remainder below 1e-6 of the sub-step is round-off of the summed sub-steps: end on target
+      h_ = target - t - h <= 1e-6 * h ? target - t : h;
+      const double t1 = h_ == target - t ? target : t + h_;
+      int its = 0;
+      double fnorm = 0;
+      SNESConvergedReason why;
+      PetscCall(step(t1, &ok, &its, &fnorm, &why));
+      report_.newtonIterations += its;
+      ++report_.substeps;
+      if (ok) {
+        t = t1;
+        if (h < dt && growAfter_ > 0 && ++successes >= growAfter_) {
+          h = std::min(2.0 * h, dt);
+          successes = 0;
+        }
+        continue;
+      }
+      successes = 0;
+      if (!restPredictor_) {
+        PetscCall(retryGuarded(t1, why));
+        continue;
+      }
+      if (++cuts > maxCuts_) {
+        std::ostringstream msg;
+        msg << "time step " << k << " of " << nsteps << " did not converge: Newton stopped at t = " << t1 << " ("
+            << SNESConvergedReasons[why] << ", residual norm " << fnorm << ") after " << maxCuts_
+            << " halvings of the step (last converged time " << t
+            << "). Try a smaller opt.dynamics.dt, a line search (-snes_linesearch_type bt), -snes_monitor, or check "
+               "supports and masses.";
+        failure_ = msg.str();
+        *converged = false;
+        break;
+      }
+      h = 0.5 * h_;
+      reduced = true;
+      PetscCall(PetscPrintf(comm, "  t = %.6g: Newton failed (%s); retrying with dt = %.3g\n", t1,
+                            SNESConvergedReasons[why], h));
+    }
+    if (!*converged) break;
+    report_.steps = k;
+    report_.reducedSteps += reduced;
+    report_.time = t;
+    progress_ = {k, t, h, successes, 0.0};
+    if (onStep) PetscCall(onStep(k, t, Un_, Vn_, Qn_));
+    if (stop_ && *stop_) break;
+  }
+  PetscCall(VecCopy(Un_, U));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+// Implicit midpoint rule: (p_{n+1} - p_n) / h + f_int(q_{n+1/2}, qd_{n+1/2}) = f_ext(t_{n+1/2}), with the
+// momenta p = m qd of nodal masses (M qd for constant element masses) and J_s w of rotary inertia,
+// the forces at the mid configuration q_n + (q_{n+1} - q_n) / 2 (rotations exp(theta / 2) R_n).
+// Internal forces of any configuration have zero resultant force and moment, so p and
+// H = sum x x p + J_s w change only by the external impulse: exactly, for a converged step.
+PetscErrorCode DynamicAnalysis::midpointResidual(Vec U, Vec F) {
+  PetscFunctionBeginUser;
+  LoadState lsm = ls_;
+  lsm.time -= 0.5 * h_;
+  const PetscScalar *u, *w0;
+  PetscCall(VecGetArrayRead(U, &u));
+  PetscCall(VecGetArrayRead(Vn_, &w0));
+  asm_.setRotaryMomentum({u, w0, h_});
+  const PetscErrorCode ierr = asm_.dynamicResidual(Um_, Vm_, A1_, lsm, F);
+  asm_.setRotaryMomentum({});
+  PetscCall(VecRestoreArrayRead(Vn_, &w0));
+  PetscCall(VecRestoreArrayRead(U, &u));
+  PetscCall(ierr);
+  PetscCall(damping_.addForce(Vm_, F));
+  if (notKeep_) {
+    // Rigid elements and rigid deformation modes: their constraints g(q_{n+1}) = 0 hold at the step's
+    // end (the rows of the residual at U), while their forces G(q_{n+1/2})^T lambda act at the mid
+    // configuration with the other forces. g is invariant under rigid motions, so those forces have
+    // no resultant moment there either: the momentum balance stays exact.
+    PetscCall(asm_.residual(U, ls_, Fend_));
+    PetscCall(VecPointwiseMult(F, keep_, F));
+    PetscCall(VecPointwiseMult(Fend_, notKeep_, Fend_));
+    PetscCall(VecAXPY(F, 1.0, Fend_));
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+// ---------------------------------------------------------------- PETSc TSALPHA2 (Chung-Hulbert)
+
+PetscErrorCode DynamicAnalysis::tsI2Function(TS, PetscReal t, Vec U, Vec V, Vec A, Vec F, void* ctx) {
+  PetscFunctionBeginUser;
+  auto* self = static_cast<DynamicAnalysis*>(ctx);
+  LoadState ls = self->ls_;
+  ls.time = t;
+  PetscCall(self->asm_.dynamicResidual(U, V, A, ls, F));
+  PetscCall(self->damping_.addForce(V, F));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode DynamicAnalysis::tsI2Jacobian(TS, PetscReal t, Vec U, Vec V, Vec, PetscReal shiftV, PetscReal shiftA, Mat,
+                                             Mat P, void* ctx) {
+  PetscFunctionBeginUser;
+  auto* self = static_cast<DynamicAnalysis*>(ctx);
+  LoadState ls = self->ls_;
+  ls.time = t;
+  PetscCall(self->asm_.dynamicJacobian(U, V, ls, shiftV, shiftA, P));
+  PetscCall(self->damping_.addJacobian(shiftV, P));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+namespace {
+struct TSMonitorCtx {
+  const DynamicAnalysis::StepCallback* onStep;
+  const bool* stop;
+  Vec A;
+  DynamicsReport* report;
+};
+PetscErrorCode tsMonitor(TS ts, PetscInt step, PetscReal t, Vec U, void* ctx) {
+  PetscFunctionBeginUser;
+  auto* m = static_cast<TSMonitorCtx*>(ctx);
+  if (step == 0) PetscFunctionReturn(PETSC_SUCCESS);  // t = 0 is written before TSSolve
+  Vec X, V;
+  PetscCall(TS2GetSolution(ts, &X, &V));
+  m->report->steps = static_cast<int>(step);
+  m->report->time = t;
+  if (*m->onStep) PetscCall((*m->onStep)(static_cast<int>(step), t, U, V, m->A));
+  if (m->stop && *m->stop) PetscCall(TSSetMaxSteps(ts, step));  // TSSolve ends after the step in progress
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+}  // namespace
+
+PetscErrorCode DynamicAnalysis::runTSAlpha2(Vec U, const StepCallback& onStep, bool* converged) {
+  PetscFunctionBeginUser;
+  MPI_Comm comm = asm_.mesh().comm;
+  TS ts;
+  PetscCall(TSCreate(comm, &ts));
+  PetscCall(TSSetType(ts, TSALPHA2));
+  PetscCall(TSSetI2Function(ts, F_, tsI2Function, this));
+  PetscCall(TSSetI2Jacobian(ts, J_, J_, tsI2Jacobian, this));
+  PetscCall(TSAlpha2SetRadius(ts, opts_.spectral_radius));
+  PetscCall(TSSetTimeStep(ts, opts_.dt));
+  PetscCall(TSSetMaxTime(ts, opts_.tend));
+  PetscCall(TSSetExactFinalTime(ts, TS_EXACTFINALTIME_MATCHSTEP));
+  PetscCall(TSSetMaxSNESFailures(ts, -1));  // a failed step is retried with a smaller step
+  PetscCall(TSSetMaxStepRejections(ts, maxCuts_));
+  PetscCall(TSSetErrorIfStepFails(ts, PETSC_FALSE));  // a failed step ends with Sinew's message (converged reason)
+  SNES snes;
+  KSP ksp;
+  PetscCall(TSGetSNES(ts, &snes));
+  PetscCall(SNESSetTolerances(snes, 1e-50, 1e-10, 1e-12, 50, 10000));
+  newtonTest_.rules() = newtonRules();
+  PetscCall(SNESSetConvergenceTest(snes, convergenceTest, this, nullptr));
+  PetscCall(SNESGetKSP(snes, &ksp));
+  PetscCall(useDirectSolver(ksp));
+  Vec V, A;
+  PetscCall(VecDuplicate(U, &V));
+  PetscCall(VecDuplicate(U, &A));
+  PetscCall(VecSet(V, 0.0));
+  bool ok = false;
+  PetscCall(setupDamping(U));
+  PetscCall(initialAccelerations(U, V, A, &ok));
+  if (ok) {
+    if (onStep) PetscCall(onStep(0, 0.0, U, V, A));
+    TSMonitorCtx mctx{&onStep, stop_, A, &report_};
+    PetscCall(VecSet(A, 0.0));  // TSALPHA2 does not expose its accelerations: sensors see qdd = 0
+    PetscCall(TSMonitorSet(ts, tsMonitor, &mctx, nullptr));
+    PetscCall(TS2SetSolution(ts, U, V));
+    PetscCall(TSSetFromOptions(ts));
+    PetscCall(TSSolve(ts, U));
+    PetscInt snesIts = 0, rejected = 0;
+    PetscCall(TSGetSNESIterations(ts, &snesIts));
+    PetscCall(TSGetStepRejections(ts, &rejected));
+    report_.newtonIterations = static_cast<int>(snesIts);
+    report_.jacobians = static_cast<int>(snesIts);  // TS assembles a Jacobian at every Newton iteration
+    report_.reducedSteps = static_cast<int>(rejected);
+    TSConvergedReason why;
+    PetscCall(TSGetConvergedReason(ts, &why));
+    ok = why > 0;
+    if (!ok) {
+      PetscReal tfail = 0;
+      PetscCall(TSGetTime(ts, &tfail));
+      std::ostringstream msg;
+      msg << "opt.dynamics with -dynamics_scheme tsalpha2: PETSc's TSALPHA2 stopped at t = " << tfail << " ("
+          << TSConvergedReasons[why] << ", after " << report_.steps
+          << " time steps): its Newton solves failed even with reduced steps. The default scheme (arnold_bruls) "
+             "controls the step itself; else try a smaller opt.dynamics.dt or -snes_linesearch_type bt.";
+      failure_ = msg.str();
+    }
+  }
+  *converged = ok;
+  PetscCall(VecDestroy(&V));
+  PetscCall(VecDestroy(&A));
+  PetscCall(TSDestroy(&ts));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode DynamicAnalysis::setupDamping(Vec U) {
+  PetscFunctionBeginUser;
+  if (!damping_.active()) PetscFunctionReturn(PETSC_SUCCESS);
+  if (!file_) SETERRQ(asm_.mesh().comm, PETSC_ERR_ORDER, "DynamicAnalysis::setResultFile must be called before run() with damping");
+  LoadState ls0 = ls_;
+  ls0.time = 0.0;
+  PetscCall(damping_.setup(U, ls0, keep_, *file_));
+  if (!U0_) PetscCall(VecDuplicate(U, &U0_));
+  PetscCall(VecCopy(U, U0_));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode DynamicAnalysis::resume(const DynamicsProgress& p, Vec U, Vec V, Vec A, Vec Qdd) {
+  PetscFunctionBeginUser;
+  if (useTS_)
+    SETERRQ(asm_.mesh().comm, PETSC_ERR_SUP, "-dynamics_scheme tsalpha2 keeps its state inside PETSc TS: it cannot resume");
+  progress_ = p;
+  report_.steps = p.step;
+  report_.time = p.time;
+  resumed_ = true;
+  PetscCall(VecCopy(U, Un_));
+  PetscCall(VecCopy(V, Vn_));
+  PetscCall(VecCopy(A, An_));
+  PetscCall(VecCopy(Qdd, Qn_));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode DynamicAnalysis::setupResumedDamping(Vec U0) {
+  PetscFunctionBeginUser;
+  PetscCall(setupDamping(U0));
+  dampingReady_ = true;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode DynamicAnalysis::run(Vec U, const StepCallback& onStep, bool* converged) {
+  PetscFunctionBeginUser;
+  PetscCall(PetscLogEventBegin(SinewEvents::get().dynamics, 0, 0, 0, 0));
+  if (useTS_) PetscCall(runTSAlpha2(U, onStep, converged));
+  else PetscCall(runArnoldBruls(U, onStep, converged));
+  PetscCall(PetscLogEventEnd(SinewEvents::get().dynamics, 0, 0, 0, 0));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+}  // namespace sinew

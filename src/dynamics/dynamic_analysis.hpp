@@ -1,0 +1,258 @@
+// Implicit time integration of M qdd + f_int(q, qd, t) = f_ext(t) with the generalized-alpha
+// method in the variant of Arnold & Brüls (2007), as Exudyn's GeneralizedAlpha solver uses it:
+//   q_{n+1}  = q_n + h qd_n + h^2 (1/2 - beta) a_n + h^2 beta a_{n+1}
+//   qd_{n+1} = qd_n + h (1 - gamma) a_n + h gamma a_{n+1}
+//   (1 - alpha_m) a_{n+1} + alpha_m a_n = (1 - alpha_f) qdd_{n+1} + alpha_f qdd_n
+//   M qdd_{n+1} + f_int(q_{n+1}, qd_{n+1}, t_{n+1}) = f_ext(t_{n+1})      (equilibrium at t_{n+1})
+// alpha_m = (2 rho - 1)/(rho + 1), alpha_f = rho/(rho + 1), gamma = 1/2 + alpha_f - alpha_m,
+// beta = (gamma + 1/2)^2 / 4 (rho = spectral radius at infinity), a_0 = qdd_0 from M qdd_0 =
+// f_ext(0) - f_int(q_0, qd_0, 0). Each step is one SNES solve for q_{n+1} (options without
+// prefix: -snes_*, -ksp_*, -pc_*); a failed step is retried with halved steps (-max_cuts).
+// -dynamics_scheme midpoint: the implicit midpoint rule, spins by Simo & Wong (1991), which keeps
+// linear and angular momentum exactly (midpointResidual).
+// PETSc's TSALPHA2 is the Chung-Hulbert variant (equilibrium at t_{n+1-alpha_f}); it is
+// available with -dynamics_scheme tsalpha2 (docs/ancf_cable2d.md compares both).
+// Beams (docs/dynamics.md): Frame6 rotation unknowns are spatial increments from R_n, absorbed into
+// R_ref after every converged step (Lie-group form; V and A hold spatial angular velocities and
+// accelerations); Lagrange multipliers of rigid modes are index-3 unknowns without rates.
+#pragma once
+#include <petscsnes.h>
+#include <petscts.h>
+
+#include <functional>
+#include <string>
+
+#include "dynamics/damping.hpp"
+#include "assembly/assembler.hpp"
+#include "settings/settings.hpp"
+#include "sinew/model.hpp"
+#include "solvers/newton_test.hpp"
+
+namespace sinew {
+
+struct DynamicsReport {
+  int steps = 0;             ///< time steps of size dt completed
+  int reducedSteps = 0;      ///< steps that needed halved sub-steps
+  int guardedSteps = 0;      ///< steps retried with full Newton from the last state (guarded)
+  int substeps = 0;          ///< SNES solves (1 per step without cuts)
+  int newtonIterations = 0;
+  int jacobians = 0;         ///< Jacobians assembled and factored (modified Newton keeps one for many iterations)
+  int corotatedJacobians = 0;  ///< of those, rebuilt from rotated kept element blocks (ANCF cables, no kernel)
+  int refinements = 0;       ///< refinements per step solve at the end (-dynamics_refine)
+  int refinedSolves = 0;     ///< step solves that were refined
+  double time = 0;           ///< last converged time
+  // adaptive time steps (opt.dynamics.adaptive; 0 with a fixed dt)
+  int acceptedSteps = 0;     ///< accepted steps (time steps taken) since t = 0
+  int rejectedSteps = 0;     ///< steps rejected by the error estimate (solved, then repeated smaller)
+  double hMin = 0, hMax = 0; ///< smallest and largest accepted step of this run
+};
+
+/// Where a time integration stands after a converged time step (checkpoints, -restart).
+struct DynamicsProgress {
+  int step = 0;        ///< time steps of size dt done
+  double time = 0;     ///< time reached
+  double h = 0;        ///< current sub-step size (halved after a failure, grows back; adaptive: the next step)
+  int successes = 0;   ///< successful sub-steps in a row since the last change of h (adaptive: accepted steps)
+  double scale = 0;    ///< adaptive steps (error): largest displacement |U|_inf so far (errorRatio)
+};
+
+class DynamicAnalysis {
+ public:
+  /// settings.dynamics: the flags of the time loop; settings.statics: the Newton settings shared with
+  /// statics (-max_cuts, -force_rtol, -newton_mixed_stresses); settings.eigen: modal damping's
+  /// frequency analysis.
+  DynamicAnalysis(Assembler& assembler, const DynamicsOptions& opts, const Settings& settings);
+  ~DynamicAnalysis();
+  DynamicAnalysis(const DynamicAnalysis&) = delete;
+  DynamicAnalysis& operator=(const DynamicAnalysis&) = delete;
+
+  /// Called at t = 0 (step 0, after the initial accelerations) and after every time step:
+  /// U, V and the accelerations Qdd at time t.
+  using StepCallback = std::function<PetscErrorCode(int step, double t, Vec U, Vec V, Vec Qdd)>;
+  /// Adaptive steps: called after every accepted step (t, U, V), written or not (external work).
+  using SubstepCallback = std::function<PetscErrorCode(double t, Vec U, Vec V)>;
+  void setSubstepCallback(SubstepCallback cb) { onSubstep_ = std::move(cb); }
+  /// True with opt.dynamics.adaptive / -dynamics_adapt newton|error.
+  bool adaptive() const { return control_ != StepControl::None; }
+  /// The last accepted step size (adaptive runs: /dynamics/dt).
+  double lastStep() const { return lastH_; }
+  /// The loads of the time loop at t: in full from t = 0, functions of time evaluated at t.
+  static LoadState loadsAt(double t);
+  using Scheme = DynamicsScheme;
+  /// Checks -dynamics_scheme against the model (SceneError; called at setup, where scene errors exit 2):
+  /// tsalpha2 (a vector space) cannot integrate rotation unknowns.
+  static Scheme checkScheme(const DistributedMesh& mesh, Scheme scheme);
+  /// Checks opt.dynamics.adaptive with its flags (-dynamics_adapt, -dynamics_dt_min/max, ...): SceneError
+  /// (exit 2) for dt_min > dt_max or adaptive steps with tsalpha2 or midpoint. Called at setup, after checkScheme.
+  static void checkStepControl(const DistributedMesh& mesh, const DynamicsOptions& opts, const DynamicsSettings& settings);
+  /// Integrates from U (in: initial state, at rest; out: state at the last converged time).
+  PetscErrorCode run(Vec U, const StepCallback& onStep, bool* converged);
+  /// With opt.dynamics damping: the frequency analysis of the start state (modal damping) sees
+  /// this file (it writes nothing into it). Call before run().
+  void setResultFile(ResultFile* file) { file_ = file; }
+  const Damping& damping() const { return damping_; }
+  /// The loop ends after the step whose onStep set *stop (an interrupt or a failed result file);
+  /// the run is then neither converged nor failed here: the caller knows why it stopped.
+  void setStopFlag(const bool* stop) { stop_ = stop; }
+
+  const DynamicsReport& report() const { return report_; }
+  /// Continues after time step p.step (a checkpoint; Arnold-Brüls scheme only): U, V, the
+  /// generalized-alpha auxiliary accelerations A and the accelerations Qdd at p.time (copied).
+  PetscErrorCode resume(const DynamicsProgress& p, Vec U, Vec V, Vec A, Vec Qdd);
+  /// A resumed run's damping, built from the start state of the interrupted run: U0 (rotations
+  /// absorbed) with the assembler holding that state's reference rotations and element states
+  /// (Restart::resumeDynamics loads them from /checkpoint_dynamics_start, then restores the resumed
+  /// ones). Without this call a resumed run rebuilds the damping from the resumed state.
+  PetscErrorCode setupResumedDamping(Vec U0);
+  /// Some damping (Rayleigh or modal) is asked for.
+  bool damped() const { return damping_.active(); }
+  /// The state the damping was built at (rotations absorbed; the multipliers as they were then,
+  /// before the initial accelerations set lambda0); null before run() or without damping.
+  Vec dampingState() const { return U0_; }
+  /// State after the last converged time step (valid inside the step callback).
+  const DynamicsProgress& progress() const { return progress_; }
+  /// Auxiliary (algorithmic) accelerations a_n of the last converged step.
+  Vec auxiliaryAccelerations() const { return An_; }
+  /// True for -dynamics_scheme tsalpha2 (PETSc TS; it cannot be resumed from a checkpoint).
+  bool usesPetscTS() const { return useTS_; }
+  const std::string& failureMessage() const { return failure_; }
+  bool midpoint() const { return midpoint_; }
+  double alphaM() const { return alphaM_; }
+  double alphaF() const { return alphaF_; }
+
+ private:
+  static PetscErrorCode formFunction(SNES, Vec U, Vec F, void* ctx);
+  static PetscErrorCode formJacobian(SNES, Vec U, Mat J, Mat P, void* ctx);
+  static PetscErrorCode convergenceTest(SNES, PetscInt it, PetscReal xnorm, PetscReal snorm, PetscReal fnorm,
+                                        SNESConvergedReason* reason, void* ctx);
+  static PetscErrorCode tsI2Function(TS, PetscReal t, Vec U, Vec V, Vec A, Vec F, void* ctx);
+  static PetscErrorCode tsI2Jacobian(TS, PetscReal t, Vec U, Vec V, Vec A, PetscReal shiftV, PetscReal shiftA, Mat J,
+                                     Mat P, void* ctx);
+  PetscErrorCode useDynamicsSolver(KSP ksp);
+  PetscErrorCode initialAccelerations(Vec U, Vec V, Vec Qdd, bool* ok);
+  /// a_{n+1}, qd_{n+1}, qdd_{n+1} of the iterate U (step size h_).
+  PetscErrorCode rates(Vec U);
+  /// -dynamics_scheme midpoint: residual of the implicit midpoint rule at the iterate U (after rates(U)).
+  PetscErrorCode midpointResidual(Vec U, Vec F);
+  /// Solves the step to t1 (size h_); with commit, a converged step becomes the new step start.
+  PetscErrorCode step(double t1, bool* ok, int* its, double* fnorm, SNESConvergedReason* why, bool commit = true);
+  /// Makes the converged iterate U (rates computed) the step start q_n, qd_n, a_n, qdd_n.
+  PetscErrorCode commitStep(Vec U);
+  /// Local error of the converged step (rates of U computed), relative to tolerance * largest displacement:
+  /// eta = h^2 |beta - 1/6| ||a_{n+1} - a_n||_inf / (tol * scale); accepted at eta <= 1. scale: the
+  /// largest ||U||_inf of the run so far and of U, at least 1e-3 of the model size; *scale out.
+  PetscErrorCode errorRatio(Vec U, double* eta, double* scale);
+  /// The time loop with adaptive steps (after the start of runArnoldBruls).
+  PetscErrorCode runAdaptive(const StepCallback& onStep, bool* converged);
+  PetscErrorCode runArnoldBruls(Vec U, const StepCallback& onStep, bool* converged);
+  PetscErrorCode runTSAlpha2(Vec U, const StepCallback& onStep, bool* converged);
+  /// Builds the damping matrix from the start state U (rotations absorbed).
+  PetscErrorCode setupDamping(Vec U);
+
+  Assembler& asm_;
+  const bool* stop_ = nullptr;
+  bool resumed_ = false;
+  bool dampingReady_ = false;  ///< setupResumedDamping was called
+  DynamicsProgress progress_;
+  DynamicsOptions opts_;
+  double alphaM_, alphaF_, gamma_, beta_;
+  double h_ = 0;
+  LoadState ls_;
+  SNES snes_ = nullptr;
+  Mat J_ = nullptr;
+  Mat Jop_ = nullptr;  ///< refined step solves: the Newton matrix applied element by element (Assembler::applyCorotated)
+  bool refineAuto_ = false;  ///< -dynamics_refine auto: refinements added from the first slow contraction on
+  static constexpr double kRefineContraction = 1e-3;
+  static constexpr int kMaxRefinements = 3;
+  int refinements_ = 0;      ///< refinements per step solve (0: the LU alone; -dynamics_refine true: 1)
+  bool refineCheck_ = false;  ///< auto: the next contraction on one matrix judges the last added refinement
+  double refineTheta_ = 0;    ///< the contraction that added it
+  int refineIt_ = -100;       ///< Newton iteration of this solve that added it (-100: an earlier solve)
+  PetscErrorCode setRefinements(KSP ksp, int n);
+  /// -dynamics_node_rotation: the kept LU preconditions turned with the nodes (useNodeRotatedPC)
+  enum class NodeRotation { Off, On, Auto } nodeRotation_ = NodeRotation::Off;
+  bool rotating_ = false;  ///< node rotation in use (On; Auto: when the first kept matrix stalled at a turn below kRotationTurn)
+  /// With node rotation, a kept matrix is rebuilt at the first iteration of a step whose first update
+  /// reduced the residual by less than this (A1g at 65536 elements, 20 steps: 0.5: 51 Newton
+  /// iterations on 7 matrices; 0.2: 47 on 7; 0.1: 41 on 8; 0.05: 41 on 17).
+  static constexpr double kRotatedContractivity = 0.1;
+  /// -dynamics_node_rotation auto: on when the first kept matrix that stalled did so at an element turn
+  /// below this (rad).
+  /// Measured stall turns: A1g (20 steps, 2 ranks) 5.1e-4 at 65536 elements, 5.3e-4 at 32768, 1.1e-3 at
+  /// 16384, where it saves rebuilds and factorizations in every step; A1g at 4096 elements (100 steps,
+  /// one process) 3.1e-3 and A3 at 512 elements 1.1e-2, where node rotation cost CPU time (0.95 against
+  /// 0.85 s, 1.70 against 1.50 s, the fastest of 5 interleaved runs each) by replacing cheap rebuilds
+  /// with fresh matrices. Later stalls (A3 at 512 elements: below 2e-3) do not switch it on.
+  static constexpr double kRotationTurn = 2e-3;
+  bool cutLU_ = false;  ///< ANCF chain with few coupling unknowns: useCutCorrectedLU on several ranks
+  int mumpsWorkspace_ = 100;  ///< -mat_mumps_icntl_14 of the MUMPS step solver (DynamicsSettings::mumpsWorkspace)
+  static PetscErrorCode applyNewtonMatrix(Mat A, Vec x, Vec y);
+  Vec F_ = nullptr;
+  Vec Un_ = nullptr, Vn_ = nullptr, An_ = nullptr, Qn_ = nullptr;  // step start: q, qd, a (algorithmic), qdd
+  Vec V1_ = nullptr, A1_ = nullptr, Q1_ = nullptr, Cu_ = nullptr;  // iterate rates; Cu = predictor part of q
+  /// 1 on coordinates, 0 on Lagrange multipliers (index-3 constraints: no rates); null without multipliers
+  Vec keep_ = nullptr;
+  Vec U0_ = nullptr;  ///< dampingState()
+  double forceRtol_ = 1e-10;
+  int maxCuts_ = 10;
+  int growAfter_ = 3;  ///< after a halving, double the sub-step after this many successes (0: never)
+  double jacobianNorm_ = 0, coordMax_ = 0;  ///< round-off floor of the residual (convergenceTest)
+  NewtonTest newtonTest_;  ///< the Newton test with the dynamics rules (newtonRules(), set with the SNES)
+  NewtonRules newtonRules() const;
+  static constexpr double kUpdateRtol = 1e-6;  ///< update test: estimated error <= this * |U|
+  static constexpr double kMidpointUpdateRtol = 1e-14;  ///< midpoint: a step ends at an update <= this * |U|
+  bool useTS_ = false;
+  bool midpoint_ = false;                 ///< -dynamics_scheme midpoint (momentum-conserving; docs/dynamics.md)
+  Vec Um_ = nullptr, Vm_ = nullptr;       ///< midpoint: mid state and velocity of the iterate
+  /// midpoint with multipliers: 1 on their rows; work vector; 2 on their rows, 1 elsewhere (Jacobian scale)
+  Vec notKeep_ = nullptr, Fend_ = nullptr, constraintScale_ = nullptr;
+  // Modified Newton (as Exudyn's): the factored Jacobian is kept across iterations and time steps
+  // while Newton contracts by at least kContractivity: measured on the residual with the
+  // acceleration predictor; with the state predictor on the residual at the first iteration and on
+  // the Newton updates after it (the residual is at its round-off noise there), and a residual that
+  // grows 1.5x also refactors. A new step size (beyond 1e-9 relative) or kMaxReuse iterations on
+  // one Jacobian make the next iteration assemble a fresh one (DynamicAnalysis::formJacobian).
+  bool modifiedNewton_ = true;
+  bool jacobianValid_ = false;
+  /// -dynamics_corotated_jacobian (ANCF cables under modified Newton): a kept Jacobian that stops
+  /// contracting is first rebuilt from its element blocks rotated with the elements
+  /// (Assembler::corotatedJacobian); a fresh one only when that does not help either.
+  bool corotated_ = false;
+  bool chain_ = false;  ///< ancfChain(mesh): an ANCF cable model (its LU: useChainLU)
+  bool lastCorotated_ = false;  ///< the current Newton matrix is a corotated rebuild
+  double staleTurn_ = HUGE_VAL;  ///< smallest element turn (rad) at which a kept Newton matrix stalled
+  int matrixIt_ = -100;          ///< Newton iteration of this solve that built the current matrix (-100: an earlier solve)
+  bool restPredictor_ = false;  ///< guarded retry: Newton starts at q_n
+  bool modifiedDefault_ = true;  ///< modifiedNewton_ outside guarded retries (set at the start of a time loop)
+  /// Guarded mode: a failed solve is retried at the same step with full Newton started at q_n (on);
+  /// the next step starts plain again (off).
+  void setGuarded(bool on);
+  /// setGuarded(true), counted and reported: "Newton failed at t1 (why); retrying ...".
+  PetscErrorCode retryGuarded(double t1, SNESConvergedReason why);
+  /// Newton's start of a time step (-dynamics_predictor): q_n + h qd_n + h^2/2 a_n or q_n
+  enum class Predictor { Acceleration, State } predictor_ = Predictor::Acceleration;
+  double jacobianH_ = 0;       ///< step size the kept Jacobian was built for
+  int reuseCount_ = 0;         ///< iterations on the kept Jacobian since it was built
+  double prevFnorm_ = 0;       ///< residual norm at the previous Jacobian call of this solve
+  // time-step control (opt.dynamics.adaptive, -dynamics_adapt; docs/dynamics.md "Time-step control")
+  using StepControl = TimeStepControl;
+  StepControl control_ = StepControl::None;
+  struct StepControlSettings {
+    StepControl control = StepControl::None;
+    double dtMin = 0, dtMax = 0, tol = 0;
+    int its = 0;
+  };
+  /// The scene's opt.dynamics.adaptive overridden by the flags, checked (SceneError).
+  static StepControlSettings stepControl(const DynamicsOptions& opts, const DynamicsSettings& settings, Scheme scheme);
+  double dtMin_ = 0, dtMax_ = 0, adaptTol_ = 1e-4;
+  int adaptIts_ = 4;
+  double lastH_ = 0;
+  double adaptScale_ = 0;  ///< largest ||U||_inf of the accepted steps so far (errorRatio)
+  SubstepCallback onSubstep_;
+  DynamicsReport report_;
+  std::string failure_;
+  Damping damping_;
+  ResultFile* file_ = nullptr;
+};
+
+}  // namespace sinew

@@ -1,0 +1,165 @@
+// Optional time-step control of the Arnold-Brüls loop (opt.dynamics.adaptive, -dynamics_adapt):
+// the settings and their checks, the local error estimate and the adaptive time loop
+// (docs/dynamics.md, "Time-step control").
+#include "dynamics/dynamic_analysis.hpp"
+#include "parallel/collective_error.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace sinew {
+
+DynamicAnalysis::StepControlSettings DynamicAnalysis::stepControl(const DynamicsOptions& opts,
+                                                                  const DynamicsSettings& settings, Scheme scheme) {
+  // time-step control: opt.dynamics.adaptive, each field overridden by its flag
+  const AdaptiveStepOptions& ad = opts.adaptive;
+  StepControlSettings r;
+  const std::string& control = ad.control;
+  r.control = settings.adapt ? *settings.adapt
+              : control == "newton" ? StepControl::Newton
+              : control == "error"  ? StepControl::Error
+                                    : StepControl::None;
+  r.dtMin = settings.dtMin.value_or(ad.dt_min > 0 ? ad.dt_min : 1e-4 * opts.dt);
+  r.dtMax = settings.dtMax.value_or(ad.dt_max > 0 ? ad.dt_max : opts.dt * opts.output_every);
+  r.tol = settings.adaptTol.value_or(ad.tolerance);
+  r.its = settings.adaptIts.value_or(ad.target_iterations);
+  if (r.control != StepControl::None && r.dtMin > r.dtMax) {
+    std::ostringstream msg;
+    msg << "the smallest adaptive step " << r.dtMin << " exceeds the largest (dt_max " << r.dtMax << ")";
+    throw SceneError("-dynamics_dt_min", msg.str());
+  }
+  if (r.control != StepControl::None && scheme == Scheme::TSAlpha2)
+    throw SceneError("-dynamics_adapt", "adaptive steps are Sinew's Arnold-Brüls loop; -dynamics_scheme tsalpha2 takes a fixed dt");
+  if (r.control != StepControl::None && scheme == Scheme::Midpoint)
+    throw SceneError("-dynamics_adapt", "adaptive steps are Sinew's Arnold-Brüls loop (its error estimate and step "
+                                        "restart); -dynamics_scheme midpoint takes a fixed dt");
+  return r;
+}
+
+void DynamicAnalysis::checkStepControl(const DistributedMesh& mesh, const DynamicsOptions& opts,
+                                       const DynamicsSettings& settings) {
+  stepControl(opts, settings, checkScheme(mesh, settings.scheme));
+}
+
+// Zienkiewicz & Xie (1991) type estimate of the local error of q_{n+1}: the Newmark/alpha update
+// q_{n+1} = q_n + h qd_n + h^2 (1/2 - beta) a_n + h^2 beta a_{n+1} differs from the Taylor series by
+// h^3 (beta - 1/6) da/dt + O(h^4), and h da/dt ~ a_{n+1} - a_n (algorithmic accelerations; spatial
+// angular accelerations for rotations; multipliers masked). It is compared with tolerance times the
+// largest displacement of the unknowns (inf-norm over translations, rotation increments, ANCF
+// coordinates: mixed units, meant for models whose rotations and displacements/size are of one order).
+PetscErrorCode DynamicAnalysis::errorRatio(Vec U, double* eta, double* scale) {
+  PetscFunctionBeginUser;
+  PetscCall(VecWAXPY(F_, -1.0, An_, A1_));  // F_ is free here: the residual of the solve is not needed
+  if (keep_) PetscCall(VecPointwiseMult(F_, keep_, F_));
+  PetscReal da = 0, u = 0;
+  PetscCall(VecNorm(F_, NORM_INFINITY, &da));
+  if (keep_) {  // the displacement scale without the multipliers
+    PetscCall(VecPointwiseMult(F_, keep_, U));
+    PetscCall(VecNorm(F_, NORM_INFINITY, &u));
+  } else {
+    PetscCall(VecNorm(U, NORM_INFINITY, &u));
+  }
+  const double err = h_ * h_ * std::abs(beta_ - 1.0 / 6.0) * da;
+  // the largest displacement so far (not the current one: it passes 0 twice per oscillation), and at
+  // least 1e-3 of the model size (at rest under a load that rises from 0 the error and the motion of
+  // the first step are of the same order at any h: relative to |U| alone the step would go to dt_min)
+  *scale = std::max({static_cast<double>(u), adaptScale_, 1e-3 * coordMax_});
+  *eta = err > 0 ? err / (adaptTol_ * *scale) : 0.0;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+// Adaptive steps: output rows stay at k dt (k a multiple of output_every, and tend); the steps
+// between them are chosen by the controller and land on each row time exactly (the remaining
+// interval is split into equal steps no longer than the proposed h), so rows need no interpolation.
+PetscErrorCode DynamicAnalysis::runAdaptive(const StepCallback& onStep, bool* converged) {
+  PetscFunctionBeginUser;
+  MPI_Comm comm = asm_.mesh().comm;
+  const double dt = opts_.dt, tend = opts_.tend;
+  const int nsteps = std::max(1, static_cast<int>(std::ceil(tend / dt - 1e-9)));
+  const int every = opts_.output_every;
+  double t = resumed_ ? progress_.time : 0.0;
+  double h = std::clamp(resumed_ ? progress_.h : dt, dtMin_, dtMax_);
+  report_.acceptedSteps = resumed_ ? progress_.successes : 0;
+  adaptScale_ = resumed_ ? progress_.scale : 0.0;
+  *converged = true;
+  modifiedDefault_ = modifiedNewton_;
+  Vec U;
+  PetscCall(SNESGetSolution(snes_, &U));
+  for (int k = resumed_ ? progress_.step : 0; k < nsteps;) {
+    const int krow = std::min(nsteps, (k / every + 1) * every);
+    const double target = krow == nsteps ? tend : krow * dt;
+    setGuarded(false);
+    while (t < target) {
+      const double rest = target - t;
+      const int n = std::max(1, static_cast<int>(std::ceil(rest / h - 1e-6)));
+      h_ = rest / n;
+      const double t1 = n == 1 ? target : t + h_;
+      int its = 0;
+      double fnorm = 0;
+      SNESConvergedReason why;
+      bool ok = false;
+      PetscCall(step(t1, &ok, &its, &fnorm, &why, false));
+      report_.newtonIterations += its;
+      ++report_.substeps;
+      if (!ok) {  // as with a fixed dt: full Newton from q_n at the same step, then halving
+        if (!restPredictor_) {
+          PetscCall(retryGuarded(t1, why));
+          continue;
+        }
+        if (h_ <= dtMin_ * (1 + 1e-9)) {
+          std::ostringstream msg;
+          msg << "adaptive time steps: Newton did not converge at t = " << t1 << " (" << SNESConvergedReasons[why]
+              << ", residual norm " << fnorm << ") with the smallest step dt_min = " << dtMin_ << " (last converged time " << t
+              << "). Try a smaller opt.dynamics.adaptive.dt_min, a line search (-snes_linesearch_type bt), or check "
+                 "supports and masses.";
+          failure_ = msg.str();
+          *converged = false;
+          break;
+        }
+        h = std::max(0.5 * h_, dtMin_);
+        ++report_.reducedSteps;
+        PetscCall(PetscPrintf(comm, "  t = %.6g: Newton failed (%s); retrying with dt = %.3g\n", t1, SNESConvergedReasons[why], h));
+        continue;
+      }
+      // proposed change of the step: newton aims at adaptIts_ iterations, error at eta = 1 (safety 0.9,
+      // local error ~ h^3); within [0.2, 2] per step, and no growth below 1.2 (keeps a factored Jacobian)
+      double factor = 1.0, eta = 0.0, scale = adaptScale_;
+      if (control_ == StepControl::Newton) {
+        factor = std::sqrt(static_cast<double>(adaptIts_) / std::max(its, 1));
+      } else {
+        PetscCall(errorRatio(U, &eta, &scale));
+        factor = eta > 0 ? 0.9 * std::cbrt(1.0 / eta) : 2.0;
+      }
+      factor = std::clamp(factor, 0.2, 2.0);
+      if (factor >= 1.0 && factor < 1.2) factor = 1.0;
+      if (control_ == StepControl::Error && eta > 1.0 && h_ > dtMin_ * (1 + 1e-9)) {
+        h = std::max(h_ * std::min(factor, 0.9), dtMin_);  // rejected: repeat from q_n with the smaller step
+        ++report_.rejectedSteps;
+        continue;
+      }
+      PetscCall(commitStep(U));
+      setGuarded(false);
+      adaptScale_ = scale;
+      t = t1;
+      lastH_ = h_;
+      ++report_.acceptedSteps;
+      report_.hMin = report_.hMin > 0 ? std::min(report_.hMin, h_) : h_;
+      report_.hMax = std::max(report_.hMax, h_);
+      double next = h_ * factor;
+      if (h_ < h && factor >= 1.0) next = std::max(next, h);  // a step shortened to land on a row time
+      h = std::clamp(next, dtMin_, dtMax_);
+      if (onSubstep_) PetscCall(onSubstep_(t, Un_, Vn_));
+    }
+    if (!*converged) break;
+    k = krow;
+    report_.steps = k;
+    report_.time = t;
+    progress_ = {k, t, h, report_.acceptedSteps, adaptScale_};
+    if (onStep) PetscCall(onStep(k, t, Un_, Vn_, Qn_));
+    if (stop_ && *stop_) break;
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+}  // namespace sinew

@@ -1,0 +1,228 @@
+#include "solvers/solver_defaults.hpp"
+#include "step/buckling_analysis.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <sstream>
+
+#include "step/modal_analysis.hpp"
+#include "parallel/collective_error.hpp"
+
+namespace sinew {
+
+BucklingAnalysis::BucklingAnalysis(Assembler& assembler, int nbuck, const EigenSettings& settings)
+    : asm_(assembler), nbuck_(nbuck) {
+  MPI_Comm comm = asm_.mesh().comm;
+  SinewCallThrow(comm, asm_.createMatrix(&Km_));
+  SinewCallThrow(comm, asm_.createMatrix(&Kg_));
+  SinewCallThrow(comm, EPSCreate(comm, &eps_));
+  SinewCallThrow(comm, EPSSetOptionsPrefix(eps_, "buck_"));
+  SinewCallThrow(comm, EPSSetProblemType(eps_, EPS_GNHEP));
+  SinewCallThrow(comm, EPSSetDimensions(eps_, 2 * nbuck + 2, PETSC_DEFAULT, PETSC_DEFAULT));
+  SinewCallThrow(comm, EPSSetWhichEigenpairs(eps_, EPS_TARGET_MAGNITUDE));
+  SinewCallThrow(comm, EPSSetTarget(eps_, 0.0));
+  ST st;
+  KSP ksp;
+  SinewCallThrow(comm, EPSGetST(eps_, &st));
+  SinewCallThrow(comm, STSetType(st, STSINVERT));
+  SinewCallThrow(comm, STSetMatStructure(st, SUBSET_NONZERO_PATTERN));
+  SinewCallThrow(comm, STGetKSP(st, &ksp));
+  SinewCallThrow(comm, useDirectSolver(ksp, asm_.mesh()));
+  SinewCallThrow(comm, eigenOperator(asm_, settings.eigenOperator, &elementwise_));
+  if (elementwise_) {  // as the frequency analysis (modal_analysis.cpp)
+    asm_.keepTangentBlocks(true);
+    asm_.keepRigidData(true);
+    const PetscInt nloc = asm_.mesh().numOwnedUnknowns, N = static_cast<PetscInt>(asm_.mesh().numGlobalUnknowns);
+    SinewCallThrow(comm, MatCreateShell(comm, nloc, nloc, N, N, this, &Kop_));
+    SinewCallThrow(comm, MatShellSetOperation(Kop_, MATOP_MULT, reinterpret_cast<void (*)(void)>(materialMult)));
+    SinewCallThrow(comm, STSetMatMode(st, ST_MATMODE_SHELL));
+    SinewCallThrow(comm, useAccurateInnerSolver(ksp));
+  }
+  SinewCallThrow(comm, EPSSetFromOptions(eps_));
+  userNev_ = settings.userBucklingNev;
+}
+
+BucklingAnalysis::~BucklingAnalysis() {
+  EPSDestroy(&eps_);
+  MatDestroy(&Km_);
+  MatDestroy(&Kg_);
+  MatDestroy(&Kop_);
+}
+
+// K_m x = K x + (-K_g) x: the element-wise (rigid-motion-free) product with the whole tangent minus
+// the assembled geometric part (Kg_ holds -K_g while the eigenproblem is solved)
+PetscErrorCode BucklingAnalysis::materialMult(Mat A, Vec x, Vec y) {
+  PetscFunctionBeginUser;
+  void* ctx;
+  PetscCall(MatShellGetContext(A, &ctx));
+  auto* self = static_cast<BucklingAnalysis*>(ctx);
+  PetscCall(self->asm_.applyTangent(x, y, true));
+  PetscCall(MatMultAdd(self->Kg_, x, y, y));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode BucklingAnalysis::solve(int nev, int* nconv) {
+  PetscFunctionBeginUser;
+  if (!userNev_) PetscCall(EPSSetDimensions(eps_, nev, PETSC_DEFAULT, PETSC_DEFAULT));
+  if (elementwise_) {
+    ST st;
+    PetscCall(EPSGetST(eps_, &st));
+    PetscCall(STSetPreconditionerMat(st, Km_));
+    PetscCall(EPSSetOperators(eps_, Kop_, Kg_));
+  } else {
+    PetscCall(EPSSetOperators(eps_, Km_, Kg_));
+  }
+  PetscCall(PetscLogEventBegin(SinewEvents::get().eigen, 0, 0, 0, 0));
+  PetscCall(EPSSolve(eps_));
+  PetscCall(PetscLogEventEnd(SinewEvents::get().eigen, 0, 0, 0, 0));
+  PetscInt n;
+  PetscCall(EPSGetConverged(eps_, &n));
+  *nconv = static_cast<int>(n);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+// Rayleigh quotient mu = x^T K_m x / x^T (-K_g) x with the operator used (element-wise: accurate for
+// the smooth modes of fine meshes; error quadratic in the mode's), and the backward error
+// ||K_m x - mu (-K_g) x|| / ((||K_m|| + |mu| ||K_g||) ||x||). Kg_ holds -K_g.
+PetscErrorCode BucklingAnalysis::refine(Vec x, PetscScalar* mu, double* backward) {
+  PetscFunctionBeginUser;
+  if (!std::isfinite(*mu)) PetscFunctionReturn(PETSC_SUCCESS);
+  Vec a, b;
+  PetscCall(MatCreateVecs(Km_, &a, &b));
+  if (elementwise_) PetscCall(MatMult(Kop_, x, a));
+  else PetscCall(MatMult(Km_, x, a));
+  PetscCall(MatMult(Kg_, x, b));
+  PetscScalar xa, xb;
+  PetscCall(VecDot(x, a, &xa));
+  PetscCall(VecDot(x, b, &xb));
+  if (elementwise_ && xb != 0.0) *mu = xa / xb;
+  PetscCall(VecAXPY(a, -*mu, b));
+  PetscReal rn, xn, nm, ng;
+  PetscCall(VecNorm(a, NORM_2, &rn));
+  PetscCall(VecNorm(x, NORM_2, &xn));
+  PetscCall(MatNorm(Km_, NORM_INFINITY, &nm));
+  PetscCall(MatNorm(Kg_, NORM_INFINITY, &ng));
+  *backward = rn / ((nm + std::abs(*mu) * ng) * xn);
+  PetscCall(VecDestroy(&a));
+  PetscCall(VecDestroy(&b));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode BucklingAnalysis::atStep(Vec U, const LoadState& ls, ResultFile& file, bool* ok) {
+  PetscFunctionBeginUser;
+  ++step_;
+  const DistributedMesh& mesh = asm_.mesh();
+  const double inf = std::numeric_limits<double>::infinity();
+  PetscCall(asm_.splitTangent(U, ls, Km_, Kg_));
+  if (elementwise_) PetscCall(asm_.jacobian(U, ls, nullptr));  // the element blocks of K = K_m + K_g
+  PetscReal nm, ng;
+  PetscCall(MatNorm(Km_, NORM_FROBENIUS, &nm));
+  PetscCall(MatNorm(Kg_, NORM_FROBENIUS, &ng));
+  mu_.assign(nbuck_, inf);
+  estimate_.assign(nbuck_, std::numeric_limits<double>::quiet_NaN());
+  backward_.assign(nbuck_, std::numeric_limits<double>::quiet_NaN());
+  std::vector<Vec> shapes;
+  if (ng > 1e-13 * nm) {  // a stress-free state has no buckling load: every multiplier +inf
+    PetscCall(MatScale(Kg_, -1.0));  // K_m phi = mu (-K_g) phi
+    PetscInt N;
+    PetscCall(MatGetSize(Km_, &N, nullptr));
+    struct Pair {
+      double mu;
+      Vec x;
+      double estimate, backward;
+    };
+    std::vector<Pair> positive;
+    int nev = 2 * nbuck_ + 2, nconv = 0;
+    EPSConvergedReason reason = EPS_CONVERGED_ITERATING;
+    for (int attempt = 0; attempt < 3; ++attempt) {
+      for (auto& p : positive) PetscCall(VecDestroy(&p.x));
+      positive.clear();
+      PetscCall(solve(std::min<int>(nev, static_cast<int>(N)), &nconv));
+      PetscCall(EPSGetConvergedReason(eps_, &reason));
+      for (int i = 0; i < nconv; ++i) {
+        PetscScalar kr, ki;
+        Vec x;
+        PetscCall(MatCreateVecs(Km_, &x, nullptr));
+        PetscCall(EPSGetEigenpair(eps_, i, &kr, &ki, x, nullptr));
+        PetscReal est = 0;
+        PetscCall(EPSGetErrorEstimate(eps_, i, &est));
+        double back = 0;
+        PetscCall(refine(x, &kr, &back));
+        // mu ||K_g|| > 1e4 ||K_m||: a null direction of K_g (infinite multiplier) computed at round-off level;
+        // a real buckling load has mu ||K_g|| / ||K_m|| of the order of (thickness / length)^2
+        const bool finite = std::isfinite(kr) && kr * ng < 1e4 * nm;
+        if (finite && kr > 0 && std::abs(ki) <= 1e-6 * std::abs(kr)) positive.push_back({kr, x, est, back});
+        else PetscCall(VecDestroy(&x));
+      }
+      // enough positive multipliers, or the nearest ones are all negative and the spectrum is exhausted
+      if (static_cast<int>(positive.size()) >= nbuck_ || userNev_ || nev >= N) break;
+      nev *= 4;
+    }
+    std::sort(positive.begin(), positive.end(), [](const Pair& a, const Pair& b) { return a.mu < b.mu; });
+    PetscReal tol;
+    PetscInt maxit;
+    PetscCall(EPSGetTolerances(eps_, &tol, &maxit));
+    tol_ = tol;
+    double worst = 0;
+    for (int j = 0; j < nbuck_ && j < static_cast<int>(positive.size()); ++j) {
+      mu_[j] = positive[j].mu;
+      estimate_[j] = positive[j].estimate;
+      backward_[j] = positive[j].backward;
+      worst = std::max({worst, positive[j].estimate, positive[j].backward});
+      shapes.push_back(positive[j].x);
+      positive[j].x = nullptr;
+    }
+    for (auto& p : positive) PetscCall(VecDestroy(&p.x));
+    if (worst > tol_)
+      PetscCall(PetscPrintf(mesh.comm,
+                            "  warning: buckling at step %d: error estimate or backward error %.2e of an eigenpair exceeds "
+                            "-buck_eps_tol %.1e (/buck_error_estimate, /buck_backward_error)\n",
+                            step_, worst, tol_));
+    PetscCall(PetscInfo(nullptr, "buckling step %d: %d converged (%s), %zu positive multipliers kept\n", step_, nconv,
+                        EPSConvergedReasons[reason], shapes.size()));
+    if (reason < 0 && shapes.empty()) {
+      *ok = false;
+      std::ostringstream msg;
+      msg << "buckling at step " << step_ << ": SLEPc did not converge (" << EPSConvergedReasons[reason]
+          << "); try -buck_eps_max_it, -buck_eps_ncv or -buck_eps_tol";
+      failure_ = msg.str();
+    }
+  }
+  file.writeStepRow("buck", mu_);
+  file.writeStepRow("buck_error_estimate", estimate_);
+  file.writeStepRow("buck_backward_error", backward_);
+  std::vector<double> rows, rot;
+  std::vector<double>* withRot = mesh.anyRotations ? &rot : nullptr;
+  for (int j = 0; j < nbuck_; ++j) {
+    if (j < static_cast<int>(shapes.size())) {
+      PetscCall(modeShapeRows(mesh, shapes[j], rows, withRot));
+    } else {
+      rows.assign(3 * static_cast<size_t>(mesh.numOwnedNodes), 0.0);
+      rot = rows;
+    }
+    file.writeMeshField("mesh/mode_buck_" + std::to_string(j + 1), rows, {3});
+    if (withRot) file.writeMeshField("mesh/mode_buck_" + std::to_string(j + 1) + "_rot", rot, {3});
+  }
+  for (Vec& x : shapes) PetscCall(VecDestroy(&x));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+std::string BucklingAnalysis::summary() const {
+  if (mu_.empty()) return {};
+  std::ostringstream s;
+  char buf[64];
+  s << "\n buckling load multipliers (last step):";
+  bool anyInf = false;
+  for (double m : mu_) {
+    std::snprintf(buf, sizeof buf, " %.6g", m);
+    s << buf;
+    anyInf |= std::isinf(m);
+  }
+  s << "\n";
+  if (anyInf) s << "   inf: no (further) positive multiplier: no compressive stress state that the current load can buckle\n";
+  return s.str();
+}
+
+}  // namespace sinew

@@ -1,5 +1,5 @@
-#include "solvers/solver_defaults.hpp"
 #include "analysis/constraint_check.hpp"
+#include "solvers/solver_defaults.hpp"
 
 #include <petscksp.h>
 

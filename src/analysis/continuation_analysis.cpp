@@ -8,9 +8,9 @@
 #include <petscmat.h>
 #include <slepceps.h>
 
-#include "solvers/solver_defaults.hpp"
 #include "parallel/collective_error.hpp"
 #include "solvers/newton_test.hpp"
+#include "solvers/solver_defaults.hpp"
 
 namespace sinew {
 

@@ -1,7 +1,7 @@
-#include "solvers/solver_defaults.hpp"
 #include "analysis/static_analysis.hpp"
 #include "parallel/collective_error.hpp"
 #include "solvers/newton_test.hpp"
+#include "solvers/solver_defaults.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -9,9 +9,9 @@
 #include <string>
 #include <vector>
 
-#include "solvers/ancf/cable_coarse_space.hpp"
 #include "assembly/assembler.hpp"
 #include "settings/settings.hpp"
+#include "solvers/ancf/cable_coarse_space.hpp"
 #include "solvers/newton_test.hpp"
 
 namespace sinew {

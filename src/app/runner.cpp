@@ -11,28 +11,29 @@
 
 #include "analysis/constraint_check.hpp"
 #include "analysis/continuation_analysis.hpp"
-#include "dynamics/dynamic_analysis.hpp"
 #include "analysis/formfinding_analysis.hpp"
 #include "analysis/static_analysis.hpp"
-#include "step/step_analysis.hpp"
-#include "step/step_results.hpp"
 #include "app/command_line.hpp"
 #include "app/input_summary.hpp"
 #include "app/interrupt.hpp"
-#include "app/plan.hpp"
+#include "app/phases/model_checks.hpp"
 #include "app/phases/restart.hpp"
 #include "app/phases/run_context.hpp"
+#include "app/plan.hpp"
 #include "app/summary.hpp"
 #include "assembly/assembler.hpp"
 #include "assembly/kernel_factory.hpp"
+#include "dynamics/dynamic_analysis.hpp"
 #include "elements/element_kinds.hpp"
-#include "parallel/collective_error.hpp"
 #include "mesh/distributed_mesh.hpp"
 #include "mesh/fe_mesh.hpp"
 #include "output/output_target.hpp"
+#include "parallel/collective_error.hpp"
 #include "scene/scene_reader.hpp"
 #include "settings/read_settings.hpp"
 #include "sinew/result_file.hpp"
+#include "step/step_analysis.hpp"
+#include "step/step_results.hpp"
 
 namespace sinew {
 namespace {
@@ -91,173 +92,6 @@ void fillLook(const Model& model, const DistributedMesh& mesh, ResultLayout& lay
     const std::array<double, 3> c = s ? s->color.value_or(blue) : grey;
     look.insert(look.end(), {c[0], c[1], c[2], s ? s->opacity : 1.0, s && s->hide ? 0.0 : 1.0});
   }
-}
-
-/// No external load of any kind: no gravity, massProportionalLoad or pressure (a zero vector, gravity
-/// [0, 0], is none), and zero nodal loads and prescribed motions on every node (collective).
-bool unloaded(const Model& model, const DistributedMesh& mesh, const Assembler& assembler) {
-  int loaded = (model.opt.gravity.has_value() && norm(*model.opt.gravity) > 0.0) || assembler.hasPressure();
-  for (const ElementSet& s : model.eprops) loaded |= elementKind(s.type()).bodyLoaded(s);
-  for (const LocalNode& n : mesh.nodes) {
-    for (int k = 0; k < 6; ++k)
-      loaded |= n.load[k] != 0.0 || n.loadInitial[k] != 0.0 || n.prescribed[k] != 0.0 || n.prescribedInitial[k] != 0.0;
-    for (int k = 0; k < 3; ++k) loaded |= n.rot[k] != 0.0 || n.rotInitial[k] != 0.0;
-    loaded |= n.timeFn != nullptr;  // a function of time may vanish at t = 0
-  }
-  MPI_Allreduce(MPI_IN_PLACE, &loaded, 1, MPI_INT, MPI_LOR, mesh.comm);
-  return !loaded;
-}
-
-/// Anything acting at load factor 0 (SPACAR Light's step 1): initial loads, pressures and prescribed
-/// motions, cable and membrane prestress, ANCF reference strains/curvatures and force laws, a
-/// form-found start state. Without any, step 1 is the start state itself and needs no solve.
-bool initiallyLoaded(const Model& model, const DistributedMesh& mesh) {
-  int loaded = model.formfinding.has_value();
-  for (const ElementSet& s : model.eprops) loaded |= elementKind(s.type()).initiallyLoaded(s);
-  for (const LocalNode& n : mesh.nodes) {
-    for (int k = 0; k < 6; ++k) loaded |= n.loadInitial[k] != 0.0 || n.prescribedInitial[k] != 0.0;
-    for (int k = 0; k < 3; ++k) loaded |= n.rotInitial[k] != 0.0;
-  }
-  MPI_Allreduce(MPI_IN_PLACE, &loaded, 1, MPI_INT, MPI_LOR, mesh.comm);
-  return loaded;
-}
-
-/// -constraint_check (default true) and -constraint_check_max_unknowns: whether the model is checked.
-struct ConstraintCheckSetting {
-  bool enabled = true;
-};
-
-/// Prints a singular model's message, removes a stale result file under this name (it does not belong
-/// to this scene) and sets exit code 2.
-PetscErrorCode reportSingularModel(MPI_Comm comm, int rank, const std::string& message, const std::string& h5, int* exitCode) {
-  PetscFunctionBeginUser;
-  PetscCall(PetscPrintf(comm, "%s", message.c_str()));
-  if (rank == 0) {
-    std::error_code ec;
-    std::filesystem::remove(h5, ec);
-    std::filesystem::remove(h5 + ".part", ec);
-  }
-  *exitCode = 2;
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-/// Residual and tangent at the reference state (load factor 0) are finite (collective; the tangent's
-/// Frobenius norm, so entries above ~1e154, whose products overflow in a factorization, count as
-/// non-finite). A non-finite one (a user function dividing by zero, a property overflowing) is no mechanism: the analysis fails
-/// on it (exit 3) with its own message on every rank count, where the constraint check would call the
-/// model singular on some (MUMPS refuses to factor a tangent with Inf/NaN, PETSc's serial LU does not).
-/// A force law that is not finite here (at t = 0) is named in *law (the analysis starts at t > 0 and
-/// fails on it there if it stays non-finite).
-PetscErrorCode finiteAtReference(Assembler& assembler, bool* finite, std::string* law) {
-  PetscFunctionBeginUser;
-  assembler.setNonFiniteLawsFatal(false);
-  Vec U0, F;
-  Mat J;
-  PetscCall(assembler.createVector(&U0));
-  PetscCall(VecDuplicate(U0, &F));
-  PetscCall(VecSet(U0, 0.0));
-  PetscCall(assembler.residual(U0, LoadState{}, F));
-  PetscReal fn = 0, jn = 0;
-  PetscCall(VecNorm(F, NORM_2, &fn));
-  PetscCall(assembler.createMatrix(&J));
-  PetscCall(assembler.jacobian(U0, LoadState{}, J));
-  PetscCall(MatNorm(J, NORM_FROBENIUS, &jn));
-  *law = assembler.nonFiniteLaw();
-  assembler.setNonFiniteLawsFatal(true);
-  *finite = std::isfinite(fn) && std::isfinite(jn) && law->empty();
-  PetscCall(MatDestroy(&J));
-  PetscCall(VecDestroy(&F));
-  PetscCall(VecDestroy(&U0));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-/// Mechanisms and redundant constraints before any analysis (and before the result file exists):
-/// with form finding the form-finding problem (its kernels in the mode of step 1, prestress-only
-/// stiffness of the form-found elements), otherwise the statics tangent at the reference state.
-/// A singular model prints its message and sets *exitCode = 2.
-PetscErrorCode checkModelBeforeRun(const Model& model, const Plan& plan, Assembler& assembler, const std::string& h5,
-                                   const ModelCheckSettings& settings, ConstraintCheckSetting* setting, Timings* times,
-                                   int* exitCode) {
-  PetscFunctionBeginUser;
-  const DistributedMesh& dmesh = assembler.mesh();
-  MPI_Comm comm = dmesh.comm;
-  bool checkModel = settings.enabled;
-  // The check factors the tangent once (MUMPS): above this size it would cost as much memory as a
-  // direct solve, so large models (often solved iteratively) skip it up front; a failing linear
-  // solve still triggers it as a diagnostic.
-  const long checkMax = settings.maxUnknowns;
-  if (checkModel && dmesh.numGlobalUnknowns > checkMax) {
-    checkModel = false;
-    if (!model.opt.silent)
-      PetscCall(PetscPrintf(comm, "  note: constraint check skipped (%ld unknowns > -constraint_check_max_unknowns %ld)\n",
-                            dmesh.numGlobalUnknowns, checkMax));
-  }
-  setting->enabled = checkModel;
-  const bool formfinding = plan.formfinding && model.formfinding.has_value();
-  if (!checkModel || model.opt.showinputonly || !(plan.statics || formfinding)) PetscFunctionReturn(PETSC_SUCCESS);
-  const double tCheck = MPI_Wtime();
-  bool finite = true;
-  std::string law;
-  PetscCall(finiteAtReference(assembler, &finite, &law));
-  if (!finite) {
-    times->check = MPI_Wtime() - tCheck;
-    if (law.rfind("error: ", 0) == 0) law = law.substr(7);
-    if (!model.opt.silent)
-      PetscCall(PetscPrintf(comm, "  note: constraint check skipped: the residual or tangent at the reference state is not finite (%s)\n",
-                            law.empty() ? "Inf/NaN, or tangent entries above 1e154" : law.c_str()));
-    PetscFunctionReturn(PETSC_SUCCESS);
-  }
-  ConstraintReport check;
-  PetscCall(PetscLogEventBegin(SinewEvents::get().constraintCheck, 0, 0, 0, 0));
-  if (formfinding) {
-    PetscCall(checkFormFindingConstraints(assembler, model, settings, &check));
-    if (check.singular)
-      check.message += "  (found in the form-finding problem: the form-found cables and membranes carry their prestress "
-                       "only, as geometric stiffness; every other element is elastic)\n";
-  } else {
-    Vec U0;
-    PetscCall(assembler.createVector(&U0));
-    PetscCall(VecSet(U0, 0.0));
-    PetscCall(checkConstraints(assembler, model, U0, LoadState{}, settings, &check));
-    PetscCall(VecDestroy(&U0));
-  }
-  PetscCall(PetscLogEventEnd(SinewEvents::get().constraintCheck, 0, 0, 0, 0));
-  times->check = MPI_Wtime() - tCheck;
-  // Rigid-body modes without any load are legitimate for a frequency analysis (a free-free body:
-  // the unloaded reference state is the equilibrium; the modal shift handles the singular K).
-  if (!formfinding && check.singular && check.redundant == 0 && plan.frequencies && unloaded(model, dmesh, assembler)) {
-    check.singular = false;
-    if (!model.opt.silent)
-      PetscCall(PetscPrintf(comm, "  note: free motions with zero stiffness (rigid-body modes) and no loads: the frequency "
-                                  "analysis runs about the unloaded reference state\n"));
-  }
-  if (check.singular) PetscCall(reportSingularModel(comm, dmesh.rank, check.message, h5, exitCode));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-/// After form finding and the elastic restart, before a load analysis with loads: the loaded model's
-/// tangent at the restart state (elastic kernels, the found shape, load factor 0; e.g. a flat membrane
-/// without prestress after a DISPLACEMENT restart has no stiffness across its surface). A singular one
-/// sets ctx.failure and *modelError (exit 2; the result file keeps the form-finding steps). Without any
-/// load the found shape is the equilibrium and the load analysis ends at once, mechanism or not.
-PetscErrorCode checkLoadedModelAfterFormFinding(RunContext& ctx, const ConstraintCheckSetting& setting, bool* modelError) {
-  PetscFunctionBeginUser;
-  if (!setting.enabled || !ctx.plan.statics || !ctx.converged) PetscFunctionReturn(PETSC_SUCCESS);
-  if (unloaded(ctx.model, ctx.assembler.mesh(), ctx.assembler)) PetscFunctionReturn(PETSC_SUCCESS);
-  ConstraintReport check;
-  const double tCheck = MPI_Wtime();
-  PetscCall(PetscLogEventBegin(SinewEvents::get().constraintCheck, 0, 0, 0, 0));
-  PetscCall(checkConstraints(ctx.assembler, ctx.model, ctx.U, LoadState{}, ctx.settings.check, &check));
-  PetscCall(PetscLogEventEnd(SinewEvents::get().constraintCheck, 0, 0, 0, 0));
-  ctx.times.check += MPI_Wtime() - tCheck;
-  if (!check.singular) PetscFunctionReturn(PETSC_SUCCESS);
-  ctx.converged = false;
-  ctx.failure = "the load analysis after form finding cannot start (elastic_restart_method " +
-                ctx.model.formfinding->elastic_restart_method + ", found shape):\n" + check.message +
-                "  (a restart without prestress leaves flat or straight parts of the found shape without stiffness "
-                "across them; elastic_restart_method FORCE keeps the prestress)\n";
-  *modelError = true;
-  PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 PetscErrorCode runScene(int argc, char** argv, int* exitCode) {
@@ -490,77 +324,7 @@ PetscErrorCode runScene(int argc, char** argv, int* exitCode) {
       PetscCall(runContinuation(ctx));
     } else if (go && plan.statics && !resumeDynamics) {
       PhaseScope phase("statics");
-      const double tStatics = MPI_Wtime();
-      const double outBefore = ctx.times.output, anaBefore = ctx.times.analyses;
-      // a restart keeps the earlier run's ramp (its loadsteps and opt.load_ramp, checked equal by Restart):
-      // -loadsteps is the last step, the load factor of step k stays StaticAnalysis::stepFactor(k)
-      const int ramp = resumeStatics ? restart->rampLoadsteps() : model.opt.loadsteps;
-      StaticAnalysis statics(assembler, ramp, settings.statics, settings.ancf);
-      statics.setLastStep(model.opt.loadsteps);
-      statics.setUnloaded(unloaded(model, *dmesh, assembler));
-      statics.setStopFlag(&ctx.stop);
-      statics.setUniformRamp(model.opt.load_ramp == "uniform");
-      statics.setStartIsInitialState(!initiallyLoaded(model, *dmesh));
-      statics.setTimeZero(plan.preload);  // the time loop starts at t = 0 from the last load step
-      if (resumeStatics) PetscCall(restart->resumeStatics(ctx, statics));
-      ctx.checkpointState = [&](CheckpointData& d) -> PetscErrorCode {
-        const StaticsProgress& p = statics.progress();
-        d.scalars[kCkPhase] = static_cast<double>(CheckpointPhase::Statics);
-        d.scalars[kCkStep] = p.step;
-        d.scalars[kCkStepValue] = p.lambda;
-        d.scalars[kCkLoadsteps] = ramp;
-        d.scalars[kCkLoadRamp] = model.opt.load_ramp == "uniform" ? 1.0 : 0.0;
-        d.scalars[kCkLambda] = p.lambda;
-        d.scalars[kCkDlPrev] = p.dlPrev;
-        d.scalars[kCkDlAdapt] = p.dlAdapt;
-        d.scalars[kCkFintConverged] = p.fintConverged;
-        d.vectors = {{"U", ctx.U}, {"dU", statics.lastIncrement()}};
-        return PETSC_SUCCESS;
-      };
-      ctx.progress.startPhase("load step", model.opt.loadsteps);
-      auto onStep = [&](const StepReport& rep, Vec Ustep) -> PetscErrorCode {
-        LoadState ls;
-        ls.loadFactor = rep.loadFactor;
-        ls.time = plan.preload ? 0.0 : rep.loadFactor;
-        char detail[160];
-        std::snprintf(detail, sizeof detail, "load factor %.4g  Newton %d  increments %d  residual %.3e", rep.loadFactor,
-                      rep.newtonIterations, rep.increments, rep.residualNorm);
-        RunContext::Step st{rep.step, rep.step == model.opt.loadsteps, rep.loadFactor, detail};
-        if (plan.preload) {  // a row of /time (0: before the time loop) with its load factor in /load_factor
-          st.value = 0.0;
-          st.loadFactorRow = rep.loadFactor;
-        }
-        return ctx.convergedStep(st, Ustep, ls);
-      };
-      bool ok = false;
-      PetscCall(statics.run(ctx.U, onStep, &ok));
-      ctx.lastStepName = "load step";
-      if (!ok) PetscCall(ctx.writeSkippedLast(ctx.U));  // ctx.U holds the last converged state
-      ctx.checkpointState = nullptr;
-      ctx.reports = statics.reports();
-      if (const CableCoarseSpace* cs = statics.coarseSpace())
-        ctx.summaryLines += "  cable coarse space: " + std::to_string(cs->coarseNodes()) + " coarse nodes, " +
-                            std::to_string(cs->setups()) + " set-ups, " + std::to_string(cs->applications()) +
-                            " applications; coarse predictor " + std::to_string(cs->predictorIterations()) +
-                            " Newton iterations\n";
-      if (!ok && ctx.converged) {
-        ctx.converged = false;
-        ctx.failure = statics.failureMessage();
-        if (statics.linearSolveFailed() && check.enabled) {  // name the mechanism / redundancy if there is one
-          LoadState ls;
-          ls.loadFactor = ls.time = ctx.reports.empty() ? 0.0 : ctx.reports.back().loadFactor;
-          ConstraintReport report;
-          PhaseScope checkAfter("the constraint check after the failed step");
-          PetscCall(checkConstraints(assembler, model, ctx.U, ls, settings.check, &report));
-          if (report.singular) {
-            ctx.failure += "\n" + report.message;
-            modelError = true;
-          }
-        }
-      }
-      ctx.times.statics = MPI_Wtime() - tStatics - (ctx.times.output - outBefore) - (ctx.times.analyses - anaBefore);
-      ctx.times.staticsIts = 0;
-      for (const StepReport& r : ctx.reports) ctx.times.staticsIts += r.newtonIterations;
+      PetscCall(runStatics(ctx, resumeStatics, check, &modelError));
     }
     if (plan.preload && go && ctx.converged && !ctx.stop) {  // from the last load step's equilibrium, at rest
       PhaseScope phase("dynamics");

@@ -11,8 +11,8 @@
 #include <array>
 #include <cmath>
 
-#include "sinew/rotation.hpp"
 #include "parallel/collective_error.hpp"
+#include "sinew/rotation.hpp"
 
 namespace sinew {
 

@@ -2,8 +2,8 @@
 
 #include <cmath>
 
-#include "step/modal_analysis.hpp"
 #include "parallel/collective_error.hpp"
+#include "step/modal_analysis.hpp"
 
 namespace sinew {
 

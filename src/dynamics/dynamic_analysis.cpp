@@ -1,7 +1,7 @@
-#include "solvers/solver_defaults.hpp"
 #include "dynamics/dynamic_analysis.hpp"
-#include "solvers/cut_corrected_lu.hpp"
 #include "parallel/collective_error.hpp"
+#include "solvers/cut_corrected_lu.hpp"
+#include "solvers/solver_defaults.hpp"
 
 #include <algorithm>
 #include <cmath>

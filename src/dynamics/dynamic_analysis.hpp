@@ -22,8 +22,8 @@
 #include <functional>
 #include <string>
 
-#include "dynamics/damping.hpp"
 #include "assembly/assembler.hpp"
+#include "dynamics/damping.hpp"
 #include "settings/settings.hpp"
 #include "sinew/model.hpp"
 #include "solvers/newton_test.hpp"

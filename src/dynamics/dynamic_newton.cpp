@@ -1,12 +1,12 @@
 // The Newton step of the Arnold-Bruls loop: the step solver (useDynamicsSolver), when the Newton
 // matrix is kept, rebuilt from turned element blocks or assembled afresh (formJacobian), the refined
 // step solves (setRefinements, applyNewtonMatrix) and the convergence test.
-#include "solvers/cut_corrected_lu.hpp"
 #include "dynamics/dynamic_analysis.hpp"
-#include "solvers/ancf/node_rotated_pc.hpp"
-#include "solvers/solver_defaults.hpp"
 #include "settings/read_settings.hpp"
+#include "solvers/ancf/node_rotated_pc.hpp"
+#include "solvers/cut_corrected_lu.hpp"
 #include "solvers/newton_test.hpp"
+#include "solvers/solver_defaults.hpp"
 
 #include <algorithm>
 #include <cmath>

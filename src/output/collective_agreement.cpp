@@ -12,9 +12,9 @@
 #include <functional>
 #include <stdexcept>
 
-#include "sinew/result_file.hpp"
 #include "output/hdf5_util.hpp"
 #include "output/io_diagnosis.hpp"
+#include "sinew/result_file.hpp"
 
 namespace sinew::collective {
 

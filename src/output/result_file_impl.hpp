@@ -18,10 +18,10 @@
 #include <string>
 #include <vector>
 
-#include "sinew/result_file.hpp"
 #include "output/hdf5_util.hpp"
 #include "output/row_plan.hpp"
 #include "output/xdmf_writer.hpp"
+#include "sinew/result_file.hpp"
 
 namespace sinew {
 

@@ -7,8 +7,8 @@
 #include <limits>
 #include <sstream>
 
-#include "step/modal_analysis.hpp"
 #include "parallel/collective_error.hpp"
+#include "step/modal_analysis.hpp"
 
 namespace sinew {
 

@@ -15,8 +15,8 @@
 #include <string>
 #include <vector>
 
-#include "step/step_analysis.hpp"
 #include "settings/settings.hpp"
+#include "step/step_analysis.hpp"
 
 namespace sinew {
 

@@ -1,6 +1,6 @@
+#include "parallel/collective_error.hpp"
 #include "solvers/solver_defaults.hpp"
 #include "step/modal_analysis.hpp"
-#include "parallel/collective_error.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -9,9 +9,9 @@
 #include <string>
 #include <vector>
 
-#include "step/step_analysis.hpp"
 #include "assembly/assembler.hpp"
 #include "settings/settings.hpp"
+#include "step/step_analysis.hpp"
 
 namespace sinew {
 

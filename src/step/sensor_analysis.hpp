@@ -14,8 +14,8 @@
 #include <string>
 #include <vector>
 
-#include "step/step_analysis.hpp"
 #include "sinew/model.hpp"
+#include "step/step_analysis.hpp"
 
 namespace sinew {
 

@@ -11,8 +11,8 @@
 #include <string>
 #include <vector>
 
-#include "step/modal_analysis.hpp"
 #include "sinew/model.hpp"
+#include "step/modal_analysis.hpp"
 
 namespace sinew {
 

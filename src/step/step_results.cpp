@@ -5,8 +5,8 @@
 
 #include <cmath>
 
-#include "sinew/rotation.hpp"
 #include "parallel/collective_error.hpp"
+#include "sinew/rotation.hpp"
 
 namespace sinew {
 

@@ -19,12 +19,12 @@
 #include <cmath>
 #include <string>
 
-#include "solvers/cut_corrected_lu.hpp"
 #include "assembly/assembler.hpp"
 #include "assembly/kernel_factory.hpp"
 #include "mesh/distributed_mesh.hpp"
 #include "mesh/fe_mesh.hpp"
 #include "scene/scene_reader.hpp"
+#include "solvers/cut_corrected_lu.hpp"
 
 namespace {
 

@@ -19,10 +19,10 @@
 #include <string>
 
 #include "analysis/continuation_analysis.hpp"
-#include "dynamics/dynamic_analysis.hpp"
 #include "analysis/formfinding_analysis.hpp"
 #include "analysis/static_analysis.hpp"
 #include "app/phases/run_context.hpp"
+#include "dynamics/dynamic_analysis.hpp"
 #include "restart/checkpoint.hpp"
 
 namespace sinew {

@@ -8,8 +8,6 @@
 #include <vector>
 
 #include "analysis/static_analysis.hpp"
-#include "step/step_analysis.hpp"
-#include "step/step_results.hpp"
 #include "app/plan.hpp"
 #include "app/progress.hpp"
 #include "app/summary.hpp"
@@ -18,6 +16,8 @@
 #include "settings/settings.hpp"
 #include "sinew/model.hpp"
 #include "sinew/result_file.hpp"
+#include "step/step_analysis.hpp"
+#include "step/step_results.hpp"
 
 namespace sinew {
 
@@ -108,6 +108,11 @@ PetscErrorCode runFormFinding(RunContext& ctx);
 /// What can make this model's form finding collapse (for the messages; computed before set-up
 /// releases the scene's elements, src/app/phases/run_formfinding.cpp).
 std::string formFindingCollapseCauses(const Model& m);
+struct ConstraintCheckSetting;
+/// Load-stepped statics (SPACAR Light's steps): writes every converged load step; a failed step sets
+/// ctx.converged and ctx.failure, and *modelError when the constraint check finds a mechanism.
+/// resumeStatics: continue the load steps of ctx.restart's checkpoint.
+PetscErrorCode runStatics(RunContext& ctx, bool resumeStatics, const ConstraintCheckSetting& check, bool* modelError);
 /// Time integration (opt.dynamics) instead of statics.
 PetscErrorCode runDynamics(RunContext& ctx);
 /// Path following (opt.continuation) instead of load steps: one result row per path point, and

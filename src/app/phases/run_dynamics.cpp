@@ -10,11 +10,11 @@
 #include <cmath>
 #include <sstream>
 
-#include "dynamics/dynamic_analysis.hpp"
-#include "step/sensor_analysis.hpp"
 #include "app/phases/restart.hpp"
 #include "app/phases/run_context.hpp"
+#include "dynamics/dynamic_analysis.hpp"
 #include "dynamics/energy_momentum.hpp"
+#include "step/sensor_analysis.hpp"
 
 namespace sinew {
 

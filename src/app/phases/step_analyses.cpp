@@ -1,9 +1,9 @@
+#include "app/phases/run_context.hpp"
 #include "step/buckling_analysis.hpp"
 #include "step/compliance_analysis.hpp"
 #include "step/modal_analysis.hpp"
 #include "step/sensor_analysis.hpp"
 #include "step/state_space.hpp"
-#include "app/phases/run_context.hpp"
 
 namespace sinew {
 

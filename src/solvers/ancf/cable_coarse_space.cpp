@@ -5,9 +5,9 @@
 #include <cstring>
 #include <map>
 
-#include "solvers/solver_defaults.hpp"
 #include "parallel/collective_error.hpp"
 #include "solvers/newton_test.hpp"
+#include "solvers/solver_defaults.hpp"
 
 namespace sinew {
 

@@ -109,22 +109,6 @@ struct SensorInput {
   double t = 0.0;                  ///< time
 };
 
-/// Sensors along an element (scene block `sensors` with `element`); ElementKernel::sensors() returns
-/// it for the kinds that have them (beams, ANCF cables).
-class SensorKernel {
- public:
-  /// A scene element split into numSub equal FE elements: where along it a sensor at axial position x
-  /// (length units) or xi (fraction of the scene element) falls, in FE element lengths (0..numSub);
-  /// the FE element floor(position) holds it.
-  virtual double sensorPosition(double x, double xi, int numSub) const = 0;
-  /// Values per output row of `variable` (3 for vectors, 1 for scalars).
-  virtual int sensorValueCount(const std::string& variable) const = 0;
-  /// `variable` at s in [0, 1] along this FE element (node 0 to node 1).
-  virtual std::vector<double> sensorValue(const std::string& variable, double s, const SensorInput& in) const = 0;
-
-  virtual ~SensorKernel() = default;
-};
-
 class ElementKernel {
  public:
   virtual ~ElementKernel() = default;
@@ -164,8 +148,19 @@ class ElementKernel {
 
   /// Form finding interface (cables, membranes); nullptr when the kind takes no part in form finding.
   virtual FormFindingKernel* formFinding() { return nullptr; }
-  /// Sensor interface (beams, ANCF cables); nullptr when the kind has no element sensors.
-  virtual const SensorKernel* sensors() const { return nullptr; }
+  /// Element sensors (scene block `sensors` with `element`): true for the kinds that have them (beams,
+  /// ANCF cables; virtual methods of the kernel, not a second base: no extra pointer per element).
+  virtual bool hasSensors() const { return false; }
+  /// A scene element split into numSub equal FE elements: where along it a sensor at axial position x
+  /// (length units) or xi (fraction of the scene element) falls, in FE element lengths (0..numSub);
+  /// the FE element floor(position) holds it.
+  virtual double sensorPosition(double /*x*/, double /*xi*/, int /*numSub*/) const { return 0.0; }
+  /// Values per output row of `variable` (3 for vectors, 1 for scalars).
+  virtual int sensorValueCount(const std::string& /*variable*/) const { return 0; }
+  /// `variable` at s in [0, 1] along this FE element (node 0 to node 1).
+  virtual std::vector<double> sensorValue(const std::string& /*variable*/, double /*s*/, const SensorInput& /*in*/) const {
+    return {};
+  }
   /// Tension-only kernels (cables) can go slack: zero force and tangent (the assembler then keeps the
   /// Newton matrix regular, Assembler::addLoadTangents).
   virtual bool tensionOnly() const { return false; }

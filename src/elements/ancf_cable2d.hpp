@@ -43,7 +43,7 @@ struct AncfCable2DParameters {
 /// std::invalid_argument with the expression, column and caret on a syntax error).
 AncfCable2DParameters ancfCable2DParameters(const AncfCable2DProperties& set);
 
-class AncfCable2D : public ElementKernel, public SensorKernel {
+class AncfCable2D : public ElementKernel {
  public:
   /// qRef: both nodes' reference coordinates [x0, y0, sx0, sy0, x1, y1, sx1, sy1]; L: reference length.
   AncfCable2D(const std::array<double, 8>& qRef, double L, const AncfCable2DParameters& p);
@@ -78,8 +78,8 @@ class AncfCable2D : public ElementKernel, public SensorKernel {
                              const double* qddot, double t) const;
   static const std::vector<std::string>& outputVariables();
 
-  // --- the SensorKernel interface: output() at x = s L
-  const SensorKernel* sensors() const override { return this; }
+  // --- element sensors: output() at x = s L
+  bool hasSensors() const override { return true; }
   /// x / (L numSub) numSub: the sensors' axial position x counts along the split scene element.
   double sensorPosition(double x, double /*xi*/, int numSub) const override { return x / (L_ * numSub) * numSub; }
   /// 3 for the vector variables (Position, ..., AngularAcceleration), 1 for the scalars.

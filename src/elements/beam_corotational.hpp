@@ -24,7 +24,7 @@ namespace sinew {
 
 enum class BeamMode { Flexible, Rigid, Released };
 
-class BeamCorotational : public ElementKernel, public SensorKernel {
+class BeamCorotational : public ElementKernel {
  public:
   /// Xp, Xq: initial node positions; orien: local y direction (default global z, or global y when the
   /// chord is parallel to z); modes: per deformation mode 1..6; constraintScale multiplies every
@@ -79,8 +79,8 @@ class BeamCorotational : public ElementKernel, public SensorKernel {
   std::array<double, 3> sensorValue(const std::string& variable, double s, const double* q, const double* disp,
                                     const double* rates, const double* lambda) const;
   static const std::vector<std::string>& sensorVariables();
-  // --- the SensorKernel interface: sensorValue above at s (the sensors' xi counts along the split scene element)
-  const SensorKernel* sensors() const override { return this; }
+  // --- element sensors: sensorValue above at s (the sensors' xi counts along the split scene element)
+  bool hasSensors() const override { return true; }
   double sensorPosition(double /*x*/, double xi, int numSub) const override { return xi * numSub; }
   int sensorValueCount(const std::string& /*variable*/) const override { return 3; }
   std::vector<double> sensorValue(const std::string& variable, double s, const SensorInput& in) const override {

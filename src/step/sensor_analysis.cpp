@@ -47,8 +47,8 @@ SensorAnalysis::SensorAnalysis(Assembler& assembler, const std::vector<Sensor>& 
     for (size_t e = 0; e < elements.size(); ++e) {
       const LocalElement& el = elements[e];
       if (el.sceneElement != s.element) continue;
-      const SensorKernel* k = el.kernel->sensors();
-      if (!k) continue;
+      const ElementKernel* k = el.kernel.get();
+      if (!k->hasSensors()) continue;
       // the scene element is split into numSub equal FE elements: t along it in FE element lengths ->
       // FE element sub = floor(t), s = t - sub along it
       const double t = k->sensorPosition(s.x, s.xi, el.numSub);

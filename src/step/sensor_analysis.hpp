@@ -1,14 +1,14 @@
 // Sensors (scene block `sensors`): Exudyn output variables of ancf_cable2d elements sampled at an
 // axial position x of a scene element at every written step. The FE element that holds x is
-// found from the nbeams split (LocalElement::subIndex/numSub, SensorKernel::sensorPosition); the
-// value is computed by the rank that owns that element with its kernel's SensorKernel interface
-// (ancf_cable2d: AncfCable2D::output(q, qdot, qddot)) and reduced to rank 0,
+// found from the nbeams split (LocalElement::subIndex/numSub, ElementKernel::sensorPosition); the
+// value is computed by the rank that owns that element with its kernel's sensor methods
+// (ElementKernel::sensorValue; ancf_cable2d: AncfCable2D::output(q, qdot, qddot)) and reduced to rank 0,
 // which writes /sensors/<name> [ns, k]. Node sensors (`node`, Exudyn's SensorNode) sample a beam
 // (Frame6) node: Position, Displacement (x - X0), Rotation (rotation vector of R, angle times axis,
 // as /node/r_axang), Velocity, Acceleration, AngularVelocity, AngularAcceleration (spatial: global
 // frame), 3 values each, from the owning rank. Beam element sensors (`element` with `xi` or `x` on a
 // beam or rigid element, Exudyn's SensorBody) sample the FE element of the nbeams split that holds
-// xi with the same interface (BeamCorotational::sensorValue, 3 values, docs/dynamics.md "Sensors
+// xi with the same methods (BeamCorotational::sensorValue, 3 values, docs/dynamics.md "Sensors
 // along beam elements").
 #pragma once
 #include <string>
@@ -35,7 +35,7 @@ class SensorAnalysis : public StepAnalysis {
     Sensor sensor;
     int element = -1;  ///< local element index on the owning rank, -1 elsewhere
     double xLocal = 0;                  ///< position s in [0, 1] along that FE element
-    const SensorKernel* kernel = nullptr;  ///< its kernel's sensor interface
+    const ElementKernel* kernel = nullptr;  ///< its kernel (hasSensors())
     int count = 1;                         ///< values per row (agreed over the ranks)
     int node = -1;  ///< node sensor: local owned node index on the owning rank, -1 elsewhere
   };

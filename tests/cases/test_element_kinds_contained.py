@@ -1,7 +1,7 @@
 """Element kinds stay in src/elements/ (DEVELOPERS.md, "Adding things / An element"): no code outside
 it casts an ElementKernel to a concrete kernel class (every class in src/elements/*.hpp that derives
 from ElementKernel); what callers need is part of the kernel interface (include/sinew/element_kernel.hpp:
-formFinding(), sensors(), tensionOnly()/slack(), referenceLength()). The per-set kernel data reaches the
+formFinding(), hasSensors()/sensorValue(), tensionOnly()/slack(), referenceLength()). The per-set kernel data reaches the
 Assembler as data (DistributedMesh::setLoads), not through process-global registration tables."""
 import glob
 import os

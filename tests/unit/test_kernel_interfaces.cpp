@@ -1,6 +1,6 @@
 // The kind-neutral kernel interfaces the analyses use instead of casts to concrete kernels
-// (include/sinew/element_kernel.hpp): FormFindingKernel (form finding), SensorKernel (element
-// sensors), tensionOnly/slack (the assembler's slack-cable spring), referenceLength. Each gives
+// (include/sinew/element_kernel.hpp): FormFindingKernel (form finding), the sensor methods
+// (hasSensors, sensorPosition, sensorValueCount, sensorValue), tensionOnly/slack (the assembler's slack-cable spring), referenceLength. Each gives
 // bit for bit what the kind's own methods give.
 #include <gtest/gtest.h>
 
@@ -142,7 +142,7 @@ TEST(KernelInterfaces, MembraneFormFindingThroughTheInterface) {
 TEST(KernelInterfaces, KindsWithoutAnInterfaceSayNo) {
   const std::vector<Vec3> X = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
   Membrane m(X, MembraneProps{});
-  EXPECT_EQ(static_cast<const ElementKernel&>(m).sensors(), nullptr);
+  EXPECT_FALSE(static_cast<const ElementKernel&>(m).hasSensors());
   EXPECT_FALSE(static_cast<const ElementKernel&>(m).tensionOnly());
   EXPECT_EQ(static_cast<const ElementKernel&>(m).referenceLength(), 0.0);
   BeamSection s;
@@ -160,8 +160,8 @@ TEST(KernelInterfaces, BeamSensorThroughTheInterface) {
   constexpr BeamMode F = BeamMode::Flexible;
   const Vec3 Xp{0.1, -0.2, 0.3}, Xq{1.1, 0.4, 0.1};
   const BeamCorotational b(Xp, Xq, Vec3{0, 0, 1}, s, {F, F, F, F, F, F}, false, 1.0);
-  const SensorKernel* k = static_cast<const ElementKernel&>(b).sensors();
-  ASSERT_NE(k, nullptr);
+  const ElementKernel* k = &b;
+  ASSERT_TRUE(k->hasSensors());
   // xi counts along the split scene element
   EXPECT_EQ(k->sensorPosition(0.7, 0.35, 4), 0.35 * 4);
   std::array<double, 24> q{};
@@ -191,8 +191,8 @@ TEST(KernelInterfaces, AncfSensorThroughTheInterface) {
   p.physicsAxialDamping = 40.0;
   const double L = 0.5;
   const AncfCable2D c({0, 0, 1, 0, L, 0, 1, 0}, L, p);
-  const SensorKernel* k = static_cast<const ElementKernel&>(c).sensors();
-  ASSERT_NE(k, nullptr);
+  const ElementKernel* k = &c;
+  ASSERT_TRUE(k->hasSensors());
   EXPECT_EQ(static_cast<const ElementKernel&>(c).referenceLength(), L);
   // x counts along the scene element split into 4 elements of length L
   EXPECT_EQ(k->sensorPosition(1.3, 0.65, 4), 1.3 / (L * 4) * 4);

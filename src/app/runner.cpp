@@ -119,7 +119,7 @@ PetscErrorCode runScene(int argc, char** argv, int* exitCode) {
   std::unique_ptr<DistributedMesh> dmesh;
   Plan plan;
   std::string setupError;
-  std::string fingerprint;  // of the scene, stored with every checkpoint (app/restart.hpp)
+  std::string fingerprint;  // of the scene, stored with every checkpoint (app/phases/restart.hpp)
   PetscCall(PetscLogEventBegin(SinewEvents::get().setup, 0, 0, 0, 0));
   try {
     model = readScene(scenePath, sceneOverrides(settings));

@@ -14,7 +14,7 @@ namespace sinew {
 /// Newton iterations each solver phase took (-1: the phase did not run).
 struct Timings {
   double setup = 0, check = 0, formfinding = 0, statics = 0, continuation = 0, dynamics = 0, analyses = 0, output = 0;
-  double checkpoint = 0;  ///< part of output: writing /checkpoint (src/output/checkpoint.*)
+  double checkpoint = 0;  ///< part of output: writing /checkpoint (src/restart/checkpoint.*)
   long formfindingIts = -1, staticsIts = -1, continuationIts = -1, dynamicsIts = -1;
 };
 

@@ -1,5 +1,5 @@
 // -restart old.h5: continue a run from the checkpoint of an earlier run of the same scene
-// (output/checkpoint.hpp; docs/results.md "Restart"). The new result file starts with copies of
+// (restart/checkpoint.hpp; docs/results.md "Restart"). The new result file starts with copies of
 // the earlier run's step rows (0 .. rows - 1 of its checkpoint), then the analysis continues:
 //   form finding  from the next URS step (or, when form finding had ended, with the load analysis),
 //   statics       from the next load step; the load factor of step k stays that of the earlier run

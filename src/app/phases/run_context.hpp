@@ -48,7 +48,7 @@ struct RunContext {
   int lastStepIndex = 0;       ///< index of the last converged step (in its phase)
   std::string formfindingHint;  ///< formFindingCollapseCauses of the scene (set before form finding)
   std::string lastStepName;    ///< "load step", "time step", "form-finding step"
-  /// Checkpoints (src/output/checkpoint.*, src/app/restart.*): the writer, the running phase's
+  /// Checkpoints (src/restart/checkpoint.*, src/app/phases/restart.*): the writer, the running phase's
   /// state after its last converged step (set by the phase before its loop; none: no checkpoint),
   /// and the earlier run a -restart continues.
   CheckpointWriter* checkpoint = nullptr;

@@ -125,7 +125,7 @@ PetscErrorCode runFormFinding(RunContext& ctx) {
     ctx.file.writeArray("formfinding/residual", res, {static_cast<long>(res.size())});
     ctx.file.writeArray("formfinding/shape_change", change, {static_cast<long>(change.size())});
     ctx.file.writeArray("formfinding/shape_change_normal", normal, {static_cast<long>(normal.size())});
-    // the found shape before the elastic restart, kept for a restart with other loads (app/restart.hpp)
+    // the found shape before the elastic restart, kept for a restart with other loads (app/phases/restart.hpp)
     if (ok && !ctx.stop) ierr = ctx.writeCheckpoint("checkpoint_formfinding");
     if (!ierr) ctx.file.commit();
   });

@@ -1,3 +1,4 @@
+# ctest-labels: smoke
 """ANCF cable free-free eigenvalues on 2 ranks: reference A4 (Exudyn
 TestModels/computeODE2EigenvaluesTest.py): L = 2, 32 elements, EI = 172.5, rhoA = 0.78, EA = 2.07e6,
 useReducedOrderIntegration 1, no supports and no loads. The scene runs as given (no flags): a model

@@ -1,3 +1,4 @@
+# ctest-labels: smoke
 """A free-floating rigid body in beam dynamics (2 ranks): two nodes with mass 1 kg and anisotropic
 mominertia diag(0.01, 0.02, 0.03) kg m^2 joined by a stiff massless steel beam (0.2 m, 20 x 20 mm,
 dens 0), no supports, a constant moment M0 = (0.05, 0.03, 0.02) N m at node 1 from t = 0, rho = 1,

@@ -1,3 +1,4 @@
+# ctest-labels: smoke
 """Issue 11: a symmetric bifurcation under path following, the perfect Euler column (2 ranks).
 A straight cantilever column (L = 1 m, circular d = 10 mm, E = 210 GPa, 20 beam elements, in-plane:
 every node fix_z), clamped at the base, the reference load the Euler load P_cr = pi^2 EI / (4 L^2)

@@ -1,3 +1,4 @@
+# ctest-labels: smoke
 """A Newton that cannot converge, and a mechanism.
 1. One beam element under an end moment: the element's bending modes are l0 sin(.) measures, so its
    end moment is bounded and a moment beyond that bound has no equilibrium (load control past the

@@ -1,3 +1,4 @@
+# ctest-labels: smoke
 """Newton per time step on a fine cable (issue 12 item 2, growth to 65536 elements): A1g = the A1
 ANCF cantilever (references A1: L = 2, EA = 1e6, EI = 833.33, rhoA = 78; clamp [1,1,0,1]) swinging
 down under gravity from the horizontal, generalized-alpha rho = 0.6, h = 1e-3, on 4096 elements,

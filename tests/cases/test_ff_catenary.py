@@ -1,3 +1,4 @@
+# ctest-labels: smoke
 """C4 catenary (../shared/references section C) as an elastic cable analysis: span 10, length 12,
 w = 1 per unstretched length, EA = 1e7, gravity ramped by the load steps, 2 ranks.
 

@@ -1,3 +1,4 @@
+# ctest-labels: smoke
 """Mixed tensile structure (issue 5, item 5): runs/sail_masts.yaml, a membrane sail with edge cables
 whose low corners sit on two steel masts (3D beams), one model partitioned together. Form finding
 (membrane + cables form-found, masts elastic), restart FORCE, wind suction in 5 load steps.

@@ -1,3 +1,4 @@
+# ctest-labels: smoke
 """-help lists every flag Sinew reads. The flags are found in the sources, not in the registry:
 every settings field (the field tables of src/settings/fields.cpp), every PetscOptionsGet*/HasName/
 SetValue call with a literal name (and its prefix) and every applySolverOptionDefault("-name", ...)

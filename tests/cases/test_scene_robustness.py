@@ -1,3 +1,4 @@
+# ctest-labels: smoke
 """Issue 13 reproducers (scene side): absurd numbers, duplicated elements, several YAML documents,
 deep nesting and bad scene/mesh paths. Every case runs build/sinew on 1 and 2 ranks under a
 timeout and must exit 2 with one "error:" line (rank 0 only) that names the field and the fault,

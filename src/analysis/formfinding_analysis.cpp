@@ -166,11 +166,7 @@ PetscErrorCode FormFindingAnalysis::convergenceTest(SNES snes, PetscInt it, Pets
                                                     PetscReal fnorm, SNESConvergedReason* reason, void* ctx) {
   PetscFunctionBeginUser;
   auto* self = static_cast<FormFindingAnalysis*>(ctx);
-  NewtonIterate x;
-  x.it = it;
-  x.xnorm = xnorm;
-  x.snorm = snorm;
-  x.fnorm = fnorm;
+  NewtonIterate x(it, xnorm, snorm, fnorm);
   x.scale = forceScale(self->asm_.externalForceNorm(), self->asm_.internalForceNorm());
   PetscCall(self->newtonTest_.judge(snes, x, reason));
   PetscFunctionReturn(PETSC_SUCCESS);

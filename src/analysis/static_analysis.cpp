@@ -159,11 +159,7 @@ PetscErrorCode StaticAnalysis::convergenceTest(SNES snes, PetscInt it, PetscReal
     PetscCall(MatNorm(self->J_, NORM_INFINITY, &self->jacobianNorm_));
   }
   const double fext = self->asm_.externalForceNorm();
-  NewtonIterate x;
-  x.it = it;
-  x.xnorm = xnorm;
-  x.snorm = snorm;
-  x.fnorm = fnorm;
+  NewtonIterate x(it, xnorm, snorm, fnorm);
   x.scale = forceScale(fext, self->asm_.internalForceNorm(), 10.0 * std::max(fext, self->fintConverged_));
   x.floor = roundoffFloor(self->jacobianNorm_, self->coordMax_);
   x.coordMax = self->coordMax_;

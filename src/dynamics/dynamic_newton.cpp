@@ -243,11 +243,7 @@ PetscErrorCode DynamicAnalysis::convergenceTest(SNES snes, PetscInt it, PetscRea
                                                 SNESConvergedReason* reason, void* ctx) {
   PetscFunctionBeginUser;
   auto* self = static_cast<DynamicAnalysis*>(ctx);
-  NewtonIterate x;
-  x.it = it;
-  x.xnorm = xnorm;
-  x.snorm = snorm;
-  x.fnorm = fnorm;
+  NewtonIterate x(it, xnorm, snorm, fnorm);
   x.scale = forceScale(self->asm_.externalForceNorm(), self->asm_.internalForceNorm());
   x.floor = roundoffFloor(self->jacobianNorm_, self->coordMax_);
   x.coordMax = self->coordMax_;

@@ -75,6 +75,10 @@ struct NewtonRules {
 
 /// One Newton iterate: SNES's convergence-test arguments, the force scale and the floor.
 struct NewtonIterate {
+  NewtonIterate() = default;
+  /// The arguments of a SNES convergence test.
+  NewtonIterate(PetscInt it_, PetscReal xnorm_, PetscReal snorm_, PetscReal fnorm_)
+      : it(it_), xnorm(xnorm_), snorm(snorm_), fnorm(fnorm_) {}
   PetscInt it = 0;
   PetscReal xnorm = 0, snorm = 0, fnorm = 0;
   double scale = 0;   ///< forceScale of the iterate

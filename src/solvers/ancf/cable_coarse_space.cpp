@@ -398,11 +398,7 @@ PetscErrorCode CableCoarseSpace::coarseJacobian(SNES, Vec u, Mat, Mat, void* ctx
 PetscErrorCode CableCoarseSpace::coarseConverged(SNES snes, PetscInt it, PetscReal xnorm, PetscReal snorm,
                                                  PetscReal fnorm, SNESConvergedReason* reason, void* ctx) {
   PetscFunctionBeginUser;
-  NewtonIterate x;
-  x.it = it;
-  x.xnorm = xnorm;
-  x.snorm = snorm;
-  x.fnorm = fnorm;
+  NewtonIterate x(it, xnorm, snorm, fnorm);
   PetscCall(static_cast<CableCoarseSpace*>(ctx)->newtonTest_.judge(snes, x, reason));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

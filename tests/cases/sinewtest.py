@@ -14,8 +14,8 @@ BIN = os.environ.get("SINEW_BIN", os.path.join(SOURCE, "build", "sinew"))
 MPIEXEC = os.environ.get("SINEW_MPIEXEC", "mpirun")
 WORK = os.environ.get("SINEW_WORK_DIR", os.path.join(SOURCE, "build", "tests", "work"))
 # Open MPI as ctest sets it (tests/CMakeLists.txt SINEW_MPI_ENV) when a case runs by hand: shared
-# memory only (no network transport probing at start) and ranks that yield the CPU while waiting
-ENV = dict(dict(OMPI_MCA_pml="ob1", OMPI_MCA_btl="self,vader", OMPI_MCA_mpi_yield_when_idle="1"), **os.environ)
+# memory only (no network transport probing at start) and no 1-2 s wait of mpirun after a non-zero exit
+ENV = dict(dict(OMPI_MCA_pml="ob1", OMPI_MCA_btl="self,vader", OMPI_MCA_odls_base_sigkill_timeout="0"), **os.environ)
 ENV.update(OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1", OMPI_MCA_rmaps_base_oversubscribe="1")
 
 _failures = []

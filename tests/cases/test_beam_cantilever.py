@@ -1,3 +1,4 @@
+# ctest-labels: smoke
 """Small-load cantilevers against linear beam theory (Euler-Bernoulli bending plus the Timoshenko
 shear term F L / (kGA) of the element; B6 torsion constant). Four separate cantilevers in one
 scene, each loaded at its tip in one direction: axial force (F L / EA), force along global y

@@ -1,3 +1,4 @@
+# ctest-labels: smoke
 """Node sensors for beam (Frame6) nodes (sensors: [{node, variable, name}], Exudyn's SensorNode;
 docs/dynamics.md "Sensors on beam nodes") on 2 ranks, in dynamics: a leaf cantilever (4 beams,
 1 m x 20 mm x 2 mm, steel) under a tip force and a tip moment from t = 0 (tip turns by up to 0.1 rad),

@@ -1,3 +1,4 @@
+# ctest-labels: smoke
 """Euler buckling multipliers (reference B2: P_cr = pi^2 EI / (K L)^2) for the four support cases,
 from the split tangent K_m phi = -mu K_g phi at every load step: the column (L = 1, rect 10 x 1 mm,
 20 elements, compliant plane x-z) carries P0 = P_cr / 2 at load factor 1, so mu = P_cr / (lambda P0)

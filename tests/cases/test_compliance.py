@@ -1,3 +1,4 @@
+# ctest-labels: smoke
 """Tip compliance of a clamped beam (6x6, closed form with the Timoshenko shear term) on 2 ranks;
 CMloc = Q^T CMglob Q at a bent state; calccompl: false creates no compliance; compliance_nodes."""
 import numpy as np

@@ -1,3 +1,4 @@
+# ctest-labels: smoke
 """Dynamics started from a form-found state (issue 14, item 2) on 2 ranks: the flat square membrane of
 test_ff_frequencies.py (side 1 m, 8x8 quads, thickness 1 mm, density 1000, prestress 1 MPa, fixed
 edges) is form-found (elastic_restart_method FORCE), then opt.dynamics starts from the found state at

@@ -1,3 +1,4 @@
+# ctest-labels: smoke
 """Time-dependent nodal loads on every node kind (docs/dynamics.md, "Loads and motions as functions
 of time"; 2 ranks): beam (Frame6 force and moment), cable (Point3) and ancf_cable2d (force and the
 torque on the slope) nodes, in a mixed 3D scene (a beam cantilever and a prestressed two-element

@@ -1,3 +1,4 @@
+# ctest-labels: smoke
 """Cantilever bending frequencies against reference B3 (Euler-Bernoulli, beta_n L), first five in
 the compliant plane of a rect section 10 mm x 0.1 mm (the stiff plane is 100x higher, torsion and
 axial far above). Also: rigid axial/torsion modes (multipliers, zero-mass rows) change nothing and

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# ctest-labels: smoke
 """Checkpoint and restart of statics (issue 9 item 3; docs/results.md "Restart") on the
 cross-flexure hinge (beams, large rotations): a run stopped after 4 load steps on 1 rank
 (-stop_after_step: stopped as SIGTERM stops it), continued on 2 ranks and stopped after 7, then

@@ -1,3 +1,4 @@
+# ctest-labels: smoke
 """Modal state-space model (opt.transfer: [true, zeta]) of a cantilever (L = 1, rect 10 x 0.1 mm,
 40 elements, 6 modes: all in the compliant plane x-z): input force_z at the tip, outputs displ_z
 and veloc_z at the tip. Checks: the poles (eigenvalues of A) are -zeta w +- i w sqrt(1 - zeta^2)

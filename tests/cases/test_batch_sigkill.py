@@ -19,9 +19,10 @@ withSteps = 0
 for i in range(KILLS):
     remove_outputs(out)
     run = Run(CROSSHINGE, out, ["-loadsteps", "400", "-calcbuck", "false", "-calccompl", "false"])
-    # wait for the analysis to start, then kill at a random moment
+    # wait for the analysis to start, then kill at a random moment within the next second (tens of
+    # steps, each writing and committing: the kill lands at a random point of the step cycle)
     run.wait_for_steps(1, timeout=120)
-    time.sleep(random.uniform(0.0, 3.0))
+    time.sleep(random.uniform(0.0, 1.0))
     printed = run.steps_printed()
     for pid in run.ranks():
         os.kill(pid, signal.SIGKILL)

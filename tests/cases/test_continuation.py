@@ -1,3 +1,4 @@
+# ctest-labels: smoke
 """Issue 11, path following (opt.continuation), first step: the von Mises truss (two pinned bars,
 half span a = 1, rise H = 0.1, EA = 1e4, apex load P down). Closed form (equilibrium of the apex,
 engineering strain as Sinew's axial mode e1 = |l| - l0): P(w) = 2 EA (L0 - L)/L0 (H - w)/L with

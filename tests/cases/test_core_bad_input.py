@@ -1,3 +1,4 @@
+# ctest-labels: smoke
 """Bad input through the executable (design.md: errors name the field path): every case below runs
 build/sinew on 2 ranks and must exit with code 2, print its one-line message exactly once (rank 0
 only, not once per rank) naming the field path and the fault, and leave no result file behind

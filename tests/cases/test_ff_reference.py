@@ -1,3 +1,4 @@
+# ctest-labels: smoke
 """Form finding against the references of ../shared/references section C: C1 cable patch, C2
 five-node membrane (anisotropic and isotropic), C3 force density (one free node, loaded chain),
 C5 hypar net z = c x y. 2 ranks."""

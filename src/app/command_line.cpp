@@ -1,19 +1,23 @@
 #include "app/command_line.hpp"
 
+#include <hdf5.h>
+#include <metis.h>
 #include <slepcsys.h>
 
 #include <cctype>
+#include <sstream>
 #include <string>
 #include <vector>
 
 #include "scene/nearest_name.hpp"
 #include "settings/flags.hpp"
+#include "settings/help_text.hpp"
 #include "settings/petsc_flags.hpp"
 #include "settings/read_settings.hpp"
 #include "sinew/petsc_compat.hpp"
 
-#ifndef SINEW_VERSION
-#error "SINEW_VERSION is the CMake project version (CMakeLists.txt)"
+#if !defined(SINEW_VERSION) || !defined(SINEW_YAMLCPP_VERSION)
+#error "SINEW_VERSION and SINEW_YAMLCPP_VERSION come from CMakeLists.txt"
 #endif
 
 namespace sinew {
@@ -23,11 +27,7 @@ const char* sinewVersion() { return SINEW_VERSION; }
 const char* usageText() {
   return "Sinew: parallel finite elements for flexures, cables and membranes.\n"
          "Usage: mpirun -n N sinew scene.yaml [-o result.h5] [-<opt field> value ...] [Sinew flags] [PETSc options]\n"
-         "  -help: this help; Sinew's flags are in the blocks titled 'Sinew: ...' below, each with its current and\n"
-         "         default value (<now ... : formerly ...>) and the values it accepts; every scene opt field is a flag\n"
-         "  -h: the same\n"
-         "  -version: Sinew's, PETSc's and SLEPc's versions\n"
-         "A flag that is neither Sinew's nor PETSc's/SLEPc's is an error (exit 2).\n";
+         "Sinew's own flags: sinew -help. Below: PETSc's and SLEPc's options (with a scene: its solvers').\n";
 }
 
 namespace {
@@ -40,7 +40,6 @@ std::string lower(std::string s) {
 /// "" when the option is a Sinew flag with an accepted value or a PETSc/SLEPc option.
 std::string optionProblem(const std::string& given, const char* value) {
   const std::string name = lower(given);
-  if (name == "h") return "";  // -help's short form (helpRequested)
   if (const Flag* f = findFlag(name)) return checkFlagValue(*f, value);
   if (isPetscFlag(name)) return "";
   std::vector<std::string> names;
@@ -70,103 +69,80 @@ PetscErrorCode databaseProblems(std::vector<std::string>* problems) {
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode printVersion(MPI_Comm comm) {
+/// -version: Sinew's version, then one line per library it runs on (as linked, where the library
+/// can say so at run time).
+PetscErrorCode printVersions(MPI_Comm comm) {
   PetscFunctionBeginUser;
   PetscInt p[4], s[4];
   PetscCall(PetscGetVersionNumber(&p[0], &p[1], &p[2], &p[3]));
   PetscCall(SlepcGetVersionNumber(&s[0], &s[1], &s[2], &s[3]));
-  PetscCall(PetscPrintf(comm, "Sinew %s (PETSc %d.%d.%d, SLEPc %d.%d.%d)\n", sinewVersion(), static_cast<int>(p[0]),
-                        static_cast<int>(p[1]), static_cast<int>(p[2]), static_cast<int>(s[0]), static_cast<int>(s[1]),
-                        static_cast<int>(s[2])));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-bool isInteger(const std::string& s, PetscInt* v) {
-  try {
-    std::size_t end = 0;
-    *v = static_cast<PetscInt>(std::stol(s, &end));
-    return end == s.size();
-  } catch (...) {
-    return false;
-  }
-}
-
-bool isReal(const std::string& s, PetscReal* v) {
-  try {
-    std::size_t end = 0;
-    *v = std::stod(s, &end);
-    return end == s.size();
-  } catch (...) {
-    return false;
-  }
-}
-
-/// One PETSc options block per group, so -help shows Sinew's flags like PETSc's own:
-/// "  -max_cuts <now 10 : formerly 10>: halvings ... [an integer in 0..50] (docs/beam.md)".
-/// Values were checked before: no call below can fail on a user's value.
-PetscErrorCode printGroup(MPI_Comm comm, const FlagGroup& g) {
-  PetscFunctionBeginUser;
-  PetscOptionsBegin(comm, nullptr, g.title, nullptr);
-  for (const Flag& f : sinewFlags()) {
-    if (f.group != &g) continue;
-    const std::string opt = "-" + f.name;
-    const std::string accepted = f.value.kind == FlagValue::Kind::Bool       ? "true or false"
-                                 : f.value.kind == FlagValue::Kind::SceneOpt ? f.value.sceneType
-                                                                             : describeAccepted(f.value);
-    const std::string help = f.help + " [" + accepted + "]";
-    using K = FlagValue::Kind;
-    PetscBool set = PETSC_FALSE;
-    PetscInt i = 0;
-    PetscReal r = 0;
-    if (f.value.kind == K::Int && isInteger(f.defaultValue, &i)) {
-      PetscCall(PetscOptionsInt(opt.c_str(), help.c_str(), g.doc, i, &i, &set));
-    } else if (f.value.kind == K::Real && isReal(f.defaultValue, &r)) {
-      PetscCall(PetscOptionsReal(opt.c_str(), help.c_str(), g.doc, r, &r, &set));
-    } else if (f.value.kind == K::Bool) {
-      PetscBool b = f.defaultValue == "true" ? PETSC_TRUE : PETSC_FALSE;
-      PetscCall(PetscOptionsBool(opt.c_str(), help.c_str(), g.doc, b, &b, &set));
-    } else if (f.value.kind == K::Choice) {
-      std::vector<const char*> list;
-      for (const std::string& c : f.value.choices) list.push_back(c.c_str());
-      PetscCall(PetscOptionsEList(opt.c_str(), f.help.c_str(), g.doc, list.data(), static_cast<PetscInt>(list.size()),
-                                  f.defaultValue.c_str(), &i, &set));
-    } else {  // text, scene opt fields, and numbers whose default depends on the model ("auto")
-      char buf[PETSC_MAX_PATH_LEN] = "";
-      PetscCall(PetscOptionsString(opt.c_str(), help.c_str(), g.doc, f.defaultValue.c_str(), buf, sizeof buf, &set));
-    }
-  }
-  PetscOptionsEnd();
+  char mpi[MPI_MAX_LIBRARY_VERSION_STRING] = "";
+  int len = 0;
+  MPI_Get_library_version(mpi, &len);
+  std::string mpiName(mpi, static_cast<std::size_t>(len));
+  mpiName = mpiName.substr(0, mpiName.find_first_of(",\n"));  // "Open MPI v4.1.4, package: ..." -> "Open MPI v4.1.4"
+  unsigned h[3] = {0, 0, 0};
+  H5get_libversion(&h[0], &h[1], &h[2]);
+  std::ostringstream out;
+  out << "Sinew " << sinewVersion() << "\n"
+      << "PETSc " << p[0] << "." << p[1] << "." << p[2] << "\n"
+      << "SLEPc " << s[0] << "." << s[1] << "." << s[2] << "\n"
+      << mpiName << "\n"
+      << "HDF5 " << h[0] << "." << h[1] << "." << h[2] << "\n"
+      << "METIS " << METIS_VER_MAJOR << "." << METIS_VER_MINOR << "." << METIS_VER_SUBMINOR << "\n"
+      << "yaml-cpp " << SINEW_YAMLCPP_VERSION << "\n";
+  PetscCall(PetscPrintf(comm, "%s", out.str().c_str()));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 }  // namespace
 
-PetscErrorCode helpRequested(PetscBool* help) {
-  PetscFunctionBeginUser;
-  StartupRequests asked;
-  PetscCall(PetscOptionsHasHelp(nullptr, help));
-  PetscCall(readStartupRequests(&asked));
-  const bool h = asked.shortHelp;
-  if (h && !*help) {  // as -help: the usage text, then Sinew's and PETSc's objects' options
-    PetscCall(PetscOptionsSetValue(nullptr, "-help", nullptr));
-    PetscCall(PetscPrintf(PETSC_COMM_WORLD, "%s", usageText()));
+/// "-help", "-h", "--help": Sinew's help words ("-help_petsc" is PETSc's).
+bool isHelpWord(const std::string& a) { return a == "-help" || a == "-h" || a == "--help"; }
+
+StartRequest takeStartRequest(int* argc, char** argv) {
+  StartRequest r;
+  int kept = 1;
+  for (int i = 1; i < *argc; ++i) {
+    const std::string a = argv[i];
+    if (isHelpWord(a)) {
+      r.kind = StartRequest::Kind::Help;
+      // -help <flag>: the next word names a registered flag ("max_cuts" or "-max_cuts")
+      if (i + 1 < *argc) {
+        std::string next = argv[i + 1];
+        if (!next.empty() && next[0] == '-') next.erase(0, 1);
+        if (findFlag(next) || (argv[i + 1][0] != '-' && next.find('.') == std::string::npos && !next.empty())) {
+          r.kind = StartRequest::Kind::HelpFlag;
+          r.flag = next;
+          ++i;
+        }
+      }
+    } else if (a == "-help_dev") {
+      r.kind = StartRequest::Kind::HelpDev;
+    } else if (a == "-version" || a == "--version") {
+      r.kind = StartRequest::Kind::Version;
+    } else if (a == "-help_petsc") {
+      static char petscHelp[] = "-help";
+      argv[kept++] = petscHelp;
+    } else {
+      argv[kept++] = argv[i];
+    }
   }
-  *help = static_cast<PetscBool>(*help || h);
+  argv[kept] = nullptr;
+  *argc = kept;
+  return r;
+}
+
+PetscErrorCode petscHelpRequested(PetscBool* help) {
+  PetscFunctionBeginUser;
+  PetscCall(readPetscHelp(help));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode handleCommandLine(MPI_Comm comm, bool* stop, int* exitCode) {
+PetscErrorCode handleCommandLine(MPI_Comm comm, const StartRequest& request, bool* stop, int* exitCode) {
   PetscFunctionBeginUser;
   *stop = false;
   *exitCode = 0;
-  PetscBool help = PETSC_FALSE;
-  StartupRequests asked;
-  PetscCall(readStartupRequests(&asked));
-  if (asked.version) {  // PETSc and SLEPc have printed their banners; no run
-    PetscCall(printVersion(comm));
-    *stop = true;
-    PetscFunctionReturn(PETSC_SUCCESS);
-  }
   // Every rank checks its own database (the same on every rank); rank 0 prints, all exit 2.
   std::vector<std::string> problems;
   PetscCall(databaseProblems(&problems));
@@ -179,9 +155,24 @@ PetscErrorCode handleCommandLine(MPI_Comm comm, bool* stop, int* exitCode) {
     *exitCode = 2;
     PetscFunctionReturn(PETSC_SUCCESS);
   }
-  PetscCall(helpRequested(&help));
-  if (help)
-    for (const FlagGroup* g : flagGroups()) PetscCall(printGroup(comm, *g));
+  using K = StartRequest::Kind;
+  *stop = request.kind != K::Run;
+  if (request.kind == K::Version) {
+    PetscCall(printVersions(comm));
+  } else if (request.kind == K::Help || request.kind == K::HelpDev) {
+    PetscCall(PetscPrintf(comm, "%s", helpText(sinewVersion(), request.kind == K::HelpDev).c_str()));
+  } else if (request.kind == K::HelpFlag) {
+    if (const Flag* f = findFlag(request.flag)) {
+      PetscCall(PetscPrintf(comm, "%s", flagDetail(*f).c_str()));
+    } else {
+      std::vector<std::string> names;
+      for (const Flag& g : sinewFlags()) names.push_back(g.name);
+      const std::string near = scene::nearestName(lower(request.flag), names);
+      PetscCall(PetscPrintf(comm, "error: -help %s: no such Sinew flag%s\n", request.flag.c_str(),
+                            near.empty() ? " (sinew -help lists them)" : ("; did you mean " + near + "?").c_str()));
+      *exitCode = 2;
+    }
+  }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -1,22 +1,36 @@
-// Start-up handling of the options database, before the scene is read: -version, the check of
-// every option against Sinew's flag registry and PETSc's options, and -help's Sinew blocks.
+// Start-up handling of the command line, before the scene is read: -help, -help_dev, -help <flag>,
+// -version (taken from argv before PETSc starts, so no PETSc banner hides Sinew's text), the check of
+// every option against Sinew's flag registry and PETSc's options, and -help_petsc (PETSc's -help).
 #pragma once
 #include <petscsys.h>
 
+#include <string>
+
 namespace sinew {
 
-/// Collective on comm. -version: prints Sinew's, PETSc's and SLEPc's versions, *stop, exit 0.
-/// Every option in the database (command line, -options_file, PETSC_OPTIONS, .petscrc) must be a
-/// Sinew flag with an accepted value or a PETSc/SLEPc option; otherwise rank 0 prints one line per
-/// wrong flag ("error: unknown flag -loadstep; did you mean -loadsteps?") and *stop with exit 2
-/// on every rank. -help: prints Sinew's flags with their defaults in PETSc's options blocks.
-PetscErrorCode handleCommandLine(MPI_Comm comm, bool* stop, int* exitCode);
+/// What the command line asks for besides a run.
+struct StartRequest {
+  enum class Kind { Run, Help, HelpDev, HelpFlag, Version };
+  Kind kind = Kind::Run;
+  std::string flag;  ///< HelpFlag: the flag asked about (without '-')
+};
 
-/// -help, or its short form -h (Sinew's: PETSc 3.18 knows only -help; -h prints the usage text
-/// and then acts as -help).
-PetscErrorCode helpRequested(PetscBool* help);
+/// Before SlepcInitialize: removes -help [flag], -h, -help_dev and -version from argv and says
+/// which was given (the last one wins); -help_petsc becomes PETSc's -help. Plain argv, no MPI.
+StartRequest takeStartRequest(int* argc, char** argv);
 
-/// The text -help prints first (SlepcInitialize's help message).
+/// Collective on comm. Every option in the database (command line, -options_file, PETSC_OPTIONS,
+/// .petscrc) must be a Sinew flag with an accepted value or a PETSc/SLEPc option; otherwise rank 0
+/// prints one line per wrong flag ("error: unknown flag -loadstep; did you mean -loadsteps?") and
+/// *stop with exit 2 on every rank. Then the request: rank 0 prints the help text or the versions,
+/// *stop, exit 0 (-help <flag> of no flag: exit 2).
+PetscErrorCode handleCommandLine(MPI_Comm comm, const StartRequest& request, bool* stop, int* exitCode);
+
+/// PETSc's -help (given as -help_petsc, or in an options file or PETSC_OPTIONS): PETSc lists its
+/// options and those of the solvers a scene creates.
+PetscErrorCode petscHelpRequested(PetscBool* help);
+
+/// The text SlepcInitialize prints first under -help_petsc.
 const char* usageText();
 
 /// Sinew's version (CMake project version).

@@ -28,11 +28,13 @@ void quickSingletonStart() {
 int main(int argc, char** argv) {
   quickSingletonStart();
   std::signal(SIGXFSZ, SIG_IGN);  // a file-size limit (ulimit -f) becomes a write error, also in MPI_Init
+  // -help, -help_dev, -version are Sinew's: taken out before PETSc would print its banners for them
+  const sinew::StartRequest request = sinew::takeStartRequest(&argc, argv);
   PetscCall(SlepcInitialize(&argc, &argv, nullptr, sinew::usageText()));
   sinew::installInterruptHandlers();  // after PETSc's, which would abort on SIGTERM/SIGUSR1
   int code = 0;
   bool stop = false;
-  PetscCall(sinew::handleCommandLine(PETSC_COMM_WORLD, &stop, &code));
+  PetscCall(sinew::handleCommandLine(PETSC_COMM_WORLD, request, &stop, &code));
   if (!stop) PetscCall(sinew::runFromCommandLine(argc, argv, &code));
   PetscCall(SlepcFinalize());
   return code;

@@ -99,7 +99,7 @@ PetscErrorCode runScene(int argc, char** argv, int* exitCode) {
   MPI_Comm comm = PETSC_COMM_WORLD;
   *exitCode = 0;
   PetscBool help = PETSC_FALSE;
-  PetscCall(helpRequested(&help));
+  PetscCall(petscHelpRequested(&help));
   if (argc < 2 || argv[1][0] == '-') {
     if (!help) {
       PetscCall(PetscPrintf(comm, "usage: sinew scene.yaml [-o result.h5] [options]; sinew -help lists the options\n"));

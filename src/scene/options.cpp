@@ -15,14 +15,14 @@ const std::vector<OptionDoc>& sceneOptionDocs() {
   static const std::vector<OptionDoc> docs = {
       {"loadsteps", "integer 1..100000", "10", "number of load steps of the static analysis (more is an error)"},
       {"load_ramp", "spacar | uniform", "spacar",
-       "load steps: spacar = SPACAR Light's (step 1 under the initial loads and prescribed motions alone, the "
+       "how loads ramp over the load steps; spacar = SPACAR Light's (step 1 under the initial loads and prescribed motions alone, the "
        "standard loads ramp over the remaining steps, (k-1)/(loadsteps-1)); uniform = Sinew's former k/loadsteps"},
       {"calcbuck", "bool", "false", "compute buckling load multipliers at every load step"},
       {"calccompl", "bool", "true", "compute compliance matrices of the nodes"},
       {"calcfreq", "bool", "auto (true when the scene has mass)", "compute natural frequencies"},
       {"gravity", "[gx, gy, gz]", "none", "gravitational acceleration (m/s^2), e.g. -gravity 0,0,-9.81"},
       {"rls", "{element: [modes]}", "none", "released deformation modes (1..6) per beam element, e.g. -rls \"{3: [2,3]}\""},
-      {"transfer", "bool or [bool, zeta]", "false", "compute the state-space model, with modal damping ratio zeta"},
+      {"transfer", "bool or [bool, zeta]", "false", "compute the state-space model; with modal damping ratio zeta"},
       {"filename", "string", "scene file name", "base name of the result file (<filename>.h5)"},
       {"stressperelement", "bool", "false", "report the maximum stress per element"},
       {"rigidstress", "bool", "false", "also report stresses in rigid deformation modes"},
@@ -33,7 +33,7 @@ const std::vector<OptionDoc>& sceneOptionDocs() {
       {"compliance_nodes", "[node numbers]", "all nodes", "nodes whose compliance matrices are computed"},
       {"dynamics", "{tend, dt, spectral_radius, output_every, mass_proportional_damping, stiffness_proportional_damping, "
                    "modal_damping, modal_damping_modes, adaptive, start}", "none",
-       "time integration (generalized-alpha) to tend with step dt; spectral_radius in [0,1] defaults to 0.9; "
+       "time integration to tend with step dt; generalized-alpha; spectral_radius in [0,1] defaults to 0.9; "
        "output_every k writes every k-th step (default 1); damping C = alpha M0 + beta K0 (Rayleigh, "
        "mass_/stiffness_proportional_damping) + modal damping zeta (one value for the lowest modal_damping_modes = 10 "
        "modes of the start state, or a list, one per mode); adaptive: {control: none|newton|error, dt_min, dt_max, "
@@ -43,12 +43,12 @@ const std::vector<OptionDoc>& sceneOptionDocs() {
       {"nfreq", "integer >= 1", "6", "number of natural frequencies"},
       {"continuation", "{method, ds, max_steps, stop_load_factor, node, direction, stop_displacement, constraint, psi, ds_max}",
        "none",
-       "path following instead of load steps: arclength (Crisfield, cylindrical or spherical) or displacement control "
+       "path following instead of load steps; arclength (Crisfield, cylindrical or spherical) or displacement control "
        "of node/direction (x|y|z); the applied loads are the reference load; stops at max_steps (100), "
        "stop_load_factor or stop_displacement"},
       {"nbuck", "integer >= 1", "3", "number of buckling load multipliers"},
       {"output_steps", "all | last | every:k | [steps]", "all",
-       "load / time steps at which results are written and step analyses run (the last step always), "
+       "load / time steps written, with their step analyses; the last step always, "
        "e.g. -output_steps last, -output_steps every:10, -output_steps 1,50,100"},
   };
   return docs;

@@ -9,37 +9,37 @@ namespace sinew {
 const std::vector<Field<OutputSettings>>& outputFields() {
   static const std::vector<Field<OutputSettings>> fields = {
       {"o", text("a file name"), &flag_groups::output, "<filename>.h5", "result file (HDF5; the XDMF file for ParaView is written beside it)", &OutputSettings::file},
-      {"output_fsync_interval", realIn(0, 1e9, false, true), &flag_groups::output, "10", "one process: seconds between commits of the result file that are forced to the disk (fsync; 0: every commit; several processes: every commit). A killed run never loses committed steps; a machine crash loses at most this interval", &OutputSettings::fsyncInterval},
-      {"restart", text("a result file"), &flag_groups::output, "none", "continue the run that wrote this result file from its last written step (same scene; docs/results.md, Restart)", &OutputSettings::restart},
+      {"output_fsync_interval", realIn(0, 1e9, false, true), &flag_groups::output, "10", "seconds between forced disk commits; one process: commits of the result file forced to the disk (fsync; 0: every commit; several processes: every commit). A killed run never loses committed steps; a machine crash loses at most this interval", &OutputSettings::fsyncInterval},
+      {"restart", text("a result file"), &flag_groups::output, "none", "continue the run of this result file; from its last written step (same scene; docs/results.md, Restart)", &OutputSettings::restart},
       {"checkpoint", boolean(), &flag_groups::output, "true", "write /checkpoint (the restart state) with every written step; false: the run cannot be continued", &OutputSettings::checkpoint},
-      {"stop_after_step", integerAtLeast(0), &flag_groups::output, "0 (off)", "testing aid: stop as on SIGTERM once the result file holds this many step rows (exit 5)", &OutputSettings::stopAfterStep},
+      {"stop_after_step", integerAtLeast(0), &flag_groups::output, "0 (off)", "testing aid: stop as on SIGTERM after this many rows; once the result file holds them (exit 5)", &OutputSettings::stopAfterStep, true},
   };
   return fields;
 }
 
 const std::vector<Field<StaticsSettings>>& staticsFields() {
   static const std::vector<Field<StaticsSettings>> fields = {
-      {"force_rtol", realIn(0, 1, true, true), &flag_groups::statics, "1e-11", "equilibrium tolerance: residual relative to the element forces (dynamics: default 1e-10)", &StaticsSettings::forceRtol},
+      {"force_rtol", realIn(0, 1, true, true), &flag_groups::statics, "1e-11", "equilibrium tolerance; residual relative to the element forces (dynamics: default 1e-10)", &StaticsSettings::forceRtol},
       {"max_cuts", integerIn(0, 50), &flag_groups::statics, "10", "halvings of a failing load increment (dynamics: of a failing time step)", &StaticsSettings::maxCuts},
-      {"predictor", boolean(), &flag_groups::statics, "true (false for beams under the mixed-stress Newton)", "secant predictor from the last converged increment", &StaticsSettings::predictor},
-      {"newton_mixed_stresses", boolean(), &flag_groups::statics, "true", "beams, statics and dynamics: Newton with mixed stresses (stress part of the tangent from linearized stresses; docs/beam.md)", &StaticsSettings::mixedStresses},
-      {"newton_diverged_its", integerAtLeast(0), &flag_groups::statics, "6 for beams under the mixed-stress Newton, else 0", "an increment still above its start residual after this many Newton iterations is cut (0: never)", &StaticsSettings::divergedIts},
-      {"adaptive_increments", boolean(), &flag_groups::statics, "true", "after a cut, grow the increment again when Newton converges quickly", &StaticsSettings::adaptiveIncrements},
+      {"predictor", boolean(), &flag_groups::statics, "auto (true; false for beams under the mixed-stress Newton)", "secant predictor from the last converged increment", &StaticsSettings::predictor},
+      {"newton_mixed_stresses", boolean(), &flag_groups::statics, "true", "beams, statics and dynamics: Newton with mixed stresses (stress part of the tangent from linearized stresses; docs/beam.md)", &StaticsSettings::mixedStresses, true},
+      {"newton_diverged_its", integerAtLeast(0), &flag_groups::statics, "auto (6 for beams under the mixed-stress Newton, else 0)", "Newton iterations before a diverging increment is cut; an increment still above its start residual after this many Newton iterations is cut (0: never)", &StaticsSettings::divergedIts},
+      {"adaptive_increments", boolean(), &flag_groups::statics, "true", "grow a cut increment again; after a cut, when Newton converges quickly", &StaticsSettings::adaptiveIncrements},
       {"increment_grow_its", integerAtLeast(0), &flag_groups::statics, "5", "Newton iterations that count as quick (the next increment doubles)", &StaticsSettings::incrementGrowIts},
-      {"tangent_operator", oneOf({"auto", "elementwise", "assembled"}), &flag_groups::statics, "auto", "Newton systems: GMRES on the element-wise tangent preconditioned by LU, or the LU alone (auto: element-wise for ANCF cables)", choiceOf(&StaticsSettings::tangentOperator)},
-      {"assembly_coo", boolean(), &flag_groups::statics, "true", "COO assembly of the Jacobian (false: MatSetValuesLocal)", &StaticsSettings::assemblyCoo},
+      {"tangent_operator", oneOf({"auto", "elementwise", "assembled"}), &flag_groups::statics, "auto", "Newton systems: element-wise GMRES or LU; GMRES on the element-wise tangent preconditioned by LU, or the LU alone (auto: element-wise for ANCF cables)", choiceOf(&StaticsSettings::tangentOperator)},
+      {"assembly_coo", boolean(), &flag_groups::statics, "true", "COO assembly of the Jacobian (false: MatSetValuesLocal)", &StaticsSettings::assemblyCoo, true},
   };
   return fields;
 }
 
 const std::vector<Field<ContinuationSettings>>& continuationFields() {
   static const std::vector<Field<ContinuationSettings>> fields = {
-      {"continuation_rtol", realIn(0, 1, true, true), &flag_groups::statics, "1e-9", "path following: residual tolerance relative to |dR/dlambda| max(1, |lambda|) (docs/continuation.md)", &ContinuationSettings::rtol},
+      {"continuation_rtol", realIn(0, 1, true, true), &flag_groups::statics, "1e-9", "path following: residual tolerance; relative to |dR/dlambda| max(1, |lambda|) (docs/continuation.md)", &ContinuationSettings::rtol},
       {"continuation_max_it", integerAtLeast(1), &flag_groups::statics, "15", "path following: corrector iterations before a step is cut", &ContinuationSettings::maxIt},
-      {"continuation_desired_its", integerAtLeast(1), &flag_groups::statics, "5", "path following: corrector iterations the adaptive step aims at", &ContinuationSettings::desiredIts},
-      {"continuation_inertia", boolean(), &flag_groups::statics, "true", "path following: count the tangent's negative eigenvalues at every point (MUMPS LDL^T)", &ContinuationSettings::inertia},
-      {"continuation_initial_steps", integerAtLeast(1), &flag_groups::statics, "10", "path following: increments in which the initial loads (force_initial, displ_initial, ...) are applied before the path starts from their equilibrium", &ContinuationSettings::initialSteps},
-      {"branch_switch", boolean(), &flag_groups::statics, "false", "path following: at the first bifurcation, switch onto the bifurcated branch along the critical eigenvector (symmetric bifurcations; docs/continuation.md)", &ContinuationSettings::branchSwitch},
+      {"continuation_desired_its", integerAtLeast(1), &flag_groups::statics, "5", "path following: corrector iterations aimed at; by the adaptive step", &ContinuationSettings::desiredIts},
+      {"continuation_inertia", boolean(), &flag_groups::statics, "true", "path following: tangent inertia per point; the count of the tangent's negative eigenvalues at every point (MUMPS LDL^T)", &ContinuationSettings::inertia},
+      {"continuation_initial_steps", integerAtLeast(1), &flag_groups::statics, "10", "path following: increments of the initial loads; in which the initial loads (force_initial, displ_initial, ...) are applied before the path starts from their equilibrium", &ContinuationSettings::initialSteps},
+      {"branch_switch", boolean(), &flag_groups::statics, "false", "path following: switch branch at a bifurcation; at the first bifurcation, onto the bifurcated branch along the critical eigenvector (symmetric bifurcations; docs/continuation.md)", &ContinuationSettings::branchSwitch},
       {"continuation_lowest_eigenvalue", boolean(), &flag_groups::statics, "false", "path following: also the tangent's eigenvalue closest to 0 (lowest of 4, SLEPc shift-and-invert) per point, /path/lowest_eigenvalue", &ContinuationSettings::lowestEigenvalue},
   };
   return fields;
@@ -47,8 +47,8 @@ const std::vector<Field<ContinuationSettings>>& continuationFields() {
 
 const std::vector<Field<AncfSettings>>& ancfFields() {
   static const std::vector<Field<AncfSettings>> fields = {
-      {"ancf_coarse_ratio", integerAtLeast(0), &flag_groups::ancf, "auto", "fine ANCF elements per coarse element of the two-level preconditioner (0: none; auto: ~2 sqrt(n) from 1024 elements per scene element)", &AncfSettings::coarseRatio},
-      {"ancf_coarse_predictor", boolean(), &flag_groups::ancf, "true", "predict each increment by a nonlinear coarse solve (SNES prefix coarse_snes_)", &AncfSettings::coarsePredictor},
+      {"ancf_coarse_ratio", integerAtLeast(0), &flag_groups::ancf, "auto", "fine ANCF elements per coarse element; of the two-level preconditioner (0: none; auto: ~2 sqrt(n) from 1024 elements per scene element)", &AncfSettings::coarseRatio, true},
+      {"ancf_coarse_predictor", boolean(), &flag_groups::ancf, "true", "predict each increment by a nonlinear coarse solve (SNES prefix coarse_snes_)", &AncfSettings::coarsePredictor, true},
   };
   return fields;
 }
@@ -56,19 +56,19 @@ const std::vector<Field<AncfSettings>>& ancfFields() {
 const std::vector<Field<ModelCheckSettings>>& modelCheckFields() {
   static const std::vector<Field<ModelCheckSettings>> fields = {
       {"constraint_check", boolean(), &flag_groups::check, "true", "mechanism / redundant constraint check before solving", &ModelCheckSettings::enabled},
-      {"constraint_check_max_unknowns", integerAtLeast(0), &flag_groups::check, "200000", "skip the check above this many unknowns", &ModelCheckSettings::maxUnknowns},
-      {"constraint_check_tol", realIn(0, 1, true, true), &flag_groups::check, "1e-11", "null vectors: ||J v|| <= tol ||D v||", &ModelCheckSettings::tol},
-      {"constraint_check_vectors", integerAtLeast(1), &flag_groups::check, "3", "null vectors looked for and reported", &ModelCheckSettings::vectors},
+      {"constraint_check_max_unknowns", integerAtLeast(0), &flag_groups::check, "200000", "skip the check above this many unknowns", &ModelCheckSettings::maxUnknowns, true},
+      {"constraint_check_tol", realIn(0, 1, true, true), &flag_groups::check, "1e-11", "null vectors: ||J v|| <= tol ||D v||", &ModelCheckSettings::tol, true},
+      {"constraint_check_vectors", integerAtLeast(1), &flag_groups::check, "3", "null vectors looked for and reported", &ModelCheckSettings::vectors, true},
   };
   return fields;
 }
 
 const std::vector<Field<EigenSettings>>& eigenFields() {
   static const std::vector<Field<EigenSettings>> fields = {
-      {"eigen_operator", oneOf({"auto", "elementwise", "assembled"}), &flag_groups::modal, "auto", "frequencies and buckling: K applied element by element (rigid-motion free) with GMRES + LU inner solves, or the assembled K and its LU alone (auto: element-wise where available)", choiceOf(&EigenSettings::eigenOperator)},
+      {"eigen_operator", oneOf({"auto", "elementwise", "assembled"}), &flag_groups::modal, "auto", "frequencies and buckling: element-wise or assembled K; K applied element by element (rigid-motion free) with GMRES + LU inner solves, or the assembled K and its LU alone (auto: element-wise where available)", choiceOf(&EigenSettings::eigenOperator)},
       {"freq_shift_rel", realIn(0, 1, true, false), &flag_groups::modal, "1e-8", "shift-and-invert target -freq_shift_rel * min diag(K)/diag(M)", &EigenSettings::freqShiftRel},
       {"eps_nev", integerAtLeast(1), &flag_groups::modal, "nfreq", "(SLEPc) frequencies computed; overrides opt.nfreq", std::monostate{}},
-      {"eps_target", anyReal(), &flag_groups::modal, "automatic", "(SLEPc) shift-and-invert target of the frequency analysis, replaces -freq_shift_rel", GivenRef<EigenSettings>{&EigenSettings::userTarget}},
+      {"eps_target", anyReal(), &flag_groups::modal, "automatic", "(SLEPc) shift-and-invert target; of the frequency analysis, replaces -freq_shift_rel", GivenRef<EigenSettings>{&EigenSettings::userTarget}},
       {"buck_eps_nev", integerAtLeast(1), &flag_groups::modal, "automatic", "(SLEPc) buckling multipliers computed (default: grown until nbuck positive ones)", GivenRef<EigenSettings>{&EigenSettings::userBucklingNev}},
   };
   return fields;
@@ -77,37 +77,37 @@ const std::vector<Field<EigenSettings>>& eigenFields() {
 const std::vector<Field<ComplianceSettings>>& complianceFields() {
   static const std::vector<Field<ComplianceSettings>> fields = {
       {"compliance_method", oneOf({"selinv", "sparse", "dense"}), &flag_groups::compliance, "selinv", "how the compliance blocks of the inverse tangent are computed", choiceOf(&ComplianceSettings::method)},
-      {"compliance_batch", integerAtLeast(1), &flag_groups::compliance, "96", "unit-load columns per solve (sparse, dense)", &ComplianceSettings::batch},
-      {"compl_mat_mumps_icntl_27", anyInteger(), &flag_groups::compliance, "2048", "(MUMPS) right-hand-side columns per block of the compliance solve", &ComplianceSettings::mumpsBlockColumns},
+      {"compliance_batch", integerAtLeast(1), &flag_groups::compliance, "96", "unit-load columns per solve (sparse, dense)", &ComplianceSettings::batch, true},
+      {"compl_mat_mumps_icntl_27", anyInteger(), &flag_groups::compliance, "2048", "(MUMPS) right-hand sides per block; columns per block of the compliance solve", &ComplianceSettings::mumpsBlockColumns, true},
   };
   return fields;
 }
 
 const std::vector<Field<DynamicsSettings>>& dynamicsFields() {
   static const std::vector<Field<DynamicsSettings>> fields = {
-      {"dynamics_scheme", oneOf({"arnold_bruls", "tsalpha2", "midpoint"}), &flag_groups::dynamics, "arnold_bruls", "Exudyn's generalized-alpha loop, PETSc TS alpha2, or the implicit midpoint rule (Lie group; linear and angular momentum exact, no numerical damping)", choiceOf(&DynamicsSettings::scheme)},
-      {"dynamics_modified_newton", oneOf({"auto", "true", "false"}), &flag_groups::dynamics, "auto", "keep the factored Jacobian across Newton iterations and time steps while each iteration halves the residual (false: a new Jacobian at every iteration; auto: true from 200 unknowns)", choiceOf(&DynamicsSettings::modifiedNewton)},
-      {"dynamics_corotated_jacobian", boolean(), &flag_groups::dynamics, "true", "ANCF cables under modified Newton: a kept Jacobian that stops contracting is first rebuilt from its element blocks rotated with the elements (no element kernel), a fresh one only if that does not help (docs/dynamics.md)", &DynamicsSettings::corotatedJacobian},
-      {"dynamics_refine", oneOf({"auto", "true", "false"}), &flag_groups::dynamics, "auto", "ANCF cables under modified Newton: each Newton step's linear solve refined with the Newton matrix applied element by element (the smooth modes of fine cables to full accuracy: 2 Newton iterations per step at 65536 elements instead of 3.75; docs/dynamics.md); true: once; auto: one more refinement (up to 3) each time Newton's updates on one matrix contract by less than 1e-3", choiceOf(&DynamicsSettings::refine)},
-      {"dynamics_node_rotation", oneOf({"auto", "true", "false"}), &flag_groups::dynamics, "auto", "ANCF cables under modified Newton: the kept factored Newton matrix B preconditions as R B^-1 R^T, R turning each node's position and slope by the node's turn since B was built, and refined solves apply the kept element blocks turned to the iterate (fine cables keep a matrix for several steps instead of rebuilding it in every one: 65536 elements, 20 steps: 8 matrices against 18; docs/dynamics.md); auto: when the first kept matrix that stalls does so at an element turn below 2e-3 rad (fine cables; coarser ones rebuild cheaply)", choiceOf(&DynamicsSettings::nodeRotation)},
-      {"dynamics_chain_lu", oneOf({"auto", "cut", "redundant"}), &flag_groups::dynamics, "auto", "ANCF cables on several ranks: rank-local LU with an exact correction of the unknowns coupling the ranks (cut), or every rank factoring the whole chain (redundant); auto: cut when at most 64 unknowns couple the ranks", choiceOf(&DynamicsSettings::chainLU)},
-      {"mat_mumps_icntl_14", anyInteger(), &flag_groups::dynamics, "100 when dynamics factors with MUMPS, else MUMPS' own", "(MUMPS) percentage of extra workspace for pivoting; dynamics reserves 100 so wild Newton iterates do not fail the factorization (INFOG(1) = -9)", &DynamicsSettings::mumpsWorkspace},
-      {"dynamics_predictor", oneOf({"auto", "acceleration", "state"}), &flag_groups::dynamics, "auto", "Newton's start of a time step: q_n + h qd_n + h^2/2 a_n (acceleration) or q_n (state; the extrapolation of a fine mesh's unresolved stiff modes lands far off); auto: state from 200 unknowns and for beams", choiceOf(&DynamicsSettings::predictor)},
-      {"dt_grow_after", integerAtLeast(0), &flag_groups::dynamics, "3", "after a halving, double the time step after this many successes (0: never)", &DynamicsSettings::dtGrowAfter},
-      {"dynamics_adapt", oneOf({"none", "newton", "error"}), &flag_groups::dynamics, "opt.dynamics.adaptive.control (none)", "time-step control: fixed dt (none), from the Newton iteration count (newton) or a local error estimate (error); docs/dynamics.md", choiceOf(&DynamicsSettings::adapt)},
-      {"dynamics_dt_min", realIn(0, 1e300, true, false), &flag_groups::dynamics, "opt.dynamics.adaptive.dt_min (dt/1e4)", "adaptive steps: smallest step", &DynamicsSettings::dtMin},
-      {"dynamics_dt_max", realIn(0, 1e300, true, false), &flag_groups::dynamics, "opt.dynamics.adaptive.dt_max (dt * output_every)", "adaptive steps: largest step", &DynamicsSettings::dtMax},
-      {"dynamics_adapt_its", integerAtLeast(1), &flag_groups::dynamics, "opt.dynamics.adaptive.target_iterations (4)", "adaptive steps (newton): Newton iterations per step aimed at", &DynamicsSettings::adaptIts},
-      {"dynamics_adapt_tol", realIn(0, 1e300, true, false), &flag_groups::dynamics, "opt.dynamics.adaptive.tolerance (1e-4)", "adaptive steps (error): local error estimate / largest displacement accepted per step", &DynamicsSettings::adaptTol},
-      {"beam_mass", oneOf({"consistent", "lumped"}), &flag_groups::dynamics, "consistent", "beam inertia: the consistent mass in the current element frame, or lumped on the nodes (rhoA l/2 and the section's rotary inertia with its exact gyroscopic moment: momentum-exact with -dynamics_scheme midpoint)", choiceOf(&DynamicsSettings::beamMass)},
-      {"dynamics_energy", boolean(), &flag_groups::dynamics, "false", "write /energy/{kinetic,strain,external_work,total} and /momentum/{linear,angular} per output step (beams, ANCF)", &DynamicsSettings::energy},
+      {"dynamics_scheme", oneOf({"arnold_bruls", "tsalpha2", "midpoint"}), &flag_groups::dynamics, "arnold_bruls", "time integration scheme; Exudyn's generalized-alpha loop, PETSc TS alpha2, or the implicit midpoint rule (Lie group; linear and angular momentum exact, no numerical damping)", choiceOf(&DynamicsSettings::scheme)},
+      {"dynamics_modified_newton", oneOf({"auto", "true", "false"}), &flag_groups::dynamics, "auto", "keep the factored Jacobian; across Newton iterations and time steps while each iteration halves the residual (false: a new Jacobian at every iteration; auto: true from 200 unknowns)", choiceOf(&DynamicsSettings::modifiedNewton)},
+      {"dynamics_corotated_jacobian", boolean(), &flag_groups::dynamics, "true", "ANCF, modified Newton: rotate a stalled kept Jacobian; a kept Jacobian that stops contracting is first rebuilt from its element blocks rotated with the elements (no element kernel), a fresh one only if that does not help (docs/dynamics.md)", &DynamicsSettings::corotatedJacobian, true},
+      {"dynamics_refine", oneOf({"auto", "true", "false"}), &flag_groups::dynamics, "auto", "ANCF, modified Newton: refine each linear solve element-wise; each Newton step's linear solve refined with the Newton matrix applied element by element (the smooth modes of fine cables to full accuracy: 2 Newton iterations per step at 65536 elements instead of 3.75; docs/dynamics.md); true: once; auto: one more refinement (up to 3) each time Newton's updates on one matrix contract by less than 1e-3", choiceOf(&DynamicsSettings::refine), true},
+      {"dynamics_node_rotation", oneOf({"auto", "true", "false"}), &flag_groups::dynamics, "auto", "ANCF, modified Newton: turn the kept matrix with the nodes; the kept factored Newton matrix B preconditions as R B^-1 R^T, R turning each node's position and slope by the node's turn since B was built, and refined solves apply the kept element blocks turned to the iterate (fine cables keep a matrix for several steps instead of rebuilding it in every one: 65536 elements, 20 steps: 8 matrices against 18; docs/dynamics.md); auto: when the first kept matrix that stalls does so at an element turn below 2e-3 rad (fine cables; coarser ones rebuild cheaply)", choiceOf(&DynamicsSettings::nodeRotation), true},
+      {"dynamics_chain_lu", oneOf({"auto", "cut", "redundant"}), &flag_groups::dynamics, "auto", "ANCF cables on several ranks: cut or redundant chain LU; rank-local LU with an exact correction of the unknowns coupling the ranks (cut), or every rank factoring the whole chain (redundant); auto: cut when at most 64 unknowns couple the ranks", choiceOf(&DynamicsSettings::chainLU), true},
+      {"mat_mumps_icntl_14", anyInteger(), &flag_groups::dynamics, "100 (when dynamics factors with MUMPS, else MUMPS' own)", "(MUMPS) extra workspace for pivoting, percent; dynamics reserves 100 so wild Newton iterates do not fail the factorization (INFOG(1) = -9)", &DynamicsSettings::mumpsWorkspace, true},
+      {"dynamics_predictor", oneOf({"auto", "acceleration", "state"}), &flag_groups::dynamics, "auto", "Newton's start of a time step; q_n + h qd_n + h^2/2 a_n (acceleration) or q_n (state; the extrapolation of a fine mesh's unresolved stiff modes lands far off); auto: state from 200 unknowns and for beams", choiceOf(&DynamicsSettings::predictor)},
+      {"dt_grow_after", integerAtLeast(0), &flag_groups::dynamics, "3", "steps before a halved time step doubles; after a halving, double the time step after this many successes (0: never)", &DynamicsSettings::dtGrowAfter},
+      {"dynamics_adapt", oneOf({"none", "newton", "error"}), &flag_groups::dynamics, "none (opt.dynamics.adaptive.control)", "time-step control; fixed dt (none), from the Newton iteration count (newton) or a local error estimate (error); docs/dynamics.md", choiceOf(&DynamicsSettings::adapt)},
+      {"dynamics_dt_min", realIn(0, 1e300, true, false), &flag_groups::dynamics, "dt/1e4 (opt.dynamics.adaptive.dt_min)", "adaptive steps: smallest step", &DynamicsSettings::dtMin},
+      {"dynamics_dt_max", realIn(0, 1e300, true, false), &flag_groups::dynamics, "dt*output_every (opt.dynamics.adaptive.dt_max)", "adaptive steps: largest step", &DynamicsSettings::dtMax},
+      {"dynamics_adapt_its", integerAtLeast(1), &flag_groups::dynamics, "4 (opt.dynamics.adaptive.target_iterations)", "adaptive steps by Newton: iterations per step aimed at", &DynamicsSettings::adaptIts},
+      {"dynamics_adapt_tol", realIn(0, 1e300, true, false), &flag_groups::dynamics, "1e-4 (opt.dynamics.adaptive.tolerance)", "adaptive steps by error: local error accepted per step; estimate / largest displacement", &DynamicsSettings::adaptTol},
+      {"beam_mass", oneOf({"consistent", "lumped"}), &flag_groups::dynamics, "consistent", "beam inertia: consistent or lumped mass; the consistent mass in the current element frame, or lumped on the nodes (rhoA l/2 and the section's rotary inertia with its exact gyroscopic moment: momentum-exact with -dynamics_scheme midpoint)", choiceOf(&DynamicsSettings::beamMass)},
+      {"dynamics_energy", boolean(), &flag_groups::dynamics, "false", "write energies and momenta per output step; /energy/{kinetic,strain,external_work,total} and /momentum/{linear,angular} (beams, ANCF)", &DynamicsSettings::energy},
   };
   return fields;
 }
 
 const std::vector<Field<FormFindingSettings>>& formFindingFields() {
   static const std::vector<Field<FormFindingSettings>> fields = {
-      {"ff_mat_mumps_icntl_7", integerIn(0, 7), &flag_groups::formfinding, "3", "(MUMPS) fill-reducing ordering of the form-finding factorization (3: SCOTCH)", &FormFindingSettings::mumpsOrdering},
+      {"ff_mat_mumps_icntl_7", integerIn(0, 7), &flag_groups::formfinding, "3", "(MUMPS) form-finding ordering; fill-reducing ordering of the form-finding factorization (3: SCOTCH)", &FormFindingSettings::mumpsOrdering, true},
   };
   return fields;
 }

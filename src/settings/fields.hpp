@@ -39,8 +39,9 @@ struct Field {
   FlagValue value;          ///< accepted values (a choice flag's words name the enum's values in order)
   const FlagGroup* group;   ///< -help block
   const char* defaultText;  ///< as -help shows it
-  const char* help;         ///< one line
+  const char* help;         ///< meaning: its first clause (up to " (" or "; ") is the -help line
   FieldRef<S> ref;
+  bool developer = false;   ///< a testing aid or solver internal: listed by -help_dev, not -help
 };
 
 template <class S, class E>

@@ -14,20 +14,20 @@
 namespace sinew {
 
 namespace flag_groups {
-const FlagGroup output{"Sinew: result file", "README.md"};
-const FlagGroup scene{"Sinew: scene opt fields (each overrides the scene's opt block)", "docs/scene.md"};
-const FlagGroup statics{"Sinew: statics (load stepping, Newton)", "docs/beam.md"};
-const FlagGroup ancf{"Sinew: fine ANCF cables (element-wise tangent, cable coarse space)", "docs/ancf_cable2d.md"};
-const FlagGroup check{"Sinew: model check (mechanisms, redundant constraints)", "docs/compliance.md"};
-const FlagGroup modal{"Sinew: frequencies and buckling (SLEPc)", "docs/modal.md"};
-const FlagGroup compliance{"Sinew: compliance matrices", "docs/compliance.md"};
-const FlagGroup dynamics{"Sinew: dynamics", "docs/ancf_cable2d.md"};
-const FlagGroup formfinding{"Sinew: form finding", "docs/formfinding.md"};
+const FlagGroup output{"Result file", "README.md"};
+const FlagGroup scene{"Scene opt fields (each overrides the field of the scene's opt block)", "docs/scene.md"};
+const FlagGroup statics{"Statics and path following (load stepping, Newton)", "docs/beam.md"};
+const FlagGroup ancf{"Fine ANCF cables (element-wise tangent, cable coarse space)", "docs/ancf_cable2d.md"};
+const FlagGroup check{"Model check (mechanisms, redundant constraints)", "docs/compliance.md"};
+const FlagGroup modal{"Frequencies and buckling (SLEPc)", "docs/modal.md"};
+const FlagGroup compliance{"Compliance matrices", "docs/compliance.md"};
+const FlagGroup dynamics{"Dynamics", "docs/dynamics.md"};
+const FlagGroup formfinding{"Form finding", "docs/formfinding.md"};
 }  // namespace flag_groups
 
 const std::vector<const FlagGroup*>& flagGroups() {
   using namespace flag_groups;
-  static const std::vector<const FlagGroup*> all = {&output, &scene, &statics, &ancf, &check,
+  static const std::vector<const FlagGroup*> all = {&scene, &output, &statics, &ancf, &check,
                                                     &modal, &compliance, &dynamics, &formfinding};
   return all;
 }
@@ -37,14 +37,14 @@ const std::vector<Flag>& sinewFlags() {
     std::vector<Flag> f;
     // the settings' fields, component by component (fields.cpp)
     forEachFieldTable([&f](const auto& table, auto) {
-      for (const auto& d : table) f.push_back({d.flag, d.value, d.group, d.defaultText, d.help});
+      for (const auto& d : table) f.push_back({d.flag, d.value, d.group, d.defaultText, d.help, d.developer});
     });
     // Every scene opt field is a flag of the same name (the scene reader checks its value).
     for (const OptionDoc& d : sceneOptionDocs()) {
       FlagValue v;
       v.kind = FlagValue::Kind::SceneOpt;
       v.sceneType = d.type;
-      f.push_back({d.name, v, &flag_groups::scene, d.defaultValue, d.help});
+      f.push_back({d.name, v, &flag_groups::scene, d.defaultValue, d.help, false});
     }
     return f;
   }();

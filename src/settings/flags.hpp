@@ -46,7 +46,8 @@ struct Flag {
   FlagValue value;
   const FlagGroup* group;
   std::string defaultValue;  ///< as -help shows it
-  std::string help;          ///< one line
+  std::string help;          ///< meaning; its first clause is the -help line (helpSummary)
+  bool developer = false;    ///< listed by -help_dev instead of -help
 };
 
 /// Every flag Sinew reads: the settings' fields (its own flags and the PETSc/SLEPc options it reads

@@ -108,13 +108,9 @@ OptionOverride sceneOverrides(const Settings& settings) {
   };
 }
 
-PetscErrorCode readStartupRequests(StartupRequests* requests) {
+PetscErrorCode readPetscHelp(PetscBool* help) {
   PetscFunctionBeginUser;
-  PetscBool h = PETSC_FALSE, version = PETSC_FALSE;
-  PetscCall(PetscOptionsHasName(nullptr, nullptr, "-h", &h));
-  PetscCall(PetscOptionsHasName(nullptr, nullptr, "-version", &version));
-  requests->shortHelp = h;
-  requests->version = version;
+  PetscCall(PetscOptionsHasHelp(nullptr, help));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

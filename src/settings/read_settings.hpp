@@ -17,12 +17,8 @@ PetscErrorCode readSettings(PetscOptions options, Settings* settings);
 /// The scene reader's view of settings.sceneOpt: opt field name -> value given on the command line.
 OptionOverride sceneOverrides(const Settings& settings);
 
-/// -h and -version, which end the start-up before any settings are read (command_line.cpp).
-struct StartupRequests {
-  bool shortHelp = false;  ///< -h (PETSc's own -help: PetscOptionsHasHelp)
-  bool version = false;    ///< -version
-};
-PetscErrorCode readStartupRequests(StartupRequests* requests);
+/// PETSc's -help in the database (-help_petsc, an options file or PETSC_OPTIONS; command_line.cpp).
+PetscErrorCode readPetscHelp(PetscBool* help);
 
 /// Sinew's default of a PETSc solver option (e.g. -mat_mumps_icntl_14 100): puts `-name value`
 /// into the global options database unless the user gave -name (then the user's value stays), for

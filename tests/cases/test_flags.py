@@ -8,7 +8,8 @@
 - PETSc's and SLEPc's own flags, also under Sinew's solver prefixes, pass, and valid Sinew flags
   act (-loadsteps 3 gives 3 result rows).
 - -version prints Sinew's version (the CMake project version, also the result file's `version`
-  attribute) and PETSc's/SLEPc's, and exits 0 without running the scene."""
+  attribute), then one line per library (PETSc, SLEPc, MPI, HDF5, METIS, yaml-cpp) and no PETSc
+  banner, and exits 0 without running the scene (issue 24 item 11)."""
 import os
 import re
 import subprocess
@@ -178,11 +179,14 @@ for np_ in (1, 2):
     tag = f"version on {np_} rank(s)"
     code, log, cwd = results[("version", np_)]
     if st.check(code is not None, f"{tag}: {log}"):
-        lines = [ln for ln in log.splitlines() if ln.startswith("Sinew ")]
+        lines = log.splitlines()
         print(f"{tag}: exit {code}: {lines}")
         st.check(code == 0, f"{tag}: exit {code}")
-        st.check(len(lines) == 1 and re.fullmatch(rf"Sinew {re.escape(project_version())} \(PETSc 3\.\d+\.\d+, "
-                                                  r"SLEPc 3\.\d+\.\d+\)", lines[0]) is not None, f"{tag}: lines {lines}")
+        # one line per library, Sinew's first; no PETSc/SLEPc banner
+        expected = [rf"Sinew {re.escape(project_version())}", r"PETSc 3\.\d+\.\d+", r"SLEPc 3\.\d+\.\d+",
+                    r"Open MPI v\d+\.\d+\.\d+", r"HDF5 1\.\d+\.\d+", r"METIS 5\.\d+\.\d+", r"yaml-cpp \d+\.\d+\.\d+"]
+        st.check(len(lines) == len(expected) and all(re.fullmatch(e, ln) for e, ln in zip(expected, lines)),
+                 f"{tag}: expected one line per library ({', '.join(expected)}), got {lines}")
         no_results(tag, cwd)
 
 st.done()

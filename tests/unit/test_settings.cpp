@@ -44,7 +44,7 @@ std::string defaultMismatch(const Field<S>& f, const S& s) {
           [](const GivenRef<S>&) { return std::string(); },
           [&](const ChoiceRef<S>& c) {
             const std::optional<int> i = c.get(s);
-            if (!i) return text.rfind("opt.", 0) == 0 ? std::string() : "no choice, default text " + text;
+            if (!i) return text.find("(opt.") != std::string::npos ? std::string() : "no choice, default text " + text;
             return f.value.choices.at(static_cast<std::size_t>(*i)) == word ? std::string()
                                                                              : "choice " + f.value.choices[*i] + " vs " + text;
           },

@@ -7,6 +7,8 @@
 #include "app/command_line.hpp"
 #include "app/interrupt.hpp"
 #include "app/runner.hpp"
+#include "solvers/ancf/node_rotated_pc.hpp"
+#include "solvers/cut_corrected_lu.hpp"
 
 namespace {
 // Started without a launcher (`sinew scene.yaml`: an MPI singleton), Open MPI would fork a helper
@@ -31,6 +33,9 @@ int main(int argc, char** argv) {
   // -help, -help_dev, -version are Sinew's: taken out before PETSc would print its banners for them
   const sinew::StartRequest request = sinew::takeStartRequest(&argc, argv);
   PetscCall(SlepcInitialize(&argc, &argv, nullptr, sinew::usageText()));
+  // Sinew's preconditioners are PETSc PC types: -pc_type cutlu / noderotated name them like PETSc's own
+  PetscCall(sinew::registerCutCorrectedLU());
+  PetscCall(sinew::registerNodeRotatedPC());
   sinew::installInterruptHandlers();  // after PETSc's, which would abort on SIGTERM/SIGUSR1
   int code = 0;
   bool stop = false;

@@ -55,7 +55,7 @@ bool containsWord(const std::string& name, const std::string& word) {
 const std::vector<std::string>& sinewSolverPrefixes() {
   // longest first: coarse_snes_ before coarse_
   static const std::vector<std::string> prefixes = {"constraint_check_", "continuation_", "coarse_snes_", "coarse_",
-                                                    "compl_", "fine_", "buck_", "init_", "ff_"};
+                                                    "compl_", "fine_", "buck_", "init_", "ff_", "rotated_", "cut_"};
   return prefixes;
 }
 

@@ -1,7 +1,7 @@
 // Rank-local LU with an exact Woodbury correction of the coupling between ranks (useCutCorrectedLU).
 #include "solvers/cut_corrected_lu.hpp"
 
-#include <petsc/private/petscimpl.h>
+#include <petsc/private/pcimpl.h>
 
 #include <algorithm>
 #include <cmath>
@@ -48,6 +48,7 @@ void denseSolve(const std::vector<double>& a, const std::vector<int>& piv, size_
 }
 
 struct CutLU {
+  PetscInt maxCoupling = 4096;      ///< -pc_cutlu_max_coupling: the dense capacitance matrix's bound
   KSP local = nullptr;              ///< LU of this rank's diagonal block D_r
   Vec b = nullptr, y = nullptr;     ///< sequential views of the local parts
   std::vector<PetscInt> coupling;   ///< global ids of the coupling unknowns, ascending (all ranks alike)
@@ -70,21 +71,40 @@ PetscErrorCode localSolve(CutLU* cut, const double* b, double* y) {
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode cutDestroy(PC pc) {
+/// PCReset: the factors and the coupling pattern go (a new matrix may couple other unknowns).
+PetscErrorCode cutReset(PC pc) {
   PetscFunctionBeginUser;
-  CutLU* cut = nullptr;
-  PetscCall(PCShellGetContext(pc, &cut));
+  auto* cut = static_cast<CutLU*>(pc->data);
   PetscCall(KSPDestroy(&cut->local));
   PetscCall(VecDestroy(&cut->b));
   PetscCall(VecDestroy(&cut->y));
-  delete cut;
+  const PetscInt maxCoupling = cut->maxCoupling;
+  *cut = CutLU{};
+  cut->maxCoupling = maxCoupling;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode cutDestroy(PC pc) {
+  PetscFunctionBeginUser;
+  PetscCall(cutReset(pc));
+  delete static_cast<CutLU*>(pc->data);
+  pc->data = nullptr;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode cutSetFromOptions(PC pc, PetscOptionItems* PetscOptionsObject) {
+  PetscFunctionBeginUser;
+  auto* cut = static_cast<CutLU*>(pc->data);
+  PetscOptionsHeadBegin(PetscOptionsObject, "Cut-corrected LU options");
+  PetscCall(PetscOptionsInt("-pc_cutlu_max_coupling", "most unknowns coupling the ranks (the capacitance matrix is dense)",
+                            "PCCUTLU", cut->maxCoupling, &cut->maxCoupling, nullptr));
+  PetscOptionsHeadEnd();
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 PetscErrorCode cutSetUp(PC pc) {
   PetscFunctionBeginUser;
-  CutLU* cut = nullptr;
-  PetscCall(PCShellGetContext(pc, &cut));
+  auto* cut = static_cast<CutLU*>(pc->data);
   Mat A, Ad, Ao;
   const PetscInt* colmap = nullptr;
   PetscCall(PCGetOperators(pc, nullptr, &A));
@@ -114,11 +134,11 @@ PetscErrorCode cutSetUp(PC pc) {
     PetscCallMPI(MPI_Allgatherv(colmap, mine, MPIU_INT, all.data(), counts.data(), displs.data(), MPIU_INT, comm));
     std::sort(all.begin(), all.end());
     all.erase(std::unique(all.begin(), all.end()), all.end());
-    if (all.size() > 4096)
+    if (static_cast<PetscInt>(all.size()) > cut->maxCoupling)
       SETERRQ(comm, PETSC_ERR_SUP,
-              "cut-corrected LU (-dynamics_chain_lu cut): %d unknowns couple the ranks, at most 4096 supported (its capacitance "
-              "matrix is dense); use -dynamics_chain_lu redundant or auto",
-              static_cast<int>(all.size()));
+              "cut-corrected LU (-dynamics_chain_lu cut): %d unknowns couple the ranks, at most %d (-pc_cutlu_max_coupling; its "
+              "capacitance matrix is dense); use -dynamics_chain_lu redundant or auto",
+              static_cast<int>(all.size()), static_cast<int>(cut->maxCoupling));
     cut->coupling = all;
     cut->ownedRow.assign(all.size(), -1);
     for (size_t k = 0; k < all.size(); ++k)
@@ -127,7 +147,10 @@ PetscErrorCode cutSetUp(PC pc) {
     for (PetscInt j = 0; j < no; ++j)
       cut->columns[j] = std::lower_bound(all.begin(), all.end(), colmap[j]) - all.begin();
     PetscCall(KSPCreate(PETSC_COMM_SELF, &cut->local));
-    PetscCall(KSPSetOptionsPrefix(cut->local, "cut_"));
+    const char* prefix = nullptr;  // the local LU's options: -<this PC's prefix>cut_<option>
+    PetscCall(PCGetOptionsPrefix(pc, &prefix));
+    PetscCall(KSPSetOptionsPrefix(cut->local, prefix));
+    PetscCall(KSPAppendOptionsPrefix(cut->local, "cut_"));
     PetscCall(KSPSetType(cut->local, KSPPREONLY));
     PC lpc;
     PetscCall(KSPGetPC(cut->local, &lpc));
@@ -177,8 +200,7 @@ PetscErrorCode cutSetUp(PC pc) {
 
 PetscErrorCode cutApply(PC pc, Vec x, Vec y) {
   PetscFunctionBeginUser;
-  CutLU* cut = nullptr;
-  PetscCall(PCShellGetContext(pc, &cut));
+  auto* cut = static_cast<CutLU*>(pc->data);
   const PetscScalar* xa;
   PetscScalar* ya;
   PetscCall(VecGetArrayRead(x, &xa));
@@ -205,8 +227,7 @@ PetscErrorCode cutApply(PC pc, Vec x, Vec y) {
 
 PetscErrorCode cutView(PC pc, PetscViewer viewer) {
   PetscFunctionBeginUser;
-  CutLU* cut = nullptr;
-  PetscCall(PCShellGetContext(pc, &cut));
+  auto* cut = static_cast<CutLU*>(pc->data);
   PetscCall(PetscViewerASCIIPrintf(viewer, "  cut-corrected LU: %d coupling unknowns; rank 0's local LU:\n",
                                    static_cast<int>(cut->coupling.size())));
   PetscViewer sub;
@@ -222,19 +243,33 @@ PetscErrorCode cutView(PC pc, PetscViewer viewer) {
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/// PCCreate for PCCUTLU (PCRegister: -pc_type cutlu).
+PetscErrorCode createCutLU(PC pc) {
+  PetscFunctionBeginUser;
+  pc->data = new CutLU;
+  pc->ops->setup = cutSetUp;
+  pc->ops->apply = cutApply;
+  pc->ops->reset = cutReset;
+  pc->ops->destroy = cutDestroy;
+  pc->ops->view = cutView;
+  pc->ops->setfromoptions = cutSetFromOptions;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 }  // namespace
+
+PetscErrorCode registerCutCorrectedLU() {
+  PetscFunctionBeginUser;
+  PetscCall(PCRegister(PCCUTLU, createCutLU));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
 
 PetscErrorCode useCutCorrectedLU(KSP ksp) {
   PetscFunctionBeginUser;
+  PetscCall(registerCutCorrectedLU());
   PC pc;
   PetscCall(KSPGetPC(ksp, &pc));
-  PetscCall(PCSetType(pc, PCSHELL));
-  PetscCall(PCShellSetContext(pc, new CutLU));
-  PetscCall(PCShellSetSetUp(pc, cutSetUp));
-  PetscCall(PCShellSetApply(pc, cutApply));
-  PetscCall(PCShellSetDestroy(pc, cutDestroy));
-  PetscCall(PCShellSetView(pc, cutView));
-  PetscCall(PCShellSetName(pc, "cut-corrected LU (rank-local LU, Woodbury correction of the coupling between ranks)"));
+  PetscCall(PCSetType(pc, PCCUTLU));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

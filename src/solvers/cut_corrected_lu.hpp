@@ -26,6 +26,14 @@ long couplingUnknowns(const DistributedMesh& mesh);
 /// and one local solve per coupling column of the rank; a solve costs one local solve, one reduction
 /// of m numbers and m local vector updates. Nothing is gathered: against PCREDUNDANT (every rank
 /// gathers and factors the whole matrix) the ranks share the work. One process: plain LU.
+/// A registered PCType (PCCUTLU, -pc_type cutlu): options -<prefix>pc_cutlu_max_coupling and the
+/// local LU's -<prefix>cut_<KSP/PC option>.
 PetscErrorCode useCutCorrectedLU(KSP ksp);
+
+/// The PC type name of the cut-corrected LU.
+#define PCCUTLU "cutlu"
+
+/// PCRegister of PCCUTLU (main() at start-up; useCutCorrectedLU again, for library users).
+PetscErrorCode registerCutCorrectedLU();
 
 }  // namespace sinew

@@ -11,6 +11,9 @@ A1g (the A1 cantilever swinging down under gravity, h = 1e-3) on 1024 elements, 
 - the default's -ksp_view names the cut-corrected LU and its local LU in RCM order (the test fails
   when the default is dropped: PCREDUNDANT or MUMPS shows up instead);
 - -dynamics_chain_lu redundant shows PCREDUNDANT (fails when the option is ignored);
+- the cut-corrected LU is a registered PC type (cutlu): -pc_type cutlu selects it, and its option
+  -pc_cutlu_max_coupling reaches it (a bound of 1 coupling unknown stops the run, exit 4), also as
+  -rotated_pc_cutlu_max_coupling inside the node-rotated kept matrix (PC type noderotated);
 - the tips agree: default, PCREDUNDANT, MUMPS (-pc_type lu -pc_factor_mat_solver_type mumps) and
   one process (PETSc's LU in RCM order).
 Measured (2026-11-26): tip (-7.37e-14, -4.905000e-04) m in all four runs, 20 Newton iterations on
@@ -44,6 +47,17 @@ view = out.split("time step 0/")[-1]
 st.check("cut-corrected LU" in view, "the default time-step solver of a 2-rank ANCF chain is not the cut-corrected LU")
 st.check("mumps" not in view.lower(), "MUMPS appears in the default time-step solver of an ANCF chain")
 st.check(re.search(r"ordering:\s*rcm", view) is not None, "the chain's LU is not in RCM order (-ksp_view)")
+st.check("type: cutlu" in view, "the cut-corrected LU is not the registered PC type cutlu (-ksp_view)")
+# a registered PC type (issue 23): PETSc's options name it and reach its SetFromOptions
+_, out_c = run("chain_user_cutlu", args=["-dynamics_chain_lu", "redundant", "-pc_type", "cutlu", "-ksp_view"])
+st.check("type: cutlu" in out_c.split("time step 0/")[-1], "-pc_type cutlu from the command line is not used")
+# its options carry the prefix of the KSP it sits in: the time-step KSP's, or rotated_ inside the
+# node-rotated kept matrix (PC type noderotated, the default here)
+for name, args in (("chain_cutlu_bound", ["-dynamics_node_rotation", "false", "-pc_cutlu_max_coupling", "1"]),
+                   ("chain_cutlu_bound_rotated", ["-rotated_pc_cutlu_max_coupling", "1"])):
+    _, out_x = st.run(name, SCENE, np_=2, args=args, expect_exit=4)
+    st.check("-pc_cutlu_max_coupling" in out_x and "at most 1" in out_x,
+             f"{name}: {' '.join(args)} does not reach the cut-corrected LU: {out_x[-600:]}")
 # -dynamics_chain_lu redundant: every rank factors the whole chain (PCREDUNDANT), the former default
 tip_r, out_r = run("chain_redundant", args=["-dynamics_chain_lu", "redundant", "-ksp_view"])
 view_r = out_r.split("time step 0/")[-1]

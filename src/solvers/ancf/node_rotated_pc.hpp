@@ -15,6 +15,13 @@ namespace sinew {
 /// turned rigidly by Q is Q B_e Q^T, so R B R^T is the Newton matrix of a cable that turned with its
 /// nodes; it misses the difference of the turns of an element's two nodes (1e-7 rad where the
 /// elements of A1g at 65536 elements turned by 1e-3 rad) and the elements' deformation, not the turn.
+/// A registered PCType (PCNODEROTATED): the inner KSP takes the options -<prefix>rotated_<option>.
 PetscErrorCode useNodeRotatedPC(KSP ksp, const Assembler& assembler, const bool* active, KSP* inner);
+
+/// The PC type name of the node-rotated kept Newton matrix.
+#define PCNODEROTATED "noderotated"
+
+/// PCRegister of PCNODEROTATED (main() at start-up; useNodeRotatedPC again, for library users).
+PetscErrorCode registerNodeRotatedPC();
 
 }  // namespace sinew

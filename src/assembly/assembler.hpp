@@ -52,6 +52,20 @@ struct AssemblyCounters {
   long pressureLoads = 0;    ///< follower pressure element loads evaluated (membranes with pressure only)
 };
 
+/// Receives what Assembler::dynamicJacobian computes, block by block: start(shiftA), every element's
+/// Newton block K_e + shiftV D_e + shiftA M_e at its state q_e, then nodeTerms() with the iterate's
+/// node states loaded. A sink that setsMatrix() sets J itself (setMatrix, after the loop) instead of
+/// the assembler's MatSetValuesLocal per block.
+class NewtonBlockSink {
+ public:
+  virtual ~NewtonBlockSink() = default;
+  virtual bool setsMatrix() const = 0;
+  virtual void start(double shiftA) = 0;
+  virtual void element(std::size_t e, const LocalElement& el, const double* q, const double* K) = 0;
+  virtual void nodeTerms(const LoadState& ls) = 0;
+  virtual PetscErrorCode setMatrix(Mat J) = 0;
+};
+
 class Assembler {
  public:
   /// cooAssembly: the Jacobian assembled by COO where the model allows it (-assembly_coo,
@@ -62,6 +76,7 @@ class Assembler {
   Assembler& operator=(const Assembler&) = delete;
 
   DistributedMesh& mesh() { return mesh_; }
+  const DistributedMesh& mesh() const { return mesh_; }
   /// Ghosted vector of unknowns (the layout of every solution/residual vector).
   PetscErrorCode createVector(Vec* v) const;
   /// Ghosted vector over every node DOF (constrained included).
@@ -137,39 +152,18 @@ class Assembler {
   PetscErrorCode dynamicResidual(Vec U, Vec V, Vec A, const LoadState& ls, Vec F);
   /// J = K(U, V) + shiftV D(U, V) + shiftA M; D only from kernels with hasDamping().
   PetscErrorCode dynamicJacobian(Vec U, Vec V, const LoadState& ls, double shiftV, double shiftA, Mat J);
-  // ---- corotated Newton matrix of ANCF cables (corotated_jacobian.cpp)
-  /// From now on dynamicJacobian() also keeps every ANCF cable element's block (K + shiftV D + shiftA M)
-  /// and the angle of the element's mean slope, for corotatedJacobian().
-  /// A model of ANCF cable elements and nodes only also assembles dynamicJacobian from those blocks
-  /// through the COO pattern of corotatedJacobian (no MatSetValuesLocal per element block).
-  void keepCorotatedBlocks(bool on);
-  /// The kept blocks cover every element (all are ANCF cables, the last dynamicJacobian kept them).
-  bool corotatedBlocksValid() const { return corotatedValid_; }
-  /// J from the blocks kept by the last dynamicJacobian(), each rotated by the change of its element's
-  /// angle since then: J = sum_e Q_e B_e Q_e^T (Q_e rotates every 2-vector of the element, positions
-  /// and slopes), plus the node terms of dynamicJacobian (nodal masses with the kept shiftA, slope
-  /// torques at U). Exact for elements that moved rigidly: B(Q q) = Q B(q) Q^T by objectivity, and the
-  /// mass term is isotropic. No element kernel runs. Logged as SinewCorotJac.
-  PetscErrorCode corotatedJacobian(Vec U, const LoadState& ls, Mat J);
-  /// y = J x for the Newton matrix last built from the kept blocks (dynamicJacobian with
-  /// keepCorotatedBlocks, or corotatedJacobian), applied element by element: each block to its
-  /// element's part of x minus its first node's translation t, plus the block's exact response to t,
-  /// its translational mass shiftA M_e (t, 0, t, 0) (stiffness and damping vanish on a translation).
-  /// The assembled matrix applies the same J with round-off eps |J| |x|; here eps |B_e| |x_e - t|,
-  /// which keeps the smooth modes of fine cables accurate (bending stiffness EI/l^3 against the mass
-  /// term of a soft mode). Logged as SinewTangentOp.
-  PetscErrorCode applyCorotated(Vec x, Vec y);
-  /// The largest turn (rad) of an element at U away from the rotation its block has in the current
-  /// Newton matrix (all ranks; collective).
-  PetscErrorCode corotationTurn(Vec U, const LoadState& ls, double* turn);
-  /// Turns the Newton matrix's element blocks to the iterate U (the element-wise product applyCorotated
-  /// then applies the kept blocks rotated by each element's turn at U) and computes every owned
-  /// node's slope turn since the Newton matrix was built (rotateNodes; collective).
-  PetscErrorCode turnToIterate(Vec U, const LoadState& ls);
-  /// y = R x (back = false) or R^T x on the owned unknowns: R turns each owned ANCF node's position
-  /// and slope pair by the node's turn since the Newton matrix was built (turnToIterate); pairs with
-  /// a constrained unknown are not turned. x and y: arrays of the owned unknowns (may alias).
-  void rotateNodes(const double* x, double* y, bool back) const;
+  /// Hands every element block and the node terms of each dynamicJacobian() to `sink` (nullptr: none;
+  /// the corotated Newton matrix of ANCF cables, solvers/ancf/corotated_newton_matrix.hpp).
+  void setNewtonBlockSink(NewtonBlockSink* sink) { sink_ = sink; }
+  /// y = the element-by-element product that body adds into ya from xa (local ghosted forms of x and
+  /// y; ghost contributions summed to their owners). Logged as SinewTangentOp.
+  PetscErrorCode elementProduct(Vec x, Vec y, const std::function<void(const double* xa, double* ya)>& body);
+  /// ya += K xa on node's two slope unknowns (K: 2 x 2, row-major).
+  static void addSlopeBlock(const LocalNode& node, const double* K, const double* xa, double* ya);
+  /// Owned node i's 2 x 2 slope-torque tangent at the current states (false: none).
+  bool slopeTorqueBlock(int i, const LoadState& ls, double* K) const;
+  /// The element's mass matrix at q: the kernel's constantMass() when it has one, else mass(q) into buf.
+  const double* elementMass(const LocalElement& el, const double* q, std::vector<double>& buf) const;
   /// Dynamics output: while set (V, Qdd in the unknowns layout), fullResidual() adds the inertia
   /// M qdd (elements, nodal mass and mominertia; prescribed DOFs with their prescribed accelerations),
   /// so the reactions at supports and prescribed DOFs are the dynamic ones. nullptr: statics.
@@ -285,8 +279,6 @@ class Assembler {
   /// prescribed accelerations).
   void addElementInertia(const LocalElement& el, const double* q, const int* idx, const int* fidx, const double* a,
                          Target target, double* out, std::vector<double>& MeBuf) const;
-  /// The element's mass matrix at q: the kernel's constantMass() when it has one, else mass(q) into buf.
-  const double* elementMass(const LocalElement& el, const double* q, std::vector<double>& buf) const;
 
   /// -beam_mass lumped: the kernels' lumpedInertia into the nodes' mass and mominertia (once per mesh)
   PetscErrorCode addLumpedInertia();
@@ -350,38 +342,8 @@ class Assembler {
   std::vector<std::pair<int, size_t>> rigidInfo_;
   std::vector<double> rigidData_;
   void keepRigid(const LocalElement& el, const double* q, const double* f, const double* K, int n);
-  Vec xOp_ = nullptr, yOp_ = nullptr;  // ghosted work vectors of applyTangent and applyCorotated
-  /// y = the element-by-element product that body adds into ya from xa (local ghosted forms of x and
-  /// y; ghost contributions summed to their owners). Logged as SinewTangentOp.
-  PetscErrorCode elementProduct(Vec x, Vec y, const std::function<void(const double* xa, double* ya)>& body);
-  /// ya += K xa on node's two slope unknowns (K: 2 x 2, row-major).
-  static void addSlopeBlock(const LocalNode& node, const double* K, const double* xa, double* ya);
-  // corotated Newton matrix (keepCorotatedBlocks)
-  bool keepCorotated_ = false, corotatedValid_ = false;
-  std::vector<double> corotatedBlocks_, corotatedDir_;  ///< 8 x 8 block and mean-slope direction (unit 2-vector) per element
-  double corotatedShiftA_ = 0;
-  /// Keeps element e's dynamic block K (8 x 8) and its mean-slope direction from the ANCF state q (dynamicJacobian).
-  void keepCorotated(size_t e, const LocalElement& el, const double* q, const double* K);
-  /// cos and sin of element e's turn since its block was kept: d0 . d and d0 x d of its mean-slope
-  /// directions (node states of the last computeStates).
-  void turnSinceKept(size_t e, double* c, double* s) const;
-  /// COO pattern of corotatedJacobian on J (once per matrix): element blocks, then per owned ANCF node
-  /// its two translation diagonals (nodal mass) and its 2 x 2 slope block (slope torque).
-  PetscErrorCode prepareCorotatedCOO(Mat J);
-  /// J = the kept blocks (each rotated by corotationCS_ with rotate) plus the node terms
-  /// corotatedNodeTerms_, through the COO pattern of prepareCorotatedCOO.
-  PetscErrorCode setCorotatedValues(Mat J, bool rotate);
-  bool corotatedCOO_ = false;  ///< keepCorotatedBlocks(true) on a model of ANCF cables only
-  std::vector<PetscScalar> corotatedValues_;
-  std::vector<double> corotationCS_;       ///< per element cos, sin of the turn the current Newton matrix applies to its kept block
-  std::vector<double> corotatedNodeTerms_;  ///< per owned node: nodal mass term (2), slope torque block (4)
-  std::vector<double> nodeDir0_;  ///< per owned node: unit slope direction when the Newton matrix was built
-  std::vector<double> nodeCS_;    ///< per owned node: cos, sin of its slope's turn since then (turnToIterate)
-  /// Records the owned nodes' slope directions of the current states (a Newton matrix was built).
-  void keepNodeDirections();
-  /// Node terms of the Newton matrix (nodal masses with shiftA, slope torques at the current states).
-  void keepCorotatedNodeTerms(const LoadState& ls, double shiftA);
-  bool slopeTorqueBlock(int i, const LoadState& ls, double* K) const;
+  Vec xOp_ = nullptr, yOp_ = nullptr;  // ghosted work vectors of elementProduct
+  NewtonBlockSink* sink_ = nullptr;  ///< setNewtonBlockSink
   std::vector<std::pair<int, SetPressure>> pressureElems_;  // local element index, pressure
   bool anyPressure_ = false;
   std::vector<int> cableElems_;  // local elements with a tension-only kernel (cables)
@@ -396,7 +358,7 @@ struct SinewEvents {
   PetscLogEvent tangentOperator;   ///< Assembler::applyTangent (element-wise products with the tangent)
   PetscLogEvent cooSetup;          ///< one-time COO pattern of a matrix (inside SinewJacobian)
   PetscLogEvent coarseSpace;       ///< set-up of the cable coarse space (fine LU + coarse matrix)
-  PetscLogEvent corotatedJacobian; ///< Assembler::corotatedJacobian (kept blocks rotated, assembled)
+  PetscLogEvent corotatedJacobian; ///< CorotatedNewtonMatrix::assemble (kept blocks rotated, assembled)
   static const SinewEvents& get();
 };
 

@@ -198,22 +198,17 @@ PetscErrorCode Assembler::dynamicJacobian(Vec U, Vec V, const LoadState& ls, dou
   PetscCall(VecGhostGetLocalForm(uWork_, &ul));
   PetscCall(VecGetArrayRead(ul, &u));
   computeStates(u, ls);
-  // ANCF cables only: every block is kept (corotatedJacobian) and the matrix set from the kept blocks
+  // ANCF cables only: every block is kept (CorotatedNewtonMatrix) and the matrix set from the kept blocks
   // in one COO call (A1g, 2 ranks: 56 ms against 108 ms with MatSetValuesLocal per block at 65536
   // elements, 3.6 ms against 6.6 ms at 4096; the COO pattern is set up once per matrix)
-  const bool coo = corotatedCOO_;
+  const bool coo = sink_ && sink_->setsMatrix();
   if (!coo) PetscCall(MatZeroEntries(J));
   std::array<double, 48> q;
   std::array<int, kMaxElementRows> idx;
   std::array<double, kMaxElementRows> qdot;
   std::vector<double> MeBuf;
   std::array<double, 6> sigmaMixed;
-  if (keepCorotated_) {
-    corotatedBlocks_.resize(64 * mesh_.elements.size());
-    corotatedDir_.resize(2 * mesh_.elements.size());
-    corotatedShiftA_ = shiftA;
-    corotatedValid_ = true;
-  }
+  if (sink_) sink_->start(shiftA);
   vLocal_ = v;
   for (const LocalElement& el : mesh_.elements) {
     gatherElement(el, q.data(), u, idx.data(), nullptr);
@@ -236,7 +231,7 @@ PetscErrorCode Assembler::dynamicJacobian(Vec U, Vec V, const LoadState& ls, dou
       for (int r = 0; r < nd; ++r)
         for (int c = 0; c < nd; ++c) out_.K[static_cast<size_t>(r) * n + c] += shiftA * Me[static_cast<size_t>(r) * nd + c];
     }
-    if (keepCorotated_) keepCorotated(static_cast<size_t>(&el - mesh_.elements.data()), el, q.data(), out_.K.data());
+    if (sink_) sink_->element(static_cast<size_t>(&el - mesh_.elements.data()), el, q.data(), out_.K.data());
     if (!coo) PetscCall(MatSetValuesLocal(J, n, idx.data(), n, idx.data(), out_.K.data(), ADD_VALUES));
   }
   vLocal_ = nullptr;
@@ -270,17 +265,12 @@ PetscErrorCode Assembler::dynamicJacobian(Vec U, Vec V, const LoadState& ls, dou
     PetscCall(MatSetValuesLocal(J, 3, rows, 3, rows, B.data(), ADD_VALUES));
   }
   if (!coo) PetscCall(addSlopeTorqueTangent(ls, J));
-  if (keepCorotated_) {
-    keepCorotatedNodeTerms(ls, shiftA);
-    corotationCS_.assign(2 * mesh_.elements.size(), 0.0);
-    for (size_t e = 0; e < mesh_.elements.size(); ++e) corotationCS_[2 * e] = 1.0;
-    keepNodeDirections();
-  }
+  if (sink_) sink_->nodeTerms(ls);
   PetscCall(VecRestoreArrayRead(ul, &u));
   PetscCall(VecGhostRestoreLocalForm(uWork_, &ul));
   PetscCall(restoreLocalRead(V, &vl, &v));
   if (coo) {
-    PetscCall(setCorotatedValues(J, false));
+    PetscCall(sink_->setMatrix(J));
   } else {
     PetscCall(MatAssemblyBegin(J, MAT_FINAL_ASSEMBLY));
     PetscCall(MatAssemblyEnd(J, MAT_FINAL_ASSEMBLY));

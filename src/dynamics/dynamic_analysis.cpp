@@ -60,7 +60,7 @@ DynamicAnalysis::DynamicAnalysis(Assembler& assembler, const DynamicsOptions& op
   modifiedNewton_ = mode == AutoSwitch::On || (mode == AutoSwitch::Auto && asm_.mesh().numGlobalUnknowns >= 200);
   chain_ = ancfChain(asm_.mesh());
   corotated_ = settings.corotatedJacobian && modifiedNewton_ && scheme == Scheme::ArnoldBruls && chain_;
-  asm_.keepCorotatedBlocks(corotated_);
+  if (corotated_) corotatedMatrix_ = std::make_unique<CorotatedNewtonMatrix>(asm_);
   // refined step solves (setRefinements): once (true), never (false), or auto: added while Newton's
   // updates on an unchanged matrix contract by less than kRefineContraction (the LU's accuracy in the
   // smooth modes limits Newton: A1g at 65536 elements 7.5e-3; at 4096 1e-5..1e-4, where a refinement

@@ -20,12 +20,14 @@
 #include <petscts.h>
 
 #include <functional>
+#include <memory>
 #include <string>
 
 #include "assembly/assembler.hpp"
 #include "dynamics/damping.hpp"
 #include "settings/settings.hpp"
 #include "sinew/model.hpp"
+#include "solvers/ancf/corotated_newton_matrix.hpp"
 #include "solvers/newton_test.hpp"
 
 namespace sinew {
@@ -160,7 +162,7 @@ class DynamicAnalysis {
   LoadState ls_;
   SNES snes_ = nullptr;
   Mat J_ = nullptr;
-  Mat Jop_ = nullptr;  ///< refined step solves: the Newton matrix applied element by element (Assembler::applyCorotated)
+  Mat Jop_ = nullptr;  ///< refined step solves: the Newton matrix applied element by element (CorotatedNewtonMatrix::apply)
   bool refineAuto_ = false;  ///< -dynamics_refine auto: refinements added from the first slow contraction on
   static constexpr double kRefineContraction = 1e-3;
   static constexpr int kMaxRefinements = 3;
@@ -216,8 +218,9 @@ class DynamicAnalysis {
   bool jacobianValid_ = false;
   /// -dynamics_corotated_jacobian (ANCF cables under modified Newton): a kept Jacobian that stops
   /// contracting is first rebuilt from its element blocks rotated with the elements
-  /// (Assembler::corotatedJacobian); a fresh one only when that does not help either.
+  /// (CorotatedNewtonMatrix::assemble); a fresh one only when that does not help either.
   bool corotated_ = false;
+  std::unique_ptr<CorotatedNewtonMatrix> corotatedMatrix_;  ///< the kept blocks (corotated_ only)
   bool chain_ = false;  ///< ancfChain(mesh): an ANCF cable model (its LU: useChainLU)
   bool lastCorotated_ = false;  ///< the current Newton matrix is a corotated rebuild
   double staleTurn_ = HUGE_VAL;  ///< smallest element turn (rad) at which a kept Newton matrix stalled

@@ -25,7 +25,7 @@ PetscErrorCode DynamicAnalysis::useDynamicsSolver(KSP ksp) {
   PetscFunctionBeginUser;
   if (nodeRotation_ != NodeRotation::Off) {
     PetscCall(KSPSetType(ksp, KSPPREONLY));
-    PetscCall(useNodeRotatedPC(ksp, asm_, &rotating_, &ksp));
+    PetscCall(useNodeRotatedPC(ksp, *corotatedMatrix_, &rotating_, &ksp));
   }
   PetscCall(useDirectSolver(ksp));
   const DistributedMesh& mesh = asm_.mesh();
@@ -111,8 +111,8 @@ PetscErrorCode DynamicAnalysis::formJacobian(SNES snes, Vec U, Mat, Mat P, void*
     bool turned = false;
     double turn = 0.0;
     if (self->corotated_ && !self->rotating_ && self->jacobianValid_ && sameH && !self->lastCorotated_ &&
-        self->asm_.corotatedBlocksValid() && (it >= 2 ? slow : it == 1 && !slow && self->staleTurn_ < HUGE_VAL)) {
-      PetscCall(self->asm_.corotationTurn(U, self->ls_, &turn));
+        self->corotatedMatrix_->valid() && (it >= 2 ? slow : it == 1 && !slow && self->staleTurn_ < HUGE_VAL)) {
+      PetscCall(self->corotatedMatrix_->turn(U, self->ls_, &turn));
       const bool first = self->staleTurn_ == HUGE_VAL;
       if (it >= 2) self->staleTurn_ = std::min(self->staleTurn_, turn);
       turned = it == 1 && turn > 0.5 * self->staleTurn_;
@@ -124,16 +124,16 @@ PetscErrorCode DynamicAnalysis::formJacobian(SNES snes, Vec U, Mat, Mat P, void*
     if (self->jacobianValid_ && sameH && !slow && !turned && self->reuseCount_ < kMaxReuse) {
       ++self->reuseCount_;
       self->lastCorotated_ = false;
-      if (self->rotating_) PetscCall(self->asm_.turnToIterate(U, self->ls_));
+      if (self->rotating_) PetscCall(self->corotatedMatrix_->turnToIterate(U, self->ls_));
       PetscFunctionReturn(PETSC_SUCCESS);
     }
     // a fine cable's kept Jacobian goes stale mainly by the rotation of its elements: rebuild it
     // from the kept blocks turned with their elements (A1g, 65536 elements, 20 steps of 1e-3 s: 1
     // Jacobian and 18 rebuilds against 31 Jacobians); a fresh one when the last rebuild did not help
     if (self->corotated_ && (slow || turned) && self->jacobianValid_ && sameH && !self->lastCorotated_ &&
-        self->asm_.corotatedBlocksValid()) {
+        self->corotatedMatrix_->valid()) {
       self->matrixIt_ = it;
-      PetscCall(self->asm_.corotatedJacobian(U, self->ls_, P));
+      PetscCall(self->corotatedMatrix_->assemble(U, self->ls_, P));
       PetscCall(self->damping_.addJacobian(shiftV, P));
       ++self->report_.jacobians;
       ++self->report_.corotatedJacobians;
@@ -201,7 +201,7 @@ PetscErrorCode DynamicAnalysis::applyNewtonMatrix(Mat A, Vec x, Vec y) {
   DynamicAnalysis* self = nullptr;
   PetscCall(MatShellGetContext(A, &self));
   ++self->report_.refinedSolves;  // one product per refinement of a solve
-  PetscCall(self->asm_.applyCorotated(x, y));
+  PetscCall(self->corotatedMatrix_->apply(x, y));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

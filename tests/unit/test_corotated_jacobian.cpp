@@ -1,4 +1,4 @@
-// Assembler::corotatedJacobian (the Newton matrix of fine ANCF cables rebuilt from kept element
+// CorotatedNewtonMatrix (solvers/ancf/corotated_newton_matrix.hpp: the Newton matrix of fine ANCF cables rebuilt from kept element
 // blocks turned with their elements) on the ranks it is started with (ctest: 1 and 2). Exit status 0
 // only when every check passed.
 //  (1) A free, bent and stretched ANCF cable (nodal mass and a slope torque included) turned rigidly
@@ -24,6 +24,7 @@
 #include "mesh/distributed_mesh.hpp"
 #include "mesh/fe_mesh.hpp"
 #include "scene/scene_reader.hpp"
+#include "solvers/ancf/corotated_newton_matrix.hpp"
 #include "solvers/cut_corrected_lu.hpp"
 
 namespace {
@@ -113,7 +114,7 @@ PetscErrorCode check() {
     *d = nt / nr;
     PetscFunctionReturn(PETSC_SUCCESS);
   };
-  a.keepCorotatedBlocks(true);
+  sinew::CorotatedNewtonMatrix cm(a);
   Vec xr, wr, yr, y0, y1r;  // node rotation: R J0 R^T xr against J1 xr
   PetscCall(VecDuplicate(U0, &xr));
   for (Vec* v : {&wr, &yr, &y0, &y1r}) PetscCall(VecDuplicate(U0, v));
@@ -122,26 +123,26 @@ PetscErrorCode check() {
   PetscCall(VecAssemblyEnd(xr));
   for (double extra : {0.0, 1e-4}) {
     PetscCall(a.dynamicJacobian(U0, V, ls, shiftV, shiftA, J0));
-    expect(a.corotatedBlocksValid(), "blocks kept for every element (1 = yes)", a.corotatedBlocksValid() ? 1.0 : 0.0);
+    expect(cm.valid(), "blocks kept for every element (1 = yes)", cm.valid() ? 1.0 : 0.0);
     PetscCall(turned(a, mesh, U0, 0.7, extra, U1));
     // (1b) the kept matrix turned with the nodes (useNodeRotatedPC): R J0 R^T, R from the node turns
     // since J0 was built; exact for a rigid turn as the rebuilt one
-    PetscCall(a.turnToIterate(U1, ls));
+    PetscCall(cm.turnToIterate(U1, ls));
     {
       const PetscScalar* xa;
       PetscScalar* wa;
       PetscCall(VecGetArrayRead(xr, &xa));
       PetscCall(VecGetArray(wr, &wa));
-      a.rotateNodes(xa, wa, true);
+      cm.rotateNodes(xa, wa, true);
       PetscCall(VecRestoreArray(wr, &wa));
       PetscCall(VecRestoreArrayRead(xr, &xa));
       PetscCall(MatMult(J0, wr, yr));
       PetscCall(VecGetArray(yr, &wa));
-      a.rotateNodes(wa, wa, false);
+      cm.rotateNodes(wa, wa, false);
       PetscCall(VecRestoreArray(yr, &wa));
       PetscCall(MatMult(J0, xr, y0));
     }
-    PetscCall(a.corotatedJacobian(U1, ls, Jc));
+    PetscCall(cm.assemble(U1, ls, Jc));
     PetscCall(a.dynamicJacobian(U1, V, ls, shiftV, shiftA, J1));
     double dc = 0, d0 = 0, dn = 0, dk = 0;
     PetscCall(relDiff(Jc, J1, &dc));
@@ -171,14 +172,14 @@ PetscErrorCode check() {
   PetscCall(VecAssemblyBegin(x));
   PetscCall(VecAssemblyEnd(x));
   double dop = 0;
-  PetscCall(a.corotatedJacobian(U1, ls, Jc));
+  PetscCall(cm.assemble(U1, ls, Jc));
   PetscCall(MatMult(Jc, x, y1));
-  PetscCall(a.applyCorotated(x, y2));
+  PetscCall(cm.apply(x, y2));
   PetscCall(relVec(y2, y1, &dop));
   expect(dop < 1e-13, "rebuilt matrix: |element-wise product - assembled| / |assembled|", dop);
   PetscCall(a.dynamicJacobian(U1, V, ls, shiftV, shiftA, J1));
   PetscCall(MatMult(J1, x, y1));
-  PetscCall(a.applyCorotated(x, y2));
+  PetscCall(cm.apply(x, y2));
   PetscCall(relVec(y2, y1, &dop));
   expect(dop < 1e-13, "fresh matrix: |element-wise product - assembled| / |assembled|", dop);
   // (4) the cut-corrected LU solves J1 exactly (relative residual), block Jacobi alone does not

@@ -10,7 +10,7 @@ namespace {
 struct NodeRotatedPC {
   KSP inner = nullptr;  ///< holds B^-1 (its PC), set up with B
   PC pc = nullptr;      ///< inner's PC
-  const Assembler* assembler = nullptr;
+  const CorotatedNewtonMatrix* turns = nullptr;
   const bool* active = nullptr;
   Vec w = nullptr;  ///< R^T x
 };
@@ -62,7 +62,7 @@ PetscErrorCode rotatedSetFromOptions(PC pc, PetscOptionItems*) {
 PetscErrorCode rotatedSetUp(PC pc) {
   PetscFunctionBeginUser;
   NodeRotatedPC* ctx = data(pc);
-  if (!ctx->assembler || !ctx->active)
+  if (!ctx->turns || !ctx->active)
     SETERRQ(PetscObjectComm(reinterpret_cast<PetscObject>(pc)), PETSC_ERR_ARG_WRONGSTATE,
             "PC noderotated: no node turns given (useNodeRotatedPC)");
   KSP inner = nullptr;
@@ -87,12 +87,12 @@ PetscErrorCode rotatedApply(PC pc, Vec x, Vec y) {
   PetscScalar* a;
   PetscCall(VecGetArrayRead(x, &xa));
   PetscCall(VecGetArray(ctx->w, &a));
-  ctx->assembler->rotateNodes(xa, a, true);
+  ctx->turns->rotateNodes(xa, a, true);
   PetscCall(VecRestoreArray(ctx->w, &a));
   PetscCall(VecRestoreArrayRead(x, &xa));
   PetscCall(PCApply(ctx->pc, ctx->w, y));
   PetscCall(VecGetArray(y, &a));
-  ctx->assembler->rotateNodes(a, a, false);
+  ctx->turns->rotateNodes(a, a, false);
   PetscCall(VecRestoreArray(y, &a));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -131,14 +131,14 @@ PetscErrorCode registerNodeRotatedPC() {
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode useNodeRotatedPC(KSP ksp, const Assembler& assembler, const bool* active, KSP* inner) {
+PetscErrorCode useNodeRotatedPC(KSP ksp, const CorotatedNewtonMatrix& turns, const bool* active, KSP* inner) {
   PetscFunctionBeginUser;
   PetscCall(registerNodeRotatedPC());
   PC pc;
   PetscCall(KSPGetPC(ksp, &pc));
   PetscCall(PCSetType(pc, PCNODEROTATED));
   NodeRotatedPC* ctx = data(pc);
-  ctx->assembler = &assembler;
+  ctx->turns = &turns;
   ctx->active = active;
   PetscCall(innerKSP(pc, inner));
   PetscFunctionReturn(PETSC_SUCCESS);

@@ -231,9 +231,10 @@ void parseLook(const YAML::Node& n, const std::string& path, ElementSet& s) {
     // SPACAR Light's forms: [r, g, b] in 0..1, or 0..255 when any value is > 1; a name or a 1-based
     // index of the seed's colour table
     static const std::vector<std::string> names = {"blue", "grey", "darkblue", "darkgrey", "green", "darkgreen"};
+    // (the seed's darkblue is (0, 124, 176)/255 and its grey 198/255)
     static const std::array<std::array<double, 3>, 6> table = {{{0.0, 0.447, 0.741},
-                                                                 {0.7, 0.7, 0.7},
-                                                                 {0.0, 0.2, 0.5},
+                                                                 {198 / 255.0, 198 / 255.0, 198 / 255.0},
+                                                                 {0.0, 124 / 255.0, 176 / 255.0},
                                                                  {0.4, 0.4, 0.4},
                                                                  {0.466, 0.674, 0.188},
                                                                  {0.1, 0.4, 0.1}}};

@@ -374,9 +374,10 @@ void parseFormfinding(const YAML::Node& ff, SceneContext& ctx) {
     if (f.lambda_max <= 1.0 && !(f.distortion_max > 1.0))
       fail(p("lambda_max"), "expected a stretch bound > 1 for stress_adaption, got " + fmt(f.lambda_max) +
                                 " (lambda_max <= 1 adapts nothing; lambda_max: 1 is meant to go with distortion_max > 1)");
+    // CARAT++ accepts mue_relax in [0, 1]; 1 keeps the prestress unchanged (no adaption): run, and say so
     if (f.mue_relax >= 1.0 && f.lambda_max > 1.0 && !(f.distortion_max > 1.0))
-      fail(p("mue_relax"), "expected a relaxation in [0, 1) for stress_adaption, got " + fmt(f.mue_relax) +
-                               " (mue_relax = 1 keeps the prestress unchanged: no adaption)");
+      m.warnings.push_back(p("mue_relax") + " = 1 keeps the prestress unchanged: stress_adaption adapts nothing (CARAT++ "
+                           "allows it; give mue_relax < 1 to adapt the prestress, 0 to adapt it fully)");
   }
   m.formfinding = f;
 }

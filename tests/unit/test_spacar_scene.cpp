@@ -99,6 +99,9 @@ TEST(SpacarScene, VisualizationVocabulary) {
   EXPECT_EQ(color("darkgreen"), color("6"));
   EXPECT_EQ(color("blue"), color("[1]"));
   EXPECT_NE(color("grey"), color("darkgrey"));
+  // the seed's colour table (issue 24 item 15): darkblue (0, 124, 176)/255, grey 198/255
+  EXPECT_EQ(color("darkblue"), color("[0, 124, 176]"));
+  EXPECT_EQ(color("grey"), color("[198, 198, 198]"));
   EXPECT_EQ(parseError(beam("1: {fix: true}", "flex: [], color: purple")).path(), "eprops[0].color");
   EXPECT_EQ(parseError(beam("1: {fix: true}", "flex: [], color: 7")).path(), "eprops[0].color");
   const Model m = parse(beam("1: {fix: true}", "flex: [1, 2], emod: 1e9, smod: 4e8, cshape: rect, dim: [0.01, 0.001], "

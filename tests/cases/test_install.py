@@ -2,7 +2,9 @@
 binary (2 ranks) on an installed example scene whose mesh path is relative (runs/sail.yaml reads
 ../meshes/sail.msh) and an installed script on its result.
 Checks: bin/sinew, share/sinew/scripts/*.py (executable), share/sinew/runs, share/sinew/meshes,
-share/doc/sinew (README.md, docs); the installed run converges from another working directory."""
+share/doc/sinew (README.md, docs); the installed run converges from another working directory; the
+Python package in lib/python3/dist-packages reads the result and runs a scene with the installed
+binary (issue 25)."""
 import os
 import shutil
 import subprocess
@@ -45,6 +47,19 @@ try:
                  f"installed plot_results.py draws the result: {q.stderr[-1000:]}")
         st.check("deformed (blue) and found shape (grey)" in q.stdout,
                  "after form finding the wind load deforms the found shape (the reference drawn in grey)")
+        # the installed Python package finds the installed binary (no SINEW_BIN) and reads the result
+        site = os.path.join(prefix, "lib", "python3", "dist-packages")
+        st.check(os.path.exists(os.path.join(site, "sinew", "__init__.py")), "lib/python3/dist-packages/sinew installed")
+        env = {k: v for k, v in st.ENV.items() if k != "SINEW_BIN"}
+        env["PYTHONPATH"] = site
+        code = ("import sinew; out = sinew.load(%r); print(out.ns, len(out.node)); "
+                "sim = sinew.Scene.from_yaml(%r); sim.opt['loadsteps'] = 2; print(sim.run().ns)") % (
+            out, os.path.join(share, "runs", "crosshinge.yaml"))
+        q = subprocess.run(["/usr/bin/python3", "-c", code], cwd=work, env=env, capture_output=True, text=True, timeout=300)
+        print("    python: " + q.stdout.strip().replace("\n", "; "))
+        st.check(q.returncode == 0 and q.stdout.split()[-1:] == ["2"],
+                 f"installed Python package: load a result, run a scene with the installed binary: {q.stderr[-1500:]}")
+        st.check(os.access(os.path.join(share, "scripts", "spacar2sinew.py"), os.X_OK), "spacar2sinew.py installed")
     shutil.rmtree(work, ignore_errors=True)
 finally:
     shutil.rmtree(prefix, ignore_errors=True)

@@ -1,0 +1,106 @@
+"""SPACAR Light's `out` structure from a Sinew result file (HDF5), as numpy arrays.
+
+    out = sinew.load("out/crosshinge.h5")
+    out.node[5].p          # (ns, 3) positions of node 5 (1-based, as in the scene and SPACAR Light)
+    out.node[5].CMglob     # (ns, 6, 6) compliance in global axes, when computed
+    out.freq               # (ns, k) natural frequencies in Hz; out.buck (ns, k) buckling multipliers
+    out.step[2].node[5].p  # SPACAR Light's per-step view: (3,) position at load step 2
+    out.ndof, out.converged, out.load_factor (or out.time)
+
+Every dataset of the file is also reachable as out.data["node/p"] (a numpy array)."""
+import h5py
+import numpy as np
+
+# per-node datasets (/node/<name>, [ns, nn, ...]) and SPACAR Light's names for them
+NODE_FIELDS = ("p", "r_eulzyx", "r_axang", "r_quat", "Freac", "Mreac", "CMglob", "CMloc", "slope")
+
+
+class Node:
+    """One node's results over the steps: p (ns, 3), r_eulzyx (ns, 3), r_axang (ns, 4),
+    r_quat (ns, 4), Freac, Mreac (ns, 3), CMglob, CMloc (ns, 6, 6), slope (ns, 2) where present."""
+
+    def __init__(self, fields, number):
+        self.number = number
+        for name, value in fields.items():
+            setattr(self, name, value)
+
+    def __repr__(self):
+        return f"<node {self.number}: {', '.join(k for k in vars(self) if k != 'number')}>"
+
+
+class OneBased:
+    """A list indexed from 1 (SPACAR Light's node and step numbers)."""
+
+    def __init__(self, items, what):
+        self._items, self._what = items, what
+
+    def __getitem__(self, i):
+        if not isinstance(i, (int, np.integer)) or not 1 <= i <= len(self._items):
+            raise IndexError(f"{self._what} {i}: expected 1..{len(self._items)}")
+        return self._items[i - 1]
+
+    def __len__(self):
+        return len(self._items)
+
+    def __iter__(self):
+        return iter(self._items)
+
+
+class Step:
+    """SPACAR Light's out.step(k): node results of one step (node[i].p has shape (3,))."""
+
+    def __init__(self, out, k):
+        self.number = k
+        self.node = OneBased([Node({n: getattr(nd, n)[k - 1] for n in vars(nd) if n != "number"}, nd.number)
+                              for nd in out.node], "node")
+        for name in ("freq", "buck", "stressmax", "load_factor", "time"):
+            table = getattr(out, name, None)
+            if table is not None:
+                setattr(self, name, table[k - 1])
+
+
+class Results:
+    """SPACAR Light's `out`: node results, frequencies, buckling multipliers, stresses, state space,
+    sensors and the step values of a Sinew run (see load())."""
+
+    def __init__(self, data, attrs):
+        self.data = data
+        self.attrs = attrs
+        self.converged = bool(attrs.get("converged", 0))
+        self.ndof = int(attrs["ndof"]) if "ndof" in attrs else None
+        self.scene = attrs.get("scene", "")
+        self.load_factor = data.get("load_factor")
+        self.time = data.get("time")
+        for name in ("freq", "buck", "stressmax"):
+            setattr(self, name, data.get(name))
+        nn = data["node/p"].shape[1] if "node/p" in data else 0
+        self.node = OneBased([Node({f: data[f"node/{f}"][:, i] for f in NODE_FIELDS if f"node/{f}" in data}, i + 1)
+                              for i in range(nn)], "node")
+        ns = data["node/p"].shape[0] if "node/p" in data else 0
+        self.step = OneBased([Step(self, k) for k in range(1, ns + 1)], "step")
+        self.statespace = {k[len("statespace/"):]: v for k, v in data.items() if k.startswith("statespace/")} or None
+        self.sensors = {k[len("sensors/"):]: v for k, v in data.items() if k.startswith("sensors/")} or None
+
+    @property
+    def ns(self):
+        """Number of written steps (rows)."""
+        return len(self.step)
+
+    def __repr__(self):
+        have = [n for n in ("freq", "buck", "stressmax", "statespace", "sensors") if getattr(self, n) is not None]
+        return (f"<Sinew results: {self.ns} steps, {len(self.node)} nodes, ndof {self.ndof}, "
+                f"converged {self.converged}; {', '.join(have) or 'no step analyses'}>")
+
+
+def load(path):
+    """Reads a Sinew result file (from the command line or Scene.run) into a Results object."""
+    data, attrs = {}, {}
+    with h5py.File(path, "r") as f:
+        for k, v in f.attrs.items():
+            attrs[k] = v.decode("utf-8", "replace") if isinstance(v, bytes) else (v.item() if hasattr(v, "item") else v)
+
+        def visit(name, obj):
+            if isinstance(obj, h5py.Dataset) and not name.startswith("checkpoint"):
+                data[name] = obj[()]
+        f.visititems(visit)
+    return Results(data, attrs)

@@ -351,14 +351,9 @@ PetscErrorCode Assembler::agreeElementValues() {
 
 PetscErrorCode Assembler::updateStates(Vec U, const LoadState& ls) {
   PetscFunctionBeginUser;
-  PetscCall(loadLocal(U, uWork_));
-  Vec ul;
-  const PetscScalar* u;
-  PetscCall(VecGhostGetLocalForm(uWork_, &ul));
-  PetscCall(VecGetArrayRead(ul, &u));
-  computeStates(u, ls);
-  PetscCall(VecRestoreArrayRead(ul, &u));
-  PetscCall(VecGhostRestoreLocalForm(uWork_, &ul));
+  const double* u = nullptr;
+  PetscCall(beginLocal(U, ls, &u));
+  PetscCall(endLocal(&u));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -386,12 +381,8 @@ PetscErrorCode Assembler::elementStress(Vec U, const LoadState& ls, std::vector<
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(SinewEvents::get().stress, 0, 0, 0, 0));
   ++counters_.stressRecoveries;
-  PetscCall(loadLocal(U, uWork_));
-  Vec ul;
-  const PetscScalar* u;
-  PetscCall(VecGhostGetLocalForm(uWork_, &ul));
-  PetscCall(VecGetArrayRead(ul, &u));
-  computeStates(u, ls);
+  const double* u = nullptr;
+  PetscCall(beginLocal(U, ls, &u));
   std::array<double, 48> q;
   std::array<int, kMaxElementRows> idx;
   stress.resize(mesh_.elements.size());
@@ -400,8 +391,7 @@ PetscErrorCode Assembler::elementStress(Vec U, const LoadState& ls, std::vector<
     gatherElement(el, q.data(), u, idx.data(), nullptr);
     stress[e] = el.kernel->vonMisesMax(q.data(), el.firstMultiplier >= 0 ? u + el.firstMultiplier : nullptr);
   }
-  PetscCall(VecRestoreArrayRead(ul, &u));
-  PetscCall(VecGhostRestoreLocalForm(uWork_, &ul));
+  PetscCall(endLocal(&u));
   PetscCall(PetscLogEventEnd(SinewEvents::get().stress, 0, 0, 0, 0));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -91,21 +91,17 @@ PetscErrorCode Assembler::assembleForces(const double* u, const LoadState& ls, T
 PetscErrorCode Assembler::forceVector(Vec U, const LoadState& ls, Vec work, Vec out,
                                       const std::function<PetscErrorCode(const double* u, double* f)>& add) {
   PetscFunctionBeginUser;
-  PetscCall(loadLocal(U, uWork_));
-  Vec ul, fl;
-  const PetscScalar* u;
+  const double* u = nullptr;
+  PetscCall(beginLocal(U, ls, &u));
+  Vec fl;
   PetscScalar* f;
-  PetscCall(VecGhostGetLocalForm(uWork_, &ul));
   PetscCall(VecGhostGetLocalForm(work, &fl));
-  PetscCall(VecGetArrayRead(ul, &u));
   PetscCall(VecSet(fl, 0.0));
   PetscCall(VecGetArray(fl, &f));
-  computeStates(u, ls);
   const PetscErrorCode ierr = add(u, f);
   PetscCall(VecRestoreArray(fl, &f));
-  PetscCall(VecRestoreArrayRead(ul, &u));
   PetscCall(VecGhostRestoreLocalForm(work, &fl));
-  PetscCall(VecGhostRestoreLocalForm(uWork_, &ul));
+  PetscCall(endLocal(&u));
   PetscCall(ierr);
   PetscCall(ghostUpdate(work, ADD_VALUES, SCATTER_REVERSE));
   PetscCall(VecCopy(work, out));

@@ -13,12 +13,8 @@ PetscErrorCode Assembler::jacobian(Vec U, const LoadState& ls, Mat J) {
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(SinewEvents::get().jacobian, 0, 0, 0, 0));
   ++counters_.jacobians;
-  PetscCall(loadLocal(U, uWork_));
-  Vec ul;
-  const PetscScalar* u;
-  PetscCall(VecGhostGetLocalForm(uWork_, &ul));
-  PetscCall(VecGetArrayRead(ul, &u));
-  computeStates(u, ls);
+  const double* u = nullptr;
+  PetscCall(beginLocal(U, ls, &u));
   const bool coo = J && cooApplies();
   if (coo) PetscCall(prepareCOO(J));
   else if (J) PetscCall(MatZeroEntries(J));
@@ -63,8 +59,7 @@ PetscErrorCode Assembler::jacobian(Vec U, const LoadState& ls, Mat J) {
     PetscCall(addSlopeTorqueTangent(ls, J));
     if (J) PetscCall(addLoadTangents(ls, J));
   }
-  PetscCall(VecRestoreArrayRead(ul, &u));
-  PetscCall(VecGhostRestoreLocalForm(uWork_, &ul));
+  PetscCall(endLocal(&u));
   if (J && !coo) {
     PetscCall(MatAssemblyBegin(J, MAT_FINAL_ASSEMBLY));
     PetscCall(MatAssemblyEnd(J, MAT_FINAL_ASSEMBLY));
@@ -109,12 +104,8 @@ PetscErrorCode Assembler::splitTangent(Vec U, const LoadState& ls, Mat Km, Mat K
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(SinewEvents::get().splitTangent, 0, 0, 0, 0));
   ++counters_.splitTangents;
-  PetscCall(loadLocal(U, uWork_));
-  Vec ul;
-  const PetscScalar* u;
-  PetscCall(VecGhostGetLocalForm(uWork_, &ul));
-  PetscCall(VecGetArrayRead(ul, &u));
-  computeStates(u, ls);
+  const double* u = nullptr;
+  PetscCall(beginLocal(U, ls, &u));
   PetscCall(MatZeroEntries(Km));
   PetscCall(MatZeroEntries(Kg));
   std::array<double, 48> q;
@@ -133,8 +124,7 @@ PetscErrorCode Assembler::splitTangent(Vec U, const LoadState& ls, Mat Km, Mat K
     PetscCall(MatSetValuesLocal(Km, n, idx.data(), n, idx.data(), out_.K.data(), ADD_VALUES));
     PetscCall(MatSetValuesLocal(Kg, n, idx.data(), n, idx.data(), out_.Kg.data(), ADD_VALUES));
   }
-  PetscCall(VecRestoreArrayRead(ul, &u));
-  PetscCall(VecGhostRestoreLocalForm(uWork_, &ul));
+  PetscCall(endLocal(&u));
   for (Mat A : {Km, Kg}) {
     PetscCall(MatAssemblyBegin(A, MAT_FINAL_ASSEMBLY));
     PetscCall(MatAssemblyEnd(A, MAT_FINAL_ASSEMBLY));

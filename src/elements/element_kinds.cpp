@@ -1,6 +1,7 @@
 #include "elements/element_kinds.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 #include "elements/ancf_cable2d.hpp"
@@ -35,16 +36,21 @@ std::vector<std::string> beamWarnings(const Model& model, std::size_t set) {
                 elementNumbers(s.elems, 5) +
                 ": cshape rect without orien (SPACAR Light requires it); the width dim[0] is taken along the global z "
                 "axis (global y for an element along z): give orien");
+  std::vector<int> shortElems;  // every element of the set with L/w < 3, and the smallest L/w
+  double smallest = HUGE_VAL;
   for (int e : s.elems) {
     const auto& en = model.elements[static_cast<std::size_t>(e)];
     const double L = norm(model.nodes[static_cast<std::size_t>(en[1])] - model.nodes[static_cast<std::size_t>(en[0])]);
     if (!beamNeedsWarpingWarning(b, L)) continue;
-    char text[200];
-    std::snprintf(text, sizeof text,
-                  "eprops[%zu] element %d: L/w = %.3g < 3 without cw; constrained warping stiffens torsion (set cw: true)",
-                  set, e + 1, L / b.dim[0]);
-    w.push_back(text);
-    break;
+    shortElems.push_back(e);
+    smallest = std::min(smallest, L / b.dim[0]);
+  }
+  if (!shortElems.empty()) {
+    char ratio[40];
+    std::snprintf(ratio, sizeof ratio, "%.3g", smallest);
+    w.push_back("eprops[" + std::to_string(set) + "] element" + (shortElems.size() > 1 ? "s " : " ") +
+                elementNumbers(shortElems, 5) + ": L/w " + (shortElems.size() > 1 ? "down to " : "= ") + ratio +
+                " < 3 without cw; constrained warping stiffens torsion (set cw: true)");
   }
   return w;
 }

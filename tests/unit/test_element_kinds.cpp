@@ -80,7 +80,8 @@ TEST(ElementKinds, BeamWarnings) {
   ASSERT_EQ(w.size(), 2u);
   EXPECT_EQ(w[0], "eprops[0] elements 1, 2: cshape rect without orien (SPACAR Light requires it); the width dim[0] is taken "
                   "along the global z axis (global y for an element along z): give orien");
-  EXPECT_EQ(w[1], "eprops[0] element 1: L/w = 2 < 3 without cw; constrained warping stiffens torsion (set cw: true)");
+  // every short element is named (issue 24 item 13), with the smallest ratio
+  EXPECT_EQ(w[1], "eprops[0] elements 1, 2: L/w down to 2 < 3 without cw; constrained warping stiffens torsion (set cw: true)");
   b.orien = Vec3{0, 0, 1};
   b.cw = true;
   m.eprops = {setOf(b, {0, 1})};

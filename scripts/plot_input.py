@@ -153,7 +153,7 @@ def draw(a, path, name=None):
             hidden.add(e)
             continue
         pts = mp[np.append(conn, conn[0]) if len(conn) > 2 else conn]
-        ax.plot(*proj(pts), color=st[:3], alpha=st[3], lw=1.5)
+        ax.plot(*proj(pts), color=st[:3], alpha=st[3], lw=3.0 if e in rigid and len(conn) == 2 else 1.5)  # rigid: bars
         centres.setdefault(e, ([], st))[0].append(mp[conn].mean(axis=0))
     hidden -= set(centres)
     if look:

@@ -5,6 +5,7 @@ mode shapes, and animations (PNG / animated GIF; matplotlib Agg and Pillow, no d
 usage: scripts/plot_results.py result.h5 [-o out.png] [--step K] [--mode N | --mode buck:N]
                                [--animate path | --animate mode:N | --animate buck:N]
                                [--scale auto|S] [--view auto|3d|xy|xz|yz] [--labels auto|on|off]
+                               [--stress n1|vonmises|off]
 
 - default: the deformed shape of step K (1-based like the run summary; default the last written
   step) over the undeformed one (/mesh/p0 when present, else /mesh/p - /mesh/u, /node/p0 without
@@ -14,12 +15,20 @@ usage: scripts/plot_results.py result.h5 [-o out.png] [--step K] [--mode N | --m
   --mode buck:N the buckling mode (/mesh/mode_buck_N) with its load multiplier (/buck);
 - --animate path: a GIF of the deformed shape over all written steps (the load path or the time
   history); --animate mode:N (or buck:N): a GIF of mode N oscillating about the shape of step K.
-Displacements are drawn true to scale when they are visible (at least 2 % of the model size);
+Displacements are drawn true to scale when they are visible (at least 2 % of the model size; for
+--animate path: the path's largest displacement at least 10 %, so that a shallow arch's snap shows);
 smaller ones, and mode shapes (normalized), are scaled to 10 % of the model size and the factor
 is in the title (--scale S sets it). Node numbers (scene numbering) are drawn up to 200 nodes.
+Stress colours (the deformed shape of a step and --animate path; one scale per quantity with its
+colour bar, fixed over a GIF): membranes (triangles, quads) are filled and coloured by the first
+principal stress resultant n1 of /cell/<kind>/membrane_n11, _n22, _n12 in N/m (--stress vonmises:
+the Von Mises resultant sqrt(n11^2 + n22^2 - n11 n22 + 3 n12^2); --stress off: none), cables by
+/cell/lines/axial_force in N; beams are blue, rigid elements (beams in no eprops set) wide bars in
+the seed's grey 198/255. Mode shapes have no stresses: drawn in the element colours.
 With SPACAR Light's element look in the scene (eprops color, opacity, hide: /mesh/<kind>_color,
-_opacity, _visible) the deformed shape is drawn in the element colours and opacities, and hidden
-elements are drawn in neither shape.
+_opacity, _visible) the deformed shape is drawn in the element colours (they win over stress
+colours) and opacities, and hidden elements are drawn in neither shape. A missing file or one that
+is not a result file is a one-line error (exit 1).
 Positions are in m (Sinew's scenes are SI). Prints the file written and its title; the PNG also
 carries the title in its metadata ("Title")."""
 import argparse

@@ -55,6 +55,7 @@ MODE_FRAMES = 24        # frames of one period of a mode animation
 
 BLUE = (0.0, 0.447, 0.741)     # the seed's blue, Sinew's default element colour
 RIGID_GREY = (198 / 255,) * 3  # the seed's grey: rigid elements (beams in no eprops set), docs/scene.md
+MIN_SPAN = 0.02                # narrowest colour scale, relative to its largest value
 SURFACE_ALPHA = 0.35           # membranes without stress colour: blue faces at this opacity
 MEASURES = {  # membrane stress measure of the resultants n11, n22, n12 (N/m) -> (name for the colour bar, formula)
     "n1": ("first principal resultant n1",
@@ -189,7 +190,8 @@ class Paint:
             v = v[np.isfinite(v)]
             if v.size:
                 lo, hi = float(v.min()), float(v.max())
-                pad = 0.0 if hi > lo else max(abs(hi) * 1e-3, 1e-12)
+                # a scale at least 2 % of the largest value wide: a uniform stress is one colour, not round-off
+                pad = max(0.0, 0.5 * (MIN_SPAN * max(abs(lo), abs(hi), 1e-300) - (hi - lo)))
                 self.scales[what] = (matplotlib.colors.Normalize(lo - pad, hi + pad),
                                      matplotlib.colormaps[cmap], label, lo, hi)
 

@@ -2,15 +2,20 @@
 """Bode plot of every input/output pair of the state-space model in a Sinew result file
 (/statespace/A, B, C, D written with opt.transfer):  H(i w) = C (i w I - A)^-1 B + D.
 
-usage: scripts/bode.py result.h5 [-o bode.png] [--points 800]"""
+usage: scripts/bode.py result.h5 [-o out.png] [--points 800]
+The picture goes beside the result file as <result>_bode.png unless -o names it."""
 import argparse
+import os
+import sys
 
-import h5py
 import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+
 import numpy as np  # noqa: E402
+
+from plot_results import open_result  # noqa: E402
 
 IN_NAMES = ["force_x", "force_y", "force_z", "moment_x", "moment_y", "moment_z"]
 OUT_NAMES = ["displ_x", "displ_y", "displ_z", "veloc_x", "veloc_y", "veloc_z"]
@@ -30,12 +35,13 @@ def frequency_response(A, B, C, D, w):
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("h5")
-    ap.add_argument("-o", "--output", default="bode.png")
+    ap.add_argument("-o", "--output", help="PNG file (default: <result>_bode.png beside the result file)")
     ap.add_argument("--points", type=int, default=800)
     a = ap.parse_args()
-    with h5py.File(a.h5, "r") as f:
+    out = a.output or os.path.splitext(a.h5)[0] + "_bode.png"
+    with open_result(a.h5) as f:
         if "statespace" not in f:
-            raise SystemExit(f"{a.h5} has no /statespace (run the scene with opt.transfer: true)")
+            sys.exit(f"{a.h5} has no /statespace (run the scene with opt.transfer: true)")
         g = f["statespace"]
         A, B, C, D = (g[k][:] for k in "ABCD")
         ins, outs = g["inputs"][:].astype(int), g["outputs"][:].astype(int)
@@ -60,8 +66,8 @@ def main():
         x.grid(True, which="both", alpha=0.3)
     ax[0].set_title(f"Bode plot: {len(outs)} output(s) x {len(ins)} input(s), {A.shape[0]} states")
     fig.tight_layout()
-    fig.savefig(a.output, dpi=120)
-    print(f"wrote {a.output}")
+    fig.savefig(out, dpi=120)
+    print(f"wrote {out}")
 
 
 if __name__ == "__main__":

@@ -9,7 +9,10 @@ N is 1-based as in the scene file. A path-following result (opt.continuation: /p
 /path/critical_points) is drawn in segments: stable (no negative eigenvalue of the tangent) solid,
 unstable dashed and red; limit points are marked with triangles, bifurcation points with diamonds, and
 the counts are printed ("segments: stable S, unstable U; limit points L, bifurcation points B").
-Needs python3-h5py and matplotlib (Agg backend, no display).
+The left axis is the load factor. When the scene (stored in the result file) ramps exactly one load,
+a `force` or a `moment` of one node, the right axis is that load itself: load factor x its
+component when it acts along one axis ("load F_y [N]"), else x its magnitude ("load |F| [N]"); the
+script prints what it used ("load axis: ..."). Needs python3-h5py and matplotlib (Agg, no display).
 """
 import argparse
 import os
@@ -19,8 +22,13 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
-import h5py  # noqa: E402
 import numpy as np  # noqa: E402
+
+from plot_results import open_result, parse_scene, scene_text  # noqa: E402
+
+# ramped loads of a scene (docs/scene.md): the load axis is drawn when exactly one of them is given
+NODE_RAMPED = ("force", "moment", "displ_x", "displ_y", "displ_z", "rot")
+SET_RAMPED = ("pressure", "massProportionalLoad")
 
 
 def segments(stable):
@@ -33,6 +41,35 @@ def segments(stable):
     return out
 
 
+def ramped_load(scene):
+    """(label, unit, factor, source) of the one ramped force or moment of the scene, or (None, reason)."""
+    nprops = scene.get("nprops") or {}
+    loads = [(node, key, props[key]) for node, props in (nprops.items() if isinstance(nprops, dict) else [])
+             if isinstance(props, dict) for key in NODE_RAMPED if key in props]
+    sets = scene.get("eprops") or []
+    loads += [("eprops", key, s[key]) for s in (sets if isinstance(sets, list) else []) if isinstance(s, dict)
+              for key in SET_RAMPED if key in s]
+    opt = scene.get("opt") or {}
+    if isinstance(opt, dict) and opt.get("gravity") is not None:
+        loads.append(("opt", "gravity", opt["gravity"]))
+    if len(loads) != 1:
+        return None, f"the scene ramps {len(loads)} loads" if loads else "no ramped load in the scene"
+    node, key, value = loads[0]
+    if key not in ("force", "moment") or not isinstance(node, int):
+        return None, f"the ramped load is {key} of {node}, not a force or moment of one node"
+    if not isinstance(value, list) or not all(isinstance(v, (int, float)) for v in value) or len(value) not in (2, 3):
+        return None, f"nprops.{node}.{key} is not a list of numbers"
+    v = np.array(value, float)
+    symbol, unit = ("F", "N") if key == "force" else ("M", "N m")
+    nonzero = np.nonzero(v)[0]
+    if not nonzero.size:
+        return None, f"nprops.{node}.{key} is zero"
+    if len(nonzero) == 1:
+        i = int(nonzero[0])
+        return (f"load {symbol}_{'xyz'[i]}", unit, float(v[i]), f"nprops.{node}.{key} = {value}"), ""
+    return (f"load |{symbol}|", unit, float(np.linalg.norm(v)), f"nprops.{node}.{key} = {value}"), ""
+
+
 def main():
     ap = argparse.ArgumentParser(description="Load factor against the displacement of nodes.")
     ap.add_argument("file", help="result file (HDF5)")
@@ -42,7 +79,7 @@ def main():
     ap.add_argument("-o", "--output", help="image file (default: <file>_node<N>_<dir>.png)")
     a = ap.parse_args()
 
-    with h5py.File(a.file, "r") as f:
+    with open_result(a.file) as f:
         step_name = "load_factor" if "load_factor" in f else "time" if "time" in f else None
         if step_name is None or "node/p" not in f:
             sys.exit(f"{a.file}: needs /load_factor or /time, and /node/p")
@@ -57,14 +94,8 @@ def main():
         p0 = {node: (f["node/p0"][node - 1, :] if has_p0 else pos[node][0]) for node in a.node}
         neg = f["path/negative_eigenvalues"][:] if "path/negative_eigenvalues" in f else None
         crit = f["path/critical_points"][:] if "path/critical_points" in f else np.zeros((0, 4))
-        scene_title = ""
-        if "scene" in f.attrs:
-            scene = f.attrs["scene"]
-            scene = scene.decode("utf-8", "replace") if isinstance(scene, bytes) else str(scene)
-            for line in scene.splitlines():
-                if line.startswith("title:"):
-                    scene_title = line.split(":", 1)[1].strip().strip("'\"")
-                    break
+        scene = parse_scene(scene_text(f))
+        scene_title = str(scene.get("title") or "")
 
     out = a.output or f"{os.path.splitext(a.file)[0]}_node{'-'.join(map(str, a.node))}_{a.dir}.png"
     fig, ax = plt.subplots(figsize=(6.4, 4.8))
@@ -112,6 +143,15 @@ def main():
             ax.plot(xs, ys, "o-", ms=3, color=color, label=name)
     ax.set_xlabel(f"{label} [m]")
     ax.set_ylabel("load factor [-] (applied loads x factor)" if step_name == "load_factor" else "time [s]")
+    if step_name == "load_factor":
+        load, why = ramped_load(scene)
+        if load is None:
+            print(f"load axis: load factor only ({why})")
+        else:
+            label, unit, factor, source = load
+            second = ax.secondary_yaxis("right", functions=(lambda x: x * factor, lambda y: y / factor))
+            second.set_ylabel(f"{label} [{unit}]")
+            print(f"load axis: {label} [{unit}] = load factor x {factor:g} ({source})")
     ax.set_title(scene_title or os.path.basename(a.file))
     ax.grid(True, alpha=0.3)
     ax.axhline(0.0, color="0.6", lw=0.8)

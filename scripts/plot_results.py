@@ -5,6 +5,7 @@ mode shapes, and animations (PNG / animated GIF; matplotlib Agg and Pillow, no d
 usage: scripts/plot_results.py result.h5 [-o out.png] [--step K] [--mode N | --mode buck:N]
                                [--animate path | --animate mode:N | --animate buck:N]
                                [--scale auto|S] [--view auto|3d|xy|xz|yz] [--labels auto|on|off]
+                               [--stress n1|vonmises|off]
 
 - default: the deformed shape of step K (1-based like the run summary; default the last written
   step) over the undeformed one (/mesh/p0 when present, else /mesh/p - /mesh/u, /node/p0 without
@@ -14,12 +15,20 @@ usage: scripts/plot_results.py result.h5 [-o out.png] [--step K] [--mode N | --m
   --mode buck:N the buckling mode (/mesh/mode_buck_N) with its load multiplier (/buck);
 - --animate path: a GIF of the deformed shape over all written steps (the load path or the time
   history); --animate mode:N (or buck:N): a GIF of mode N oscillating about the shape of step K.
-Displacements are drawn true to scale when they are visible (at least 2 % of the model size);
+Displacements are drawn true to scale when they are visible (at least 2 % of the model size; for
+--animate path: the path's largest displacement at least 10 %, so that a shallow arch's snap shows);
 smaller ones, and mode shapes (normalized), are scaled to 10 % of the model size and the factor
 is in the title (--scale S sets it). Node numbers (scene numbering) are drawn up to 200 nodes.
+Stress colours (the deformed shape of a step and --animate path; one scale per quantity with its
+colour bar, fixed over a GIF): membranes (triangles, quads) are filled and coloured by the first
+principal stress resultant n1 of /cell/<kind>/membrane_n11, _n22, _n12 in N/m (--stress vonmises:
+the Von Mises resultant sqrt(n11^2 + n22^2 - n11 n22 + 3 n12^2); --stress off: none), cables by
+/cell/lines/axial_force in N; beams are blue, rigid elements (beams in no eprops set) wide bars in
+the seed's grey 198/255. Mode shapes have no stresses: drawn in the element colours.
 With SPACAR Light's element look in the scene (eprops color, opacity, hide: /mesh/<kind>_color,
-_opacity, _visible) the deformed shape is drawn in the element colours and opacities, and hidden
-elements are drawn in neither shape.
+_opacity, _visible) the deformed shape is drawn in the element colours (they win over stress
+colours) and opacities, and hidden elements are drawn in neither shape. A missing file or one that
+is not a result file is a one-line error (exit 1).
 Positions are in m (Sinew's scenes are SI). Prints the file written and its title; the PNG also
 carries the title in its metadata ("Title")."""
 import argparse
@@ -29,26 +38,193 @@ import sys
 import h5py
 import matplotlib
 import numpy as np
+import yaml
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 from matplotlib.animation import PillowWriter  # noqa: E402
-from matplotlib.collections import LineCollection  # noqa: E402
-from mpl_toolkits.mplot3d.art3d import Line3DCollection  # noqa: E402
+from matplotlib.collections import LineCollection, PolyCollection  # noqa: E402
+from mpl_toolkits.mplot3d.art3d import Line3DCollection, Poly3DCollection  # noqa: E402
 
 LABEL_LIMIT = 200       # node numbers drawn up to this many nodes (--labels auto)
+NODE_DOT_LIMIT = 200    # node dots drawn up to this many nodes
 VISIBLE = 0.02          # displacements below this fraction of the model size are magnified
 SHOWN = 0.10            # ... to this fraction (also the amplitude of mode shapes)
 MODE_FRAMES = 24        # frames of one period of a mode animation
 
 
+BLUE = (0.0, 0.447, 0.741)     # the seed's blue, Sinew's default element colour
+RIGID_GREY = (198 / 255,) * 3  # the seed's grey: rigid elements (beams in no eprops set), docs/scene.md
+MIN_SPAN = 0.02                # narrowest colour scale, relative to its largest value
+SURFACE_ALPHA = 0.35           # membranes without stress colour: blue faces at this opacity
+MEASURES = {  # membrane stress measure of the resultants n11, n22, n12 (N/m) -> (name for the colour bar, formula)
+    "n1": ("first principal resultant n1",
+           lambda a, b, c: 0.5 * (a + b) + np.sqrt(0.25 * (a - b) ** 2 + c ** 2)),
+    "vonmises": ("Von Mises resultant sqrt(n11^2 + n22^2 - n11 n22 + 3 n12^2)",
+                 lambda a, b, c: np.sqrt(a ** 2 + b ** 2 - a * b + 3 * c ** 2)),
+}
+
+
+def open_result(path):
+    """The result file opened with h5py, or a one-line error (exit 1) when it is missing or not HDF5."""
+    if not os.path.isfile(path):
+        sys.exit(f"{path}: no such file")
+    if not h5py.is_hdf5(path):
+        sys.exit(f"{path}: not an HDF5 result file (Sinew writes one with `sinew scene.yaml -o result.h5`)")
+    try:
+        return h5py.File(path, "r")
+    except OSError as e:
+        sys.exit(f"{path}: cannot open ({str(e).splitlines()[0]})")
+
+
+def scene_text(f):
+    scene = f.attrs.get("scene", "")
+    return scene.decode("utf-8", "replace") if isinstance(scene, bytes) else str(scene)
+
+
+def parse_scene(text):
+    """The scene stored in the result file as a dict ({} when it is not YAML)."""
+    try:
+        scene = yaml.safe_load(text) if text else {}
+    except yaml.YAMLError:
+        return {}
+    return scene if isinstance(scene, dict) else {}
+
+
+def listed(v):
+    return [v] if isinstance(v, int) else [e for e in v if isinstance(e, int)] if isinstance(v, list) else []
+
+
+def rigid_elements(scene):
+    """Scene elements (1-based) in no eprops set: rigid and massless beams, as in SPACAR Light. Elements
+    read from a mesh file (numbered after the scene's `elements`) belong to their physical group's set."""
+    sets = scene.get("eprops") or []
+    sets = sets if isinstance(sets, list) else []
+    in_set = {e for s in sets if isinstance(s, dict) for e in listed(s.get("elems"))}
+    elements = scene.get("elements") or []
+    return {e for e in range(1, len(elements) + 1) if e not in in_set} if isinstance(elements, list) else set()
+
+
+def coloured_elements(scene):
+    """Scene elements whose eprops set gives a colour (the scene's look wins over stress colours there)."""
+    sets = scene.get("eprops") or []
+    return {e for s in (sets if isinstance(sets, list) else []) if isinstance(s, dict) and "color" in s
+            for e in listed(s.get("elems"))}
+
+
+def table_2d(f, name):
+    """/freq or /buck as [ns, k] (a file with one value per row may hold it as (ns,))."""
+    if name not in f:
+        return None
+    t = f[name][()]
+    return t.reshape(len(t), -1)
+
+
+class CellSet:
+    """The drawn cells of /mesh/lines, triangles, quads (hidden ones left out) with their fixed colour
+    (the scene's colour, or grey for rigid elements; None: stress colour or blue), opacity, and the
+    per-row values painted on them: membrane measure [ns, ncells] (N/m) and cable axial force (N)."""
+
+    @classmethod
+    def empty(cls, ns):
+        c = cls.__new__(cls)
+        c.conn, c.surface, c.fixed, c.alpha, c.is_rigid = [], np.zeros(0, bool), [], np.zeros(0), []
+        c.values = {"membrane": np.full((ns, 0), np.nan), "cable": np.full((ns, 0), np.nan)}
+        c.hidden, c.look, c.rigid, c.measure = 0, False, 0, "n1"
+        return c
+
+    def __init__(self, f, scene, measure):
+        ns = len(f["mesh/p"])
+        rigid, coloured = rigid_elements(scene), coloured_elements(scene)
+        self.measure, self.hidden, self.look = measure, 0, False
+        conn, surface, fixed, alpha, membrane, cable, is_rigid = [], [], [], [], [], [], []
+        for kind in ("lines", "triangles", "quads"):
+            if f"mesh/{kind}" not in f:
+                continue
+            cells = [np.asarray(c) for c in f[f"mesh/{kind}"][()]]
+            n = len(cells)
+            owner = f[f"mesh/{kind}_element"][()] if f"mesh/{kind}_element" in f else np.zeros(n, int)
+            shown = np.ones(n, bool)
+            rgb, opacity = [None] * n, np.ones(n)
+            if f"mesh/{kind}_color" in f:  # SPACAR Light's element look
+                self.look = True
+                shown = f[f"mesh/{kind}_visible"][()] > 0
+                opacity = f[f"mesh/{kind}_opacity"][()]
+                # a colour given by the cell's set (or, for mesh-file sets, any colour but the default blue)
+                rgb = [tuple(c) if e in coloured or (e not in rigid and not np.allclose(c, BLUE, atol=1e-6)) else None
+                       for c, e in zip(f[f"mesh/{kind}_color"][()], owner)]
+            rgb = [RIGID_GREY if kind == "lines" and e in rigid else c for c, e in zip(rgb, owner)]
+            if kind == "lines":
+                force = f["cell/lines/axial_force"][()] if "cell/lines/axial_force" in f else np.full((ns, n), np.nan)
+                cable.append(force[:, shown]), membrane.append(np.full((ns, int(shown.sum())), np.nan))
+            else:
+                g = f"cell/{kind}/membrane_"
+                if g + "n11" in f:
+                    n11, n22, n12 = (f[g + c][()] for c in ("n11", "n22", "n12"))
+                    membrane.append(MEASURES[measure][1](n11, n22, n12)[:, shown])
+                else:
+                    membrane.append(np.full((ns, int(shown.sum())), np.nan))
+                cable.append(np.full((ns, int(shown.sum())), np.nan))
+            self.hidden += int(np.count_nonzero(~shown))
+            conn += [c for c, v in zip(cells, shown) if v]
+            surface += [kind != "lines"] * int(shown.sum())
+            fixed += [c for c, v in zip(rgb, shown) if v]
+            alpha += [a for a, v in zip(opacity, shown) if v]
+            is_rigid += [kind == "lines" and e in rigid for e, v in zip(owner, shown) if v]
+        self.conn, self.surface, self.fixed, self.alpha = conn, np.array(surface, bool), fixed, np.array(alpha)
+        self.is_rigid, self.rigid = is_rigid, sum(is_rigid)
+        self.values = {"membrane": np.concatenate(membrane, axis=1) if membrane else np.full((ns, 0), np.nan),
+                       "cable": np.concatenate(cable, axis=1) if cable else np.full((ns, 0), np.nan)}
+        for v in self.values.values():  # values on cells with the scene's colour are not painted
+            v[:, [c is not None for c in self.fixed]] = np.nan
+
+
+class Paint:
+    """Colour scales of the membrane measure and the cable force over the rows drawn (fixed for a GIF)."""
+
+    def __init__(self, cells, rows):
+        self.scales = {}
+        for what, cmap, label in (("membrane", "viridis", f"membrane {MEASURES[cells.measure][0]} [N/m]"),
+                                  ("cable", "plasma", "cable axial force [N]")):
+            v = cells.values[what][rows]
+            v = v[np.isfinite(v)]
+            if v.size:
+                lo, hi = float(v.min()), float(v.max())
+                # a scale at least 2 % of the largest value wide: a uniform stress is one colour, not round-off
+                pad = max(0.0, 0.5 * (MIN_SPAN * max(abs(lo), abs(hi), 1e-300) - (hi - lo)))
+                self.scales[what] = (matplotlib.colors.Normalize(lo - pad, hi + pad),
+                                     matplotlib.colormaps[cmap], label, lo, hi)
+
+    def colours(self, cells, row):
+        """(r, g, b, a) per cell: the fixed colour, else the painted value of the row, else blue."""
+        out = []
+        for i, fixed in enumerate(cells.fixed):
+            c = fixed
+            if c is None and row is not None:
+                for what, (norm, cmap, *_) in self.scales.items():
+                    v = cells.values[what][row, i]
+                    if np.isfinite(v):
+                        c = cmap(norm(v))[:3]
+            painted = c is not None and fixed is None
+            if c is None:
+                c = BLUE
+            a = cells.alpha[i] * (SURFACE_ALPHA if cells.surface[i] and not painted and fixed is None else 1.0)
+            out.append((*c[:3], a))
+        return out
+
+    def describe(self):
+        return ", ".join(f"{label} {lo:.4g} .. {hi:.4g}" for _, _, label, lo, hi in self.scales.values())
+
+
 class Result:
     """What the pictures need from a result file, read once."""
 
-    def __init__(self, path):
-        with h5py.File(path, "r") as f:
+    def __init__(self, path, measure="n1"):
+        with open_result(path) as f:
             if "node/p" not in f:
-                sys.exit(f"{path}: no /node/p (not a Sinew result file?)")
+                what = ("an input-only run (showinputonly): draw it with scripts/plot_input.py"
+                        if f.attrs.get("showinputonly", 0) else "not a Sinew result file?")
+                sys.exit(f"{path}: no /node/p ({what})")
             self.node_p = f["node/p"][()]
             self.node_p0 = f["node/p0"][()] if "node/p0" in f else self.node_p[0]
             self.mesh_p = f["mesh/p"][()] if "mesh/p" in f else self.node_p
@@ -61,23 +237,12 @@ class Result:
                                                         self.mesh_p.shape))
             # rows after form finding deform the found shape (the last form-finding row, design.md)
             self.nff = len(f["formfinding/residual"]) if "formfinding/residual" in f else 0
-            self.cells = []
-            self.colors = None  # per drawn cell (r, g, b, opacity) when the scene gives the element look
-            self.hidden = 0
-            for kind in ("lines", "triangles", "quads"):
-                if f"mesh/{kind}" in f and "mesh/p" in f:
-                    conn = [np.asarray(c) for c in f[f"mesh/{kind}"][()]]
-                    if f"mesh/{kind}_color" in f:
-                        rgb, alpha = f[f"mesh/{kind}_color"][()], f[f"mesh/{kind}_opacity"][()]
-                        shown = f[f"mesh/{kind}_visible"][()] > 0
-                        self.colors = (self.colors or []) + [(*c, a) for c, a, v in zip(rgb, alpha, shown) if v]
-                        self.hidden += int(np.count_nonzero(~shown))
-                        conn = [c for c, v in zip(conn, shown) if v]
-                    self.cells += conn
+            scene = scene_text(f)
+            self.cells = CellSet(f, parse_scene(scene), measure) if "mesh/p" in f else CellSet.empty(len(self.mesh_p))
             self.stepname = "time" if "time" in f else "load_factor" if "load_factor" in f else None
             self.stepvalue = f[self.stepname][()] if self.stepname else None
-            self.freq = f["freq"][()] if "freq" in f else None
-            self.buck = f["buck"][()] if "buck" in f else None
+            self.freq = table_2d(f, "freq")
+            self.buck = table_2d(f, "buck")
             self.modes = {}
             if "mesh" in f:
                 for name in f["mesh"]:
@@ -85,8 +250,6 @@ class Result:
                     if (name.startswith("mode_freq_") or name.startswith("mode_buck_")) and name[10:].isdigit():
                         self.modes[(name[5:9], int(name[10:]))] = f["mesh/" + name]
                 self.modes = {k: v[()] for k, v in self.modes.items()}
-            scene = f.attrs.get("scene", "")
-            scene = scene.decode("utf-8", "replace") if isinstance(scene, bytes) else str(scene)
         self.path = path
         self.title = ""
         for line in scene.splitlines():
@@ -185,24 +348,42 @@ class Canvas:
             a.remove()
         self.artists = []
 
-    def shape(self, mesh_pts, cells, node_pts, colors=None, **style):
-        """colors: (r, g, b, opacity) per cell (the scene's element look) instead of style's colour."""
-        node_style = dict(color=style.get("color"), alpha=style.get("alpha", 1.0))
-        segs, segcolors = [], []
-        for i, c in enumerate(cells):
+    def shape(self, mesh_pts, cells, node_pts, rgba=None, **style):
+        """cells: a CellSet. rgba None: a wireframe in style's colour (the reference shape); else one
+        (r, g, b, opacity) per cell: lines in it, membranes filled with it (thin dark edges)."""
+        segs, segcolors, widths, polys, facecolors = [], [], [], [], []
+        for i, c in enumerate(cells.conn):
+            if rgba is not None and cells.surface[i]:
+                polys.append(mesh_pts[c][:, self.idx])
+                facecolors.append(rgba[i])
+                continue
             ring = np.append(c, c[0]) if len(c) > 2 else c
             segs += [mesh_pts[ring[m:m + 2]][:, self.idx] for m in range(len(ring) - 1)]
-            if colors is not None:
-                segcolors += [colors[i]] * (len(ring) - 1)
+            if rgba is not None:
+                segcolors += [rgba[i]] * (len(ring) - 1)
+                # rigid bodies drawn as wide grey bars (told apart from the thin grey reference shape)
+                widths += [style.get("lw", 1.0) * (2.0 if cells.is_rigid[i] else 1.0)] * (len(ring) - 1)
+        if polys:
+            edges = [(0.15, 0.15, 0.15, 0.5 * fc[3]) for fc in facecolors]
+            make = Poly3DCollection if self.view == "3d" else PolyCollection
+            self.artists.append(self.ax.add_collection(make(polys, facecolors=facecolors, edgecolors=edges, lw=0.4)))
         if segs:
-            if colors is not None:
-                style = {k: v for k, v in style.items() if k not in ("color", "alpha")}
-                style["colors"] = segcolors
-            coll = Line3DCollection(segs, **style) if self.view == "3d" else LineCollection(segs, **style)
-            self.artists.append(self.ax.add_collection(coll))
-        pts = node_pts[:, self.idx]
-        self.artists.append(self.ax.scatter(*pts.T, s=10, color=node_style["color"], alpha=node_style["alpha"],
-                                            zorder=3))
+            line_style = dict(style)
+            if rgba is not None:
+                line_style = {k: v for k, v in style.items() if k not in ("color", "alpha")}
+                line_style["colors"], line_style["linewidths"] = segcolors, widths
+                line_style.pop("lw", None)
+            make = Line3DCollection if self.view == "3d" else LineCollection
+            self.artists.append(self.ax.add_collection(make(segs, **line_style)))
+        if len(node_pts) <= NODE_DOT_LIMIT:  # above: the dots would hide the cells and their colours
+            pts = node_pts[:, self.idx]
+            self.artists.append(self.ax.scatter(*pts.T, s=10, color=style.get("color", "black"),
+                                                alpha=style.get("alpha", 1.0), zorder=3))
+
+    def colorbars(self, paint):
+        for norm, cmap, label, *_ in paint.scales.values():
+            self.fig.colorbar(matplotlib.cm.ScalarMappable(norm=norm, cmap=cmap), ax=self.ax, label=label,
+                              shrink=0.7, pad=0.04 if self.view == "3d" else 0.03)
 
     def labels(self, node_pts):
         for n, p in enumerate(node_pts, start=1):
@@ -213,15 +394,16 @@ class Canvas:
         return ", ".join(labels)
 
     def title(self, text):
-        self.ax.set_title(text, fontsize=10)  # replaces the previous title
+        self.fig.suptitle(text, fontsize=10)  # replaces the previous title; centred on the figure (colour bars)
 
 
-def magnification(arg, disp, size, always):
-    """Scale factor of displacements: given, or 1 when visible, else so that the largest is SHOWN * size."""
+def magnification(arg, disp, size, below):
+    """Scale factor of displacements: given, or 1 when the largest is at least below * size, else the
+    factor that makes the largest SHOWN * size."""
     if arg != "auto":
         return float(arg)
     dmax = float(np.max(np.linalg.norm(disp.reshape(-1, 3), axis=1))) if disp.size else 0.0
-    if dmax == 0.0 or (not always and dmax >= VISIBLE * size):
+    if dmax == 0.0 or dmax >= below * size:
         return 1.0
     s = SHOWN * size / dmax
     return float(f"{s:.2g}")  # a round factor for the title
@@ -272,6 +454,9 @@ def main():
     ap.add_argument("--view", default="auto", choices=["auto", "3d", "xy", "xz", "yz"])
     ap.add_argument("--labels", default="auto", choices=["auto", "on", "off"],
                     help=f"node numbers (auto: up to {LABEL_LIMIT} nodes)")
+    ap.add_argument("--stress", default="n1", choices=["n1", "vonmises", "off"],
+                    help="membrane colour: first principal resultant n1 (default) or the Von Mises resultant, "
+                         "both in N/m; off: no stress colours (membranes and cables in blue)")
     ap.add_argument("--fps", type=float, default=8.0, help="frames per second of a GIF")
     a = ap.parse_args()
     if a.mode and a.animate:
@@ -282,82 +467,103 @@ def main():
         except ValueError:
             sys.exit(f"--scale '{a.scale}': expected auto or a number")
 
-    res = Result(a.h5)
+    res = Result(a.h5, "n1" if a.stress == "off" else a.stress)
     k = res.row(a.step)
     size = res.size()
     labels = a.labels == "on" or (a.labels == "auto" and len(res.node_p0) <= LABEL_LIMIT)
     print(f"node numbers: {'drawn' if labels else 'not drawn'} ({len(res.node_p0)} nodes)")
-    if res.colors is not None:
-        print(f"element look from the scene (color, opacity, hide): {res.hidden} hidden cell(s) not drawn")
+    if res.cells.look:
+        print(f"element look from the scene (color, opacity, hide): {res.cells.hidden} hidden cell(s) not drawn")
+    if res.cells.rigid:
+        print(f"rigid elements (in no eprops set): {res.cells.rigid} cell(s) drawn grey")
     base = os.path.splitext(a.h5)[0]
     grey = dict(color="0.6", lw=1.0, alpha=0.8)
     blue = dict(color="tab:blue", lw=1.6)
 
+    def painted(rows):
+        paint = Paint(res.cells, rows if a.stress != "off" else [])
+        if paint.scales:
+            print(f"colours: {paint.describe()}")
+        return paint
+
     if a.animate == "path":
+        # one rule for the whole path: magnified when its largest displacement is below SHOWN of the model size
         rows = [s - 1 for s in res.steps]
-        s = magnification(a.scale, np.stack([res.mesh_p[r] - res.mesh_p0[r] for r in rows]), size, False)
+        s = magnification(a.scale, np.stack([res.mesh_p[r] - res.mesh_p0[r] for r in rows]), size, SHOWN)
         frames = [(res.mesh_p0[r] + s * (res.mesh_p[r] - res.mesh_p0[r]),
                    res.ref_nodes(r) + s * (res.node_p[r] - res.ref_nodes(r)), r) for r in rows]
         canvas = Canvas(choose_view(a.view, [res.mesh_p0[rows[-1]]] + [f[0] for f in frames]),
                         [res.mesh_p0[rows[-1]]] + [f[0] for f in frames])
         out = a.output or base + "_path.gif"
         titles = [f"{res.title}\ndeformed shape, {res.state(r)}{scaled(s)}" for _, _, r in frames]
-        write_gif(canvas, out, a.fps, frames, res, grey, blue, labels, titles, k_ref=rows[-1])
+        write_gif(canvas, out, a.fps, frames, res, grey, blue, labels, titles, painted(rows), k_ref=rows[-1])
         return 0
     if a.animate:
         kind, n = parse_mode(a.animate)
         shape, what = mode_info(res, kind, n, k)
-        s = magnification(a.scale, shape, size, True)
+        s = magnification(a.scale, shape, size, np.inf)
         ref, ref_nodes = res.mesh_p[k], res.node_p[k]
         phases = np.sin(2 * np.pi * np.arange(MODE_FRAMES) / MODE_FRAMES)
-        frames = [(ref + c * s * shape, res.mode_nodes(k, c * s * shape), k) for c in phases]
+        frames = [(ref + c * s * shape, res.mode_nodes(k, c * s * shape), None) for c in phases]
         canvas = Canvas(choose_view(a.view, [ref + s * shape, ref - s * shape]), [ref + s * shape, ref - s * shape])
         out = a.output or base + f"_{'mode' if kind == 'freq' else 'buck'}{n}.gif"
         title = f"{res.title}\n{what} ({res.state(k)}; shape x {s:g})"
-        write_gif(canvas, out, a.fps, frames, res, grey, blue, labels, [title] * len(frames), k_ref=k, ref=(ref, ref_nodes))
+        write_gif(canvas, out, a.fps, frames, res, grey, blue, labels, [title] * len(frames), Paint(res.cells, []),
+                  k_ref=k, ref=(ref, ref_nodes))
         return 0
-    if a.mode:
+    if a.mode:  # a mode shape has no stresses: drawn in the element colours
         kind, n = parse_mode(a.mode)
         shape, what = mode_info(res, kind, n, k)
-        s = magnification(a.scale, shape, size, True)
+        s = magnification(a.scale, shape, size, np.inf)
         ref, ref_nodes = res.mesh_p[k], res.node_p[k]
         moved = ref + s * shape
         canvas = Canvas(choose_view(a.view, [ref, moved]), [ref, moved])
         canvas.shape(ref, res.cells, ref_nodes, **grey)
         moved_nodes = res.mode_nodes(k, s * shape)
-        canvas.shape(moved, res.cells, moved_nodes, colors=res.colors, **blue)
+        canvas.shape(moved, res.cells, moved_nodes, Paint(res.cells, []).colours(res.cells, None), **blue)
         if labels:
             canvas.labels(moved_nodes)
         title = f"{res.title}\n{what} ({res.state(k)}; shape x {s:g})"
         canvas.title(title)
         save_png(canvas, a.output or base + f"_{'mode' if kind == 'freq' else 'buck'}{n}.png", title)
         return 0
-    s = magnification(a.scale, res.mesh_p[k] - res.mesh_p0[k], size, False)
+    s = magnification(a.scale, res.mesh_p[k] - res.mesh_p0[k], size, VISIBLE)
     deformed = res.mesh_p0[k] + s * (res.mesh_p[k] - res.mesh_p0[k])
     deformed_nodes = res.ref_nodes(k) + s * (res.node_p[k] - res.ref_nodes(k))
     canvas = Canvas(choose_view(a.view, [res.mesh_p0[k], deformed]), [res.mesh_p0[k], deformed])
+    paint = painted([k])
     canvas.shape(res.mesh_p0[k], res.cells, res.ref_nodes(k), **grey)
-    canvas.shape(deformed, res.cells, deformed_nodes, colors=res.colors, **blue)
+    canvas.shape(deformed, res.cells, deformed_nodes, paint.colours(res.cells, k), **blue)
+    canvas.colorbars(paint)
     if labels:
         canvas.labels(deformed_nodes)
-    drawn = "scene colours" if res.colors is not None else "blue"
-    title = f"{res.title}\ndeformed ({drawn}) and {res.ref_name(k)} (grey), {res.state(k)}{scaled(s)}"
+    drawn = "scene colours" if res.cells.look else "blue"
+    if paint.scales:
+        drawn = "coloured by " + " and ".join({"membrane": "membrane stress", "cable": "cable force"}[w]
+                                               for w in paint.scales)
+    if res.cells.rigid:
+        drawn += "; rigid elements wide light grey"
+    title = f"{res.title}\ndeformed ({drawn}) and {res.ref_name(k)} (grey),"
+    title += "\n" if len(title) - len(res.title) > 60 else " "
+    title += f"{res.state(k)}{scaled(s)}"
     canvas.title(title)
     save_png(canvas, a.output or base + f"_step{k + 1}.png", title)
     return 0
 
 
-def write_gif(canvas, out, fps, frames, res, grey, blue, labels, titles, k_ref, ref=None):
-    """frames: (mesh positions, node positions, row); the undeformed (or reference) shape stays in grey."""
+def write_gif(canvas, out, fps, frames, res, grey, blue, labels, titles, paint, k_ref, ref=None):
+    """frames: (mesh positions, node positions, row whose values colour it or None); the undeformed
+    (or reference) shape stays in grey, the colour scales are those of the whole animation."""
     base_mesh, base_nodes = ref if ref is not None else (res.mesh_p0[k_ref], res.ref_nodes(k_ref))
     canvas.shape(base_mesh, res.cells, base_nodes, **grey)
+    canvas.colorbars(paint)
     fixed = canvas.artists
     canvas.artists = []
     writer = PillowWriter(fps=fps)
     with writer.saving(canvas.fig, out, dpi=90):
-        for (mesh_pts, node_pts, _), title in zip(frames, titles):
+        for (mesh_pts, node_pts, row), title in zip(frames, titles):
             canvas.clear()
-            canvas.shape(mesh_pts, res.cells, node_pts, colors=res.colors, **blue)
+            canvas.shape(mesh_pts, res.cells, node_pts, paint.colours(res.cells, row), **blue)
             if labels:
                 canvas.labels(node_pts)
             canvas.title(title)

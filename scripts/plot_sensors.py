@@ -2,15 +2,19 @@
 """Time (or load-factor) plots of every /sensors/<name> dataset of a Sinew result file, one panel per
 sensor, its components and units named (the sensor's Exudyn output variable comes from the scene
 stored in the file).
-usage: scripts/plot_sensors.py result.h5 [-o sensors.png]"""
+usage: scripts/plot_sensors.py result.h5 [-o out.png]
+The picture goes beside the result file as <result>_sensors.png unless -o names it."""
 import argparse
+import os
+import sys
 
-import h5py
 import matplotlib
 import yaml
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+
+from plot_results import open_result  # noqa: E402
 
 # Exudyn output variable -> (component names, unit); vectors are global x, y, z unless "Local"
 VARIABLES = {
@@ -50,11 +54,14 @@ def sensor_variables(f):
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("h5")
-    ap.add_argument("-o", "--output", default="sensors.png")
+    ap.add_argument("-o", "--output", help="PNG file (default: <result>_sensors.png beside the result file)")
     a = ap.parse_args()
-    with h5py.File(a.h5, "r") as f:
+    out = a.output or os.path.splitext(a.h5)[0] + "_sensors.png"
+    with open_result(a.h5) as f:
         if "sensors" not in f:
-            raise SystemExit(f"{a.h5}: no /sensors group (the scene has no sensors)")
+            sys.exit(f"{a.h5}: no /sensors group (the scene has no sensors)")
+        if "time" not in f and "load_factor" not in f:
+            sys.exit(f"{a.h5}: no /time or /load_factor (no step written)")
         xname = "time" if "time" in f else "load_factor"
         x = f[xname][:]
         variables = sensor_variables(f)
@@ -80,8 +87,8 @@ def main():
         axes[-1, 0].set_xlabel(xlabel)
         print(f"x axis: {xlabel}")
         fig.tight_layout()
-        fig.savefig(a.output, dpi=120)
-    print("wrote", a.output)
+        fig.savefig(out, dpi=120)
+    print("wrote", out)
 
 
 if __name__ == "__main__":

@@ -45,7 +45,7 @@ try:
         png = next((l[6:] for l in q.stdout.splitlines() if l.startswith("wrote ")), "")
         st.check(q.returncode == 0 and png.endswith(".png") and os.path.getsize(png) > 5000,
                  f"installed plot_results.py draws the result: {q.stderr[-1000:]}")
-        st.check("deformed (blue) and found shape (grey)" in q.stdout,
+        st.check("deformed (coloured by membrane stress and cable force) and found shape (grey)" in q.stdout,
                  "after form finding the wind load deforms the found shape (the reference drawn in grey)")
         # the installed Python package finds the installed binary (no SINEW_BIN) and reads the result
         site = os.path.join(prefix, "lib", "python3", "dist-packages")
@@ -60,6 +60,16 @@ try:
         st.check(q.returncode == 0 and q.stdout.split()[-1:] == ["2"],
                  f"installed Python package: load a result, run a scene with the installed binary: {q.stderr[-1500:]}")
         st.check(os.access(os.path.join(share, "scripts", "spacar2sinew.py"), os.X_OK), "spacar2sinew.py installed")
+        # installed plot_input.py on an installed scene finds the installed bin/sinew (no SINEW_BIN)
+        env = {k: v for k, v in os.environ.items() if k != "SINEW_BIN"}
+        scene = os.path.join(work, "crosshinge.yaml")
+        shutil.copy(os.path.join(share, "runs", "crosshinge.yaml"), scene)
+        q = subprocess.run(["/usr/bin/python3", os.path.join(share, "scripts", "plot_input.py"), scene], cwd=work,
+                           env=env, capture_output=True, text=True, timeout=300)
+        print("    " + q.stdout.strip().replace("\n", "\n    "))
+        st.check(q.returncode == 0 and f"input check: {binary} " in q.stdout
+                 and os.path.exists(os.path.join(work, "crosshinge_input.png")),
+                 f"installed plot_input.py draws a scene with the installed sinew: {q.stderr[-500:]}")
     shutil.rmtree(work, ignore_errors=True)
 finally:
     shutil.rmtree(prefix, ignore_errors=True)

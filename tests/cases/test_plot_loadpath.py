@@ -2,7 +2,8 @@
 The von Mises truss of test_continuation.py (snap-through: two limit points, unstable between them)
 followed by arc length; the script draws the apex's load path. Checks: exit 0, a real PNG (> 5 kB),
 the printed counts (2 stable segments, 1 unstable, 2 limit points, no bifurcation), the unstable
-segment drawn in red (red pixels in the image), axis labels with units; two nodes at once work."""
+segment drawn in red (red pixels in the image), axis labels with units; the load F_y = load factor x
+(-1 N) on a second axis (printed); two nodes at once work."""
 import math
 import os
 import subprocess
@@ -31,6 +32,8 @@ print("  " + p.stdout.strip().replace("\n", "\n  "))
 st.check(p.returncode == 0, f"plot_loadpath.py exit {p.returncode}")
 st.check("segments: stable 2, unstable 1; limit points 2, bifurcation points 0" in p.stdout,
          "counts: 2 stable segments, 1 unstable, 2 limit points")
+st.check("load axis: load F_y [N] = load factor x -1 (nprops.2.force = [0, -1, 0])" in p.stdout,
+         "the load itself on a second axis: F_y = load factor x (-1 N), the apex's one ramped force")
 if st.check(os.path.exists(png) and os.path.getsize(png) > 5000, "PNG written (> 5 kB)"):
     img = Image.open(png).convert("RGB")
     px = img.getdata()

@@ -6,7 +6,9 @@ one per load step), the titles (printed, and the PNG's "Title" metadata) carry t
 from /freq, the load factor of the step and the scene title; axis labels in m; node numbers drawn for
 a few nodes and not for 300 (a synthetic 3D result file); a missing mode is an error naming it.
 Also: plot_input.py --step K counts from 1 like the summary; plot_sensors.py names each sensor's
-components and units (a 2D ANCF cantilever with a Displacement and a ForceLocal sensor)."""
+components and units (a 2D ANCF cantilever with a Displacement and a ForceLocal sensor) and writes
+<result>_sensors.png beside the result file; plot_loadpath.py adds the load axis F_z = load factor x
+(-20 N) of the cantilever's one ramped force."""
 import os
 import subprocess
 
@@ -100,6 +102,13 @@ out = plot("--step", "9", expect=1)
 st.check("step 9" in out, "a step outside 1..4 is named in the error")
 
 
+# plot_loadpath.py: the second axis is the one ramped force, F_z = load factor x (-20) N
+p = subprocess.run(["/usr/bin/python3", os.path.join(st.SOURCE, "scripts", "plot_loadpath.py"), h5, "--node", "2",
+                    "--dir", "z", "-o", os.path.join(work, "plots_loadpath.png")], capture_output=True, text=True, timeout=300)
+print("  plot_loadpath.py: " + p.stdout.strip().replace("\n", " | "))
+st.check(p.returncode == 0 and "load axis: load F_z [N] = load factor x -20 (nprops.2.force = [0, 0, -20])" in p.stdout,
+         "load-stepped result: the load axis is the tip force F_z = load factor x -20 N")
+
 # A synthetic 3D result with 300 nodes: no node numbers; 3D view (the nodes span x, y and z)
 big = os.path.join(work, "plots_synthetic.h5")
 n = 300
@@ -147,9 +156,15 @@ sensors:
   - {element: 1, x: 0.0, variable: ForceLocal, name: root}
 """
 h5s, _ = st.run("plots_sensors", sensors_scene, np_=2)
-png = os.path.join(work, "plots_sensors.png")
-p = subprocess.run(["/usr/bin/python3", os.path.join(st.SOURCE, "scripts", "plot_sensors.py"), h5s, "-o", png],
-                   capture_output=True, text=True, timeout=300)
+png = os.path.join(work, "plots_sensors_sensors.png")  # the default: <result>_sensors.png beside the result
+elsewhere = os.path.join(work, "plots_cwd")
+os.makedirs(elsewhere, exist_ok=True)
+for stale in (png, os.path.join(elsewhere, "sensors.png")):
+    if os.path.exists(stale):
+        os.remove(stale)
+p = subprocess.run(["/usr/bin/python3", os.path.join(st.SOURCE, "scripts", "plot_sensors.py"), h5s],
+                   capture_output=True, text=True, timeout=300, cwd=elsewhere)
+st.check(not os.listdir(elsewhere), "plot_sensors.py writes nothing in the working directory")
 print("  plot_sensors.py: " + p.stdout.strip().replace("\n", " | "))
 st.check(p.returncode == 0, f"plot_sensors exit {p.returncode} {p.stderr}")
 st.check("panel: tip: Displacement [m]; components: tip: ux [m], tip: uy [m]" in p.stdout, "tip sensor: ux, uy in m")

@@ -6,7 +6,8 @@ the table: darkblue). The result file holds /mesh/lines_color, _opacity, _visibl
 through /mesh/lines_element), the XDMF the cell attributes color, opacity, visible, and
 scripts/plot_input.py and plot_results.py draw element 1 half transparent dark green, element 4 dark
 blue, and leave the hidden red element out (pixels of the PNGs). Without look fields in the scene
-there are no look datasets and the pictures are drawn in the default blue."""
+there are no look datasets and the pictures are drawn in the default blue. Both scripts draw the rigid
+element 3 (in no eprops set) in the seed's grey 198/255, with and without look fields (issue 24 item 14)."""
 import os
 import subprocess
 
@@ -15,7 +16,9 @@ import numpy as np
 
 import sinewtest as st
 
-DARKGREEN, DARKBLUE, GREY, RED = (0.1, 0.4, 0.1), (0.0, 0.2, 0.5), (0.7, 0.7, 0.7), (1.0, 0.0, 0.0)
+# the seed's darkblue (0, 124, 176)/255; GREY: the rigid colour of the look datasets (runner.cpp fillLook)
+DARKGREEN, DARKBLUE, GREY, RED = (0.1, 0.4, 0.1), (0.0, 124 / 255, 176 / 255), (0.7, 0.7, 0.7), (1.0, 0.0, 0.0)
+RIGID_GREY = (198 / 255,) * 3  # how the scripts draw rigid elements (the seed's grey)
 beam = {"flex": [1, 2, 3, 4, 5, 6], "emod": 210e9, "smod": 80e9, "cshape": "circ", "dim": 0.01}
 scene = {
     "nodes": [[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0], [2, 0, 0]],
@@ -48,6 +51,14 @@ def pixels(png, rgb, tol=0.04):
     return int(np.count_nonzero(np.all(np.abs(img - np.array(rgb)) < tol, axis=-1)))
 
 
+def rigid_grey(png):
+    """The rigid element's grey 198/255 outweighs the 0.7 grey (antialiased edges of other lines and text
+    pass through both; a rigid element drawn in 0.7 or blue does not give 198/255 the lead)."""
+    seed, other = pixels(png, RIGID_GREY, 0.015), pixels(png, GREY, 0.015)
+    print(f"  {os.path.basename(png)}: pixels grey 198/255 {seed}, grey 0.7 {other}")
+    return seed > 500 and seed > 2 * other
+
+
 def script(name, *args):
     p = subprocess.run(["/usr/bin/python3", os.path.join(st.SOURCE, "scripts", name)] + list(args),
                        stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, timeout=300)
@@ -67,6 +78,8 @@ for name, extra in (("plot_input.py", []), ("plot_results.py", ["--scale", "1"])
     st.check(counts["half green"] > 20, f"{name}: element 1 drawn dark green at opacity 0.5")
     st.check(counts["dark blue"] > 20, f"{name}: element 4 drawn dark blue")
     st.check(counts["red"] == 0, f"{name}: the hidden red element is not drawn")
+    st.check(rigid_grey(png) and "rigid elements (in no eprops set)" in text,
+             f"{name}: the rigid element 3 drawn in the seed's grey 198/255")
     pictures[name] = png
 
 # without look fields: no look datasets, default blue pictures
@@ -78,4 +91,8 @@ png = os.path.join(st.WORK, "spacar_visual_plain.png")
 text = script("plot_input.py", out, "-o", png)
 st.check("look" not in text, "plot_input.py: no look note without look fields")
 st.check(pixels(png, (0.0, 0.447, 0.741)) > 20 and pixels(png, half_green) == 0, "plain scene drawn in the default blue")
+st.check(rigid_grey(png), "plot_input.py: the rigid element in the seed's grey without look fields")
+png = os.path.join(st.WORK, "spacar_visual_plain_results.png")
+text = script("plot_results.py", out, "-o", png, "--scale", "1")
+st.check(rigid_grey(png), "plot_results.py: the rigid element in the seed's grey without look fields")
 st.done()

@@ -5,7 +5,8 @@ and veloc_z at the tip. Checks: the poles (eigenvalues of A) are -zeta w +- i w 
 of the computed frequencies; the static gain -C A^-1 B of displ_z / force_z is the tip compliance
 L^3 / (3 EI) up to the modes left out (1.9e-4 measured with 6 modes); D = 0; the veloc row has no static gain.
 SPACAR Light's refusals: a force ramp together with transfer, and transfer without outputs, are
-scene errors (exit 2) naming the fields. scripts/bode.py draws the Bode plot."""
+scene errors (exit 2) naming the fields. scripts/bode.py draws the Bode plot beside the result file
+(<result>_bode.png, nothing in the working directory)."""
 import os
 import subprocess
 
@@ -37,10 +38,17 @@ with st.h5(path) as f:
     st.check(np.all(D == 0), "D = 0")
     st.close(f["statespace/inputs"][:], [[2, 3]], what="inputs (node, force_z)")
     st.close(f["statespace/outputs"][:], [[2, 3], [2, 6]], what="outputs (node, displ_z / veloc_z)")
-png = os.path.join(st.WORK, "statespace_bode.png")
-p = subprocess.run(["/usr/bin/python3", os.path.join(st.SOURCE, "scripts", "bode.py"), path, "-o", png],
-                   stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
-st.check(p.returncode == 0 and os.path.getsize(png) > 10000, "scripts/bode.py writes the plot: " + p.stdout.strip())
+# bode.py writes <result>_bode.png beside the result file, not bode.png in the working directory
+png = os.path.splitext(path)[0] + "_bode.png"
+elsewhere = os.path.join(st.WORK, "statespace_cwd")
+os.makedirs(elsewhere, exist_ok=True)
+for stale in (png, os.path.join(elsewhere, "bode.png")):
+    if os.path.exists(stale):
+        os.remove(stale)
+p = subprocess.run(["/usr/bin/python3", os.path.join(st.SOURCE, "scripts", "bode.py"), path],
+                   stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, cwd=elsewhere)
+st.check(p.returncode == 0 and os.path.exists(png) and os.path.getsize(png) > 10000
+         and not os.listdir(elsewhere), "scripts/bode.py writes <result>_bode.png beside the result: " + p.stdout.strip())
 
 bad = {1: {"fix": True}, 2: {"force": [0, 0, 1e-3], "transfer_in": ["force_z"], "transfer_out": ["displ_z"]}}
 _, out = st.run("statespace_with_load", beam_x(L, W, T, 4, bad, opt={"transfer": True}), expect_exit=2)

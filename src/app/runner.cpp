@@ -85,7 +85,7 @@ void warnings(MPI_Comm comm, const Model& model) {
 void fillLook(const Model& model, const DistributedMesh& mesh, ResultLayout& layout) {
   for (const ElementSet& s : model.eprops) layout.look |= s.color.has_value() || s.opacity != 1.0 || s.hide;
   if (!layout.look) return;
-  const std::array<double, 3> blue{0.0, 0.447, 0.741}, grey{0.7, 0.7, 0.7};
+  const std::array<double, 3> blue{0.0, 0.447, 0.741}, grey{198 / 255.0, 198 / 255.0, 198 / 255.0};  // the seed's grey
   for (const LocalElement& el : mesh.elements) {
     auto& look = el.numNodes == 2 ? layout.lineLook : (el.numNodes == 3 ? layout.triangleLook : layout.quadLook);
     const ElementSet* s = el.set >= 0 ? &model.eprops[static_cast<std::size_t>(el.set)] : nullptr;

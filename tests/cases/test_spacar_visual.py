@@ -16,7 +16,7 @@ import numpy as np
 
 import sinewtest as st
 
-# the seed's darkblue (0, 124, 176)/255; GREY: the rigid colour of the look datasets (runner.cpp fillLook)
+# the seed's darkblue (0, 124, 176)/255; RIGID_GREY: the rigid colour of the look datasets (runner.cpp fillLook) and of the pictures; GREY: the former 0.7
 DARKGREEN, DARKBLUE, GREY, RED = (0.1, 0.4, 0.1), (0.0, 124 / 255, 176 / 255), (0.7, 0.7, 0.7), (1.0, 0.0, 0.0)
 RIGID_GREY = (198 / 255,) * 3  # how the scripts draw rigid elements (the seed's grey)
 beam = {"flex": [1, 2, 3, 4, 5, 6], "emod": 210e9, "smod": 80e9, "cshape": "circ", "dim": 0.01}
@@ -29,7 +29,7 @@ scene = {
                dict(beam, elems=[4], color=3)],
     "opt": {"loadsteps": 1, "calccompl": False},
 }
-expected = {1: DARKGREEN + (0.5, 1), 2: RED + (1, 0), 3: GREY + (1, 1), 4: DARKBLUE + (1, 1)}
+expected = {1: DARKGREEN + (0.5, 1), 2: RED + (1, 0), 3: RIGID_GREY + (1, 1), 4: DARKBLUE + (1, 1)}
 
 out, log = st.run("spacar_visual", scene)
 with st.h5(out) as f:

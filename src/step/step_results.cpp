@@ -257,17 +257,17 @@ TensileSummary StepResults::tensileSummary() const {
   long counts[4] = {tensile_.cables, tensile_.slack, tensile_.membranes, tensile_.wrinkled};
   MPI_Allreduce(MPI_IN_PLACE, counts, 4, MPI_LONG, MPI_SUM, comm);
   all.cables = counts[0], all.slack = counts[1], all.membranes = counts[2], all.wrinkled = counts[3];
-  // extremes with their element: MAXLOC of (value, -element) picks the lowest element among equal values
+  // extremes with their element: MAXLOC picks the lowest element among equal values
   struct Loc {
     double v;
     int e;
   };
   auto extreme = [&](bool any, double v, int e, bool largest, double* out, int* elem) {
-    Loc mine{any ? (largest ? v : -v) : -std::numeric_limits<double>::infinity(), any ? -e : std::numeric_limits<int>::min()},
+    Loc mine{any ? (largest ? v : -v) : -std::numeric_limits<double>::infinity(), any ? e : std::numeric_limits<int>::max()},
         best{};
     MPI_Allreduce(&mine, &best, 1, MPI_DOUBLE_INT, MPI_MAXLOC, comm);
     *out = largest ? best.v : -best.v;
-    *elem = -best.e;
+    *elem = best.e;
   };
   const bool c = tensile_.cables > 0, mb = tensile_.membranes > 0;
   extreme(c, tensile_.forceMax, tensile_.forceMaxElement, true, &all.forceMax, &all.forceMaxElement);
@@ -279,12 +279,12 @@ TensileSummary StepResults::tensileSummary() const {
 
 NodeSummaryRow StepResults::mostMovingNode() const {
   const DistributedMesh& m = asm_.mesh();
-  // the largest displacement; among equal ones the lowest node (MAXLOC of (u, -node))
+  // the largest displacement; among equal ones the lowest node (MAXLOC)
   struct {
     double u;
     int node;
-  } mine{anyMove_.u, -anyMove_.row.node}, best{};
-  if (anyMove_.u < 0) mine.node = std::numeric_limits<int>::min();
+  } mine{anyMove_.u, anyMove_.row.node}, best{};
+  if (anyMove_.u < 0) mine.node = std::numeric_limits<int>::max();
   MPI_Allreduce(&mine, &best, 1, MPI_DOUBLE_INT, MPI_MAXLOC, m.comm);
   int owner = anyMove_.u >= 0 && mine.node == best.node && anyMove_.u == best.u ? m.rank : m.size;
   MPI_Allreduce(MPI_IN_PLACE, &owner, 1, MPI_INT, MPI_MIN, m.comm);

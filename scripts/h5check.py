@@ -4,7 +4,8 @@
     h5check.py result.h5 [--values] [--max-attr-chars N]
 
 Also checks the result-file contract of docs design.md section 3 (root attributes, one step
-dataset, step-indexed datasets with one row per step); exit status 0 when it holds, 2 when not,
+dataset, step-indexed datasets with one row per step, the step analyses' datasets (attribute
+rows = step_analysis_rows) one row per /step_analysis_rows entry); exit status 0 when it holds, 2 when not,
 1 when the file cannot be read. Needs python3-h5py.
 """
 import argparse
@@ -72,10 +73,19 @@ def main():
         else:
             ns = datasets[steps[0]].shape[0]
             print(f"  {ns} steps in /{steps[0]}")
+            # step analyses at some rows only (opt.step_analyses): one row per analysed step
+            rows = datasets["step_analysis_rows"][()] if "step_analysis_rows" in datasets else None
+            if rows is not None:
+                print(f"  step analyses at {len(rows)} of the {ns} steps (/step_analysis_rows)")
+                if len(rows) and (np.any(np.diff(rows) <= 0) or rows[0] < 0 or rows[-1] >= ns):
+                    problems.append(f"/step_analysis_rows {rows.tolist()} is not an increasing list of step rows")
             for name, d in datasets.items():
                 stepwise = name in STEP_NAMES or (name.startswith(STEP_PREFIXES) and name not in NOT_STEP)
-                if stepwise and (len(d.shape) == 0 or d.shape[0] != ns):
-                    problems.append(f"/{name} has shape {d.shape}, expected {ns} rows (one per step)")
+                analysed = d.attrs.get("rows") in ("step_analysis_rows", b"step_analysis_rows")
+                want = len(rows) if analysed and rows is not None else ns
+                if stepwise and (len(d.shape) == 0 or d.shape[0] != want):
+                    problems.append(f"/{name} has shape {d.shape}, expected {want} rows (one per "
+                                    f"{'analysed step' if want != ns else 'step'})")
     for p in problems:
         print(f"problem: {p}")
     return 2 if problems else 0

@@ -241,6 +241,9 @@ class Result:
             self.cells = CellSet(f, parse_scene(scene), measure) if "mesh/p" in f else CellSet.empty(len(self.mesh_p))
             self.stepname = "time" if "time" in f else "load_factor" if "load_factor" in f else None
             self.stepvalue = f[self.stepname][()] if self.stepname else None
+            # step analyses (frequencies, buckling, modes) at some rows only (opt.step_analyses): their
+            # datasets have one row per analysed step, /step_analysis_rows the step row of each
+            self.analysis_rows = list(f["step_analysis_rows"][()]) if "step_analysis_rows" in f else None
             self.freq = table_2d(f, "freq")
             self.buck = table_2d(f, "buck")
             self.modes = {}
@@ -277,6 +280,16 @@ class Result:
             sys.exit(f"{self.path}: step {step} not written (steps 1..{len(self.node_p)}, written: "
                      f"{self.steps[0]}..{self.steps[-1]})")
         return step - 1
+
+    def analysis_row(self, k):
+        """Row of the step-analysis datasets (/freq, /buck, /mesh/mode_*) of step row k."""
+        if self.analysis_rows is None:
+            return k
+        if k not in self.analysis_rows:
+            steps = ", ".join(str(r + 1) for r in self.analysis_rows)
+            sys.exit(f"{self.path}: step {k + 1} has no step analyses (steps with them: {steps or 'none'}; "
+                     "-step_analyses all computes them at every step)")
+        return self.analysis_rows.index(k)
 
     def state(self, k):
         """'load factor 0.75' or 'time 0.01 s' of row k."""
@@ -419,9 +432,10 @@ def mode_info(res, kind, n, k):
         have = sorted(f"{'' if kk == 'freq' else 'buck:'}{nn}" for kk, nn in res.modes)
         sys.exit(f"{res.path}: no /mesh/mode_{kind}_{n} (modes in the file: {', '.join(have) or 'none'}; "
                  "calcfreq/calcbuck in the scene)")
-    shape = res.modes[key][k]
+    j = res.analysis_row(k)
+    shape = res.modes[key][j]
     table = res.freq if kind == "freq" else res.buck
-    value = table[k, n - 1] if table is not None and n - 1 < table.shape[1] else float("nan")
+    value = table[j, n - 1] if table is not None and n - 1 < table.shape[1] else float("nan")
     what = f"mode {n}: f = {value:.6g} Hz" if kind == "freq" else f"buckling mode {n}: load multiplier {value:.6g}"
     return shape, what
 

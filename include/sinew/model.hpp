@@ -123,6 +123,16 @@ struct OutputSteps {
   }
 };
 
+/// Sinew: opt.step_analyses, the written rows at which the step analyses (frequencies, buckling,
+/// compliance, state space) run; which analyses run is decided by calcfreq, calcbuck, calccompl,
+/// transfer. Unset: every row of load-stepped statics (SPACAR Light's out.freq / CMglob per load
+/// step), the last row of form finding, path following and dynamics.
+struct StepAnalysisRows {
+  enum class Kind { All, Last, Every, None } kind = Kind::All;
+  int every = 1;  ///< Kind::Every: a row once `every` rows have passed since the last analysed row (the first row of a run has them)
+  bool operator==(const StepAnalysisRows&) const = default;
+};
+
 /// Path following (opt.continuation) instead of load stepping; the applied loads are the reference load.
 struct ContinuationOptions {
   std::string method = "arclength";       ///< arclength | displacement
@@ -159,6 +169,7 @@ struct Options {
   int nfreq = 6;   ///< Sinew: number of frequencies (also -eps_nev)
   int nbuck = 3;   ///< Sinew: number of buckling multipliers
   OutputSteps output_steps;
+  std::optional<StepAnalysisRows> step_analyses;  ///< Sinew: nullopt = the default of each procedure
 };
 
 struct FormFinding {

@@ -68,6 +68,17 @@ class ResultFile {
   /// Starts step `step` (0-based, consecutive) with its load factor or time. Every step-indexed
   /// dataset written afterwards for this step goes to row `step`.
   void beginStep(int step, double stepValue);
+  /// Step-analysis rows (frequencies, buckling, compliance: the analyses opt.step_analyses runs at
+  /// some rows only): between beginAnalysisRow() and endAnalysisRow() every step-indexed write goes
+  /// to a dataset with one row per step-analysis row ([m, ...] instead of [ns, ...], HDF5 attribute
+  /// rows = "step_analysis_rows"); the new row belongs to the current step. /step_analysis_rows [m]
+  /// (int64, 0-based step rows) says which step each row belongs to; it is written only while those
+  /// rows are not every step row (0, 1, ..., ns - 1), so a run that analyses every step keeps the
+  /// [ns, ...] datasets of earlier versions. A dataset stays on the rows it was created on.
+  void beginAnalysisRow();
+  void endAnalysisRow();
+  /// Step row of each step-analysis row so far (the same on every rank).
+  const std::vector<long>& analysisRows() const;
   /// [ns, nn, inner...] dataset ("node/p", "node/CMglob" with inner {6,6}): this rank's rows, in
   /// the order of layout.ownedNodes, each of prod(inner) values.
   void writeNodeField(const std::string& name, std::span<const double> values, std::vector<long> inner);

@@ -377,7 +377,15 @@ PetscErrorCode runScene(int argc, char** argv, int* exitCode) {
   body.stress = plan.stress && ctx.nextStep > 0;
   body.stressMax = results.lastStressMax();
   body.stressElement = results.lastStressElement();
-  body.analysisLines = ctx.summaryLines;
+  body.rotations = dmesh->anyRotations;
+  body.tensileOnly = !dmesh->anyRotations && !dmesh->anyAncf && !model.eprops.empty() &&
+                     std::all_of(model.eprops.begin(), model.eprops.end(), [](const ElementSet& s) {
+                       return s.type() == ElementType::Cable || s.type() == ElementType::Membrane;
+                     });
+  body.tensile = results.tensileSummary();
+  body.mostMoving = results.mostMovingNode();
+  body.verbose = settings.output.verbose;
+  body.analysisLines = ctx.summaryLines + ctx.stepAnalysisLine();
   for (auto& a : ctx.stepAnalyses) body.analysisLines += a->summary();
   for (const ElementKind& kind : elementKinds()) {  // the evaluation counters of the kinds the model uses
     if (!kind.counters || std::none_of(model.eprops.begin(), model.eprops.end(),
@@ -385,7 +393,7 @@ PetscErrorCode runScene(int argc, char** argv, int* exitCode) {
       continue;
     std::vector<long> n = kind.counters();
     MPI_Allreduce(MPI_IN_PLACE, n.data(), static_cast<int>(n.size()), MPI_LONG, MPI_SUM, comm);
-    body.analysisLines += kind.countersLine(n);
+    body.developerLines += kind.countersLine(n);
   }
   body.counters = assembler.counters();
   body.times = ctx.times;

@@ -1,9 +1,72 @@
 #include "app/summary.hpp"
 
+#include <cmath>
 #include <cstdio>
 #include <sstream>
 
 namespace sinew {
+
+namespace {
+
+constexpr std::size_t kReactionTableRows = 12;  // a longer list of supports is summed up, not listed
+
+// Cables and membranes: extreme forces / stress resultants with their element (1-based), slack and
+// wrinkled counts.
+void tensileLines(std::ostringstream& s, const TensileSummary& t) {
+  char line[320];
+  if (t.cables > 0) {
+    std::snprintf(line, sizeof line,
+                  "\n cables (last step): axial force max %.4e N (element %d), min %.4e N (element %d); %ld of %ld slack\n",
+                  t.forceMax, t.forceMaxElement + 1, t.forceMin, t.forceMinElement + 1, t.slack, t.cables);
+    s << line;
+  }
+  if (t.membranes > 0) {
+    std::snprintf(line, sizeof line,
+                  "%s membranes (last step): principal stress resultant n1 max %.4e N/m (element %d), n2 min %.4e N/m "
+                  "(element %d); %ld of %ld wrinkled (n2 <= 0)\n",
+                  t.cables > 0 ? "" : "\n", t.n1Max, t.n1MaxElement + 1, t.n2Min, t.n2MinElement + 1, t.wrinkled, t.membranes);
+    s << line;
+  }
+}
+
+// A model without rotations: the node that moves most and the reactions (listed up to
+// kReactionTableRows supports, else their sum and the largest).
+void pointNodeLines(std::ostringstream& s, const SummaryBody& b) {
+  char line[256];
+  if (b.mostMoving.node > 0) {
+    const auto& v = b.mostMoving.v;
+    std::snprintf(line, sizeof line, " node that moves most (last step): node %d, |u| = %.4e m (ux %.4e, uy %.4e, uz %.4e)\n",
+                  b.mostMoving.node, std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]), v[0], v[1], v[2]);
+    s << line;
+  }
+  std::vector<const NodeSummaryRow*> supports;
+  for (const auto& n : b.nodes)
+    if (n.v[6] != 0.0 || n.v[7] != 0.0 || n.v[8] != 0.0) supports.push_back(&n);
+  if (supports.empty()) return;
+  if (supports.size() <= kReactionTableRows) {
+    s << "\n reactions (last step)\n"
+         " node      Fx [N]      Fy [N]      Fz [N]\n";
+    for (const NodeSummaryRow* n : supports) {
+      std::snprintf(line, sizeof line, " %4d %11.4e %11.4e %11.4e\n", n->node, n->v[6], n->v[7], n->v[8]);
+      s << line;
+    }
+    return;
+  }
+  double sum[3] = {0, 0, 0}, largest = -1;
+  const NodeSummaryRow* top = nullptr;
+  for (const NodeSummaryRow* n : supports) {
+    for (int k = 0; k < 3; ++k) sum[k] += n->v[6 + k];
+    const double f = std::sqrt(n->v[6] * n->v[6] + n->v[7] * n->v[7] + n->v[8] * n->v[8]);
+    if (f > largest) largest = f, top = n;
+  }
+  std::snprintf(line, sizeof line,
+                " reactions (last step): %zu supported nodes, sum (%.4e, %.4e, %.4e) N; largest |F| = %.4e N at node %d "
+                "(%.4e, %.4e, %.4e) (every reaction: /node/Freac)\n",
+                supports.size(), sum[0], sum[1], sum[2], largest, top->node, top->v[6], top->v[7], top->v[8]);
+  s << line;
+}
+
+}  // namespace
 
 PetscErrorCode printHeader(MPI_Comm comm, const SummaryHeader& h) {
   PetscFunctionBeginUser;
@@ -36,7 +99,10 @@ PetscErrorCode printSummary(MPI_Comm comm, const SummaryBody& b) {
       s << line;
     }
   }
-  if (!b.nodes.empty() && b.planar) {
+  if (b.tensileOnly) {
+    tensileLines(s, b.tensile);
+    pointNodeLines(s, b);
+  } else if (!b.nodes.empty() && b.planar) {
     s << "\n loaded and supported nodes, and the node that moves most (last step)\n"
          " node      ux [m]      uy [m]   rz [rad]\n";
     for (const auto& n : b.nodes) {
@@ -48,6 +114,20 @@ PetscErrorCode printSummary(MPI_Comm comm, const SummaryBody& b) {
     for (const auto& n : b.nodes) {
       if (n.v[6] == 0.0 && n.v[7] == 0.0 && n.v[11] == 0.0) continue;
       std::snprintf(line, sizeof line, " %4d %11.4e %11.4e %11.4e\n", n.node, n.v[6], n.v[7], n.v[11]);
+      s << line;
+    }
+  } else if (!b.nodes.empty() && !b.rotations) {  // point nodes only (cables, membranes with beams absent): no rotation columns
+    s << "\n loaded and supported nodes, and the node that moves most (last step)\n"
+         " node      ux [m]      uy [m]      uz [m]\n";
+    for (const auto& n : b.nodes) {
+      std::snprintf(line, sizeof line, " %4d %11.4e %11.4e %11.4e\n", n.node, n.v[0], n.v[1], n.v[2]);
+      s << line;
+    }
+    s << "\n reactions (last step)\n"
+         " node      Fx [N]      Fy [N]      Fz [N]\n";
+    for (const auto& n : b.nodes) {
+      if (n.v[6] == 0.0 && n.v[7] == 0.0 && n.v[8] == 0.0) continue;
+      std::snprintf(line, sizeof line, " %4d %11.4e %11.4e %11.4e\n", n.node, n.v[6], n.v[7], n.v[8]);
       s << line;
     }
   } else if (!b.nodes.empty()) {
@@ -69,6 +149,7 @@ PetscErrorCode printSummary(MPI_Comm comm, const SummaryBody& b) {
       s << line;
     }
   }
+  if (!b.tensileOnly) tensileLines(s, b.tensile);  // cables / membranes beside beams
   if (b.stress) {
     std::snprintf(line, sizeof line, "\n max Von Mises stress %.4e Pa (element %d)\n", b.stressMax, b.stressElement + 1);
     s << line;
@@ -90,15 +171,20 @@ PetscErrorCode printSummary(MPI_Comm comm, const SummaryBody& b) {
     std::snprintf(line, sizeof line, ", %s %.3f s (%ld Newton iterations)", p.name, p.seconds, p.its);
     s << line;
   }
-  std::snprintf(line, sizeof line,
-                ", step analyses %.3f s, output %.3f s (checkpoints %.3f s)\n"
-                " assemblies: %ld residuals, %ld tangents, %ld mass, %ld split tangents, %ld stress\n",
-                b.times.analyses, b.times.output, b.times.checkpoint, b.counters.residuals, b.counters.jacobians,
-                b.counters.masses, b.counters.splitTangents, b.counters.stressRecoveries);
+  std::snprintf(line, sizeof line, ", step analyses %.3f s, output %.3f s (checkpoints %.3f s)\n", b.times.analyses,
+                b.times.output, b.times.checkpoint);
   s << line;
-  if (b.counters.pressureLoads > 0) s << " pressure: " << b.counters.pressureLoads << " follower element loads (rank 0)\n";
-  s << " results: " << b.h5 << " (ParaView: " << b.xdmf << "); " << b.commits << " commits, " << b.syncedCommits
-    << " forced to the disk (-output_fsync_interval)\n";
+  if (b.verbose) {  // developer counters
+    std::snprintf(line, sizeof line, " assemblies: %ld residuals, %ld tangents, %ld mass, %ld split tangents, %ld stress\n",
+                  b.counters.residuals, b.counters.jacobians, b.counters.masses, b.counters.splitTangents,
+                  b.counters.stressRecoveries);
+    s << line;
+    if (b.counters.pressureLoads > 0) s << " pressure: " << b.counters.pressureLoads << " follower element loads (rank 0)\n";
+    s << b.developerLines;
+  }
+  s << " results: " << b.h5 << " (ParaView: " << b.xdmf << ")";
+  if (b.verbose) s << "; " << b.commits << " commits, " << b.syncedCommits << " forced to the disk (-output_fsync_interval)";
+  s << "\n";
   if (!b.converged) s << "\nerror: " << b.failure << "\n";
   PetscCall(PetscPrintf(comm, "%s", s.str().c_str()));
   PetscFunctionReturn(PETSC_SUCCESS);

@@ -29,6 +29,14 @@ struct SummaryHeader {
 struct SummaryBody {
   std::vector<StepReport> reports;
   std::vector<NodeSummaryRow> nodes;
+  /// A model of cables and membranes only: what a designer reads (cable forces, membrane resultants,
+  /// slack / wrinkled counts, reactions, the node that moves most) instead of the node table.
+  bool tensileOnly = false;
+  bool rotations = true;       ///< the model has rotation unknowns (else no rotation columns)
+  TensileSummary tensile;      ///< cables / membranes of the model (counts 0: none)
+  NodeSummaryRow mostMoving;   ///< node 0: none moves
+  bool verbose = false;        ///< -verbose: also the developer counters
+  std::string developerLines;  ///< counters printed with -verbose (element kinds' force-law evaluations)
   bool stress = false;
   double stressMax = 0;
   int stressElement = -1;

@@ -129,8 +129,26 @@ void ResultFile::beginStep(int step, double stepValue) {
   if (error.empty() && step != m.numSteps())
     error = "step " + std::to_string(step) + " does not follow step " + std::to_string(m.numSteps() - 1);
   agree(m.comm, error, signatureOf(m.layout.stepName, {step}, 10), what);
+  m.analysisOpen = false;
   m.apply([&m, step, stepValue](Sink& s) { m.beginStepIn(s, step, stepValue); });
 }
+
+void ResultFile::beginAnalysisRow() {
+  Impl& m = *impl_;
+  const std::string what = std::string("dataset /") + kAnalysisRowsName;
+  std::string error = m.stateError(true);
+  const std::vector<long>& rows = m.leadSink().analysisRows;
+  if (error.empty() && m.analysisOpen) error = "a step-analysis row is already open";
+  if (error.empty() && !rows.empty() && rows.back() >= m.numSteps() - 1)
+    error = "step " + std::to_string(m.numSteps() - 1) + " already has a step-analysis row";
+  agree(m.comm, error, signatureOf(kAnalysisRowsName, {m.numSteps()}, 15), what);
+  m.analysisOpen = true;
+  m.apply([&m](Sink& s) { m.beginAnalysisRowIn(s); });
+}
+
+void ResultFile::endAnalysisRow() { impl_->analysisOpen = false; }
+
+const std::vector<long>& ResultFile::analysisRows() const { return impl_->leadSink().analysisRows; }
 
 void ResultFile::writeNodeField(const std::string& name, std::span<const double> values, std::vector<long> inner) {
   impl_->writeTable(Kind::Node, name, values, std::move(inner));
@@ -174,6 +192,8 @@ void ResultFile::writeStepRow(const std::string& rawName, std::span<const double
       else if (k > it->second.rowLength)
         error = std::to_string(k) + " values, more than the " + std::to_string(it->second.rowLength) +
                 " of its first row";
+      else
+        error = m.axisError(it->second);
     } else {
       error = m.nameError(name);
     }
@@ -182,12 +202,12 @@ void ResultFile::writeStepRow(const std::string& rawName, std::span<const double
   if (it == steps.end() && k == 0) return;  // nothing fixes the row length yet; rows stay NaN
 
   std::vector<double> row(m.rank == 0 ? values.begin() : values.end(), values.end());
-  m.apply([&m, name, k, row = std::move(row)](Sink& s) {
+  m.apply([&m, name, k, axis = m.analysisOpen, row = std::move(row)](Sink& s) {
     auto found = s.steps.find(name);
     StepDataset& sd = found != s.steps.end()
                           ? found->second
-                          : m.createStepDataset(s, name, Kind::Row, k == 1 ? std::vector<long>{} : std::vector<long>{k}, k);
-    const int step = s.numSteps() - 1;
+                          : m.createStepDataset(s, name, Kind::Row, k == 1 ? std::vector<long>{} : std::vector<long>{k}, k, axis);
+    const int step = s.numRows(sd) - 1;
     std::vector<double> padded(sd.rowLength, 0.0);  // shorter rows are padded with 0
     std::copy(row.begin(), row.end(), padded.begin());
     std::vector<hsize_t> start{hsize_t(step)}, count{1};
@@ -376,6 +396,7 @@ void ResultFile::close(bool converged) {
     Sink& lead = m.leadSink();
     m.fillAll(lead);
     h5::writeAttribute(lead.file, "converged", ok);
+    agreeStatus(m.comm, lead.analysisRowsDset.reset(), std::string("dataset /") + kAnalysisRowsName + ": close", lead.name);
     for (auto& [name, sd] : lead.steps) agreeStatus(m.comm, sd.dset.reset(), "dataset /" + name + ": close", lead.name);
     for (auto& [name, d] : lead.state) agreeStatus(m.comm, d.reset(), "dataset /" + name + ": close", lead.name);
     h5::check(lead.dxpl.reset(), "file " + lead.name + ": transfer list");

@@ -55,9 +55,10 @@ void ResultFile::Impl::createFile(Sink& s, const std::string& name) {
 }
 
 StepDataset& ResultFile::Impl::createStepDataset(Sink& s, const std::string& name, Kind kind, std::vector<long> inner,
-                                                  long rowLength) {
+                                                  long rowLength, bool analysisAxis) {
   const std::string what = "dataset /" + name;
-  std::vector<hsize_t> dims{hsize_t(s.numSteps())}, maxdims{H5S_UNLIMITED}, chunk;
+  const int rows = analysisAxis ? s.numAnalysisRows() : s.numSteps();
+  std::vector<hsize_t> dims{hsize_t(rows)}, maxdims{H5S_UNLIMITED}, chunk;
   for (long d : inner) {
     dims.push_back(hsize_t(d));
     maxdims.push_back(d > 0 ? hsize_t(d) : H5S_UNLIMITED);
@@ -87,10 +88,18 @@ StepDataset& ResultFile::Impl::createStepDataset(Sink& s, const std::string& nam
   sd.kind = kind;
   sd.dset = h5::Handle(id, H5Dclose, what + ": create");
   sd.inner = std::move(inner);
-  sd.written.assign(s.numSteps(), 0);
-  sd.filled.assign(s.numSteps(), 0);
+  sd.written.assign(rows, 0);
+  sd.filled.assign(rows, 0);
   sd.rowLength = rowLength;
+  sd.analysisAxis = analysisAxis;
+  if (analysisAxis) h5::writeAttribute(sd.dset, "rows", std::string(kAnalysisRowsName));  // readers: row j is step row step_analysis_rows[j]
   return s.steps.emplace(name, std::move(sd)).first->second;
+}
+
+std::string ResultFile::Impl::axisError(const StepDataset& sd) const {
+  if (sd.analysisAxis == analysisOpen) return "";
+  return sd.analysisAxis ? "has one row per step-analysis row, written outside a step-analysis row"
+                         : "has one row per step, written inside a step-analysis row";
 }
 
 std::string ResultFile::Impl::stateError(bool needsStep) const {
@@ -103,6 +112,7 @@ std::string ResultFile::Impl::stateError(bool needsStep) const {
 std::string ResultFile::Impl::nameError(const std::string& name) const {
   if (name.empty()) return "empty dataset name";
   if (name == layout.stepName) return "name reserved for the step values";
+  if (name == kAnalysisRowsName) return "name reserved for the rows of the step analyses";
   for (std::size_t pos = 0;;) {
     pos = name.find('/', pos + 1);
     const std::string prefix = name.substr(0, pos);
@@ -117,6 +127,7 @@ void ResultFile::Impl::beginStepIn(Sink& s, int step, double stepValue) {
   if (step == 0) createStepDataset(s, layout.stepName, Kind::Row, {}, 1);
   s.stepValues.push_back(stepValue);
   for (auto& [name, sd] : s.steps) {
+    if (sd.analysisAxis) continue;  // extended by beginAnalysisRowIn
     std::vector<hsize_t> dims{hsize_t(s.numSteps())};
     for (long d : sd.inner) dims.push_back(hsize_t(d));
     agreeStatus(comm, H5Dset_extent(sd.dset, dims.data()), "dataset /" + name + ": extend to step " + std::to_string(step),
@@ -127,6 +138,38 @@ void ResultFile::Impl::beginStepIn(Sink& s, int step, double stepValue) {
   StepDataset& sv = s.steps.at(layout.stepName);
   writeBox(s, sv.dset, H5T_NATIVE_DOUBLE, {hsize_t(step)}, {1}, rank == 0 ? &stepValue : nullptr, what);
   sv.written[step] = 1;
+}
+
+void ResultFile::Impl::beginAnalysisRowIn(Sink& s) {
+  s.analysisRows.push_back(s.numSteps() - 1);
+  const int row = s.numAnalysisRows() - 1;
+  for (auto& [name, sd] : s.steps) {
+    if (!sd.analysisAxis) continue;
+    std::vector<hsize_t> dims{hsize_t(s.numAnalysisRows())};
+    for (long d : sd.inner) dims.push_back(hsize_t(d));
+    agreeStatus(comm, H5Dset_extent(sd.dset, dims.data()),
+                "dataset /" + name + ": extend to step-analysis row " + std::to_string(row), s.name);
+    sd.written.push_back(0);
+    sd.filled.push_back(0);
+  }
+}
+
+void ResultFile::Impl::writeAnalysisRows(Sink& s) {
+  const bool everyStep = s.numAnalysisRows() == s.numSteps();  // rows are increasing: then they are 0 .. ns - 1
+  if (s.analysisRows.empty() || (everyStep && !s.analysisRowsDset.valid())) return;
+  const std::string what = std::string("dataset /") + kAnalysisRowsName;
+  const std::vector<hsize_t> dims{hsize_t(s.numAnalysisRows())};
+  if (!s.analysisRowsDset.valid()) {
+    const std::vector<hsize_t> maxdims{H5S_UNLIMITED}, chunk{256};
+    h5::Handle space = h5::dataspace(std::vector<hsize_t>{0}, maxdims, what);
+    h5::Handle dcpl(H5Pcreate(H5P_DATASET_CREATE), H5Pclose, what + ": creation list");
+    h5::check(H5Pset_chunk(dcpl, 1, chunk.data()), what + ": chunk");
+    const hid_t id = H5Dcreate2(s.file, kAnalysisRowsName, H5T_STD_I64LE, space, H5P_DEFAULT, dcpl, H5P_DEFAULT);
+    agreeStatus(comm, id, what + ": create", s.name);
+    s.analysisRowsDset = h5::Handle(id, H5Dclose, what + ": create");
+  }
+  agreeStatus(comm, H5Dset_extent(s.analysisRowsDset, dims.data()), what + ": extend", s.name);
+  writeBox(s, s.analysisRowsDset, H5T_NATIVE_LONG, {0}, dims, rank == 0 ? s.analysisRows.data() : nullptr, what);
 }
 
 void ResultFile::Impl::writeTable(Kind kind, const std::string& rawName, std::span<const double> values,
@@ -151,15 +194,17 @@ void ResultFile::Impl::writeTable(Kind kind, const std::string& rawName, std::sp
     if (error.empty()) error = e;
   } else if (error.empty() && it != steps.end() && (it->second.kind != kind || it->second.inner != dims)) {
     error = std::string("exists as a ") + kindName(it->second.kind) + " of another shape";
+  } else if (error.empty() && it != steps.end()) {
+    error = axisError(it->second);
   }
   agree(comm, error, signatureOf(name, dims, static_cast<int>(kind)), what);
 
   const RowPlan& p = plan(kind);
-  apply([this, kind, name, dims, inner, block = p.exchange(comm, values, m)](Sink& s) {
+  apply([this, kind, name, dims, inner, axis = analysisOpen, block = p.exchange(comm, values, m)](Sink& s) {
     auto found = s.steps.find(name);
-    StepDataset& sd = found != s.steps.end() ? found->second : createStepDataset(s, name, kind, dims, 1);
+    StepDataset& sd = found != s.steps.end() ? found->second : createStepDataset(s, name, kind, dims, 1, axis);
     const RowPlan& pl = plan(kind);
-    const int step = s.numSteps() - 1;
+    const int step = s.numRows(sd) - 1;
     std::vector<hsize_t> start{hsize_t(step), hsize_t(pl.begin)}, count{1, hsize_t(pl.count)};
     for (long d : inner) {
       start.push_back(0);
@@ -172,13 +217,14 @@ void ResultFile::Impl::writeTable(Kind kind, const std::string& rawName, std::sp
 
 void ResultFile::Impl::fillUnwritten(Sink& s, const std::string& name, StepDataset& sd) {
   const std::string what = "dataset /" + name + ": NaN rows";
-  for (int st = 0; st < s.numSteps();) {
+  const int rows = s.numRows(sd);
+  for (int st = 0; st < rows;) {
     if (sd.written[st] || sd.filled[st]) {
       ++st;
       continue;
     }
     int e = st;
-    while (e < s.numSteps() && !sd.written[e] && !sd.filled[e]) ++e;
+    while (e < rows && !sd.written[e] && !sd.filled[e]) ++e;
     std::vector<hsize_t> start{hsize_t(st)}, count{hsize_t(e - st)};
     bool mine = rank == 0;
     if (sd.kind != Kind::Row) {
@@ -202,6 +248,7 @@ void ResultFile::Impl::fillUnwritten(Sink& s, const std::string& name, StepDatas
 
 void ResultFile::Impl::fillAll(Sink& s) {
   for (auto& [name, sd] : s.steps) fillUnwritten(s, name, sd);
+  writeAnalysisRows(s);
 }
 
 void ResultFile::Impl::computeCellOffsets() {
@@ -338,7 +385,7 @@ XdmfDescription ResultFile::Impl::xdmfDescription(const Sink& s) const {
         for (const LookPart& lp : kLookParts)
           d.cells.back().staticFields.push_back(
               {std::string(lp.suffix + 1), std::string("/mesh/") + kinds[k].name + lp.suffix,
-               lp.count > 1 ? std::vector<long>{lp.count} : std::vector<long>{}, {}});
+               lp.count > 1 ? std::vector<long>{lp.count} : std::vector<long>{}, {}, {}, -1});
     }
   auto field = [](const std::string& name, const std::string& dataset, const StepDataset& sd) {
     XdmfField f;
@@ -348,14 +395,26 @@ XdmfDescription ResultFile::Impl::xdmfDescription(const Sink& s) const {
     f.written = sd.written;
     return f;
   };
+  // the step row of each step-analysis row -> per step, the row of an analysis-axis dataset (or -1)
+  std::vector<long> analysisRowOfStep(s.stepValues.size(), -1);
+  for (std::size_t j = 0; j < s.analysisRows.size(); ++j)
+    if (s.analysisRows[j] >= 0 && s.analysisRows[j] < static_cast<long>(analysisRowOfStep.size()))
+      analysisRowOfStep[static_cast<std::size_t>(s.analysisRows[j])] = static_cast<long>(j);
+  auto onRows = [&](XdmfField f, const StepDataset& sd) {
+    if (sd.analysisAxis) {
+      f.rowOfStep = analysisRowOfStep;
+      f.numRows = s.numAnalysisRows();
+    }
+    return f;
+  };
   for (const auto& [name, sd] : s.steps) {
     if (sd.kind == Kind::Mesh && name != "mesh/p") {
       // /mesh/u is the displacement from the reference geometry /mesh/p0
-      d.pointFields.push_back(field(name == "mesh/u" ? "displacement" : name.substr(5), name, sd));
+      d.pointFields.push_back(onRows(field(name == "mesh/u" ? "displacement" : name.substr(5), name, sd), sd));
     } else if (isCellKind(sd.kind)) {
       const std::string kind = kinds[cellIndex(sd.kind)].name;
       for (XdmfCellBlock& c : d.cells)
-        if (c.name == kind) c.fields.push_back(field(name.substr(name.rfind('/') + 1), name, sd));
+        if (c.name == kind) c.fields.push_back(onRows(field(name.substr(name.rfind('/') + 1), name, sd), sd));
     }
   }
   return d;

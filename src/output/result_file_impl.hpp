@@ -60,7 +60,10 @@ struct StepDataset {
   std::vector<char> written;  // per step
   std::vector<char> filled;   // per step: NaN written into a row never written
   long rowLength = 1;         // Kind::Row: k
+  bool analysisAxis = false;  // rows are the step-analysis rows (ResultFile::beginAnalysisRow), not the steps
 };
+
+inline constexpr const char* kAnalysisRowsName = "step_analysis_rows";
 
 struct CellKind {
   const char* name;        // dataset name under /mesh
@@ -84,10 +87,15 @@ struct Sink {
   h5::Handle file, dxpl;
   std::map<std::string, StepDataset> steps;  // std::map: every rank iterates in the same order
   std::vector<double> stepValues;
+  std::vector<long> analysisRows;  // step row of each step-analysis row
+  h5::Handle analysisRowsDset;     // /step_analysis_rows, once the analysis rows are not every step row
   std::map<std::string, h5::Handle> state;  // fixed-size restart state datasets, kept open
   std::set<std::string> stateGroups;
   int numSteps() const { return static_cast<int>(stepValues.size()); }
+  int numAnalysisRows() const { return static_cast<int>(analysisRows.size()); }
+  int numRows(const StepDataset& sd) const { return sd.analysisAxis ? numAnalysisRows() : numSteps(); }
   void closeHandles() noexcept {
+    analysisRowsDset.reset();
     for (auto& [name, sd] : steps) sd.dset.reset();
     for (auto& [name, d] : state) d.reset();
     dxpl.reset();
@@ -118,6 +126,7 @@ struct ResultFile::Impl {
   std::vector<Op> log;       // writes since the last commit, replayed into the other sink
   long cellTotals[3] = {0, 0, 0}, cellOffsets[3] = {0, 0, 0};
   bool closed = false, failed = false;
+  bool analysisOpen = false;  // between beginAnalysisRow and endAnalysisRow (the same on every rank)
   double syncInterval = 10, lastSync = 0;  // seconds between commits forced to the disk (file_sync.hpp)
   long commits = 0, syncedCommits = 0;
   std::uintmax_t leadBytes = 0, stepBytes = 0;  // rank 0: lead file size after the last flush, largest growth per commit
@@ -161,8 +170,14 @@ struct ResultFile::Impl {
 
   void createFile(Sink& s, const std::string& name);
 
-  // [steps, inner...] dataset, chunked and unlimited along the step axis.
-  StepDataset& createStepDataset(Sink& s, const std::string& name, Kind kind, std::vector<long> inner, long rowLength);
+  // [steps, inner...] dataset, chunked and unlimited along the step axis (analysisAxis: along the
+  // step-analysis rows).
+  StepDataset& createStepDataset(Sink& s, const std::string& name, Kind kind, std::vector<long> inner, long rowLength,
+                                 bool analysisAxis = false);
+
+  // Why a write to the existing dataset `sd` cannot go to the rows now open (step rows or
+  // step-analysis rows), or "".
+  std::string axisError(const StepDataset& sd) const;
 
   // Why a write cannot go ahead now, or "".
   std::string stateError(bool needsStep) const;
@@ -174,6 +189,11 @@ struct ResultFile::Impl {
   std::string nameError(const std::string& name) const;
 
   void beginStepIn(Sink& s, int step, double stepValue);
+  void beginAnalysisRowIn(Sink& s);
+
+  // /step_analysis_rows of sink s: written (whole) while its step-analysis rows are not every step
+  // row; called before every flush (fillAll).
+  void writeAnalysisRows(Sink& s);
 
   void writeTable(Kind kind, const std::string& rawName, std::span<const double> values, std::vector<long> inner);
 

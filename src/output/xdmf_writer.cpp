@@ -40,10 +40,11 @@ std::string joined(const std::vector<long>& v) {
   return s;
 }
 
-// Row `step` of a [ns, rows, inner...] dataset: a HyperSlab DataItem over the HDF5 dataset.
-std::string hyperslab(const XdmfDescription& d, const XdmfField& f, long rows, int step, const std::string& indent) {
-  const long ns = static_cast<long>(d.stepValues.size());
-  std::vector<long> full{ns, rows}, start{step, 0}, stride{1, 1}, count{1, rows};
+// Row `row` of a [ns, rows, inner...] dataset (ns: its rows, f.numRows on the step-analysis rows):
+// a HyperSlab DataItem over the HDF5 dataset.
+std::string hyperslab(const XdmfDescription& d, const XdmfField& f, long rows, long row, const std::string& indent) {
+  const long ns = f.numRows >= 0 ? f.numRows : static_cast<long>(d.stepValues.size());
+  std::vector<long> full{ns, rows}, start{row, 0}, stride{1, 1}, count{1, rows};
   for (long n : f.inner) {
     full.push_back(n);
     start.push_back(0);
@@ -74,10 +75,13 @@ std::string attributes(const XdmfDescription& d, const std::vector<XdmfField>& f
                        int step, const std::string& indent) {
   std::ostringstream o;
   for (const auto& f : fields) {
-    if (step >= static_cast<int>(f.written.size()) || !f.written[step]) continue;
+    // the dataset row of this step: the step itself, or its step-analysis row (none: not shown)
+    long row = step;
+    if (!f.rowOfStep.empty()) row = step < static_cast<int>(f.rowOfStep.size()) ? f.rowOfStep[step] : -1;
+    if (row < 0 || row >= static_cast<long>(f.written.size()) || !f.written[row]) continue;
     o << indent << "<Attribute Name=\"" << escape(f.name) << "\" AttributeType=\"" << attributeType(f.inner)
       << "\" Center=\"" << center << "\">\n"
-      << hyperslab(d, f, rows, step, indent + "  ") << indent << "</Attribute>\n";
+      << hyperslab(d, f, rows, row, indent + "  ") << indent << "</Attribute>\n";
   }
   return o.str();
 }

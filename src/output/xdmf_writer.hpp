@@ -15,7 +15,11 @@ struct XdmfField {
   std::string name;          ///< attribute name in ParaView ("displacement")
   std::string dataset;       ///< "/mesh/u"
   std::vector<long> inner;
-  std::vector<char> written; ///< per step: row was written
+  std::vector<char> written; ///< per dataset row: row was written
+  /// A dataset on the step-analysis rows (/step_analysis_rows): its row of each step, -1 where the
+  /// step has none; empty: the dataset's rows are the steps.
+  std::vector<long> rowOfStep;
+  long numRows = -1;         ///< rows of the dataset (-1: the steps)
 };
 
 /// One cell kind of /mesh: "Polyline" (2 nodes), "Triangle", "Quadrilateral", with its cell fields.

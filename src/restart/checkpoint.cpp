@@ -383,6 +383,12 @@ std::vector<double> CheckpointReader::readStepRow(const std::string& name, int s
   return readPoints(d, coords, r, what);
 }
 
+bool CheckpointReader::onAnalysisRows(const std::string& name) const {
+  const std::string what = path_ + ": /" + name;
+  h5::Handle d(H5Dopen2(static_cast<hid_t>(file_), name.c_str(), H5P_DEFAULT), H5Dclose, what);
+  return h5::check(H5Aexists(d, "rows"), what + ": attribute rows") > 0;
+}
+
 std::vector<long> CheckpointReader::datasetShape(const std::string& name) const {
   const std::string what = path_ + ": /" + name;
   h5::Handle d(H5Dopen2(static_cast<hid_t>(file_), name.c_str(), H5P_DEFAULT), H5Dclose, what);

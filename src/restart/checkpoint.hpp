@@ -141,6 +141,9 @@ class CheckpointReader {
   /// A dataset written once (formfinding/residual ...): its values and shape.
   std::vector<double> readArray(const std::string& name, std::vector<long>* shape) const;
   bool exists(const std::string& name) const;
+  /// Dataset `name` has one row per step-analysis row (its attribute rows = "step_analysis_rows",
+  /// ResultFile::beginAnalysisRow), not one per step.
+  bool onAnalysisRows(const std::string& name) const;
   /// Dimensions of dataset `name`.
   std::vector<long> datasetShape(const std::string& name) const;
 

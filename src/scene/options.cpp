@@ -50,6 +50,10 @@ const std::vector<OptionDoc>& sceneOptionDocs() {
       {"output_steps", "all | last | every:k | [steps]", "all",
        "load / time steps written, with their step analyses; the last step always, "
        "e.g. -output_steps last, -output_steps every:10, -output_steps 1,50,100"},
+      {"step_analyses", "all | last | every:k | none", "all for load steps, last for form finding, path following, dynamics",
+       "written rows at which the step analyses (frequencies, buckling, compliance, state space) run: every row, the last "
+       "row of each procedure, a row every k rows (the first and the last too), or none; calcfreq/calcbuck/calccompl/"
+       "transfer choose which analyses. Their datasets hold one row per analysed row, /step_analysis_rows says which"},
   };
   return docs;
 }
@@ -259,6 +263,33 @@ OutputSteps parseOutputSteps(const YAML::Node& v, const std::string& p) {
   fail(p, expected + describe(v));
 }
 
+StepAnalysisRows parseStepAnalyses(const YAML::Node& v, const std::string& p) {
+  const std::string expected = "expected all, last, every:k (k >= 1) or none, got ";
+  if (!v.IsScalar()) fail(p, expected + describe(v));
+  const std::string s = v.Scalar();
+  StepAnalysisRows out;
+  if (s == "all") return out;
+  if (s == "last" || s == "none") {
+    out.kind = s == "last" ? StepAnalysisRows::Kind::Last : StepAnalysisRows::Kind::None;
+    return out;
+  }
+  if (s.rfind("every:", 0) == 0) {
+    const std::string k = s.substr(6);
+    std::size_t used = 0;
+    int every = 0;
+    try {
+      every = std::stoi(k, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (used == 0 || used != k.size() || every < 1) fail(p, expected + describe(v));
+    out.kind = StepAnalysisRows::Kind::Every;
+    out.every = every;
+    return out;
+  }
+  fail(p, expected + describe(v));
+}
+
 }  // namespace
 
 void parseOptions(const YAML::Node& opt, SceneContext& ctx) {
@@ -312,6 +343,7 @@ void parseOptions(const YAML::Node& opt, SceneContext& ctx) {
     else if (k == "nfreq") o.nfreq = getIntAtLeast(v, p, 1);
     else if (k == "nbuck") o.nbuck = getIntAtLeast(v, p, 1);
     else if (k == "output_steps") o.output_steps = parseOutputSteps(v, p);
+    else if (k == "step_analyses") o.step_analyses = parseStepAnalyses(v, p);
   }
   if (opt["loadsteps"].IsDefined() && o.dynamics && !o.dynamics->start_static)
     m.warnings.push_back("opt.loadsteps is not used: opt.dynamics starts at rest from the unloaded (or form-found) state; "

@@ -13,6 +13,7 @@ const std::vector<Field<OutputSettings>>& outputFields() {
       {"restart", text("a result file"), &flag_groups::output, "none", "continue the run of this result file; from its last written step (same scene; docs/results.md, Restart)", &OutputSettings::restart},
       {"checkpoint", boolean(), &flag_groups::output, "true", "write /checkpoint (the restart state) with every written step; false: the run cannot be continued", &OutputSettings::checkpoint},
       {"stop_after_step", integerAtLeast(0), &flag_groups::output, "0 (off)", "testing aid: stop as on SIGTERM after this many rows; once the result file holds them (exit 5)", &OutputSettings::stopAfterStep, true},
+      {"verbose", boolean(), &flag_groups::output, "false", "the summary also prints the developer counters (assemblies, result-file commits, element force-law evaluations)", &OutputSettings::verbose},
   };
   return fields;
 }

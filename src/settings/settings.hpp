@@ -30,6 +30,7 @@ struct OutputSettings {
   std::string restart;              ///< -restart: the result file to continue ("": none)
   bool checkpoint = true;           ///< -checkpoint
   int stopAfterStep = 0;            ///< -stop_after_step (0: off)
+  bool verbose = false;             ///< -verbose: the summary also prints the developer counters
   bool operator==(const OutputSettings&) const = default;
 };
 

@@ -23,6 +23,7 @@ class SensorAnalysis : public StepAnalysis {
  public:
   SensorAnalysis(Assembler& assembler, const std::vector<Sensor>& sensors);
   const char* name() const override { return "sensors"; }
+  bool everyRow() const override { return true; }
   /// Velocities and accelerations (unknowns layout) of the next atStep; nullptr = at rest (statics).
   void setRates(Vec V, Vec A) {
     V_ = V;

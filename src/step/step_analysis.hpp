@@ -1,4 +1,5 @@
-// An analysis evaluated at every converged load step (frequencies, buckling, compliance...).
+// An analysis evaluated at converged steps (frequencies, buckling, compliance...): at the written rows
+// opt.step_analyses selects (RunContext::writeStep), sensors at every written row.
 #pragma once
 #include <petscvec.h>
 
@@ -16,6 +17,9 @@ class StepAnalysis {
   /// Runs at the converged state U of the current step (file.beginStep done). Sets ok = false
   /// with a message in failure() when it cannot produce its result.
   virtual PetscErrorCode atStep(Vec U, const LoadState& ls, ResultFile& file, bool* ok) = 0;
+  /// true: runs at every written row (sensors: output, not an analysis); false: at the rows
+  /// opt.step_analyses selects (frequencies, buckling, compliance, state space).
+  virtual bool everyRow() const { return false; }
   /// Lines for the stdout summary (rank 0 prints them).
   virtual std::string summary() const { return {}; }
   virtual std::string failure() const { return {}; }

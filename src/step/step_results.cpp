@@ -83,6 +83,7 @@ PetscErrorCode StepResults::write(ResultFile& file, Vec U, const LoadState& ls) 
   std::vector<double> p, quat, axang, eul, slope, Freac, Mreac, meshP, meshU;
   rows_.clear();
   maxMove_ = MaxMove{};
+  anyMove_ = MaxMove{};
   for (int i = 0; i < m.numOwnedNodes; ++i) {
     const LocalNode& n = m.nodes[i];
     const double* s = asm_.nodeState(i);
@@ -122,10 +123,14 @@ PetscErrorCode StepResults::write(ResultFile& file, Vec U, const LoadState& ls) 
       slope.push_back(n.kind == NodeKind::Ancf2D ? s[2] : 0.0);
       slope.push_back(n.kind == NodeKind::Ancf2D ? s[3] : 0.0);
     }
-    bool report = false;
-    for (int k = 0; k < 6; ++k) report |= n.load[k] != 0.0 || n.loadInitial[k] != 0.0 || n.status[k] != DofStatus::Free;
+    bool report = false, held = false;
+    for (int k = 0; k < 6; ++k) {
+      report |= n.load[k] != 0.0 || n.loadInitial[k] != 0.0 || n.status[k] != DofStatus::Free;
+      held |= n.status[k] != DofStatus::Free;
+    }
     const double umag = norm(x - n.X0);
-    if (report || umag > maxMove_.u) {
+    const bool movesMost = !held && umag > anyMove_.u;  // among the free nodes (a support may be moved on purpose)
+    if (report || umag > maxMove_.u || movesMost) {
       NodeSummaryRow row;
       row.node = n.sceneNode + 1;
       const Vec3 rv = logSO3(R);
@@ -136,7 +141,8 @@ PetscErrorCode StepResults::write(ResultFile& file, Vec U, const LoadState& ls) 
         row.v[9 + k] = M[k];
       }
       if (report) rows_.push_back(row);
-      else maxMove_ = MaxMove{umag, row};
+      else if (umag > maxMove_.u) maxMove_ = MaxMove{umag, row};
+      if (movesMost) anyMove_ = MaxMove{umag, row};
     }
   }
   PetscCall(VecRestoreArrayRead(fl, &fr));
@@ -189,6 +195,7 @@ PetscErrorCode StepResults::writeCellFields(ResultFile& file, Vec U, const LoadS
   std::array<double, 48> q;
   std::array<int, kMaxElementRows> idx;
   std::vector<double> out;
+  tensile_ = TensileSummary{};
   for (size_t e = 0; e < m.elements.size(); ++e) {
     const LocalElement& el = m.elements[e];
     const int k = cellKindOf(el);
@@ -199,9 +206,11 @@ PetscErrorCode StepResults::writeCellFields(ResultFile& file, Vec U, const LoadS
       // cable: the axial force; ANCF cable: axial forces at x = 0, L/2, L (the middle one)
       axial.push_back(out.size() == 1 ? out[0] : out.size() == 3 ? out[1] : kNaN);
       has[0] |= !out.empty();
+      if (el.kernel->tensionOnly() && out.size() == 1) addCable(q.data(), *el.kernel, out[0], el.sceneElement);
     } else {
       for (int c = 0; c < 3; ++c) n[k][c].push_back(out.size() == 3 ? out[c] : kNaN);
       has[1] |= out.size() == 3;
+      if (out.size() == 3) addMembrane(out, el.sceneElement);
     }
   }
   PetscCall(asm_.endLocal(&u));
@@ -217,6 +226,74 @@ PetscErrorCode StepResults::writeCellFields(ResultFile& file, Vec U, const LoadS
     }
   }
   PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+void StepResults::addCable(const double* q, const ElementKernel& kernel, double force, int element) {
+  TensileSummary& t = tensile_;
+  double stiffness = 0;
+  t.slack += kernel.slack(q, &stiffness) ? 1 : 0;
+  // ties: the lowest element, so that the summary does not depend on the partition
+  if (t.cables == 0 || force > t.forceMax || (force == t.forceMax && element < t.forceMaxElement))
+    t.forceMax = force, t.forceMaxElement = element;
+  if (t.cables == 0 || force < t.forceMin || (force == t.forceMin && element < t.forceMinElement))
+    t.forceMin = force, t.forceMinElement = element;
+  ++t.cables;
+}
+
+void StepResults::addMembrane(const std::vector<double>& n, int element) {
+  TensileSummary& t = tensile_;
+  // principal resultants of [n11 n12; n12 n22]
+  const double c = 0.5 * (n[0] + n[1]), r = std::hypot(0.5 * (n[0] - n[1]), n[2]);
+  const double n1 = c + r, n2 = c - r;
+  t.wrinkled += n2 <= 0.0 ? 1 : 0;
+  if (t.membranes == 0 || n1 > t.n1Max || (n1 == t.n1Max && element < t.n1MaxElement)) t.n1Max = n1, t.n1MaxElement = element;
+  if (t.membranes == 0 || n2 < t.n2Min || (n2 == t.n2Min && element < t.n2MinElement)) t.n2Min = n2, t.n2MinElement = element;
+  ++t.membranes;
+}
+
+TensileSummary StepResults::tensileSummary() const {
+  const MPI_Comm comm = asm_.mesh().comm;
+  TensileSummary all = tensile_;
+  long counts[4] = {tensile_.cables, tensile_.slack, tensile_.membranes, tensile_.wrinkled};
+  MPI_Allreduce(MPI_IN_PLACE, counts, 4, MPI_LONG, MPI_SUM, comm);
+  all.cables = counts[0], all.slack = counts[1], all.membranes = counts[2], all.wrinkled = counts[3];
+  // extremes with their element: MAXLOC picks the lowest element among equal values
+  struct Loc {
+    double v;
+    int e;
+  };
+  auto extreme = [&](bool any, double v, int e, bool largest, double* out, int* elem) {
+    Loc mine{any ? (largest ? v : -v) : -std::numeric_limits<double>::infinity(), any ? e : std::numeric_limits<int>::max()},
+        best{};
+    MPI_Allreduce(&mine, &best, 1, MPI_DOUBLE_INT, MPI_MAXLOC, comm);
+    *out = largest ? best.v : -best.v;
+    *elem = best.e;
+  };
+  const bool c = tensile_.cables > 0, mb = tensile_.membranes > 0;
+  extreme(c, tensile_.forceMax, tensile_.forceMaxElement, true, &all.forceMax, &all.forceMaxElement);
+  extreme(c, tensile_.forceMin, tensile_.forceMinElement, false, &all.forceMin, &all.forceMinElement);
+  extreme(mb, tensile_.n1Max, tensile_.n1MaxElement, true, &all.n1Max, &all.n1MaxElement);
+  extreme(mb, tensile_.n2Min, tensile_.n2MinElement, false, &all.n2Min, &all.n2MinElement);
+  return all;
+}
+
+NodeSummaryRow StepResults::mostMovingNode() const {
+  const DistributedMesh& m = asm_.mesh();
+  // the largest displacement; among equal ones the lowest node (MAXLOC)
+  struct {
+    double u;
+    int node;
+  } mine{anyMove_.u, anyMove_.row.node}, best{};
+  if (anyMove_.u < 0) mine.node = std::numeric_limits<int>::max();
+  MPI_Allreduce(&mine, &best, 1, MPI_DOUBLE_INT, MPI_MAXLOC, m.comm);
+  int owner = anyMove_.u >= 0 && mine.node == best.node && anyMove_.u == best.u ? m.rank : m.size;
+  MPI_Allreduce(MPI_IN_PLACE, &owner, 1, MPI_INT, MPI_MIN, m.comm);
+  NodeSummaryRow row = anyMove_.row;
+  if (owner < m.size && owner != 0) {
+    if (m.rank == owner) MPI_Send(&row, sizeof(NodeSummaryRow), MPI_BYTE, 0, 8, m.comm);
+    if (m.rank == 0) MPI_Recv(&row, sizeof(NodeSummaryRow), MPI_BYTE, owner, 8, m.comm, MPI_STATUS_IGNORE);
+  }
+  return owner < m.size ? row : NodeSummaryRow{};
 }
 
 std::vector<NodeSummaryRow> StepResults::summaryRows() const {

@@ -25,6 +25,17 @@ struct NodeSummaryRow {
   std::array<double, 12> v{};
 };
 
+/// Cables and membranes at the last written step, for the summary (collective: tensileSummary()).
+/// Elements are 0-based scene elements (-1: none).
+struct TensileSummary {
+  long cables = 0, slack = 0;       ///< tension-only cable FE elements, those slack
+  double forceMax = 0, forceMin = 0;  ///< cable axial force [N]
+  int forceMaxElement = -1, forceMinElement = -1;
+  long membranes = 0, wrinkled = 0;  ///< membrane FE elements, those with a principal resultant n2 <= 0
+  double n1Max = 0, n2Min = 0;       ///< principal stress resultants [N/m]
+  int n1MaxElement = -1, n2MinElement = -1;
+};
+
 class StepResults {
  public:
   StepResults(Assembler& assembler, const StepResultOptions& opts);
@@ -39,6 +50,11 @@ class StepResults {
   PetscErrorCode write(ResultFile& file, Vec U, const LoadState& ls);
   /// Rows of the loaded or supported scene nodes at the last written step, gathered on rank 0.
   std::vector<NodeSummaryRow> summaryRows() const;
+  /// The free scene node (no support, no prescribed motion) with the largest displacement at the last
+  /// written step, on rank 0 (node 0: none).
+  NodeSummaryRow mostMovingNode() const;
+  /// Cable forces and membrane resultants at the last written step (every rank).
+  TensileSummary tensileSummary() const;
   double lastStressMax() const { return stressMax_; }
   int lastStressElement() const { return stressElement_; }
 
@@ -49,6 +65,8 @@ class StepResults {
   PetscSF stressSF_ = nullptr;  // FE element leaves -> scene element roots, MPI_MAX
   PetscInt elemLo_ = 0, elemHi_ = 0;
   PetscErrorCode writeCellFields(ResultFile& file, Vec U, const LoadState& ls, const std::vector<double>& stress);
+  void addCable(const double* q, const ElementKernel& kernel, double force, int element);
+  void addMembrane(const std::vector<double>& n, int element);
 
   long cellCounts_[3] = {0, 0, 0};  ///< global lines, triangles, quads
   /// Reference positions of the owned nodes at construction (/mesh/p0; /mesh/u = x - X0 from them,
@@ -59,6 +77,8 @@ class StepResults {
     double u = -1.0;
     NodeSummaryRow row;
   } maxMove_;  ///< the unreported node with the largest displacement (for the summary)
+  MaxMove anyMove_;  ///< the node with the largest displacement (for the summary of cable nets and membranes)
+  TensileSummary tensile_;  ///< this rank's elements
   double stressMax_ = 0;
   int stressElement_ = -1;
 };

@@ -14,7 +14,7 @@ from ancf_scenes import cantilever, text, tip_displacement
 a3 = cantilever(1, force=1.29375e6, dynamics={"tend": 0.1, "dt": 1e-4, "spectral_radius": 0.6, "output_every": 100},
                 sensors=[{"element": 1, "x": 2.0, "variable": "Displacement", "name": "tip"},
                          {"element": 1, "x": 2.0, "variable": "Velocity", "name": "tipv"}])
-h5, out = st.run("ancf_a3", text(a3))
+h5, out = st.run("ancf_a3", text(a3), args=["-verbose"])  # -verbose: the force-law counters
 with st.h5(h5) as f:
     st.check("time" in f and "load_factor" not in f, "A3: /time expected instead of /load_factor")
     st.close(f["time"][:], np.linspace(0, 0.1, 11), atol=1e-15, what="A3 output times (output_every 100)")
@@ -38,7 +38,7 @@ ep["physicsBendingDamping"] = 0.1 * 2000.0
 ep["physicsAxialDamping"] = 0.05 * 1e5
 ep["bendingMomentUserFunction"] = "physicsBendingStiffness*0.1*atan(10*curvature)+physicsBendingDamping*curvature_t"
 ep["axialForceUserFunction"] = "max(0.02, 2-sqrt(t))*physicsAxialStiffness*axialStrain+physicsAxialDamping*axialStrain_t"
-h5, out = st.run("ancf_a5", text(a5))
+h5, out = st.run("ancf_a5", text(a5), args=["-verbose"])
 with st.h5(h5) as f:
     s = f["sensors/tip"][-1]
     st.close(s[0] + s[1], 0.6015588367721232, rtol=1e-7, what="A5 tip x + y at t = 0.5")

@@ -13,7 +13,7 @@ from ancf_scenes import cantilever, text, tip_displacement
 a1 = cantilever(32, EA=1e6, EI=833.3333333333333, gravity=[0, -9.81],
                 sensors=[{"element": 1, "x": 2.0, "variable": "Displacement", "name": "tip"},
                          {"element": 1, "x": 1.0, "variable": "Position", "name": "mid"}])
-h5a, out = st.run("ancf_a1", text(a1))
+h5a, out = st.run("ancf_a1", text(a1), args=["-verbose"])  # -verbose: the force-law counters
 with st.h5(h5a) as f:
     u = tip_displacement(f)
     st.close(u[0], -0.5013058140308901, rtol=1e-10, what="A1 tip ux")

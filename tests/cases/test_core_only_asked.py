@@ -29,7 +29,7 @@ base = {"nodes": nodes, "elements": elems, "nprops": {"1": {"fix": True}, "5": {
 EVENTS = ("SinewMassAsm", "SinewEigen", "SinewCompliance", "SinewStress", "SinewJacobian")
 for calccompl in (False, True):
     scene = dict(base, title=f"only asked, calccompl {calccompl}", opt={"loadsteps": STEPS, "calccompl": calccompl})
-    out, log = st.run(f"core_only_asked_{calccompl}", bt.yaml_text(scene), args=["-log_view"])
+    out, log = st.run(f"core_only_asked_{calccompl}", bt.yaml_text(scene), args=["-log_view", "-verbose"])
     ev = {e: event_count(log, e) for e in EVENTS}
     c = counters(log)
     print(f"flexible beam, calccompl {calccompl}: events {ev}; counters {c}")
@@ -45,7 +45,7 @@ for calccompl in (False, True):
 # rigid elements only: a free bent bar turned by a prescribed rotation at node 1
 rigid = {"title": "rigid only", "nodes": [[0, 0, 0], [0.4, 0.1, 0], [0.8, 0.1, 0.2]], "elements": [[1, 2], [2, 3]],
          "nprops": {"1": {"fix_pos": True, "rot": [0, 0, 1.0]}}, "opt": {"loadsteps": STEPS, "calccompl": False}}
-out, log = st.run("core_only_asked_rigid", bt.yaml_text(rigid), args=["-log_view"])
+out, log = st.run("core_only_asked_rigid", bt.yaml_text(rigid), args=["-log_view", "-verbose"])
 ev = {e: event_count(log, e) for e in EVENTS}
 c = counters(log)
 print(f"rigid elements only: events {ev}; counters {c}")

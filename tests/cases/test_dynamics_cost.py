@@ -41,7 +41,7 @@ st.check(re.search(r"dynamics [0-9.]+ s \(\d+ Newton iterations\)", outm) is not
 # commits forced to the disk (1 rank): all with -output_fsync_interval 0, none with an interval longer
 # than the run; on 2 ranks every commit syncs whatever the interval
 def synced(name, args, np_=1):
-    m = re.search(r"(\d+) commits, (\d+) forced to the disk", st.run(name, text(a3), np_=np_, args=args)[1])
+    m = re.search(r"(\d+) commits, (\d+) forced to the disk", st.run(name, text(a3), np_=np_, args=list(args) + ["-verbose"])[1])
     print(f"  {np_} rank(s) {' '.join(args)}: {m.group(0) if m else None}")
     return (int(m.group(1)), int(m.group(2))) if m else (0, -1)
 c0, s0 = synced("dyncost_sync0", ["-output_fsync_interval", "0"])

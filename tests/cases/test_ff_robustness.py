@@ -17,7 +17,7 @@ os.makedirs(WORK, exist_ok=True)
 # --- symmetric four-point sail: mirror x <-> y maps the found shape onto itself
 n = 8
 sc, idx = sail_scene(n=n, steps=6)
-out2, log2 = run("ff_sail_2", to_yaml(sc), np_=2)
+out2, log2 = run("ff_sail_2", to_yaml(sc), np_=2, args=["-verbose"])
 check("follower element loads" not in log2, "no pressure terms without pressure (only what is asked)")
 out1, _ = run("ff_sail_1", to_yaml(sc), np_=1)
 with h5(out2) as f2, h5(out1) as f1:
@@ -40,7 +40,7 @@ with h5(out2) as f2, h5(out1) as f1:
 p = -2.0
 sc, idx = sail_scene(n=n, steps=6, pressure=p)
 sc["opt"]["loadsteps"] = 4
-out, log = run("ff_sail_wind", to_yaml(sc))
+out, log = run("ff_sail_wind", to_yaml(sc), args=["-verbose"])
 its = [int(m.group(1)) for m in re.finditer(r"^\s+\d+\s+[0-9.]+\s+(\d+)\s+\d+\s+[0-9.e+-]+$", log, re.M)]
 check(len(its) == 4 and max(its) <= 6, f"wind load steps converge quadratically (Newton its {its})")
 check(re.search(r"pressure: [1-9]\d* follower element loads", log) is not None, "pressure loads evaluated with wind")

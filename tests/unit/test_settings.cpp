@@ -80,7 +80,7 @@ TEST(Settings, DefaultsAreTheRegistryDefaults) {
       EXPECT_EQ(defaultMismatch(f, defaults.*component), "") << "-" << f.flag;
     }
   });
-  EXPECT_EQ(fields, 52);
+  EXPECT_EQ(fields, 53);
 }
 
 TEST(Settings, RegistryIsTheFieldTablesThenTheSceneOptFields) {

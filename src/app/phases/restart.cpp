@@ -304,41 +304,64 @@ void Restart::restore(RunContext& ctx, const ResultLayout& layout) {
   const int rows = r.rows();
   ResultFile& file = ctx.file;
   // ---- step rows: every dataset with an unlimited step axis, row by row; a row that the earlier
-  // run never wrote (all NaN on every rank) stays unwritten
+  // run never wrote (all NaN on every rank) stays unwritten. The datasets of the step analyses have
+  // one row per analysed step (/step_analysis_rows; absent: every step): those rows are copied as
+  // step-analysis rows of their steps, so that the resumed run appends its own after them.
   std::vector<long> inner;
-  const auto names = r.stepDatasets();
+  std::vector<std::string> names, analysisNames;
+  for (const std::string& name : r.stepDatasets()) {
+    if (name == "step_analysis_rows") continue;
+    (r.onAnalysisRows(name) ? analysisNames : names).push_back(name);
+  }
+  std::vector<long> analysed;  // step row of each step-analysis row of the earlier run
+  if (r.exists("step_analysis_rows")) {
+    std::vector<long> shape;
+    for (double v : r.readArray("step_analysis_rows", &shape)) analysed.push_back(static_cast<long>(v));
+  } else if (!analysisNames.empty()) {
+    for (long j = 0; j < r.datasetShape(analysisNames.front()).at(0); ++j) analysed.push_back(j);
+  }
+  std::size_t nextAnalysed = 0;
   // the earlier run's step values (its form-finding rows are 0 in either layout; a statics or
   // dynamics checkpoint comes from a run of this layout, Restart::check); with opt.dynamics start:
   // static, /load_factor is copied as any other row dataset
   const std::string stepName = std::find(names.begin(), names.end(), "time") != names.end() ? "time" : "load_factor";
+  // row s of dataset `name` into the current row of the new file
+  auto copyRow = [&](const std::string& name, int s) {
+    const std::vector<long> shape = r.datasetShape(name);
+    const TableKind kind = tableKind(name, shape.size());
+    // cell/<cells>/<quantity>: the rows of this rank's cells of that kind
+    const std::string cells = kind == TableKind::Cell ? name.substr(5, name.find('/', 5) - 5) : "";
+    const std::vector<long>* sel = kind == TableKind::Node      ? &layout.ownedNodes
+                                   : kind == TableKind::Element ? &layout.ownedElements
+                                   : kind == TableKind::Mesh    ? &layout.ownedMeshNodes
+                                   : kind == TableKind::Cell    ? &file.ownedCellRows(cells)
+                                                                : nullptr;
+    std::vector<long> in;
+    const std::vector<double> row = r.readStepRow(name, s, sel, &in);
+    int unwritten = std::all_of(row.begin(), row.end(), [](double x) { return std::isnan(x); });
+    MPI_Allreduce(MPI_IN_PLACE, &unwritten, 1, MPI_INT, MPI_LAND, ctx.comm);
+    if (unwritten) return;
+    if (kind == TableKind::Row) {
+      file.writeStepRow(name, row);
+      return;
+    }
+    const std::vector<long> cellInner(shape.begin() + 2, shape.end());
+    if (kind == TableKind::Cell) file.writeCellField(cells, name.substr(name.find('/', 5) + 1), row, cellInner);
+    else if (kind == TableKind::Node) file.writeNodeField(name, row, cellInner);
+    else if (kind == TableKind::Element) file.writeElementField(name, row, cellInner);
+    else file.writeMeshField(name, row, cellInner);
+  };
   for (int s = 0; s < rows; ++s) {
     const std::vector<double> v = r.readStepRow(stepName, s, nullptr, &inner);
     file.beginStep(ctx.nextStep++, v.at(0));
-    for (const std::string& name : names) {
-      if (name == stepName || name == layout.stepName) continue;
-      const std::vector<long> shape = r.datasetShape(name);
-      const TableKind kind = tableKind(name, shape.size());
-      // cell/<cells>/<quantity>: the rows of this rank's cells of that kind
-      const std::string cells = kind == TableKind::Cell ? name.substr(5, name.find('/', 5) - 5) : "";
-      const std::vector<long>* sel = kind == TableKind::Node      ? &layout.ownedNodes
-                                     : kind == TableKind::Element ? &layout.ownedElements
-                                     : kind == TableKind::Mesh    ? &layout.ownedMeshNodes
-                                     : kind == TableKind::Cell    ? &file.ownedCellRows(cells)
-                                                                  : nullptr;
-      std::vector<long> in;
-      const std::vector<double> row = r.readStepRow(name, s, sel, &in);
-      int unwritten = std::all_of(row.begin(), row.end(), [](double x) { return std::isnan(x); });
-      MPI_Allreduce(MPI_IN_PLACE, &unwritten, 1, MPI_INT, MPI_LAND, ctx.comm);
-      if (unwritten) continue;
-      if (kind == TableKind::Row) {
-        file.writeStepRow(name, row);
-        continue;
-      }
-      const std::vector<long> cellInner(shape.begin() + 2, shape.end());
-      if (kind == TableKind::Cell) file.writeCellField(cells, name.substr(name.find('/', 5) + 1), row, cellInner);
-      else if (kind == TableKind::Node) file.writeNodeField(name, row, cellInner);
-      else if (kind == TableKind::Element) file.writeElementField(name, row, cellInner);
-      else file.writeMeshField(name, row, cellInner);
+    for (const std::string& name : names)
+      if (name != stepName && name != layout.stepName) copyRow(name, s);
+    while (nextAnalysed < analysed.size() && analysed[nextAnalysed] < s) ++nextAnalysed;
+    if (nextAnalysed < analysed.size() && analysed[nextAnalysed] == s) {
+      file.beginAnalysisRow();
+      for (const std::string& name : analysisNames) copyRow(name, static_cast<int>(nextAnalysed));
+      file.endAnalysisRow();
+      ++nextAnalysed;
     }
   }
   // form-finding arrays, written when form finding ended (a form-finding checkpoint writes them anew)

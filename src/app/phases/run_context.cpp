@@ -1,5 +1,6 @@
 #include "app/phases/run_context.hpp"
 
+#include <algorithm>
 #include <array>
 
 #include "app/interrupt.hpp"
@@ -7,14 +8,56 @@
 
 namespace sinew {
 
-PetscErrorCode RunContext::writeStep(double stepValue, Vec Ustate, const LoadState& ls) {
+namespace {
+
+const char* phaseRowsName(StepPhase p) {
+  switch (p) {
+    case StepPhase::FormFinding: return "form finding";
+    case StepPhase::Statics: return "load steps";
+    case StepPhase::Continuation: return "path following";
+    default: return "dynamics";
+  }
+}
+
+std::string rowsText(const StepAnalysisRows& r) {
+  switch (r.kind) {
+    case StepAnalysisRows::Kind::All: return "all";
+    case StepAnalysisRows::Kind::Last: return "last";
+    case StepAnalysisRows::Kind::None: return "none";
+    default: return "every:" + std::to_string(r.every);
+  }
+}
+
+}  // namespace
+
+void RunContext::startPhase(StepPhase phase, const char* stepName, int steps) {
+  progress.startPhase(stepName, steps);
+  StepAnalysisRows byDefault;  // SPACAR Light: out.freq, out.CMglob per load step
+  if (phase != StepPhase::Statics) byDefault.kind = StepAnalysisRows::Kind::Last;
+  rows_ = model.opt.step_analyses.value_or(byDefault);
+  phaseFirstRow_ = nextStep;
+  phases_.emplace_back(phase, rows_);
+}
+
+bool RunContext::selectsAnalysisRow(bool last) const {
+  const std::vector<long>& done = file.analysisRows();
+  switch (rows_.kind) {
+    case StepAnalysisRows::Kind::All: return true;
+    case StepAnalysisRows::Kind::None: return false;
+    case StepAnalysisRows::Kind::Last: return last;
+    default: return last || done.empty() || nextStep - done.back() >= rows_.every;
+  }
+}
+
+PetscErrorCode RunContext::runStepAnalyses(Vec Ustate, const LoadState& ls, bool everyRow) {
   PetscFunctionBeginUser;
-  const double tOut = MPI_Wtime();
-  file.beginStep(nextStep++, stepValue);
-  PhaseScope phase("the output of the results");
-  PetscCall(results.write(file, Ustate, ls));
-  times.output += MPI_Wtime() - tOut;
+  bool open = false;
   for (auto& a : stepAnalyses) {
+    if (a->everyRow() != everyRow) continue;
+    if (!everyRow && !open) {
+      file.beginAnalysisRow();
+      open = true;
+    }
     const double ta = MPI_Wtime();
     bool ok = true;
     PhaseScope analysisPhase(a->name());
@@ -25,7 +68,68 @@ PetscErrorCode RunContext::writeStep(double stepValue, Vec Ustate, const LoadSta
       failure = a->failure();
     }
   }
+  if (open) file.endAnalysisRow();
   PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode RunContext::writeStep(double stepValue, Vec Ustate, const LoadState& ls, bool analyses) {
+  PetscFunctionBeginUser;
+  const double tOut = MPI_Wtime();
+  file.beginStep(nextStep++, stepValue);
+  lastLoads_ = ls;
+  PhaseScope phase("the output of the results");
+  PetscCall(results.write(file, Ustate, ls));
+  times.output += MPI_Wtime() - tOut;
+  if (analyses) PetscCall(runStepAnalyses(Ustate, ls, false));
+  PetscCall(runStepAnalyses(Ustate, ls, true));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode RunContext::finishStepAnalyses(Vec Ustate) {
+  PetscFunctionBeginUser;
+  const std::vector<long>& done = file.analysisRows();
+  const bool wanted = rows_.kind == StepAnalysisRows::Kind::Last || rows_.kind == StepAnalysisRows::Kind::Every;
+  const bool any = std::any_of(stepAnalyses.begin(), stepAnalyses.end(), [](const auto& a) { return !a->everyRow(); });
+  if (!wanted || !any || stop || !ioError.empty() || nextStep <= phaseFirstRow_) PetscFunctionReturn(PETSC_SUCCESS);
+  if (!done.empty() && done.back() == nextStep - 1) PetscFunctionReturn(PETSC_SUCCESS);  // the last row has them
+  PetscErrorCode ierr = PETSC_SUCCESS;
+  guardedWrite([&] {
+    ierr = runStepAnalyses(Ustate, lastLoads_, false);
+    if (!ierr) {
+      const double t = MPI_Wtime();
+      file.commit();
+      times.output += MPI_Wtime() - t;
+    }
+  });
+  PetscCall(ierr);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+std::string RunContext::stepAnalysisLine() const {
+  std::string names;
+  for (const auto& a : stepAnalyses)
+    if (!a->everyRow()) names += (names.empty() ? "" : ", ") + std::string(a->name());
+  if (names.empty() || phases_.empty()) return {};
+  const long m = static_cast<long>(file.analysisRows().size()), ns = file.stepsWritten();
+  std::string where;
+  if (m == ns) where = ns == 1 ? "at the one row" : "at all " + std::to_string(ns) + " rows";
+  else if (m == 0) where = "at none of the " + std::to_string(ns) + " rows";
+  else if (m == 1 && file.analysisRows().back() == ns - 1) where = "at the last of " + std::to_string(ns) + " rows";
+  else where = "at " + std::to_string(m) + " of " + std::to_string(ns) + " rows";
+  std::string why;
+  bool everyRow = true;
+  if (model.opt.step_analyses) {
+    why = "opt.step_analyses: " + rowsText(*model.opt.step_analyses);
+    everyRow = model.opt.step_analyses->kind == StepAnalysisRows::Kind::All;
+  } else {
+    for (const auto& [phase, rows] : phases_) {
+      why += (why.empty() ? "" : ", ") + std::string(phaseRowsName(phase)) + ": " + rowsText(rows);
+      everyRow = everyRow && rows.kind == StepAnalysisRows::Kind::All;
+    }
+    why = "opt.step_analyses default, " + why;
+  }
+  if (!everyRow) why += "; -step_analyses all for every row";
+  return "\n step analyses: " + names + " " + where + " (" + why + ")\n";
 }
 
 PetscErrorCode RunContext::writeCheckpoint(const std::string& group) {
@@ -78,7 +182,7 @@ PetscErrorCode RunContext::convergedStep(const Step& s, Vec Ustate, const LoadSt
   if (write) {
     PetscErrorCode ierr = PETSC_SUCCESS;
     guardedWrite([&] {
-      ierr = writeStep(s.value, Ustate, ls);
+      ierr = writeStep(s.value, Ustate, ls, selectsAnalysisRow(s.last));
       if (!ierr) ierr = writeLoadFactorRow(s.loadFactorRow);
       if (!ierr && afterWrite) ierr = afterWrite();
       if (!ierr) ierr = writeCheckpoint();  // same commit as the step: no flush of its own
@@ -103,7 +207,7 @@ PetscErrorCode RunContext::writeSkippedLast(Vec Ustate) {
   skipped_.any = false;
   PetscErrorCode ierr = PETSC_SUCCESS;
   guardedWrite([&] {
-    ierr = writeStep(skipped_.value, Ustate, skipped_.ls);
+    ierr = writeStep(skipped_.value, Ustate, skipped_.ls, selectsAnalysisRow(false));
     if (!ierr) ierr = writeLoadFactorRow(skipped_.loadFactorRow);
     if (!ierr) ierr = writeCheckpoint();
     if (!ierr) file.commit();

@@ -23,6 +23,9 @@ namespace sinew {
 
 class Restart;
 
+/// The procedures whose written rows the step analyses follow (opt.step_analyses, default per procedure).
+enum class StepPhase { FormFinding, Statics, Continuation, Dynamics };
+
 struct RunContext {
   MPI_Comm comm = MPI_COMM_WORLD;
   Model& model;  ///< global node/element arrays are released after set-up; eprops, opt, formfinding, sensors stay
@@ -84,9 +87,21 @@ struct RunContext {
   /// Runs `write` (result file calls); a ResultFileError or other exception sets ioError and stop.
   bool guardedWrite(const std::function<void()>& write);
 
-  /// Writes one step row: beginStep(stepValue), node/element/mesh results of U, then every step
-  /// analysis (frequencies, buckling, ...). A failing step analysis sets converged = false.
-  PetscErrorCode writeStep(double stepValue, Vec Ustate, const LoadState& ls);
+  /// Writes one step row: beginStep(stepValue), node/element/mesh results of U, the step analyses
+  /// (frequencies, buckling, ...) in a step-analysis row when `analyses`, and the every-row ones
+  /// (sensors). A failing step analysis sets converged = false.
+  PetscErrorCode writeStep(double stepValue, Vec Ustate, const LoadState& ls, bool analyses);
+  /// Starts a procedure's rows: its progress lines (`stepName`, `steps`) and the rows its step
+  /// analyses run at (opt.step_analyses, or the procedure's default: every load step of statics,
+  /// the last row of form finding, path following and dynamics).
+  void startPhase(StepPhase phase, const char* stepName, int steps);
+  /// At the end of a procedure that completed: runs the step analyses at its last written row (state
+  /// Ustate) when opt.step_analyses asks for the last row and that row has none yet (path following
+  /// does not know its last point in advance, form finding may end before formfinding_step).
+  PetscErrorCode finishStepAnalyses(Vec Ustate);
+  /// The summary line of the step analyses: which ran, at how many of the rows, and why ("" when
+  /// the plan has none).
+  std::string stepAnalysisLine() const;
   /// Writes the running phase's checkpoint (checkpointState) into the result file, to be published
   /// by the next commit with the step just written. ResultFileError on HDF5 failures.
   PetscErrorCode writeCheckpoint(const std::string& group = "checkpoint");
@@ -99,6 +114,16 @@ struct RunContext {
     std::optional<double> loadFactorRow;
   } skipped_;
   PetscErrorCode writeLoadFactorRow(const std::optional<double>& loadFactor);
+  /// Whether the row about to be written (file row nextStep) gets the step analyses; `last`: the
+  /// last row of the procedure.
+  bool selectsAnalysisRow(bool last) const;
+  /// Runs the step analyses of one kind at Ustate: every-row ones (sensors) or the selected ones in
+  /// a step-analysis row of the file.
+  PetscErrorCode runStepAnalyses(Vec Ustate, const LoadState& ls, bool everyRow);
+  StepAnalysisRows rows_;  ///< rows of the running procedure's step analyses
+  int phaseFirstRow_ = 0;  ///< file row of the running procedure's first row
+  LoadState lastLoads_;    ///< loads of the last written row
+  std::vector<std::pair<StepPhase, StepAnalysisRows>> phases_;  ///< procedures that ran, with their rows
 };
 
 /// Per-step analyses the plan asks for (frequencies, buckling, compliance, state-space).

@@ -30,7 +30,7 @@ PetscErrorCode runContinuation(RunContext& ctx) {
     d.pathSize = ckSize;
     return PETSC_SUCCESS;
   };
-  ctx.progress.startPhase("path point", ctx.model.opt.continuation->max_steps);
+  ctx.startPhase(StepPhase::Continuation, "path point", ctx.model.opt.continuation->max_steps);
   auto onPoint = [&](const PathPoint& p, Vec U) -> PetscErrorCode {
     PetscFunctionBeginUser;
     LoadState ls;
@@ -57,6 +57,7 @@ PetscErrorCode runContinuation(RunContext& ctx) {
   };
   bool ok = false;
   PetscCall(path.run(ctx.U, onPoint, &ok));
+  if (ok) PetscCall(ctx.finishStepAnalyses(ctx.U));  // the last path point is known only now
   ctx.checkpointState = nullptr;
   // critical points: rows [kind (1 limit, 2 bifurcation), after path point, load factor, control displacement]
   std::vector<double> rows;

@@ -62,7 +62,7 @@ PetscErrorCode runDynamics(RunContext& ctx) {
       return PETSC_SUCCESS;
     };
   const int nsteps = std::max(1, static_cast<int>(std::ceil(opts.tend / opts.dt - 1e-9)));
-  ctx.progress.startPhase("time step", nsteps);
+  ctx.startPhase(StepPhase::Dynamics, "time step", nsteps);
   // external work: trapezoidal rule on the loads' power f_ext . qd at every time step
   auto addWork = [&](int k, double t, Vec U, Vec V, const LoadState& ls) -> PetscErrorCode {
     PetscFunctionBeginUser;
@@ -142,6 +142,7 @@ PetscErrorCode runDynamics(RunContext& ctx) {
   ctx.lastStepName = "time step";
   ctx.checkpointState = nullptr;
   if (!ok && !ctx.stop) PetscCall(ctx.writeSkippedLast(ctx.U));
+  if (ok) PetscCall(ctx.finishStepAnalyses(ctx.U));
   if (!ok && ctx.converged && !ctx.stop) {
     ctx.converged = false;
     ctx.failure = dyn.failureMessage();

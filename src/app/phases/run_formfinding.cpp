@@ -85,7 +85,7 @@ PetscErrorCode runFormFinding(RunContext& ctx) {
   analysis.setFailureHint(ctx.formfindingHint);
   if (ctx.restart && ctx.restart->phase() == CheckpointPhase::FormFinding)
     ctx.restart->resumeFormFinding(ctx, analysis);  // -restart: continue after its steps
-  ctx.progress.startPhase("form-finding step", ff.formfinding_step);
+  ctx.startPhase(StepPhase::FormFinding, "form-finding step", ff.formfinding_step);
   // the checkpoint of a written step: U, the form-finding history (the kernels' states are added
   // by the writer)
   auto state = [&](CheckpointData& d) -> PetscErrorCode {
@@ -112,6 +112,7 @@ PetscErrorCode runFormFinding(RunContext& ctx) {
   };
   bool ok = false;
   PetscCall(analysis.run(ctx.U, onStep, &ok));
+  if (ok) PetscCall(ctx.finishStepAnalyses(ctx.U));  // the found shape (form finding may end before formfinding_step)
   ctx.lastStepName = "form-finding step";
   const auto& reps = analysis.reports();
   std::vector<double> res, change, normal;

@@ -48,7 +48,7 @@ PetscErrorCode runStatics(RunContext& ctx, bool resumeStatics, const ConstraintC
     d.vectors = {{"U", ctx.U}, {"dU", statics.lastIncrement()}};
     return PETSC_SUCCESS;
   };
-  ctx.progress.startPhase("load step", model.opt.loadsteps);
+  ctx.startPhase(StepPhase::Statics, "load step", model.opt.loadsteps);
   auto onStep = [&](const StepReport& rep, Vec Ustep) -> PetscErrorCode {
     LoadState ls;
     ls.loadFactor = rep.loadFactor;
@@ -67,6 +67,7 @@ PetscErrorCode runStatics(RunContext& ctx, bool resumeStatics, const ConstraintC
   PetscCall(statics.run(ctx.U, onStep, &ok));
   ctx.lastStepName = "load step";
   if (!ok) PetscCall(ctx.writeSkippedLast(ctx.U));  // ctx.U holds the last converged state
+  else PetscCall(ctx.finishStepAnalyses(ctx.U));
   ctx.checkpointState = nullptr;
   ctx.reports = statics.reports();
   if (const CableCoarseSpace* cs = statics.coarseSpace())

@@ -50,7 +50,7 @@ const std::vector<OptionDoc>& sceneOptionDocs() {
       {"output_steps", "all | last | every:k | [steps]", "all",
        "load / time steps written, with their step analyses; the last step always, "
        "e.g. -output_steps last, -output_steps every:10, -output_steps 1,50,100"},
-      {"step_analyses", "all | last | every:k | none", "all for load steps, last for form finding, path following, dynamics",
+      {"step_analyses", "all | last | every:k | none", "auto (all for load steps; last for form finding, path following, dynamics)",
        "written rows at which the step analyses (frequencies, buckling, compliance, state space) run: every row, the last "
        "row of each procedure, a row every k rows (the first and the last too), or none; calcfreq/calcbuck/calccompl/"
        "transfer choose which analyses. Their datasets hold one row per analysed row, /step_analysis_rows says which"},

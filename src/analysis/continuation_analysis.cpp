@@ -549,7 +549,7 @@ PetscErrorCode ContinuationAnalysis::run(Vec U, const PointCallback& onPoint, bo
   IterationTarget aim(desiredIts_, 0.5, 2.0, opt_.ds_max);
   StepRules rules;
   rules.maxCuts = maxCuts_;
-  rules.strategy = &aim;
+  rules.strategy = aim;
   StepController control(rules, {"path step", "load factor", sizeName});
   control.resume(ds);
   std::vector<Mat3> Rsave;

@@ -28,7 +28,7 @@ double IterationTarget::grown(double size, int its) const {
   return size;
 }
 
-int IterationTarget::converged(double, double proposal, const StepAttempt& a, double* next, bool* reject) {
+int IterationTarget::operator()(double, double proposal, const StepAttempt& a, double* next, bool* reject) const {
   *next = grown(proposal, a.iterations);
   *reject = false;
   return 0;
@@ -144,7 +144,7 @@ void StepController::land(double x, double dl, const double* target, double* to,
 int StepController::grown(double dl, double h, const StepAttempt& a, double* next, bool* reject) {
   *next = dl;
   *reject = false;
-  if (rules_.strategy) return rules_.strategy->converged(h, dl, a, next, reject);
+  if (rules_.strategy) return rules_.strategy(h, dl, a, next, reject);
   if (rules_.growIts >= 0 && a.iterations <= rules_.growIts) *next = std::min(rules_.growFactor * dl, rules_.maxStep);
   if (rules_.growAfter > 0 && dl < rules_.maxStep && ++successes_ >= rules_.growAfter) {
     *next = std::min(rules_.growFactor * dl, rules_.maxStep);

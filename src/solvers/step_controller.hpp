@@ -60,28 +60,32 @@ enum class FirstSize {
   Max,                ///< maxStep (dynamics with -dt_grow_after 0)
 };
 
-/// A step-size policy beyond cut-and-grow (aim at a number of Newton iterations, an error estimate).
-class StepSizeStrategy {
- public:
-  virtual ~StepSizeStrategy() = default;
-  /// After the converged step of size h, with proposal `proposal`: *next, the next proposal; *reject:
-  /// the step is refused and repeated from its start with size *next.
-  virtual int converged(double h, double proposal, const StepAttempt& a, double* next, bool* reject) = 0;
-};
+/// A step-size policy beyond cut-and-grow (aim at a number of Newton iterations, an error estimate):
+/// after the converged step of size h, with proposal `proposal`, sets *next, the next proposal, and
+/// *reject: the step is refused and repeated from its start with size *next.
+using StepSizeStrategy = std::function<int(double h, double proposal, const StepAttempt& a, double* next, bool* reject)>;
 
 /// Aim at `desired` Newton iterations per step: size *= clamp(sqrt(desired / its), lo, hi), then
 /// |size| <= maxSize (when > 0). Path following's arc length.
-class IterationTarget : public StepSizeStrategy {
+class IterationTarget {
  public:
   IterationTarget(int desired, double lo, double hi, double maxSize) : desired_(desired), lo_(lo), hi_(hi), max_(maxSize) {}
-  int converged(double h, double proposal, const StepAttempt& a, double* next, bool* reject) override;
   double grown(double size, int its) const;
+  /// As a StepSizeStrategy: the proposal grown by the attempt's iterations, never a rejection.
+  int operator()(double h, double proposal, const StepAttempt& a, double* next, bool* reject) const;
 
  private:
   int desired_;
   double lo_, hi_, max_;
 };
 
+/// The step-size rules of a procedure. As used: statics halves a failed increment (at most -max_cuts
+/// times per load step), doubles it after at most -increment_grow_its iterations up to the user's
+/// load step, carries it within the rest of the next load step and leaves no sliver; dynamics with a
+/// fixed dt retries guarded, halves (-max_cuts) and doubles after -dt_grow_after successes up to dt;
+/// adaptive dynamics retries guarded, halves down to dt_min and sizes by its error or iteration
+/// strategy, rows split into equal steps; path following halves (-max_cuts) and aims at a number of
+/// corrector iterations (IterationTarget); form finding never cuts (a failed step ends it).
 struct StepRules {
   // cut: a failed step is retried cutFactor times smaller
   double cutFactor = 0.5;
@@ -93,7 +97,7 @@ struct StepRules {
   int growAfter = 0;         ///< after this many converged steps in a row below maxStep (0: off)
   double growFactor = 2.0;
   double maxStep = std::numeric_limits<double>::infinity();
-  StepSizeStrategy* strategy = nullptr;  ///< replaces growIts/growAfter when set
+  StepSizeStrategy strategy;  ///< replaces growIts/growAfter when set
   // targets
   Landing landing = Landing::Absolute;
   double landingSlack = 0;

@@ -18,7 +18,6 @@ using sinew::StepNames;
 using sinew::StepRules;
 using sinew::StepSequence;
 using sinew::SteppedProcedure;
-using sinew::StepSizeStrategy;
 using sinew::StepStop;
 
 namespace {
@@ -436,24 +435,14 @@ TEST(StepController, StopReasons) {
   }
 }
 
-namespace {
-
-/// Rejects every first converged attempt of a size above 0.2, with the size halved.
-struct RejectLarge : StepSizeStrategy {
-  int converged(double h, double proposal, const StepAttempt&, double* next, bool* reject) override {
-    *reject = h > 0.2;
-    *next = *reject ? 0.5 * h : proposal;
-    return 0;
-  }
-};
-
-}  // namespace
-
 TEST(StepController, SizeStrategies) {
   {  // a rejected converged step is repeated with the strategy's size and not accepted
-    RejectLarge strategy;
     StepRules r;
-    r.strategy = &strategy;
+    r.strategy = [](double h, double proposal, const StepAttempt&, double* next, bool* reject) {
+      *reject = h > 0.2;  // steps above 0.2 are refused and repeated at half the size
+      *next = *reject ? 0.5 * h : proposal;
+      return 0;
+    };
     r.growIts = 100;  // replaced by the strategy
     StepController c(r, kNames);
     c.resume(0.5);
@@ -473,7 +462,7 @@ TEST(StepController, SizeStrategies) {
     IterationTarget unbounded(4, 0.5, 2.0, 0.0);
     EXPECT_DOUBLE_EQ(unbounded.grown(0.2, 1), 0.4);
     StepRules r;
-    r.strategy = &t;
+    r.strategy = t;
     StepController c(r, kNames);
     c.resume(0.1);
     Synthetic syn;

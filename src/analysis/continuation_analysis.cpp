@@ -11,6 +11,7 @@
 #include "parallel/collective_error.hpp"
 #include "solvers/newton_test.hpp"
 #include "solvers/solver_defaults.hpp"
+#include "solvers/step_controller.hpp"
 
 namespace sinew {
 
@@ -102,28 +103,38 @@ PetscErrorCode ContinuationAnalysis::equilibrateInitial(Vec U, bool* ok) {
   PetscCall(VecAXPY(work_, -1.0, R_));  // the initial loads' share of the residual
   PetscCall(VecNorm(work_, NORM_2, &fint));
   if (fint == 0.0 && r0 == 0.0) PetscFunctionReturn(PETSC_SUCCESS);
+  // the initial loads ramped from 0 to 1 in increments, halved (at most -max_cuts times in all) on failure
   Vec U0;
   PetscCall(VecDuplicate(U, &U0));
-  double mu = 0.0, dmu = startCarriesInitial_ ? 1.0 : 1.0 / initialSteps_;
-  int cuts = 0;
-  while (mu < 1.0 && *ok) {
-    const double next = std::min(1.0, mu + dmu);
+  StepRules rules;
+  rules.maxCuts = maxCuts_;
+  rules.cutProposal = true;
+  rules.landing = Landing::Clamp;
+  StepController control(rules, {"start state", "initial load factor", "increment"});
+  control.resume(startCarriesInitial_ ? 1.0 : 1.0 / initialSteps_);
+  std::vector<Mat3> Rsave;
+  SteppedProcedure ramp;
+  ramp.solve = [&](double, double next, double, StepAttempt* a) -> PetscErrorCode {
     PetscCall(VecCopy(U, U0));
-    const auto Rsave = asm_.referenceRotations();
+    Rsave = asm_.referenceRotations();
     ls.initialFactor = next;
-    bool conv = false;
-    PetscCall(newton(U, ls, rtol_ * fint, 3 * maxIts_, &conv));
-    if (conv) {
-      PetscCall(asm_.setMixedReference(U, ls));
-      PetscCall(asm_.absorbRotations(U));
-      mu = next;
-      continue;
-    }
+    PetscCall(newton(U, ls, rtol_ * fint, 3 * maxIts_, &a->converged));
+    if (a->converged) return PETSC_SUCCESS;
     PetscCall(VecCopy(U0, U));
     asm_.setReferenceRotations(Rsave);
-    if (++cuts > maxCuts_) *ok = false;
-    dmu *= 0.5;
-  }
+    return PETSC_SUCCESS;
+  };
+  ramp.accept = [&](double, double, double, const StepAttempt&) -> PetscErrorCode {
+    PetscCall(asm_.setMixedReference(U, ls));
+    PetscCall(asm_.absorbRotations(U));
+    return PETSC_SUCCESS;
+  };
+  StepSequence once;
+  once.target = [](int) { return 1.0; };
+  double mu = 0.0;
+  StepStop stop;
+  PetscCall(control.run(ramp, once, &mu, &stop));
+  *ok = stop == StepStop::EndReached;
   PetscCall(VecDestroy(&U0));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -500,16 +511,18 @@ PetscErrorCode ContinuationAnalysis::step(Vec U, double* lambda, double ds, Vec 
 PetscErrorCode ContinuationAnalysis::run(Vec U, const PointCallback& onPoint, bool* converged) {
   PetscFunctionBeginUser;
   MPI_Comm comm = asm_.mesh().comm;
-  double lambda = 0.0, arc = 0.0;
+  double lambda = 0.0;
   Vec dUprev = dUprev_, Uprev;
   PetscCall(VecDuplicate(U, &Uprev));
-  double ds = opt_.ds, dlPrev = 0.0;
+  double ds = opt_.ds, dlPrev = 0.0;  // ds: the step of the last point
+  int its = 0;                        // its corrector iterations
   *converged = true;
   const bool resumed = resumed_;
   if (resumed) {
     lambda = resumeLambda_;
     ds = resumeDs_;
     dlPrev = resumeDlPrev_;
+    its = resumeIts_;
     LoadState ls;
     ls.loadFactor = ls.time = lambda;
     PetscCall(asm_.setMixedReference(U, ls));
@@ -530,61 +543,41 @@ PetscErrorCode ContinuationAnalysis::run(Vec U, const PointCallback& onPoint, bo
   }
   int prevNeg = resumed ? resumePrevNeg_ : -1;
   if (inertia_ && !resumed) PetscCall(negativeEigenvalues(U, 0.0, &prevNeg, nullptr));
-  // a resumed path continues after its last point: the end of that point's iteration (branch switch,
-  // step adaptation, stop criteria) first
-  bool tailOnly = resumed && !points_.empty();
-  for (int n = tailOnly ? points_.back().step : 1; n <= opt_.max_steps; ++n) {
-    PathPoint p;
-    int its = 0;
-    if (tailOnly) {
-      p = points_.back();
-      its = resumeIts_;
-    } else {
-      p.step = n;
-      const auto Rsave = asm_.referenceRotations();
-      PetscCall(VecCopy(U, Uprev));
-      bool ok = false;
-      while (true) {
-        PetscCall(step(U, &lambda, ds, dUprev, dlPrev, n == 1, &ok, &its));
-        if (ok) break;
-        asm_.setReferenceRotations(Rsave);
-        if (++p.cuts > maxCuts_) break;
-        ds *= 0.5;
-        PetscCall(PetscPrintf(comm, "  path step %d: corrector failed; retrying with %s %.4g\n", n,
-                              opt_.method == "displacement" ? "displacement increment" : "arc length", ds));
-      }
-      if (!ok) {
-        std::ostringstream msg;
-        msg << "path step " << n << " did not converge after " << maxCuts_ << " halvings of the "
-            << (opt_.method == "displacement" ? "displacement increment" : "arc length") << " (last converged load factor "
-            << lambda << "). Try a smaller ds, -continuation_max_it, or check supports for a mechanism.";
-        failure_ = msg.str();
-        *converged = false;
-        break;
-      }
-      PetscCall(VecWAXPY(dUprev, -1.0, Uprev, U));
-      dlPrev = lambda - (points_.empty() ? 0.0 : points_.back().loadFactor);
-      LoadState ls;
-      ls.loadFactor = ls.time = lambda;
-      PetscCall(asm_.setMixedReference(U, ls));
-      PetscCall(asm_.absorbRotations(U));
-      arc += ds;
-      p.loadFactor = lambda;
-      p.arcLength = ds;
-      p.iterations = its;
-      PetscCall(controlDisplacement(U, lambda, &p.controlValue));
-      if (inertia_) PetscCall(pathSlopes(U, lambda, dUprev, dlPrev, &p));
-      if (inertia_) PetscCall(negativeEigenvalues(U, lambda, &p.negativeEigenvalues, &p));
-      points_.push_back(p);
-      if (inertia_ && prevNeg >= 0 && p.negativeEigenvalues != prevNeg) classify();
-      prevNeg = p.negativeEigenvalues;
-      ckDs_ = ds;
-      ckDlPrev_ = dlPrev;
-      ckIts_ = its;
-      if (onPoint) PetscCall(onPoint(p, U));
-      if (stop_ && *stop_) break;
-    }
-    tailOnly = false;
+  const std::string sizeName = opt_.method == "displacement" ? "displacement increment" : "arc length";
+  // one step per path point, halved (at most -max_cuts times) on failure; adaptive arc length: aim
+  // at desiredIts corrector iterations, within [ds/2, 2 ds] from point to point and |ds| <= ds_max
+  IterationTarget aim(desiredIts_, 0.5, 2.0, opt_.ds_max);
+  StepRules rules;
+  rules.maxCuts = maxCuts_;
+  rules.strategy = aim;
+  StepController control(rules, {"path step", "load factor", sizeName});
+  control.resume(ds);
+  std::vector<Mat3> Rsave;
+  SteppedProcedure path;
+  path.solve = [&](double, double, double h, StepAttempt* a) -> PetscErrorCode {
+    Rsave = asm_.referenceRotations();
+    PetscCall(VecCopy(U, Uprev));
+    PetscCall(step(U, &lambda, h, dUprev, dlPrev, control.step() == 1, &a->converged, &a->iterations));
+    a->reason = "corrector did not converge";
+    a->at = lambda;
+    if (!a->converged) asm_.setReferenceRotations(Rsave);
+    return PETSC_SUCCESS;
+  };
+  path.accept = [&](double, double, double h, const StepAttempt& a) -> PetscErrorCode {
+    PetscCall(VecWAXPY(dUprev, -1.0, Uprev, U));
+    dlPrev = lambda - (points_.empty() ? 0.0 : points_.back().loadFactor);
+    LoadState ls;
+    ls.loadFactor = ls.time = lambda;
+    PetscCall(asm_.setMixedReference(U, ls));
+    PetscCall(asm_.absorbRotations(U));
+    ds = h;
+    its = a.iterations;
+    return PETSC_SUCCESS;
+  };
+  path.print = [comm](const std::string& m) { PetscPrintf(comm, "%s", m.c_str()); };
+  // after path point n (p): a branch switch at a bifurcation just located (a point of its own), then
+  // the stop criteria
+  auto afterPoint = [&](int& n, const PathPoint& p, StepStop* stop) -> PetscErrorCode {
     if (branchSwitch_ && !switched_ && !critical_.empty() && critical_.back().kind == CriticalPoint::Bifurcation &&
         critical_.back().afterStep == static_cast<int>(points_.size()) - 1 && n < opt_.max_steps) {
       switched_ = true;
@@ -617,106 +610,54 @@ PetscErrorCode ContinuationAnalysis::run(Vec U, const PointCallback& onPoint, bo
         PetscCall(PetscPrintf(comm, "  branch switch at path point %d failed: Newton returned to the primary path\n", n));
       }
     }
-    // adaptive arc length: aim at desiredIts corrector iterations
-    ds *= std::clamp(std::sqrt(static_cast<double>(desiredIts_) / std::max(its, 1)), 0.5, 2.0);
-    if (opt_.ds_max > 0) ds = std::copysign(std::min(std::abs(ds), opt_.ds_max), ds);
-    if (opt_.stop_load_factor && lambda >= *opt_.stop_load_factor) break;
-    if (opt_.stop_displacement && std::abs(p.controlValue) >= std::abs(*opt_.stop_displacement)) break;
+    if ((opt_.stop_load_factor && lambda >= *opt_.stop_load_factor) ||
+        (opt_.stop_displacement && std::abs(p.controlValue) >= std::abs(*opt_.stop_displacement)))
+      *stop = StepStop::StopCondition;
+    return PETSC_SUCCESS;
+  };
+  StepSequence points;
+  points.first = 1;
+  points.last = opt_.max_steps;
+  points.reached = [&](int& n, StepStop* stop) -> PetscErrorCode {
+    PathPoint p;
+    p.step = n;
+    p.cuts = control.cuts();
+    p.loadFactor = lambda;
+    p.arcLength = ds;
+    p.iterations = its;
+    PetscCall(controlDisplacement(U, lambda, &p.controlValue));
+    if (inertia_) PetscCall(pathSlopes(U, lambda, dUprev, dlPrev, &p));
+    if (inertia_) PetscCall(negativeEigenvalues(U, lambda, &p.negativeEigenvalues, &p));
+    points_.push_back(p);
+    if (inertia_ && prevNeg >= 0 && p.negativeEigenvalues != prevNeg) classify();
+    prevNeg = p.negativeEigenvalues;
+    ckDs_ = ds;
+    ckDlPrev_ = dlPrev;
+    ckIts_ = its;
+    if (onPoint) PetscCall(onPoint(p, U));
+    if (stop_ && *stop_) *stop = StepStop::Interrupted;
+    else PetscCall(afterPoint(n, p, stop));
+    return PETSC_SUCCESS;
+  };
+  StepStop stop = StepStop::None;
+  if (resumed && !points_.empty()) {
+    // a resumed path continues after its last point: the end of that point's iteration (branch switch,
+    // step adaptation, stop criteria) first
+    int n = points_.back().step;
+    PetscCall(afterPoint(n, PathPoint(points_.back()), &stop));
+    control.resume(aim.grown(ds, its));
+    points.first = n + 1;
+  }
+  double arc = 0.0;
+  if (stop == StepStop::None) PetscCall(control.run(path, points, &arc, &stop));
+  if (stop == StepStop::CutLimit) {
+    std::ostringstream msg;
+    msg << "path step " << control.step() << " did not converge after " << maxCuts_ << " halvings of the " << sizeName
+        << " (last converged load factor " << lambda << "). Try a smaller ds, -continuation_max_it, or check supports for a mechanism.";
+    failure_ = msg.str();
+    *converged = false;
   }
   PetscCall(VecDestroy(&Uprev));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-// Checkpoint row: [points, lambda, ds, dlPrev, prevNeg, switched, switchedAt, critical points], then
-// kCkPointCols per point, then kCkCritCols per critical point (fixed capacity: max_steps each). ds is
-// the step of the point just reported (adapted after it, in run(), also on resume).
-std::vector<double> ContinuationAnalysis::checkpointState() const {
-  std::vector<double> v(static_cast<size_t>(checkpointSize(opt_.max_steps)), 0.0);
-  const PathPoint* last = points_.empty() ? nullptr : &points_.back();
-  v[0] = static_cast<double>(points_.size());
-  v[1] = last ? last->loadFactor : 0.0;
-  v[2] = ckDs_;
-  v[3] = ckDlPrev_;
-  v[4] = last ? last->negativeEigenvalues : -1;
-  v[5] = switched_ ? 1 : 0;
-  v[6] = switchedAt_;
-  v[7] = static_cast<double>(critical_.size());
-  v[8] = ckIts_;
-  size_t k = kCkHeader;
-  for (size_t i = 0; i < points_.size() && i < static_cast<size_t>(opt_.max_steps); ++i, k += kCkPointCols) {
-    const PathPoint& p = points_[i];
-    const double row[kCkPointCols] = {static_cast<double>(p.step), p.loadFactor, p.arcLength, static_cast<double>(p.iterations),
-                                      static_cast<double>(p.cuts), static_cast<double>(p.negativeEigenvalues), p.controlValue,
-                                      p.slopeLoad, p.slopeControl, p.lowestEigenvalue, p.nearestNegative, p.nearestPositive};
-    std::copy(row, row + kCkPointCols, v.begin() + static_cast<long>(k));
-  }
-  k = kCkHeader + static_cast<size_t>(opt_.max_steps) * kCkPointCols;
-  for (size_t i = 0; i < critical_.size() && i < static_cast<size_t>(opt_.max_steps); ++i, k += kCkCritCols) {
-    const CriticalPoint& c = critical_[i];
-    const double row[kCkCritCols] = {static_cast<double>(c.kind), c.interpolated ? 1.0 : 0.0, static_cast<double>(c.afterStep),
-                                     c.loadFactor, c.controlValue};
-    std::copy(row, row + kCkCritCols, v.begin() + static_cast<long>(k));
-  }
-  return v;
-}
-
-std::vector<double> ContinuationAnalysis::currentCheckpointLayout(const std::vector<double>& v, int maxSteps) {
-  if (static_cast<long>(v.size()) != legacyCheckpointSize(maxSteps)) return v;
-  std::vector<double> out(static_cast<size_t>(checkpointSize(maxSteps)), std::numeric_limits<double>::quiet_NaN());
-  const size_t ms = static_cast<size_t>(maxSteps);
-  std::copy_n(v.begin(), kCkHeader, out.begin());
-  for (size_t i = 0; i < ms; ++i)
-    std::copy_n(v.begin() + static_cast<long>(kCkHeader + i * kCkLegacyPointCols), kCkLegacyPointCols,
-                out.begin() + static_cast<long>(kCkHeader + i * kCkPointCols));
-  std::copy_n(v.begin() + static_cast<long>(kCkHeader + ms * kCkLegacyPointCols), ms * kCkCritCols,
-              out.begin() + static_cast<long>(kCkHeader + ms * kCkPointCols));
-  return out;
-}
-
-PetscErrorCode ContinuationAnalysis::resume(const std::vector<double>& v, Vec dU) {
-  PetscFunctionBeginUser;
-  PetscCheck(static_cast<long>(v.size()) >= kCkHeader, asm_.mesh().comm, PETSC_ERR_ARG_SIZ, "path checkpoint: too short");
-  const int np = static_cast<int>(v[0]), nc = static_cast<int>(v[7]);
-  const long cap = (static_cast<long>(v.size()) - kCkHeader) / (kCkPointCols + kCkCritCols);
-  PetscCheck(np >= 1 && np <= cap && nc <= cap, asm_.mesh().comm, PETSC_ERR_ARG_SIZ, "path checkpoint: inconsistent");
-  resumeLambda_ = v[1];
-  resumeDs_ = v[2];
-  resumeDlPrev_ = v[3];
-  resumePrevNeg_ = static_cast<int>(v[4]);
-  switched_ = v[5] != 0.0;
-  switchedAt_ = static_cast<int>(v[6]);
-  resumeIts_ = static_cast<int>(v[8]);
-  points_.clear();
-  critical_.clear();
-  for (int i = 0; i < np; ++i) {
-    const double* r = &v[kCkHeader + static_cast<size_t>(i) * kCkPointCols];
-    PathPoint p;
-    p.step = static_cast<int>(r[0]);
-    p.loadFactor = r[1];
-    p.arcLength = r[2];
-    p.iterations = static_cast<int>(r[3]);
-    p.cuts = static_cast<int>(r[4]);
-    p.negativeEigenvalues = static_cast<int>(r[5]);
-    p.controlValue = r[6];
-    p.slopeLoad = r[7];
-    p.slopeControl = r[8];
-    p.lowestEigenvalue = r[9];
-    p.nearestNegative = r[10];
-    p.nearestPositive = r[11];
-    points_.push_back(p);
-  }
-  for (int i = 0; i < nc; ++i) {
-    const double* r = &v[kCkHeader + static_cast<size_t>(cap) * kCkPointCols + static_cast<size_t>(i) * kCkCritCols];
-    CriticalPoint c;
-    c.kind = static_cast<CriticalPoint::Kind>(static_cast<int>(r[0]));
-    c.interpolated = r[1] != 0.0;
-    c.afterStep = static_cast<int>(r[2]);
-    c.loadFactor = r[3];
-    c.controlValue = r[4];
-    critical_.push_back(c);
-  }
-  PetscCall(VecCopy(dU, dUprev_));
-  resumed_ = true;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

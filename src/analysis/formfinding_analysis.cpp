@@ -9,6 +9,7 @@
 #include "parallel/collective_error.hpp"
 #include "settings/read_settings.hpp"
 #include "solvers/newton_test.hpp"
+#include "solvers/step_controller.hpp"
 
 namespace sinew {
 
@@ -389,10 +390,17 @@ PetscErrorCode FormFindingAnalysis::run(Vec U, const StepCallback& onStep, bool*
     return n >= 2 && reports_[n - 1].step >= 2 && reports_[n - 1].shapeChangeNormal < ff_.formfinding_tolerance &&
            reports_[n - 1].shapeChange <= reports_[n - 2].shapeChange;
   };
-  // a resumed run (resume()) continues after its last step, unless that step ended form finding
-  const int first = static_cast<int>(reports_.size()) + 1;
-  for (int k = first; k <= nsteps && !(k > 1 && stops()); ++k) {
-    FormFindingStepReport rep;
+  // one URS step per report step, never cut (a failed step ends form finding); a resumed run
+  // (resume()) continues after its last step, unless that step ended form finding
+  StepRules rules;
+  rules.maxCuts = 0;
+  StepController control(rules, {"formfinding step", "URS step", "URS step"});
+  control.resume(1.0);
+  FormFindingStepReport rep;
+  SteppedProcedure urs;
+  urs.solve = [&](double, double, double, StepAttempt* a) -> PetscErrorCode {
+    const int k = control.step();
+    rep = FormFindingStepReport{};
     rep.step = k;
     std::tie(rep.lambda, rep.xurs) = stepMode(ff_, k);
     setMode(rep.lambda, rep.xurs);
@@ -407,6 +415,8 @@ PetscErrorCode FormFindingAnalysis::run(Vec U, const StepCallback& onStep, bool*
     rep.newtonIterations = static_cast<int>(its);
     rep.residualNorm = fnorm;
     rep.equilibrium = why > 0;
+    a->iterations = rep.newtonIterations;
+    a->reason = SNESConvergedReasons[why];
     std::ostringstream msg;
     if (why < 0 && why != SNES_DIVERGED_MAX_IT) {
       msg << "formfinding step " << k << " of " << nsteps << ": no equilibrium (" << SNESConvergedReasons[why]
@@ -415,8 +425,7 @@ PetscErrorCode FormFindingAnalysis::run(Vec U, const StepCallback& onStep, bool*
              "edge without an edge cable, or supports missing. Check prestress and supports; -ff_snes_monitor "
              "shows the iterations.";
       failure_ = msg.str();
-      *ok = false;
-      break;
+      return PETSC_SUCCESS;
     }
     PetscCall(asm_.absorbRotations(U));
     PetscCall(shapeChange(U, Uprev, &rep.shapeChange));
@@ -429,8 +438,7 @@ PetscErrorCode FormFindingAnalysis::run(Vec U, const StepCallback& onStep, bool*
                               "unsupported (add an edge cable or supports)."
                             : ": " + hint_);
       failure_ = msg.str();
-      *ok = false;
-      break;
+      return PETSC_SUCCESS;
     }
     long bad = 0;
     PetscCall(updateReferences(U, &bad, &rep.meshQuality));
@@ -441,13 +449,25 @@ PetscErrorCode FormFindingAnalysis::run(Vec U, const StepCallback& onStep, bool*
           << (hint_.empty() ? "; a membrane edge is unsupported or the prestress is too low against the edge cables or loads."
                             : ": " + hint_);
       failure_ = msg.str();
-      *ok = false;
-      break;
+      return PETSC_SUCCESS;
     }
+    a->converged = true;  // a step at max_iter_equilibrium counts: judged after the run
+    return PETSC_SUCCESS;
+  };
+  StepSequence steps;
+  steps.first = static_cast<int>(reports_.size()) + 1;
+  steps.last = nsteps;
+  steps.reached = [&](int&, StepStop* stop) -> PetscErrorCode {
     reports_.push_back(rep);
     if (onStep) PetscCall(onStep(rep, U));
-    if (stop_ && *stop_) break;
-  }
+    if (stop_ && *stop_) *stop = StepStop::Interrupted;
+    else if (stops()) *stop = StepStop::StopCondition;
+    return PETSC_SUCCESS;
+  };
+  StepStop stop = StepStop::StopCondition;
+  double done = steps.first - 1;
+  if (!(steps.first > 1 && stops())) PetscCall(control.run(urs, steps, &done, &stop));
+  *ok = stop != StepStop::CutLimit;
   const bool interrupted = stop_ && *stop_;
   if (*ok && !reports_.empty() && !reports_.back().equilibrium) {
     std::ostringstream msg;

@@ -2,6 +2,7 @@
 #include "parallel/collective_error.hpp"
 #include "solvers/newton_test.hpp"
 #include "solvers/solver_defaults.hpp"
+#include "solvers/step_controller.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -248,9 +249,20 @@ PetscErrorCode StaticAnalysis::run(Vec U, const StepCallback& onStep, bool* conv
   double dlPrev = resumed_ ? progress_.dlPrev : 0.0;
   // adaptive increments: a halved increment grows back (x2 after an increment that converged in at
   // most -increment_grow_its Newton iterations), never beyond the user's load step; the size carries
-  // over to the next load step, so a hard stretch is not retried at full size step after step
+  // over to the next load step, so a hard stretch is not retried at full size step after step.
+  // Fixed increments: each load step starts with its whole increment, halved on failure.
   const double dlMax = loadsteps_ == 1 ? 1.0 : stepFactor(2) - stepFactor(1);
-  double dlAdapt = resumed_ ? progress_.dlAdapt : dlMax;
+  const double dlAdaptStart = resumed_ ? progress_.dlAdapt : dlMax;
+  StepRules rules;
+  rules.maxCuts = maxCuts_;
+  rules.cutProposal = !adaptive_;
+  rules.growIts = adaptive_ ? growIts_ : -1;
+  rules.maxStep = dlMax;
+  rules.landing = Landing::Absolute;
+  rules.landingSlack = 1e-9 * dlMax;  // no sliver increments
+  rules.firstSize = adaptive_ ? FirstSize::CarriedWithinRest : FirstSize::Rest;
+  StepController control(rules, {"load step", "load factor", "increment"});
+  control.resume(dlAdaptStart);
   *converged = true;
   double lambda = resumed_ ? progress_.lambda : 0.0;
   {
@@ -259,112 +271,122 @@ PetscErrorCode StaticAnalysis::run(Vec U, const StepCallback& onStep, bool* conv
     start.time = timeAt(lambda);
     PetscCall(asm_.setMixedReference(U, start));
   }
-  for (int step = (resumed_ ? progress_.step : 0) + 1; step <= lastStep_; ++step) {
-    const double target = stepFactor(step);
-    StepReport rep;
-    rep.step = step;
-    double dl = adaptive_ ? std::min(dlAdapt, target - lambda) : target - lambda;
-    int cuts = 0;
-    bool predictNext = true;
-    // SPACAR Light's step 1 (target 0): one solve under the initial loads and motions alone
-    bool initialSolve = target == 0.0 && !startIsInitial_;
-    while (lambda < target || initialSolve) {
-      initialSolve = false;
-      const double next = target - (lambda + dl) < 1e-9 * dlMax ? target : lambda + dl;  // no sliver increments
-      PetscCall(VecCopy(U, Usave));
-      const auto Rsave = asm_.referenceRotations();
-      // residual of the load increment at the start state: -snes_rtol is relative to it (not to
-      // the residual of the predicted state, which the stiff axial modes can make much larger)
-      ls_.loadFactor = next;
-      ls_.time = timeAt(next);
-      PetscCall(asm_.residual(U, ls_, F_));
-      PetscReal fnormStart = 0;
-      PetscCall(VecNorm(F_, NORM_2, &fnormStart));
-      newtonTest_.setStartResidual(fnormStart);
-      // predictor: extrapolate the last increment (rotation increments included)
-      const bool predicted = dlPrev > 0 && predictor_ && predictNext;
-      if (predicted) PetscCall(VecAXPY(U, (next - lambda) / dlPrev, dU));
-      if (coarse_ && coarsePredictor_) PetscCall(coarse_->predict(U, ls_));  // nonlinear coarse solve first
-      bool ok = false;
-      int its = 0;
-      double fnorm = 0;
-      SNESConvergedReason why;
-      PetscCall(solveIncrement(U, next, &ok, &its, &fnorm, &why));
-      rep.newtonIterations += its;
-      ++rep.increments;
-      rep.residualNorm = fnorm;
-      rep.convergedOnUpdate = rep.convergedOnUpdate || newtonTest_.convergedOnUpdate();
-      rep.relativeUpdate = newtonTest_.relativeUpdate();
-      if (ok) {
-        predictNext = true;
-        PetscCall(VecWAXPY(dU, -1.0, Usave, U));
-        PetscCall(asm_.residual(U, ls_, F_));  // line searches may end on a trial evaluation
-        fintConverged_ = asm_.internalForceNorm();
-        PetscCall(asm_.setMixedReference(U, ls_));  // the next increment's stresses start from this state
-        const bool initialIncrement = next == lambda;  // step 1 of SPACAR Light's steps: no increment size to adapt
-        if (!initialIncrement) dlPrev = next - lambda;
-        PetscCall(asm_.absorbRotations(U));
-        lambda = next;
-        if (adaptive_ && !initialIncrement) {
-          if (its <= growIts_) dl = std::min(2.0 * dl, dlMax);
-          dlAdapt = dl;
-        }
-        continue;
-      }
-      PetscCall(VecCopy(Usave, U));
-      asm_.setReferenceRotations(Rsave);
-      {
-        LoadState last = ls_;
-        last.loadFactor = lambda;
-        last.time = timeAt(lambda);
-        PetscCall(asm_.setMixedReference(U, last));
-      }
-      {  // a failed LU factorization (MUMPS) must not be reused by the retry: refactor from scratch
-        KSP ksp;
-        PC pc;
-        PetscCall(SNESGetKSP(snes_, &ksp));
-        PetscCall(KSPGetPC(ksp, &pc));
-        PetscCall(PCReset(pc));
-      }
-      if (predicted) {  // the extrapolation can overshoot a sharply bending path: same increment from the last state
-        predictNext = false;
-        continue;
-      }
-      if (next == lambda || ++cuts > maxCuts_) {  // the initial loads alone (step 1, load factor 0) cannot be cut
-        std::ostringstream msg;
-        msg << "load step " << step << " of " << lastStep_ << " did not converge: Newton stopped at load factor "
-            << next << " (" << SNESConvergedReasons[why] << ", residual norm " << fnorm << ")";
-        if (next == lambda)
-          msg << " under the initial loads and prescribed motions alone (SPACAR Light's step 1: they act in full, "
-                 "in one increment that cannot be cut). Try moving part of them to the ramped loads and motions "
-                 "(force, moment, displ_*, rot instead of *_initial), a line search (-snes_linesearch_type bt|l2), "
-                 "-snes_monitor to watch the residual, or check supports and rigid modes for a mechanism.";
-        else
-          msg << " after " << maxCuts_ << " halvings of the increment (last converged load factor " << lambda
-              << "). Try more load steps (-loadsteps), a line search (-snes_linesearch_type bt|l2), "
-                 "-snes_monitor to watch the residual, or check supports and rigid modes for a mechanism.";
-        // a tangent with Inf/NaN entries is no singular model: MUMPS refuses it, PETSc's LU may not, so
-        // the constraint check it would trigger could name a mechanism on some rank counts only
-        linearFailed_ = why == SNES_DIVERGED_LINEAR_SOLVE && tangentFinite_;
-        if (!tangentFinite_ || why == SNES_DIVERGED_FNORM_NAN)
-          msg << (tangentFinite_ ? " The residual is not finite (Inf/NaN)."
-                                 : " The tangent stiffness is not finite (Inf/NaN, or entries above 1e154).");
-        failure_ = msg.str();
-        *converged = false;
-        break;
-      }
-      dl = adaptive_ ? 0.5 * (next - lambda) : 0.5 * dl;
-      PetscCall(PetscPrintf(comm, "  step %d: Newton failed at load factor %.6g (%s); retrying with increment %.3g\n",
-                            step, next, SNESConvergedReasons[why], dl));
-    }
-    if (!*converged) break;
+  StepReport rep;
+  bool predictNext = true, predicted = false;
+  std::vector<Mat3> Rsave;
+  SNESConvergedReason why = SNES_CONVERGED_ITERATING;
+  double fnorm = 0;
+
+  SteppedProcedure increment;
+  increment.solve = [&](double from, double next, double, StepAttempt* a) -> PetscErrorCode {
+    PetscCall(VecCopy(U, Usave));
+    Rsave = asm_.referenceRotations();
+    // residual of the load increment at the start state: -snes_rtol is relative to it (not to
+    // the residual of the predicted state, which the stiff axial modes can make much larger)
+    ls_.loadFactor = next;
+    ls_.time = timeAt(next);
+    PetscCall(asm_.residual(U, ls_, F_));
+    PetscReal fnormStart = 0;
+    PetscCall(VecNorm(F_, NORM_2, &fnormStart));
+    newtonTest_.setStartResidual(fnormStart);
+    // predictor: extrapolate the last increment (rotation increments included)
+    predicted = dlPrev > 0 && predictor_ && predictNext;
+    if (predicted) PetscCall(VecAXPY(U, (next - from) / dlPrev, dU));
+    if (coarse_ && coarsePredictor_) PetscCall(coarse_->predict(U, ls_));  // nonlinear coarse solve first
+    PetscCall(solveIncrement(U, next, &a->converged, &a->iterations, &fnorm, &why));
+    a->reason = SNESConvergedReasons[why];
+    rep.newtonIterations += a->iterations;
+    ++rep.increments;
+    rep.residualNorm = fnorm;
+    rep.convergedOnUpdate = rep.convergedOnUpdate || newtonTest_.convergedOnUpdate();
+    rep.relativeUpdate = newtonTest_.relativeUpdate();
+    if (a->converged) return PETSC_SUCCESS;
+    PetscCall(VecCopy(Usave, U));
+    asm_.setReferenceRotations(Rsave);
+    LoadState last = ls_;
+    last.loadFactor = from;
+    last.time = timeAt(from);
+    PetscCall(asm_.setMixedReference(U, last));
+    // a failed LU factorization (MUMPS) must not be reused by the retry: refactor from scratch
+    KSP ksp;
+    PC pc;
+    PetscCall(SNESGetKSP(snes_, &ksp));
+    PetscCall(KSPGetPC(ksp, &pc));
+    PetscCall(PCReset(pc));
+    return PETSC_SUCCESS;
+  };
+  increment.accept = [&](double from, double next, double h, const StepAttempt&) -> PetscErrorCode {
+    predictNext = true;
+    PetscCall(VecWAXPY(dU, -1.0, Usave, U));
+    PetscCall(asm_.residual(U, ls_, F_));  // line searches may end on a trial evaluation
+    fintConverged_ = asm_.internalForceNorm();
+    PetscCall(asm_.setMixedReference(U, ls_));  // the next increment's stresses start from this state
+    if (h != 0) dlPrev = next - from;  // step 1 of SPACAR Light's steps (size 0): no increment for the predictor
+    PetscCall(asm_.absorbRotations(U));
+    return PETSC_SUCCESS;
+  };
+  // the extrapolation can overshoot a sharply bending path: the same increment from the last state
+  increment.retry = [&](const StepAttempt&, bool* retry, std::string*) -> PetscErrorCode {
+    *retry = predicted;
+    if (predicted) predictNext = false;
+    return PETSC_SUCCESS;
+  };
+  increment.print = [comm](const std::string& m) { PetscPrintf(comm, "%s", m.c_str()); };
+
+  StepSequence steps;
+  steps.first = (resumed_ ? progress_.step : 0) + 1;
+  steps.last = lastStep_;
+  steps.target = [this](int k) { return stepFactor(k); };
+  // SPACAR Light's step 1 (target 0): one solve under the initial loads and motions alone
+  steps.solveAtTarget = [this](int k) { return stepFactor(k) == 0.0 && !startIsInitial_; };
+  steps.begin = [&](int k) -> PetscErrorCode {
+    rep = StepReport{};
+    rep.step = k;
+    predictNext = true;
+    return PETSC_SUCCESS;
+  };
+  steps.reached = [&](int& k, StepStop* stop) -> PetscErrorCode {
     rep.loadFactor = lambda;
     reports_.push_back(rep);
-    progress_ = {step, lambda, dlPrev, dlAdapt, fintConverged_};
+    progress_ = {k, lambda, dlPrev, adaptive_ ? control.carried() : dlAdaptStart, fintConverged_};
     if (onStep) PetscCall(onStep(rep, U));
-    if (stop_ && *stop_) break;
-  }
+    if (stop_ && *stop_) *stop = StepStop::Interrupted;
+    return PETSC_SUCCESS;
+  };
+  StepStop stop;
+  PetscCall(control.run(increment, steps, &lambda, &stop));
+  if (stop == StepStop::CutLimit) PetscCall(fail(control, lambda, why, fnorm, converged));
   PetscCall(VecDestroy(&Usave));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+// The failure of load step control.step(): its last increment to control.lastEnd() did not
+// converge (SNES reason `why`, residual `fnorm`), after -max_cuts halvings or, at the initial loads
+// alone (an increment of size 0), at once.
+PetscErrorCode StaticAnalysis::fail(const StepController& control, double lambda, SNESConvergedReason why, double fnorm,
+                                    bool* converged) {
+  PetscFunctionBeginUser;
+  const bool initial = control.lastSize() == 0;
+  std::ostringstream msg;
+  msg << "load step " << control.step() << " of " << lastStep_ << " did not converge: Newton stopped at load factor "
+      << control.lastEnd() << " (" << SNESConvergedReasons[why] << ", residual norm " << fnorm << ")";
+  if (initial)
+    msg << " under the initial loads and prescribed motions alone (SPACAR Light's step 1: they act in full, "
+           "in one increment that cannot be cut). Try moving part of them to the ramped loads and motions "
+           "(force, moment, displ_*, rot instead of *_initial), a line search (-snes_linesearch_type bt|l2), "
+           "-snes_monitor to watch the residual, or check supports and rigid modes for a mechanism.";
+  else
+    msg << " after " << maxCuts_ << " halvings of the increment (last converged load factor " << lambda
+        << "). Try more load steps (-loadsteps), a line search (-snes_linesearch_type bt|l2), "
+           "-snes_monitor to watch the residual, or check supports and rigid modes for a mechanism.";
+  // a tangent with Inf/NaN entries is no singular model: MUMPS refuses it, PETSc's LU may not, so
+  // the constraint check it would trigger could name a mechanism on some rank counts only
+  linearFailed_ = why == SNES_DIVERGED_LINEAR_SOLVE && tangentFinite_;
+  if (!tangentFinite_ || why == SNES_DIVERGED_FNORM_NAN)
+    msg << (tangentFinite_ ? " The residual is not finite (Inf/NaN)."
+                           : " The tangent stiffness is not finite (Inf/NaN, or entries above 1e154).");
+  failure_ = msg.str();
+  *converged = false;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -16,6 +16,8 @@
 
 namespace sinew {
 
+class StepController;
+
 struct StepReport {
   int step = 0;            ///< 1-based requested load step
   double loadFactor = 0;
@@ -94,6 +96,7 @@ class StaticAnalysis {
                                         SNESConvergedReason* reason, void* ctx);
   NewtonRules newtonRules() const;
   PetscErrorCode solveIncrement(Vec U, double lambda, bool* ok, int* its, double* fnorm, SNESConvergedReason* why);
+  PetscErrorCode fail(const StepController& control, double lambda, SNESConvergedReason why, double fnorm, bool* converged);
 
   static PetscErrorCode tangentMult(Mat A, Vec x, Vec y);
   PetscErrorCode setUpElementwiseOperator(OperatorChoice choice, const AncfSettings& ancf);

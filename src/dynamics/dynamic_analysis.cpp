@@ -324,13 +324,31 @@ void DynamicAnalysis::setGuarded(bool on) {
   modifiedNewton_ = on ? false : modifiedDefault_;
 }
 
-PetscErrorCode DynamicAnalysis::retryGuarded(double t1, SNESConvergedReason why) {
-  PetscFunctionBeginUser;
-  setGuarded(true);
-  ++report_.guardedSteps;
-  PetscCall(PetscPrintf(asm_.mesh().comm, "  t = %.6g: Newton failed (%s); retrying with full Newton from the last state\n",
-                        t1, SNESConvergedReasons[why]));
-  PetscFunctionReturn(PETSC_SUCCESS);
+// A time step t -> t1 of size h for the StepController: solved by step() (committed at once with
+// `commit`). Guarded mode: a failed solve is first retried at the same step size with full Newton
+// started at q_n instead of the extrapolated predictor, then by halving (still guarded); the next
+// time step starts plain again (a diverging extrapolation is caught early: DIVERGED_DTOL).
+SteppedProcedure DynamicAnalysis::timeStep(bool commit, SNESConvergedReason* why, double* fnorm) {
+  SteppedProcedure p;
+  p.solve = [this, commit, why, fnorm](double, double t1, double h, StepAttempt* a) -> PetscErrorCode {
+    h_ = h;
+    PetscCall(step(t1, &a->converged, &a->iterations, fnorm, why, commit));
+    a->reason = SNESConvergedReasons[*why];
+    report_.newtonIterations += a->iterations;
+    ++report_.substeps;
+    return PETSC_SUCCESS;
+  };
+  p.retry = [this](const StepAttempt&, bool* retry, std::string* how) -> PetscErrorCode {
+    *retry = !restPredictor_;
+    if (!*retry) return PETSC_SUCCESS;
+    setGuarded(true);
+    ++report_.guardedSteps;
+    *how = "full Newton from the last state";
+    return PETSC_SUCCESS;
+  };
+  MPI_Comm comm = asm_.mesh().comm;
+  p.print = [comm](const std::string& m) { PetscPrintf(comm, "%s", m.c_str()); };
+  return p;
 }
 
 PetscErrorCode DynamicAnalysis::runArnoldBruls(Vec U, const StepCallback& onStep, bool* converged) {
@@ -400,68 +418,53 @@ PetscErrorCode DynamicAnalysis::runArnoldBruls(Vec U, const StepCallback& onStep
   const int nsteps = std::max(1, static_cast<int>(std::ceil(tend / dt - 1e-9)));
   double t = resumed_ ? progress_.time : 0.0;
   *converged = true;
-  // Sub-step size h: halved when Newton fails, doubled again after growAfter_ successes in a row
-  // (never above dt), so one hard moment does not leave the rest of the run at a tiny step.
-  // growAfter_ = 0 is the former rule: every time step restarts at dt, no growth inside a step.
-  // A resumed run (resume()) continues with the state of its checkpoint.
-  double h = resumed_ ? progress_.h : dt;
-  int successes = resumed_ ? progress_.successes : 0;
-  // Guarded mode: a failed solve is first retried at the same step size with full Newton started
-  // at q_n instead of the extrapolated predictor, then by halving (still guarded); the next time
-  // step starts plain again (a diverging extrapolation is caught early: DIVERGED_DTOL).
+  // Sub-step size h: halved when Newton fails (at most -max_cuts times per time step), doubled again
+  // after growAfter_ successes in a row (never above dt), so one hard moment does not leave the rest
+  // of the run at a tiny step. growAfter_ = 0 is the former rule: every time step restarts at dt, no
+  // growth inside a step. A remainder below 1e-6 of the sub-step is round-off of the summed
+  // sub-steps: the step ends on the target. A resumed run (resume()) continues with the state of its checkpoint.
+  StepRules rules;
+  rules.maxCuts = maxCuts_;
+  rules.growAfter = growAfter_;
+  rules.maxStep = dt;
+  rules.landing = Landing::Relative;
+  rules.landingSlack = 1e-6;
+  rules.firstSize = growAfter_ == 0 ? FirstSize::Max : FirstSize::Carried;
+  StepController control(rules, {"time step", "time", "dt"});
+  control.resume(resumed_ ? progress_.h : dt, resumed_ ? progress_.successes : 0);
   modifiedDefault_ = modifiedNewton_;
-  for (int k = (resumed_ ? progress_.step : 0) + 1; k <= nsteps; ++k) {
-    const double target = k == nsteps ? tend : k * dt;
-    int cuts = 0;
-    if (growAfter_ == 0) h = dt;
-    bool reduced = h < dt;
+  SNESConvergedReason why = SNES_CONVERGED_ITERATING;
+  double fnorm = 0;
+  bool reduced = false;  // the time step starts below dt
+  StepSequence steps;
+  steps.first = (resumed_ ? progress_.step : 0) + 1;
+  steps.last = nsteps;
+  steps.target = [&](int k) { return k == nsteps ? tend : k * dt; };
+  steps.begin = [&](int) -> PetscErrorCode {
+    reduced = (growAfter_ == 0 ? dt : control.carried()) < dt;
     setGuarded(false);
-    while (t < target) {
-      // a remainder below 1e-6 of the sub-step is round-off of the summed sub-steps: end on target
-      h_ = target - t - h <= 1e-6 * h ? target - t : h;
-      const double t1 = h_ == target - t ? target : t + h_;
-      int its = 0;
-      double fnorm = 0;
-      SNESConvergedReason why;
-      PetscCall(step(t1, &ok, &its, &fnorm, &why));
-      report_.newtonIterations += its;
-      ++report_.substeps;
-      if (ok) {
-        t = t1;
-        if (h < dt && growAfter_ > 0 && ++successes >= growAfter_) {
-          h = std::min(2.0 * h, dt);
-          successes = 0;
-        }
-        continue;
-      }
-      successes = 0;
-      if (!restPredictor_) {
-        PetscCall(retryGuarded(t1, why));
-        continue;
-      }
-      if (++cuts > maxCuts_) {
-        std::ostringstream msg;
-        msg << "time step " << k << " of " << nsteps << " did not converge: Newton stopped at t = " << t1 << " ("
-            << SNESConvergedReasons[why] << ", residual norm " << fnorm << ") after " << maxCuts_
-            << " halvings of the step (last converged time " << t
-            << "). Try a smaller opt.dynamics.dt, a line search (-snes_linesearch_type bt), -snes_monitor, or check "
-               "supports and masses.";
-        failure_ = msg.str();
-        *converged = false;
-        break;
-      }
-      h = 0.5 * h_;
-      reduced = true;
-      PetscCall(PetscPrintf(comm, "  t = %.6g: Newton failed (%s); retrying with dt = %.3g\n", t1,
-                            SNESConvergedReasons[why], h));
-    }
-    if (!*converged) break;
+    return PETSC_SUCCESS;
+  };
+  steps.reached = [&](int& k, StepStop* stop) -> PetscErrorCode {
     report_.steps = k;
-    report_.reducedSteps += reduced;
+    report_.reducedSteps += reduced || control.cuts() > 0;
     report_.time = t;
-    progress_ = {k, t, h, successes, 0.0};
+    progress_ = {k, t, control.carried(), control.successes(), 0.0};
     if (onStep) PetscCall(onStep(k, t, Un_, Vn_, Qn_));
-    if (stop_ && *stop_) break;
+    if (stop_ && *stop_) *stop = StepStop::Interrupted;
+    return PETSC_SUCCESS;
+  };
+  StepStop stop;
+  PetscCall(control.run(timeStep(true, &why, &fnorm), steps, &t, &stop));
+  if (stop == StepStop::CutLimit) {
+    std::ostringstream msg;
+    msg << "time step " << control.step() << " of " << nsteps << " did not converge: Newton stopped at t = "
+        << control.lastEnd() << " (" << SNESConvergedReasons[why] << ", residual norm " << fnorm << ") after " << maxCuts_
+        << " halvings of the step (last converged time " << t
+        << "). Try a smaller opt.dynamics.dt, a line search (-snes_linesearch_type bt), -snes_monitor, or check "
+           "supports and masses.";
+    failure_ = msg.str();
+    *converged = false;
   }
   PetscCall(VecCopy(Un_, U));
   PetscFunctionReturn(PETSC_SUCCESS);

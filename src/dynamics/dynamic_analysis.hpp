@@ -29,6 +29,7 @@
 #include "sinew/model.hpp"
 #include "solvers/ancf/corotated_newton_matrix.hpp"
 #include "solvers/newton_test.hpp"
+#include "solvers/step_controller.hpp"
 
 namespace sinew {
 
@@ -231,7 +232,9 @@ class DynamicAnalysis {
   /// the next step starts plain again (off).
   void setGuarded(bool on);
   /// setGuarded(true), counted and reported: "Newton failed at t1 (why); retrying ...".
-  PetscErrorCode retryGuarded(double t1, SNESConvergedReason why);
+  /// The time step t -> t1 for the StepController (solve, guarded retry, messages); `commit`: a
+  /// converged step becomes the step start at once.
+  SteppedProcedure timeStep(bool commit, SNESConvergedReason* why, double* fnorm);
   /// Newton's start of a time step (-dynamics_predictor): q_n + h qd_n + h^2/2 a_n or q_n
   enum class Predictor { Acceleration, State } predictor_ = Predictor::Acceleration;
   double jacobianH_ = 0;       ///< step size the kept Jacobian was built for

@@ -74,90 +74,95 @@ PetscErrorCode DynamicAnalysis::errorRatio(Vec U, double* eta, double* scale) {
 // interval is split into equal steps no longer than the proposed h), so rows need no interpolation.
 PetscErrorCode DynamicAnalysis::runAdaptive(const StepCallback& onStep, bool* converged) {
   PetscFunctionBeginUser;
-  MPI_Comm comm = asm_.mesh().comm;
   const double dt = opts_.dt, tend = opts_.tend;
   const int nsteps = std::max(1, static_cast<int>(std::ceil(tend / dt - 1e-9)));
   const int every = opts_.output_every;
   double t = resumed_ ? progress_.time : 0.0;
-  double h = std::clamp(resumed_ ? progress_.h : dt, dtMin_, dtMax_);
   report_.acceptedSteps = resumed_ ? progress_.successes : 0;
   adaptScale_ = resumed_ ? progress_.scale : 0.0;
   *converged = true;
   modifiedDefault_ = modifiedNewton_;
   Vec U;
   PetscCall(SNESGetSolution(snes_, &U));
-  for (int k = resumed_ ? progress_.step : 0; k < nsteps;) {
-    const int krow = std::min(nsteps, (k / every + 1) * every);
-    const double target = krow == nsteps ? tend : krow * dt;
-    setGuarded(false);
-    while (t < target) {
-      const double rest = target - t;
-      const int n = std::max(1, static_cast<int>(std::ceil(rest / h - 1e-6)));
-      h_ = rest / n;
-      const double t1 = n == 1 ? target : t + h_;
-      int its = 0;
-      double fnorm = 0;
-      SNESConvergedReason why;
-      bool ok = false;
-      PetscCall(step(t1, &ok, &its, &fnorm, &why, false));
-      report_.newtonIterations += its;
-      ++report_.substeps;
-      if (!ok) {  // as with a fixed dt: full Newton from q_n at the same step, then halving
-        if (!restPredictor_) {
-          PetscCall(retryGuarded(t1, why));
-          continue;
-        }
-        if (h_ <= dtMin_ * (1 + 1e-9)) {
-          std::ostringstream msg;
-          msg << "adaptive time steps: Newton did not converge at t = " << t1 << " (" << SNESConvergedReasons[why]
-              << ", residual norm " << fnorm << ") with the smallest step dt_min = " << dtMin_ << " (last converged time " << t
-              << "). Try a smaller opt.dynamics.adaptive.dt_min, a line search (-snes_linesearch_type bt), or check "
-                 "supports and masses.";
-          failure_ = msg.str();
-          *converged = false;
-          break;
-        }
-        h = std::max(0.5 * h_, dtMin_);
-        ++report_.reducedSteps;
-        PetscCall(PetscPrintf(comm, "  t = %.6g: Newton failed (%s); retrying with dt = %.3g\n", t1, SNESConvergedReasons[why], h));
-        continue;
-      }
-      // proposed change of the step: newton aims at adaptIts_ iterations, error at eta = 1 (safety 0.9,
-      // local error ~ h^3); within [0.2, 2] per step, and no growth below 1.2 (keeps a factored Jacobian)
-      double factor = 1.0, eta = 0.0, scale = adaptScale_;
-      if (control_ == StepControl::Newton) {
-        factor = std::sqrt(static_cast<double>(adaptIts_) / std::max(its, 1));
-      } else {
-        PetscCall(errorRatio(U, &eta, &scale));
-        factor = eta > 0 ? 0.9 * std::cbrt(1.0 / eta) : 2.0;
-      }
-      factor = std::clamp(factor, 0.2, 2.0);
-      if (factor >= 1.0 && factor < 1.2) factor = 1.0;
-      if (control_ == StepControl::Error && eta > 1.0 && h_ > dtMin_ * (1 + 1e-9)) {
-        h = std::max(h_ * std::min(factor, 0.9), dtMin_);  // rejected: repeat from q_n with the smaller step
-        ++report_.rejectedSteps;
-        continue;
-      }
-      PetscCall(commitStep(U));
-      setGuarded(false);
-      adaptScale_ = scale;
-      t = t1;
-      lastH_ = h_;
-      ++report_.acceptedSteps;
-      report_.hMin = report_.hMin > 0 ? std::min(report_.hMin, h_) : h_;
-      report_.hMax = std::max(report_.hMax, h_);
-      double next = h_ * factor;
-      if (h_ < h && factor >= 1.0) next = std::max(next, h);  // a step shortened to land on a row time
-      h = std::clamp(next, dtMin_, dtMax_);
-      if (onSubstep_) PetscCall(onSubstep_(t, Un_, Vn_));
+  // a failed step: as with a fixed dt, full Newton from q_n at the same step, then halving down to dt_min
+  StepRules rules;
+  rules.maxCuts = -1;
+  rules.minStep = dtMin_;
+  rules.landing = Landing::EqualSplit;
+  // proposed change of the step: newton aims at adaptIts_ iterations, error at eta = 1 (safety 0.9,
+  // local error ~ h^3); within [0.2, 2] per step, and no growth below 1.2 (keeps a factored Jacobian);
+  // error: a step with eta > 1 is rejected and repeated from q_n with the smaller step
+  double stepScale = adaptScale_;  // errorRatio's displacement scale of the step
+  rules.strategy = [&](double h, double proposal, const StepAttempt& a, double* next, bool* reject) -> PetscErrorCode {
+    double factor = 1.0, eta = 0.0;
+    stepScale = adaptScale_;
+    if (control_ == StepControl::Newton) {
+      factor = std::sqrt(static_cast<double>(adaptIts_) / std::max(a.iterations, 1));
+    } else {
+      PetscCall(errorRatio(U, &eta, &stepScale));
+      factor = eta > 0 ? 0.9 * std::cbrt(1.0 / eta) : 2.0;
     }
-    if (!*converged) break;
-    k = krow;
+    factor = std::clamp(factor, 0.2, 2.0);
+    if (factor >= 1.0 && factor < 1.2) factor = 1.0;
+    *reject = control_ == StepControl::Error && eta > 1.0 && h > dtMin_ * (1 + 1e-9);
+    if (*reject) {
+      *next = std::max(h * std::min(factor, 0.9), dtMin_);
+      ++report_.rejectedSteps;
+      return PETSC_SUCCESS;
+    }
+    *next = h * factor;
+    if (h < proposal && factor >= 1.0) *next = std::max(*next, proposal);  // a step shortened to land on a row time
+    *next = std::clamp(*next, dtMin_, dtMax_);
+    return PETSC_SUCCESS;
+  };
+  StepController control(rules, {"output step", "time", "dt"});
+  control.resume(std::clamp(resumed_ ? progress_.h : dt, dtMin_, dtMax_));
+  SNESConvergedReason why = SNES_CONVERGED_ITERATING;
+  double fnorm = 0;
+  SteppedProcedure timeSteps = timeStep(false, &why, &fnorm);
+  timeSteps.accept = [&](double, double t1, double h, const StepAttempt&) -> PetscErrorCode {
+    PetscCall(commitStep(U));
+    setGuarded(false);
+    adaptScale_ = stepScale;
+    lastH_ = h;
+    ++report_.acceptedSteps;
+    report_.hMin = report_.hMin > 0 ? std::min(report_.hMin, h) : h;
+    report_.hMax = std::max(report_.hMax, h);
+    if (onSubstep_) PetscCall(onSubstep_(t1, Un_, Vn_));
+    return PETSC_SUCCESS;
+  };
+  // output rows r at step krow(r) = min(nsteps, r every), time krow dt (tend at the last)
+  auto krow = [&](int r) { return std::min(nsteps, r * every); };
+  const int done = resumed_ ? progress_.step : 0;
+  StepSequence rows;
+  rows.last = (nsteps + every - 1) / every;
+  rows.first = done >= nsteps ? rows.last + 1 : done / every + 1;
+  rows.target = [&](int r) { return krow(r) == nsteps ? tend : krow(r) * dt; };
+  rows.begin = [&](int) -> PetscErrorCode {
+    setGuarded(false);
+    return PETSC_SUCCESS;
+  };
+  rows.reached = [&](int& r, StepStop* stop) -> PetscErrorCode {
+    const int k = krow(r);
+    report_.reducedSteps += control.cuts();
     report_.steps = k;
     report_.time = t;
-    progress_ = {k, t, h, report_.acceptedSteps, adaptScale_};
+    progress_ = {k, t, control.carried(), report_.acceptedSteps, adaptScale_};
     if (onStep) PetscCall(onStep(k, t, Un_, Vn_, Qn_));
-    if (stop_ && *stop_) break;
+    if (stop_ && *stop_) *stop = StepStop::Interrupted;
+    return PETSC_SUCCESS;
+  };
+  StepStop stop;
+  PetscCall(control.run(timeSteps, rows, &t, &stop));
+  if (stop == StepStop::BelowMinimum) {
+    report_.reducedSteps += control.cuts();
+    std::ostringstream msg;
+    msg << "adaptive time steps: Newton did not converge at t = " << control.lastEnd() << " (" << SNESConvergedReasons[why]
+        << ", residual norm " << fnorm << ") with the smallest step dt_min = " << dtMin_ << " (last converged time " << t
+        << "). Try a smaller opt.dynamics.adaptive.dt_min, a line search (-snes_linesearch_type bt), or check "
+           "supports and masses.";
+    failure_ = msg.str();
+    *converged = false;
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }

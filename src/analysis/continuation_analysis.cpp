@@ -454,6 +454,7 @@ PetscErrorCode ContinuationAnalysis::step(Vec U, double* lambda, double ds, Vec 
     // the corrector's tolerance is relative to the load vector |dR/dlambda| max(1, |lambda|)
     if (newtonTest_.judge(iterate(k, rnorm, rtol_ * qnorm * std::max(1.0, std::abs(*lambda)), jnorm)) > 0) {
       *ok = true;
+      lastResidual_ = rnorm;
       break;
     }
     ++*its;
@@ -625,6 +626,7 @@ PetscErrorCode ContinuationAnalysis::run(Vec U, const PointCallback& onPoint, bo
     p.loadFactor = lambda;
     p.arcLength = ds;
     p.iterations = its;
+    p.residualNorm = lastResidual_;
     PetscCall(controlDisplacement(U, lambda, &p.controlValue));
     if (inertia_) PetscCall(pathSlopes(U, lambda, dUprev, dlPrev, &p));
     if (inertia_) PetscCall(negativeEigenvalues(U, lambda, &p.negativeEigenvalues, &p));

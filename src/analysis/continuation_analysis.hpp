@@ -27,6 +27,7 @@ struct PathPoint {
   double arcLength = 0;        ///< the arc length (or displacement increment) of the step
   int iterations = 0;          ///< corrector iterations of the last (successful) attempt
   int cuts = 0;                ///< failed attempts before it (step halved)
+  double residualNorm = 0;     ///< |R(U, lambda)| at the converged point [N, N m]
   int negativeEigenvalues = -1;  ///< of the tangent, rigid-mode multipliers discounted; -1 when not computed
   double controlValue = 0;     ///< the displacement of the control DOF (when a node is given)
   double slopeLoad = 0, slopeControl = 0;  ///< d lambda / ds and d u_control / ds along the path there
@@ -116,6 +117,7 @@ class ContinuationAnalysis {
   int resumePrevNeg_ = -1, resumeIts_ = 0;
   double ckDs_ = 0, ckDlPrev_ = 0;  ///< step state at the reported point (checkpointState)
   int ckIts_ = 0;
+  double lastResidual_ = 0;  ///< |R| of the last converged corrector (the path point's residual)
   Mat K_ = nullptr;
   Mat Ks_ = nullptr;   ///< symmetric part of K_ (follower pressure makes K_ unsymmetric); see stabilityMatrix
   Mat stab_ = nullptr; ///< the matrix whose inertia / lowest eigenvalue is taken: K_ or Ks_

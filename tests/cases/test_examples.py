@@ -18,6 +18,7 @@ the six new examples 93 s of it; on 1 rank each new example runs in 1 to 4 s).""
 import glob
 import math
 import os
+import re
 import time
 
 import numpy as np
@@ -67,6 +68,10 @@ for path in sorted(glob.glob(os.path.join(RUNS, "*.yaml"))):
         st.check(not missing, f"{name}: datasets {expected_datasets(scene)} written (missing {missing})")
     results[name] = h5
     print(f"  {name}: {timings[name]:.1f} s on 2 ranks {' '.join(FLAGS.get(name, []))}")
+    if "continuation" in scene.get("opt", {}):
+        # the summary's step table gives each path point's residual (it printed 0 for every point)
+        rows = [ln.split() for ln in out.splitlines() if re.match(r"^\s+\d+\s+[-\d.e+]+\s+\d+\s+\d+\s+[\d.e+-]+$", ln)]
+        st.check(rows and all(float(r[4]) > 0 for r in rows), f"{name}: |residual| of every path point in the summary > 0")
 
 E, G, RHO = 210e9, 80e9, 7800.0
 

@@ -52,6 +52,7 @@ PetscErrorCode runContinuation(RunContext& ctx) {
     rep.loadFactor = p.loadFactor;
     rep.newtonIterations = p.iterations;
     rep.increments = p.cuts + 1;
+    rep.residualNorm = p.residualNorm;
     ctx.reports.push_back(rep);
     PetscFunctionReturn(PETSC_SUCCESS);
   };

@@ -78,6 +78,9 @@ class Result:
             self.stepvalue = f[self.stepname][()] if self.stepname else None
             self.freq = f["freq"][()] if "freq" in f else None
             self.buck = f["buck"][()] if "buck" in f else None
+            # [ns, k]; files of Sinew before issue 24 wrote k = 1 as [ns]
+            self.freq = None if self.freq is None else self.freq.reshape(len(self.freq), -1)
+            self.buck = None if self.buck is None else self.buck.reshape(len(self.buck), -1)
             self.modes = {}
             if "mesh" in f:
                 for name in f["mesh"]:

@@ -86,7 +86,8 @@ class ResultFile {
   /// Global rows of this rank's cells of one kind ("lines", "triangles", "quads") in /cell/<cells>/*.
   const std::vector<long>& ownedCellRows(const std::string& cells) const;
   /// [ns] or [ns, k] dataset ("stressmax", "freq", "buck", "sensors/tip"): rank 0's values are written.
-  void writeStepRow(const std::string& name, std::span<const double> values);
+  /// One value makes a [ns] dataset unless `table` ([ns, k] also for k = 1: /freq, /buck).
+  void writeStepRow(const std::string& name, std::span<const double> values, bool table = false);
   /// A dataset written once (statespace/A, formfinding/residual): rank 0's values, given shape.
   void writeArray(const std::string& name, std::span<const double> values, std::vector<long> shape);
   /// Restart state (src/output/checkpoint.*): fixed-size datasets without a step axis, created at

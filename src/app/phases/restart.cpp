@@ -331,7 +331,7 @@ void Restart::restore(RunContext& ctx, const ResultLayout& layout) {
       MPI_Allreduce(MPI_IN_PLACE, &unwritten, 1, MPI_INT, MPI_LAND, ctx.comm);
       if (unwritten) continue;
       if (kind == TableKind::Row) {
-        file.writeStepRow(name, row);
+        file.writeStepRow(name, row, shape.size() >= 2);  // [ns, 1] stays a table (/freq with nfreq 1)
         continue;
       }
       const std::vector<long> cellInner(shape.begin() + 2, shape.end());

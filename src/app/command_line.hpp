@@ -10,7 +10,8 @@ namespace sinew {
 /// Sinew flag with an accepted value or a PETSc/SLEPc option; otherwise rank 0 prints one line per
 /// wrong flag ("error: unknown flag -loadstep; did you mean -loadsteps?") and *stop with exit 2
 /// on every rank. -help: prints Sinew's flags with their defaults in PETSc's options blocks.
-PetscErrorCode handleCommandLine(MPI_Comm comm, bool* stop, int* exitCode);
+/// A Sinew flag given twice on the command line (argv) is an error too.
+PetscErrorCode handleCommandLine(MPI_Comm comm, int argc, const char* const* argv, bool* stop, int* exitCode);
 
 /// -help, or its short form -h (Sinew's: PETSc 3.18 knows only -help; -h prints the usage text
 /// and then acts as -help).

@@ -100,7 +100,8 @@ class ResultFile {
                        std::span<const double> values);
   /// [shape] state array of rank 0's values, overwritten in place.
   void writeStateArray(const std::string& name, std::span<const double> values, std::vector<long> shape);
-  /// String attribute `attr` of the group `group` (created when missing): rank 0's text.
+  /// String attribute `attr` of the group `group` (created when missing; also a group of step
+  /// datasets, /path): rank 0's text.
   void writeStateAttribute(const std::string& group, const std::string& attr, const std::string& text);
   /// Makes everything written so far the content of the file under the final name (atomically)
   /// and rewrites the XDMF (rank 0) for those steps. Call after every step.

@@ -275,8 +275,12 @@ void ResultFile::writeStateAttribute(const std::string& rawGroup, const std::str
   im.apply([&im, group, attr, value](Sink& s) {
     const std::string what = "group /" + group;
     h5::Handle g;
-    if (s.stateGroups.count(group)) {
+    htri_t exists = 0;  // a group of step datasets (/path) is opened too
+    H5E_BEGIN_TRY { exists = H5Lexists(s.file, group.c_str(), H5P_DEFAULT); }
+    H5E_END_TRY;
+    if (s.stateGroups.count(group) || exists > 0) {
       g = h5::Handle(H5Gopen2(s.file, group.c_str(), H5P_DEFAULT), H5Gclose, what + ": open");
+      s.stateGroups.insert(group);
     } else {
       h5::Handle lcpl = h5::intermediateGroupLcpl(what);
       const hid_t id = H5Gcreate2(s.file, group.c_str(), lcpl, H5P_DEFAULT, H5P_DEFAULT);

@@ -11,7 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
+#include <iterator>
 #include <numeric>
 #include <sstream>
 #include <stdexcept>
@@ -199,7 +199,13 @@ CheckpointReader::CheckpointReader(MPI_Comm comm, const std::string& path, const
   if (dims.size() != 1 || dims[0] != hsize_t(kNumScalars))
     throw std::runtime_error(path + ": /" + group_ + "/scalars has another layout (written by another Sinew version)");
   h5::check(H5Dread(ds, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, scalars_.data()), path + ": scalars");
-  checkScalars();
+  try {
+    checkScalars();
+  } catch (...) {  // the destructor of a throwing constructor does not run
+    H5Fclose(f);
+    file_ = -1;
+    throw;
+  }
   if (checkpointVectors(phase()).empty()) throw std::runtime_error(path + ": /" + group_ + ": unknown phase");
   const std::string nt = table("node"), et = table("element");
   h5::Handle dn(H5Dopen2(f, nt.c_str(), H5P_DEFAULT), H5Dclose, path + ": /" + nt);
@@ -212,12 +218,8 @@ CheckpointReader::CheckpointReader(MPI_Comm comm, const std::string& path, const
 // (steps done 1e15 became -2147483647, and the run wrote rows for ever). Every scalar is finite and
 // every count an integer in its range; rows at most the step rows the file holds.
 void CheckpointReader::checkScalars() const {
-  std::vector<std::string> names;
-  for (size_t a = 0, b; a < std::strlen(kScalarNames); a = b + 1) {
-    b = std::string(kScalarNames).find(' ', a);
-    if (b == std::string::npos) b = std::strlen(kScalarNames);
-    names.push_back(std::string(kScalarNames).substr(a, b - a));
-  }
+  std::istringstream words(kScalarNames);
+  const std::vector<std::string> names{std::istream_iterator<std::string>(words), std::istream_iterator<std::string>()};
   const auto bad = [&](int i, const std::string& expected) {
     std::ostringstream m;
     m << path_ << ": /" << group_ << "/scalars: " << (static_cast<size_t>(i) < names.size() ? names[static_cast<size_t>(i)] : "scalar")

@@ -97,7 +97,8 @@ class ResultFile {
   /// Global rows of this rank's cells of one kind ("lines", "triangles", "quads") in /cell/<cells>/*.
   const std::vector<long>& ownedCellRows(const std::string& cells) const;
   /// [ns] or [ns, k] dataset ("stressmax", "freq", "buck", "sensors/tip"): rank 0's values are written.
-  void writeStepRow(const std::string& name, std::span<const double> values);
+  /// One value makes a [ns] dataset unless `table` ([ns, k] also for k = 1: /freq, /buck).
+  void writeStepRow(const std::string& name, std::span<const double> values, bool table = false);
   /// A dataset written once (statespace/A, formfinding/residual): rank 0's values, given shape.
   void writeArray(const std::string& name, std::span<const double> values, std::vector<long> shape);
   /// Restart state (src/output/checkpoint.*): fixed-size datasets without a step axis, created at
@@ -110,7 +111,8 @@ class ResultFile {
                        std::span<const double> values);
   /// [shape] state array of rank 0's values, overwritten in place.
   void writeStateArray(const std::string& name, std::span<const double> values, std::vector<long> shape);
-  /// String attribute `attr` of the group `group` (created when missing): rank 0's text.
+  /// String attribute `attr` of the group `group` (created when missing; also a group of step
+  /// datasets, /path): rank 0's text.
   void writeStateAttribute(const std::string& group, const std::string& attr, const std::string& text);
   /// Makes everything written so far the content of the file under the final name (atomically)
   /// and rewrites the XDMF (rank 0) for those steps. Call after every step.

@@ -71,6 +71,7 @@ class ContinuationAnalysis {
   /// Checkpoint (-restart): the path's state after the last reported point as a fixed-size row of
   /// checkpointSize() values (header, the points so far, the critical points), and the last increment
   /// (the predictor's direction; valid during the point callback).
+  static constexpr int kCkHeader = 9, kCkPointCols = 12, kCkLegacyPointCols = 10, kCkCritCols = 5;
   static long checkpointSize(int maxSteps) { return kCkHeader + static_cast<long>(maxSteps) * (kCkPointCols + kCkCritCols); }
   /// The row of checkpoints written before the points carried their nearest eigenvalues (10 columns
   /// per point), and that row in the current layout (those eigenvalues unknown: NaN; another row as is).
@@ -108,7 +109,6 @@ class ContinuationAnalysis {
   PetscErrorCode step(Vec U, double* lambda, double ds, Vec dUprev, double dlPrev, bool first, bool* ok, int* its);
   void classify();
 
-  static constexpr int kCkHeader = 9, kCkPointCols = 12, kCkLegacyPointCols = 10, kCkCritCols = 5;
   Assembler& asm_;
   ContinuationOptions opt_;
   Vec dUprev_ = nullptr;  ///< increment of the last converged step

@@ -117,6 +117,7 @@ StaticAnalysis::~StaticAnalysis() {
   MatDestroy(&J_);
   VecDestroy(&F_);
   VecDestroy(&dU_);
+  VecDestroy(&Fwork_);
 }
 
 PetscErrorCode StaticAnalysis::resume(const StaticsProgress& p, Vec dU) {
@@ -164,7 +165,29 @@ PetscErrorCode StaticAnalysis::convergenceTest(SNES snes, PetscInt it, PetscReal
   x.scale = forceScale(fext, self->asm_.internalForceNorm(), 10.0 * std::max(fext, self->fintConverged_));
   x.floor = roundoffFloor(self->jacobianNorm_, self->coordMax_);
   x.coordMax = self->coordMax_;
+  const NewtonRules& rules = self->newtonTest_.rules();
+  if (it == 0 && rules.startFloorFactor > 0 && fnorm <= rules.startFloorFactor * x.floor) {
+    // a start residual at the round-off floor: round-off, or a load increment below it (a tiny load)?
+    Vec U;
+    PetscCall(SNESGetSolution(snes, &U));
+    PetscCall(self->loadChange(U, &x.loadChange));
+  }
   PetscCall(self->newtonTest_.judge(snes, x, reason));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+// ||R(U, target loads) - R(U, loads of the start state's equilibrium)||: the load and prescribed-motion
+// increment the start residual holds (the internal forces of U cancel). The assembler's force norms are
+// those of the target again afterwards (the test's force scale).
+PetscErrorCode StaticAnalysis::loadChange(Vec U, double* change) {
+  PetscFunctionBeginUser;
+  if (!Fwork_) PetscCall(VecDuplicate(F_, &Fwork_));
+  PetscCall(asm_.residual(U, equilibrium_, Fwork_));
+  PetscCall(asm_.residual(U, ls_, F_));
+  PetscCall(VecAXPY(Fwork_, -1.0, F_));
+  PetscReal n = 0;
+  PetscCall(VecNorm(Fwork_, NORM_2, &n));
+  *change = n;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -221,8 +244,11 @@ PetscErrorCode StaticAnalysis::solveIncrement(Vec U, double lambda, bool* ok, in
   *its = static_cast<int>(n);
   *fnorm = f;
   // a reported convergence with a residual above its start value (a line search ending on a wild
-  // trial point) is a failure, whatever the reason code says
-  *ok = *why > 0 && (f <= newtonTest_.startResidual() || newtonTest_.convergedOnUpdate());
+  // trial point) is a failure, whatever the reason code says; not so when both are at the round-off
+  // floor (a load below it: the Newton step is the solution, its residual round-off)
+  const double floor = roundoffFloor(jacobianNorm_, coordMax_);
+  const bool atFloor = newtonTest_.startResidual() <= floor && f <= floor;
+  *ok = *why > 0 && (f <= newtonTest_.startResidual() || newtonTest_.convergedOnUpdate() || atFloor);
   if (*why > 0 && !*ok) *why = SNES_DIVERGED_LINE_SEARCH;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -265,6 +291,11 @@ PetscErrorCode StaticAnalysis::run(Vec U, const StepCallback& onStep, bool* conv
   control.resume(dlAdaptStart);
   *converged = true;
   double lambda = resumed_ ? progress_.lambda : 0.0;
+  // loads of the start state's equilibrium: nothing applied (the reference state), or those of the resumed step
+  equilibrium_ = LoadState{};
+  equilibrium_.initialFactor = resumed_ ? 1.0 : 0.0;
+  equilibrium_.loadFactor = lambda;
+  equilibrium_.time = timeAt(lambda);
   {
     LoadState start;  // the converged state the run starts from
     start.loadFactor = lambda;
@@ -323,6 +354,7 @@ PetscErrorCode StaticAnalysis::run(Vec U, const StepCallback& onStep, bool* conv
     PetscCall(asm_.setMixedReference(U, ls_));  // the next increment's stresses start from this state
     if (h != 0) dlPrev = next - from;  // step 1 of SPACAR Light's steps (size 0): no increment for the predictor
     PetscCall(asm_.absorbRotations(U));
+    equilibrium_ = ls_;  // the loads of the state just converged (tiny-load rule of the Newton test)
     return PETSC_SUCCESS;
   };
   // the extrapolation can overshoot a sharply bending path: the same increment from the last state

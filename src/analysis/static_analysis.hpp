@@ -95,6 +95,7 @@ class StaticAnalysis {
   static PetscErrorCode convergenceTest(SNES, PetscInt it, PetscReal xnorm, PetscReal snorm, PetscReal fnorm,
                                         SNESConvergedReason* reason, void* ctx);
   NewtonRules newtonRules() const;
+  PetscErrorCode loadChange(Vec U, double* change);
   PetscErrorCode solveIncrement(Vec U, double lambda, bool* ok, int* its, double* fnorm, SNESConvergedReason* why);
   PetscErrorCode fail(const StepController& control, double lambda, SNESConvergedReason why, double fnorm, bool* converged);
 
@@ -119,6 +120,8 @@ class StaticAnalysis {
   bool coarsePredictor_ = true;  ///< -ancf_coarse_predictor: nonlinear coarse solve before each increment
   Vec F_ = nullptr;
   LoadState ls_;
+  LoadState equilibrium_;   ///< loads of the last converged state (nothing applied before the first)
+  Vec Fwork_ = nullptr;     ///< residual at equilibrium_ (loadChange)
   double forceRtol_ = 1e-11;
   double jacobianNorm_ = 0;  ///< ||J||_inf at the start of the increment (round-off floor of the residual)
   NewtonTest newtonTest_;  ///< the Newton test with the statics rules (newtonRules(), set by run())

@@ -139,13 +139,15 @@ PetscErrorCode petscHelpRequested(PetscBool* help) {
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode handleCommandLine(MPI_Comm comm, const StartRequest& request, bool* stop, int* exitCode) {
+PetscErrorCode handleCommandLine(MPI_Comm comm, const StartRequest& request, int argc, const char* const* argv, bool* stop,
+                                 int* exitCode) {
   PetscFunctionBeginUser;
   *stop = false;
   *exitCode = 0;
   // Every rank checks its own database (the same on every rank); rank 0 prints, all exit 2.
   std::vector<std::string> problems;
   PetscCall(databaseProblems(&problems));
+  if (const std::string twice = repeatedFlag(argc, argv); !twice.empty()) problems.push_back(twice);
   int bad = problems.empty() ? 0 : 1;
   MPI_Allreduce(MPI_IN_PLACE, &bad, 1, MPI_INT, MPI_MAX, comm);
   if (bad) {

@@ -23,8 +23,10 @@ StartRequest takeStartRequest(int* argc, char** argv);
 /// .petscrc) must be a Sinew flag with an accepted value or a PETSc/SLEPc option; otherwise rank 0
 /// prints one line per wrong flag ("error: unknown flag -loadstep; did you mean -loadsteps?") and
 /// *stop with exit 2 on every rank. Then the request: rank 0 prints the help text or the versions,
-/// *stop, exit 0 (-help <flag> of no flag: exit 2).
-PetscErrorCode handleCommandLine(MPI_Comm comm, const StartRequest& request, bool* stop, int* exitCode);
+/// *stop, exit 0 (-help <flag> of no flag: exit 2). A Sinew flag given twice on the command line
+/// (argv) is an error too.
+PetscErrorCode handleCommandLine(MPI_Comm comm, const StartRequest& request, int argc, const char* const* argv, bool* stop,
+                                 int* exitCode);
 
 /// PETSc's -help (given as -help_petsc, or in an options file or PETSC_OPTIONS): PETSc lists its
 /// options and those of the solvers a scene creates.

@@ -39,7 +39,7 @@ int main(int argc, char** argv) {
   sinew::installInterruptHandlers();  // after PETSc's, which would abort on SIGTERM/SIGUSR1
   int code = 0;
   bool stop = false;
-  PetscCall(sinew::handleCommandLine(PETSC_COMM_WORLD, request, &stop, &code));
+  PetscCall(sinew::handleCommandLine(PETSC_COMM_WORLD, request, argc, argv, &stop, &code));
   if (!stop) PetscCall(sinew::runFromCommandLine(argc, argv, &code));
   PetscCall(SlepcFinalize());
   return code;

@@ -127,6 +127,7 @@ PetscErrorCode runScene(int argc, char** argv, int* exitCode) {
     const FeMesh fe = discretize(model);
     dmesh = std::make_unique<DistributedMesh>(
         distributeMesh(comm, model, fe, makeKernelFactory(model, settings.dynamics.beamMass)));
+    checkContinuationControl(model, *dmesh);  // collective, after the collective distribution
     if (plan.dynamics) DynamicAnalysis::checkScheme(*dmesh, settings.dynamics.scheme);
     if (plan.dynamics && model.opt.dynamics)
       DynamicAnalysis::checkStepControl(*dmesh, *model.opt.dynamics, settings.dynamics);

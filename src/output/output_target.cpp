@@ -94,6 +94,19 @@ void OutputLock::release() {
   fd_ = -1;
 }
 
+std::string otherWriter(const std::string& h5) {
+  const std::string path = h5 + ".lock";
+  const int fd = open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) return "";  // no lock file: no run has it open (a run creates it before its first write)
+  std::string busy;
+  if (flock(fd, LOCK_SH | LOCK_NB) != 0 && errno == EWOULDBLOCK) {
+    const std::string pid = readPid(fd);
+    busy = h5 + " is being written by another run" + (pid.empty() ? "" : " (pid " + pid + ")");
+  }
+  close(fd);  // releases a shared lock taken here
+  return busy;
+}
+
 std::string claimOutput(MPI_Comm comm, const std::string& h5, const std::string& scenePath, OutputLock& lock) {
   int rank = 0;
   MPI_Comm_rank(comm, &rank);

@@ -30,6 +30,10 @@ class OutputLock {
   std::string path_;
 };
 
+/// Whether another process holds the lock of `h5` (a run writing it): "" when none, else
+/// "<h5> is being written by another run (pid N)". Local; does not create the lock file.
+std::string otherWriter(const std::string& h5);
+
 /// Collective: rank 0 checks the path and takes the lock; returns the problem ("" when none) on
 /// every rank.
 std::string claimOutput(MPI_Comm comm, const std::string& h5, const std::string& scenePath, OutputLock& lock);

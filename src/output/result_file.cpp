@@ -20,7 +20,8 @@
 // - Step-indexed datasets are chunked, unlimited along the step axis, created at their first write
 //   and extended at every beginStep, so each has exactly stepsWritten() rows. A row that was never
 //   written (the field was created later, or skipped at a step) holds NaN, also the fill value.
-// - writeStepRow: one value at the first write makes a [ns] dataset, several a [ns, k] one. k is
+// - writeStepRow: one value at the first write makes a [ns] dataset (unless asked for a table: /freq
+//   and /buck are [ns, k] also for k = 1), several a [ns, k] one. k is
 //   fixed at the first write; a later row with fewer values is padded with 0, one with more values
 //   is an error.
 // - Distributed rows (node, element, mesh fields) are written in two phases: an all-to-all moves
@@ -176,7 +177,7 @@ const std::vector<long>& ResultFile::ownedCellRows(const std::string& cells) con
   return impl_->ownedCells[k];
 }
 
-void ResultFile::writeStepRow(const std::string& rawName, std::span<const double> values) {
+void ResultFile::writeStepRow(const std::string& rawName, std::span<const double> values, bool table) {
   Impl& m = *impl_;
   const std::string name = normalized(rawName);
   const std::string what = "dataset /" + name;
@@ -202,11 +203,11 @@ void ResultFile::writeStepRow(const std::string& rawName, std::span<const double
   if (it == steps.end() && k == 0) return;  // nothing fixes the row length yet; rows stay NaN
 
   std::vector<double> row(m.rank == 0 ? values.begin() : values.end(), values.end());
-  m.apply([&m, name, k, axis = m.analysisOpen, row = std::move(row)](Sink& s) {
+  m.apply([&m, name, k, table, axis = m.analysisOpen, row = std::move(row)](Sink& s) {
     auto found = s.steps.find(name);
     StepDataset& sd = found != s.steps.end()
                           ? found->second
-                          : m.createStepDataset(s, name, Kind::Row, k == 1 ? std::vector<long>{} : std::vector<long>{k}, k, axis);
+                          : m.createStepDataset(s, name, Kind::Row, k == 1 && !table ? std::vector<long>{} : std::vector<long>{k}, k, axis);
     const int step = s.numRows(sd) - 1;
     std::vector<double> padded(sd.rowLength, 0.0);  // shorter rows are padded with 0
     std::copy(row.begin(), row.end(), padded.begin());
@@ -294,8 +295,12 @@ void ResultFile::writeStateAttribute(const std::string& rawGroup, const std::str
   im.apply([&im, group, attr, value](Sink& s) {
     const std::string what = "group /" + group;
     h5::Handle g;
-    if (s.stateGroups.count(group)) {
+    htri_t exists = 0;  // a group of step datasets (/path) is opened too
+    H5E_BEGIN_TRY { exists = H5Lexists(s.file, group.c_str(), H5P_DEFAULT); }
+    H5E_END_TRY;
+    if (s.stateGroups.count(group) || exists > 0) {
       g = h5::Handle(H5Gopen2(s.file, group.c_str(), H5P_DEFAULT), H5Gclose, what + ": open");
+      s.stateGroups.insert(group);
     } else {
       h5::Handle lcpl = h5::intermediateGroupLcpl(what);
       const hid_t id = H5Gcreate2(s.file, group.c_str(), lcpl, H5P_DEFAULT, H5P_DEFAULT);

@@ -10,10 +10,14 @@
 #include <hdf5.h>
 
 #include <algorithm>
+#include <cmath>
+#include <iterator>
 #include <numeric>
+#include <sstream>
 #include <stdexcept>
 
 #include "output/hdf5_util.hpp"
+#include "scene/value_bounds.hpp"
 
 namespace sinew {
 
@@ -21,7 +25,7 @@ namespace {
 
 const char* const kScalarNames =
     "phase rows step step_value loadsteps lambda dl_prev dl_adapt fint_converged time substep successes dt "
-    "spectral_radius energy0 max_drift formfinding load_ramp external_work external_power";
+    "spectral_radius energy0 max_drift formfinding load_ramp external_work external_power adapt_scale";
 
 // "_U_dU": the vectors of a table, in column order (the tables of each phase have their own names,
 // since a fixed-size dataset keeps its shape)
@@ -195,12 +199,57 @@ CheckpointReader::CheckpointReader(MPI_Comm comm, const std::string& path, const
   if (dims.size() != 1 || dims[0] != hsize_t(kNumScalars))
     throw std::runtime_error(path + ": /" + group_ + "/scalars has another layout (written by another Sinew version)");
   h5::check(H5Dread(ds, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, scalars_.data()), path + ": scalars");
+  try {
+    checkScalars();
+  } catch (...) {  // the destructor of a throwing constructor does not run
+    H5Fclose(f);
+    file_ = -1;
+    throw;
+  }
   if (checkpointVectors(phase()).empty()) throw std::runtime_error(path + ": /" + group_ + ": unknown phase");
   const std::string nt = table("node"), et = table("element");
   h5::Handle dn(H5Dopen2(f, nt.c_str(), H5P_DEFAULT), H5Dclose, path + ": /" + nt);
   feNodes_ = static_cast<long>(datasetDims(dn, "/" + nt)[0]);
   h5::Handle de(H5Dopen2(f, et.c_str(), H5P_DEFAULT), H5Dclose, path + ": /" + et);
   feElements_ = static_cast<long>(datasetDims(de, "/" + et)[0]);
+}
+
+// A damaged or hand-edited checkpoint must not reach the step loops: a count beyond an int wraps
+// (steps done 1e15 became -2147483647, and the run wrote rows for ever). Every scalar is finite and
+// every count an integer in its range; rows at most the step rows the file holds.
+void CheckpointReader::checkScalars() const {
+  std::istringstream words(kScalarNames);
+  const std::vector<std::string> names{std::istream_iterator<std::string>(words), std::istream_iterator<std::string>()};
+  const auto bad = [&](int i, const std::string& expected) {
+    std::ostringstream m;
+    m << path_ << ": /" << group_ << "/scalars: " << (static_cast<size_t>(i) < names.size() ? names[static_cast<size_t>(i)] : "scalar")
+      << " (entry " << i << " of attribute scalar_names) = " << scalars_[static_cast<size_t>(i)] << ", expected " << expected
+      << "; the checkpoint is damaged (not as a Sinew run wrote it)";
+    throw std::runtime_error(m.str());
+  };
+  for (int i = 0; i < kNumScalars; ++i)
+    if (!std::isfinite(scalars_[static_cast<size_t>(i)])) bad(i, "a finite number");
+  const auto count = [&](int i, double lo, double hi) {
+    const double v = scalars_[static_cast<size_t>(i)];
+    if (!(v >= lo && v <= hi && v == std::floor(v))) {
+      std::ostringstream e;
+      e << "an integer in " << lo << ".." << hi;
+      bad(i, e.str());
+    }
+  };
+  count(kCkPhase, 1, 4);
+  count(kCkStep, 0, scene::kMaxTimeSteps);  // the largest count of any phase
+  count(kCkLoadsteps, 0, scene::kMaxTimeSteps);
+  count(kCkSuccesses, 0, scene::kMaxTimeSteps);
+  count(kCkFormFinding, 0, 1);
+  count(kCkLoadRamp, 0, 1);
+  long rows = 0;  // step rows the file holds: its /load_factor or /time
+  for (const char* name : {"load_factor", "time"})
+    if (linkExists(static_cast<hid_t>(file_), name)) {
+      h5::Handle d(H5Dopen2(static_cast<hid_t>(file_), name, H5P_DEFAULT), H5Dclose, path_ + ": /" + name);
+      rows = std::max(rows, static_cast<long>(datasetDims(d, name)[0]));
+    }
+  count(kCkRows, 0, static_cast<double>(rows));
 }
 
 CheckpointReader::~CheckpointReader() {

@@ -150,6 +150,8 @@ class CheckpointReader {
  private:
   /// Columns [first, first + m) of the rows `rows` of table `name`.
   std::vector<double> readRows(const std::string& name, const std::vector<long>& rows, int first, int m) const;
+  /// Every scalar finite, every count an integer in its range (throws std::runtime_error naming it).
+  void checkScalars() const;
   /// Name of the node or element table of the checkpoint's phase ("checkpoint/node_U_dU").
   std::string table(const char* kind) const;
   MPI_Comm comm_;

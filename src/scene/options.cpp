@@ -207,7 +207,13 @@ void parseContinuation(const YAML::Node& v, const std::string& path, SceneContex
   if (!(std::abs(c.ds) > 0.0) || !std::isfinite(c.ds)) fail(childPath(path, "ds"), "expected a nonzero number, got " + fmt(c.ds));
   if (c.method == "arclength" && c.ds < 0) fail(childPath(path, "ds"), "an arc length is positive, got " + fmt(c.ds));
   c.ds_max = v["ds_max"].IsDefined() ? getPositive(v["ds_max"], childPath(path, "ds_max")) : std::abs(c.ds);
-  if (v["max_steps"].IsDefined()) c.max_steps = getIntAtLeast(v["max_steps"], childPath(path, "max_steps"), 1);
+  if (v["max_steps"].IsDefined()) {
+    // every path point is a result row, and the checkpoint keeps 17 values per possible point
+    c.max_steps = getIntAtLeast(v["max_steps"], childPath(path, "max_steps"), 1);
+    if (c.max_steps > kMaxLoadsteps)
+      fail(childPath(path, "max_steps"), "expected at most " + std::to_string(kMaxLoadsteps) + " path points (as many as load steps), got " +
+                                             std::to_string(c.max_steps));
+  }
   if (v["stop_load_factor"].IsDefined()) c.stop_load_factor = getNumber(v["stop_load_factor"], childPath(path, "stop_load_factor"));
   if (v["node"].IsDefined())
     c.node = checkedIndex(v["node"], childPath(path, "node"), "node", ctx.model.nodes.size());
@@ -290,6 +296,30 @@ StepAnalysisRows parseStepAnalyses(const YAML::Node& v, const std::string& p) {
   fail(p, expected + describe(v));
 }
 
+/// The step numbers of a list must be steps the run has: load steps 1..loadsteps (statics, also
+/// before a time loop with start: static) or written time steps 0..tend/dt (multiples of
+/// output_every); a step the run never reaches wrote nothing but the last step before (issue 24).
+void checkOutputSteps(const Options& o, const std::string& p) {
+  const bool statics = !o.dynamics || o.dynamics->start_static;
+  long nsteps = 0, every = 1;
+  if (o.dynamics) {
+    nsteps = std::max(1L, static_cast<long>(std::ceil(o.dynamics->tend / o.dynamics->dt - 1e-9)));
+    every = o.dynamics->output_every;
+  }
+  std::string range;
+  if (statics) range = "load steps 1.." + std::to_string(o.loadsteps);
+  if (o.dynamics)
+    range += (range.empty() ? "" : " or ") + std::string("time steps 0..") + std::to_string(nsteps) +
+             (every > 1 ? " that are multiples of output_every " + std::to_string(every) : "");
+  for (const int k : o.output_steps.steps) {
+    const bool loadStep = statics && k >= 1 && k <= o.loadsteps;
+    const bool timeStep = o.dynamics && k >= 0 && k <= nsteps && k % every == 0;
+    if (!loadStep && !timeStep)
+      fail(p, "step " + std::to_string(k) + " is not a step of this run: expected " + range +
+                  " (the last step is always written)");
+  }
+}
+
 }  // namespace
 
 void parseOptions(const YAML::Node& opt, SceneContext& ctx) {
@@ -345,6 +375,8 @@ void parseOptions(const YAML::Node& opt, SceneContext& ctx) {
     else if (k == "output_steps") o.output_steps = parseOutputSteps(v, p);
     else if (k == "step_analyses") o.step_analyses = parseStepAnalyses(v, p);
   }
+  // path following writes every path point (output_steps does not thin a path)
+  if (o.output_steps.kind == OutputSteps::Kind::List && !o.continuation) checkOutputSteps(o, childPath("opt", "output_steps"));
   if (opt["loadsteps"].IsDefined() && o.dynamics && !o.dynamics->start_static)
     m.warnings.push_back("opt.loadsteps is not used: opt.dynamics starts at rest from the unloaded (or form-found) state; "
                          "give opt.dynamics.start: static to run the load steps first and start the time loop from their end");

@@ -14,6 +14,7 @@
 #include <yaml-cpp/depthguard.h>
 #include <yaml-cpp/eventhandler.h>
 
+#include "elements/element_kinds.hpp"
 #include "scene/nearest_name.hpp"
 #include "scene/scene_detail.hpp"
 
@@ -304,6 +305,22 @@ void checkConnectivity(SceneContext& ctx) {
                                       " is not connected to any element (a trailing node, held fixed)");
 }
 
+/// opt.dynamics solves M qdd = f: a model without any mass (no eprops dens or physicsMassPerLength,
+/// no nprops mass or mominertia) cannot start its time loop. Found here, before form finding or any
+/// other analysis runs (it used to fail only after them, issue 24).
+void checkDynamicsMass(const Model& m) {
+  if (!m.opt.dynamics) return;
+  for (const ElementSet& s : m.eprops)
+    if (elementKind(s.type()).hasInertia(s)) return;
+  for (const auto& [node, np] : m.nprops) {
+    if (np.mass > 0.0) return;
+    for (double i : np.mominertia)
+      if (i != 0.0) return;
+  }
+  fail("opt.dynamics", "the model has no mass: time integration needs mass at every free coordinate (eprops dens, "
+                       "physicsMassPerLength for ancf_cable2d, or nprops mass)");
+}
+
 void parseRoot(const YAML::Node& root, const std::string& baseDir, Model& m) {
   if (!root.IsDefined() || root.IsNull()) fail("", "the scene is empty: expected a map with at least nodes and elements");
   if (!root.IsMap()) fail("", "expected a map of top-level keys (title, nodes, elements, ...), got " + describe(root));
@@ -360,6 +377,7 @@ void parseRoot(const YAML::Node& root, const std::string& baseDir, Model& m) {
   if (ff.IsDefined()) parseFormfinding(ff, ctx);
   parseSensors(root["sensors"], ctx);
   checkZeroModulusMembranes(m);
+  checkDynamicsMass(m);
   checkConnectivity(ctx);
 }
 

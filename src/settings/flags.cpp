@@ -6,6 +6,7 @@
 #include <climits>
 #include <cmath>
 #include <cstdlib>
+#include <map>
 #include <sstream>
 
 #include "scene/scene_reader.hpp"
@@ -126,6 +127,28 @@ const Flag* findFlag(const std::string& name) {
   for (const Flag& f : sinewFlags())
     if (f.name == n) return &f;
   return nullptr;
+}
+
+std::string repeatedFlag(int argc, const char* const* argv) {
+  std::map<std::string, std::vector<std::string>> given;  // flag -> its values in order
+  std::vector<std::string> order;
+  for (int i = 1; i < argc; ++i) {
+    const std::string t = argv[i];
+    if (t.size() < 2 || t[0] != '-' || !std::isalpha(static_cast<unsigned char>(t[1]))) continue;  // -1e9 is a value
+    const Flag* f = findFlag(t.substr(1));
+    if (!f) continue;
+    const bool hasValue = i + 1 < argc && !(argv[i + 1][0] == '-' && std::isalpha(static_cast<unsigned char>(argv[i + 1][1])));
+    if (given[f->name].empty()) order.push_back(f->name);
+    given[f->name].push_back(hasValue ? argv[i + 1] : "");
+  }
+  for (const std::string& name : order) {
+    const std::vector<std::string>& v = given[name];
+    if (v.size() < 2) continue;
+    std::string values;
+    for (const std::string& x : v) values += (values.empty() ? "" : ", ") + (x.empty() ? std::string("(no value)") : x);
+    return "-" + name + " is given " + std::to_string(v.size()) + " times (" + values + "); give it once";
+  }
+  return "";
 }
 
 std::string describeAccepted(const FlagValue& v) {

@@ -64,6 +64,11 @@ const std::vector<const FlagGroup*>& flagGroups();
 /// which checks their values; here only a missing value of a non-bool field is an error.
 std::string checkFlagValue(const Flag& flag, const char* value);
 
+/// "" or the message naming a Sinew flag given more than once on the command line (`-o a.h5 -o b.h5`:
+/// PETSc keeps the last one silently). argv[1..argc) as main received it; -options_file and
+/// PETSC_OPTIONS may still be overridden by the command line, as in PETSc.
+std::string repeatedFlag(int argc, const char* const* argv);
+
 /// "an integer in 0..50", "one of auto, elementwise, assembled", ... for messages and -help.
 std::string describeAccepted(const FlagValue& v);
 

@@ -67,7 +67,9 @@ void NewtonTest::decide(const NewtonIterate& x, double atol, double rtol, double
   rule(r.forceRtol > 0 && it >= r.forceFromIteration && fnorm <= r.forceRtol * x.scale, SNES_CONVERGED_FNORM_ABS);
   rule(r.belowFloor && it >= r.forceFromIteration && fnorm <= floor, SNES_CONVERGED_FNORM_ABS);
   // the start state is in equilibrium to round-off
-  rule(it == 0 && r.startFloorFactor > 0 && fnorm <= r.startFloorFactor * floor, SNES_CONVERGED_FNORM_ABS);
+  // (not when the residual is a load increment, however small: that needs at least one Newton step)
+  rule(it == 0 && r.startFloorFactor > 0 && fnorm <= r.startFloorFactor * floor && !(x.loadChange > 8.0 * DBL_EPSILON * x.scale),
+       SNES_CONVERGED_FNORM_ABS);
   // below the floor estimate and stalled (less than 10x per iteration), fallen into it by a quadratic
   // step (1000x and more), or come from just above it (a further iteration can only move it within the noise)
   rule(r.stalledAtFloor && it > 0 && fnorm <= floor &&

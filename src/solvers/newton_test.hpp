@@ -7,7 +7,9 @@
 //   force     r <= forceRtol * scale                     (the residual at the round-off level of the forces)
 //   start     r <= startRtol * r_start                   (relative to the increment's start residual)
 //   below-floor  r <= floor (from forceFromIteration on)
-//   start-at-floor  k = 0 and r <= startFloorFactor * floor   (the start state is in equilibrium to round-off)
+//   start-at-floor  k = 0 and r <= startFloorFactor * floor, the loads unchanged since the start state's
+//             equilibrium (the start state is in equilibrium to round-off; a residual that is the load
+//             increment itself is never converged without a Newton step, however small the load)
 //   stalled   k > 0, r <= floor and below 1e-3 of r_0 (or r_0 itself at the floor), and the last
 //             iteration no longer reduced r tenfold, dropped it 1000x, or came from just above the floor
 //   dropped   k > 0, r <= floor and r <= 1e-3 r_0
@@ -84,6 +86,10 @@ struct NewtonIterate {
   double scale = 0;   ///< forceScale of the iterate
   double floor = 0;   ///< roundoffFloor of the iterate's Jacobian
   double coordMax = 0;  ///< max |X| (rule at rest)
+  /// k = 0: norm of the change of the loads and prescribed motions since the start state was in
+  /// equilibrium (R(U, target) - R(U, start loads)); above round-off of the force scale the start
+  /// residual is load, not noise, and rule start-at-floor does not hold. 0: unchanged or not known.
+  double loadChange = 0;
 };
 
 /// The test with its history over one Newton solve (reset at iteration 0).

@@ -190,9 +190,9 @@ PetscErrorCode BucklingAnalysis::atStep(Vec U, const LoadState& ls, ResultFile& 
       failure_ = msg.str();
     }
   }
-  file.writeStepRow("buck", mu_);
-  file.writeStepRow("buck_error_estimate", estimate_);
-  file.writeStepRow("buck_backward_error", backward_);
+  file.writeStepRow("buck", mu_, true);
+  file.writeStepRow("buck_error_estimate", estimate_, true);
+  file.writeStepRow("buck_backward_error", backward_, true);
   std::vector<double> rows, rot;
   std::vector<double>* withRot = mesh.anyRotations ? &rot : nullptr;
   for (int j = 0; j < nbuck_; ++j) {

@@ -369,9 +369,9 @@ PetscErrorCode ModalAnalysis::atStep(Vec U, const LoadState& ls, ResultFile& fil
                           step_, worst, tol_));
   }
   if (write_) {
-    file.writeStepRow("freq", hz_);
-    file.writeStepRow("freq_error_estimate", estimate_);
-    file.writeStepRow("freq_backward_error", backward_);
+    file.writeStepRow("freq", hz_, true);
+    file.writeStepRow("freq_error_estimate", estimate_, true);
+    file.writeStepRow("freq_backward_error", backward_, true);
     std::vector<double> rows, rot;
     std::vector<double>* withRot = mesh.anyRotations ? &rot : nullptr;
     for (int j = 0; j < nev_; ++j) {

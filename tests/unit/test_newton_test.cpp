@@ -95,6 +95,18 @@ PetscErrorCode checks(SNES snes) {
     expect(why == SNES_CONVERGED_FNORM_ABS && at == 0, "start-at-floor: r_0 <= 1e-2 floor is equilibrium");
     PetscCall(run(snes, t, {{2e-2, 0, 1}}, 1.0, 1.0, &why, &at));
     expect(why == SNES_CONVERGED_ITERATING, "start-at-floor: r_0 above 1e-2 floor iterates");
+    {  // a residual that is a load increment below the floor (a tiny load) is no equilibrium (issue 24 item 5)
+      NewtonIterate x(0, 1, 0, 0.5e-2);
+      x.scale = 0.5e-2;
+      x.floor = 1.0;
+      x.loadChange = 0.5e-2;
+      NewtonTest tl(t.rules());
+      PetscCall(tl.judge(snes, x, &why));
+      expect(why == SNES_CONVERGED_ITERATING, "start-at-floor: r_0 that is the load increment iterates");
+      x.loadChange = 0;
+      PetscCall(tl.judge(snes, x, &why));
+      expect(why == SNES_CONVERGED_FNORM_ABS, "start-at-floor: unchanged loads, r_0 at the floor is equilibrium");
+    }
 
     t.rules().stalledAtFloor = true;
     // 1e4 -> 500 -> 0.9 (into the floor, 1/555 of the previous: neither stalled nor a 1000x drop, nor

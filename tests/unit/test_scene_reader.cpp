@@ -175,7 +175,7 @@ TEST(SceneReader, OverridesChangeOptions) {
 }
 
 TEST(SceneReader, OverrideAddsOptBlock) {
-  const std::string text = "nodes: [[0, 0], [1, 0]]\nelements: [[1, 2]]\n";
+  const std::string text = "nodes: [[0, 0], [1, 0]]\nelements: [[1, 2]]\nnprops: {2: {mass: 1}}\n";  // dynamics needs mass
   const Model m = sinew::parseScene(text, "", overridesFrom({{"nfreq", "12"}, {"dynamics", "{tend: 2, dt: 0.1}"}}));
   EXPECT_EQ(m.opt.nfreq, 12);
   ASSERT_TRUE(m.opt.dynamics.has_value());

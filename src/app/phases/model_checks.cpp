@@ -57,6 +57,31 @@ PetscErrorCode finiteAtReference(Assembler& assembler, bool* finite, std::string
 
 }  // namespace
 
+void checkContinuationControl(const Model& model, const DistributedMesh& mesh) {
+  if (!model.opt.continuation || model.opt.continuation->node < 0) return;
+  const ContinuationOptions& c = *model.opt.continuation;
+  // per owned FE node of the scene node: 1 free translation, 2 supported/prescribed
+  int status[2] = {0, 0};
+  for (int i = 0; i < mesh.numOwnedNodes; ++i) {
+    const LocalNode& n = mesh.nodes[static_cast<size_t>(i)];
+    if (n.sceneNode != c.node) continue;
+    status[n.dof[static_cast<size_t>(c.direction)] >= 0 ? 0 : 1] = 1;
+  }
+  MPI_Allreduce(MPI_IN_PLACE, status, 2, MPI_INT, MPI_MAX, mesh.comm);
+  if (status[0]) return;
+  const std::string node = "node " + std::to_string(c.node + 1), axis(1, static_cast<char>('x' + c.direction));
+  const std::string uses = c.method == "displacement" ? "displacement control"
+                           : c.stop_displacement     ? "stop_displacement"
+                                                     : "the followed displacement (/path/control_displacement)";
+  if (status[1])
+    throw SceneError("opt.continuation.node",
+                     "the " + axis + " translation of " + node + " (opt.continuation.direction: " + axis +
+                         ") is supported or prescribed (nprops " + std::to_string(c.node + 1) + ": fix, fix_pos, fix_" + axis +
+                         " or displ_" + axis + "); " + uses + " follows a free translation: choose another node or direction");
+  throw SceneError("opt.continuation.node", node + " is not connected to any element (it has no unknowns); " + uses +
+                                                " follows a free translation of a node of the model");
+}
+
 /// No external load of any kind: no gravity, massProportionalLoad or pressure (a zero vector, gravity
 /// [0, 0], is none), and zero nodal loads and prescribed motions on every node (collective).
 bool unloaded(const Model& model, const DistributedMesh& mesh, const Assembler& assembler) {

@@ -26,6 +26,11 @@ bool unloaded(const Model& model, const DistributedMesh& mesh, const Assembler& 
 /// form-found start state. Without any, step 1 is the start state itself and needs no solve.
 bool initiallyLoaded(const Model& model, const DistributedMesh& mesh);
 
+/// opt.continuation's control DOF (displacement control, stop_displacement, the followed displacement):
+/// a free translation of a node with elements. Collective; throws SceneError (exit 2, before the
+/// result file exists) naming the node (1-based) and the field on every rank.
+void checkContinuationControl(const Model& model, const DistributedMesh& mesh);
+
 /// -constraint_check (default true) and -constraint_check_max_unknowns: whether the model is checked.
 struct ConstraintCheckSetting {
   bool enabled = true;

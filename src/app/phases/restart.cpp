@@ -12,6 +12,8 @@
 #include <map>
 #include <sstream>
 
+#include "output/output_target.hpp"
+
 namespace sinew {
 
 namespace {
@@ -170,12 +172,21 @@ Restart::Restart(MPI_Comm comm, const std::string& path, const std::string& outp
   // (a killed run leaves its last committed state under its final name; `path`.part is the copy
   // being written, inconsistent between two commits, and never read)
   std::string src = path;
-  if (!fileExists(comm, src)) throw SceneError("-restart", "no result file " + path);
   int rank = 0;
   MPI_Comm_rank(comm, &rank);
   // the new result file replaces its own source at its first commit: read from a copy
   int same = rank == 0 && (sameFile(src, output) || sameFile(src, output + ".part") || sameFile(src, output + ".part2"));
   MPI_Bcast(&same, 1, MPI_INT, 0, comm);
+  // a file another run is writing changes under the reader (between its commits, or renamed by
+  // them): refused, whatever state it is in (this run holds the lock of its own output)
+  std::string busy = rank == 0 && !same ? otherWriter(path) : std::string();
+  long nb = static_cast<long>(busy.size());
+  MPI_Bcast(&nb, 1, MPI_LONG, 0, comm);
+  busy.resize(static_cast<size_t>(nb));
+  MPI_Bcast(busy.data(), static_cast<int>(nb), MPI_CHAR, 0, comm);
+  if (!busy.empty())
+    throw SceneError("-restart", busy + "; restart from it once that run has ended (or was stopped)");
+  if (!fileExists(comm, src)) throw SceneError("-restart", "no result file " + path);
   if (same) {
     copy_ = output + ".restart-source";
     int ok = 1;
@@ -264,6 +275,19 @@ void Restart::check(MPI_Comm comm, const std::string& src, const std::string& pa
                                             model.opt.load_ramp + ": a restart continues the same load steps (give -load_ramp " +
                                             ramp + ")");
   }
+  // the phase's own counts (the reader checked that every scalar is finite and within an int)
+  const auto damaged = [&](const std::string& what, double v, double lo, double hi) {
+    std::ostringstream m;
+    m << path << ": /checkpoint: " << what << " = " << v << ", expected an integer in " << lo << ".." << hi
+      << "; the checkpoint is damaged (not as a Sinew run wrote it)";
+    throw SceneError("-restart", m.str());
+  };
+  if (ph == CheckpointPhase::Statics && sc[kCkStep] > 100000)
+    damaged("scalars step (load steps done; scalar_names)", sc[kCkStep], 0, 100000);
+  if (ph == CheckpointPhase::Statics && !(sc[kCkLoadsteps] >= 1 && sc[kCkLoadsteps] <= 100000))
+    damaged("scalars loadsteps (scalar_names)", sc[kCkLoadsteps], 1, 100000);
+  if (ph == CheckpointPhase::FormFinding && model.formfinding && sc[kCkStep] > model.formfinding->formfinding_step)
+    damaged("scalars step (form-finding steps done; scalar_names)", sc[kCkStep], 0, model.formfinding->formfinding_step);
   if (ph == CheckpointPhase::Continuation && !plan.continuation)
     throw SceneError("-restart", path + " holds a path-following checkpoint; this scene has no opt.continuation");
   if (ph == CheckpointPhase::Continuation &&
@@ -271,6 +295,18 @@ void Restart::check(MPI_Comm comm, const std::string& src, const std::string& pa
       static_cast<long>(reader_->pathState().size()) != ContinuationAnalysis::legacyCheckpointSize(model.opt.continuation->max_steps))
     throw SceneError("-restart", path + ": the path checkpoint was written with another opt.continuation.max_steps; a restart "
                                         "continues with the same max_steps");
+  if (ph == CheckpointPhase::Continuation && plan.continuation) {
+    const int ms = model.opt.continuation->max_steps;
+    const std::vector<double> v = ContinuationAnalysis::currentCheckpointLayout(reader_->pathState(), ms);
+    const auto integer = [](double x, double lo, double hi) { return x >= lo && x <= hi && x == std::floor(x); };
+    using CA = ContinuationAnalysis;
+    if (!integer(v[0], 1, ms)) damaged("path[0] (path points)", v[0], 1, ms);
+    if (!integer(v[7], 0, ms)) damaged("path[7] (critical points)", v[7], 0, ms);
+    for (size_t i = 0; i < static_cast<size_t>(v[0]); ++i) {
+      const double step = v[CA::kCkHeader + i * CA::kCkPointCols];
+      if (!integer(step, 1, ms)) damaged("path point " + std::to_string(i + 1) + " step", step, 1, ms);
+    }
+  }
   if (ph == CheckpointPhase::Dynamics) {
     const DynamicsOptions& d = *model.opt.dynamics;
     if (d.dt != sc[kCkDt] || d.spectral_radius != sc[kCkSpectralRadius]) {
@@ -342,7 +378,7 @@ void Restart::restore(RunContext& ctx, const ResultLayout& layout) {
     MPI_Allreduce(MPI_IN_PLACE, &unwritten, 1, MPI_INT, MPI_LAND, ctx.comm);
     if (unwritten) return;
     if (kind == TableKind::Row) {
-      file.writeStepRow(name, row);
+      file.writeStepRow(name, row, shape.size() >= 2);  // [ns, 1] stays a table (/freq with nfreq 1)
       return;
     }
     const std::vector<long> cellInner(shape.begin() + 2, shape.end());

@@ -3,6 +3,7 @@
 #include <string>
 
 #include "analysis/continuation_analysis.hpp"
+#include "analysis/path_report.hpp"
 #include "app/phases/restart.hpp"
 #include "app/phases/run_context.hpp"
 
@@ -70,6 +71,46 @@ PetscErrorCode runContinuation(RunContext& ctx) {
   if (!ok && ctx.converged) {
     ctx.converged = false;
     ctx.failure = path.failureMessage();
+  }
+  // why the path ended (/path attribute stop_reason); max_steps before the scene's stop criterion is short of it
+  const std::vector<PathPoint>& pts = path.points();
+  const ContinuationOptions& opts = *ctx.model.opt.continuation;
+  const PathEnd end = pathEnd(opts, static_cast<int>(pts.size()), pts.empty() ? 0.0 : pts.back().loadFactor,
+                              pts.empty() ? 0.0 : pts.back().controlValue, !ok, ctx.stop);
+  ctx.guardedWrite([&]() { ctx.file.writeStateAttribute("path", "stop_reason", end.reason); });
+  ctx.summaryLines += "  path ended: " + end.reason + "\n";
+  if (end.endedShort && ctx.converged) {
+    ctx.converged = false;
+    ctx.failure = "path following ended short: " + end.reason +
+                  "; give a larger opt.continuation.max_steps (or ds_max, the largest step)";
+  }
+  std::vector<double> lambdas, controls;
+  for (const PathPoint& p : pts) {
+    lambdas.push_back(p.loadFactor);
+    controls.push_back(p.controlValue);
+  }
+  if (const PathRetrace r = pathRetrace(lambdas, controls); r.point >= 0) {
+    const PathPoint& a = pts[static_cast<size_t>(r.point)];
+    char w[400];
+    std::snprintf(w, sizeof w,
+                  "warning: the path turns back on itself: from path point %d (load factor %.6g, control displacement %.6g) "
+                  "it runs back along path points %d..%d, revisiting their states; try a smaller ds or ds_max, or "
+                  "displacement control (docs/continuation.md)\n",
+                  a.step, a.loadFactor, a.controlValue, pts[static_cast<size_t>(r.earlier)].step,
+                  pts[static_cast<size_t>(r.earlier) + 1].step);
+    PetscCall(PetscPrintf(ctx.comm, "%s", w));
+    ctx.summaryLines += std::string("  ") + w;
+  } else if (const PathTurnBack t = pathTurnBack(lambdas, controls); t.turn >= 0) {
+    const PathPoint &l = pts[static_cast<size_t>(t.limit)], &a = pts[static_cast<size_t>(t.turn)], &b = pts[static_cast<size_t>(t.back)];
+    char w[600];
+    std::snprintf(w, sizeof w,
+                  "warning: the path turns back on itself: after the limit point at path point %d (load factor %.6g), "
+                  "the control displacement turns back at path point %d (%.6g) and runs back to %.6g at path point %d "
+                  "(load factor %.6g), over %.0f%% of its way there, revisiting displacements it passed; check which "
+                  "branch it follows (a smaller ds or ds_max, or displacement control; docs/continuation.md)\n",
+                  l.step, l.loadFactor, a.step, a.controlValue, b.controlValue, b.step, b.loadFactor, 100 * t.fraction);
+    PetscCall(PetscPrintf(ctx.comm, "%s", w));
+    ctx.summaryLines += std::string("  ") + w;
   }
   ctx.times.continuation = MPI_Wtime() - t0 - (ctx.times.output - outBefore) - (ctx.times.analyses - anaBefore);
   ctx.times.continuationIts = 0;

@@ -1,6 +1,7 @@
 // The statics phase: SPACAR Light's load steps (StaticAnalysis) from the current state, each
 // converged step written through the run context, the checkpoint state of the load stepping, and on
 // a failed linear solve the constraint check that names a mechanism.
+#include <algorithm>
 #include <cstdio>
 #include <string>
 
@@ -26,8 +27,13 @@ PetscErrorCode runStatics(RunContext& ctx, bool resumeStatics, const ConstraintC
   // a restart keeps the earlier run's ramp (its loadsteps and opt.load_ramp, checked equal by Restart):
   // -loadsteps is the last step, the load factor of step k stays StaticAnalysis::stepFactor(k)
   const int ramp = resumeStatics ? restart->rampLoadsteps() : model.opt.loadsteps;
+  // a restart continues the interrupted plan to its end (load factor 1 at step `ramp`, also when the
+  // scene's own opt.loadsteps is what the earlier run's -loadsteps overrode), or to a later step of
+  // the scene; -loadsteps N on the restart is the last step, before or after the ramp's end
+  const bool lastGiven = settings.sceneOpt.count("loadsteps") > 0;
+  const int lastStep = resumeStatics && !lastGiven ? std::max(ramp, model.opt.loadsteps) : model.opt.loadsteps;
   StaticAnalysis statics(assembler, ramp, settings.statics, settings.ancf);
-  statics.setLastStep(model.opt.loadsteps);
+  statics.setLastStep(lastStep);
   statics.setUnloaded(unloaded(model, dmesh, assembler));
   statics.setStopFlag(&ctx.stop);
   statics.setUniformRamp(model.opt.load_ramp == "uniform");
@@ -48,7 +54,11 @@ PetscErrorCode runStatics(RunContext& ctx, bool resumeStatics, const ConstraintC
     d.vectors = {{"U", ctx.U}, {"dU", statics.lastIncrement()}};
     return PETSC_SUCCESS;
   };
-  ctx.startPhase(StepPhase::Statics, "load step", model.opt.loadsteps);
+  if (resumeStatics && lastStep < ramp && !model.opt.silent)
+    PetscCall(PetscPrintf(ctx.comm, "  note: -loadsteps %d ends this restart at load factor %.6g; the earlier run's ramp reaches "
+                                    "load factor 1 at step %d (a restart without -loadsteps goes there)\n",
+                          lastStep, statics.stepFactor(lastStep), ramp));
+  ctx.startPhase(StepPhase::Statics, "load step", lastStep);
   auto onStep = [&](const StepReport& rep, Vec Ustep) -> PetscErrorCode {
     LoadState ls;
     ls.loadFactor = rep.loadFactor;
@@ -56,7 +66,7 @@ PetscErrorCode runStatics(RunContext& ctx, bool resumeStatics, const ConstraintC
     char detail[160];
     std::snprintf(detail, sizeof detail, "load factor %.4g  Newton %d  increments %d  residual %.3e", rep.loadFactor,
                   rep.newtonIterations, rep.increments, rep.residualNorm);
-    RunContext::Step st{rep.step, rep.step == model.opt.loadsteps, rep.loadFactor, detail};
+    RunContext::Step st{rep.step, rep.step == lastStep, rep.loadFactor, detail};
     if (plan.preload) {  // a row of /time (0: before the time loop) with its load factor in /load_factor
       st.value = 0.0;
       st.loadFactorRow = rep.loadFactor;

@@ -29,20 +29,11 @@ DynamicAnalysis::DynamicAnalysis(Assembler& assembler, const DynamicsOptions& op
     : asm_(assembler), opts_(opts), damping_(assembler, opts, all.eigen) {
   const DynamicsSettings& settings = all.dynamics;
   const StaticsSettings& newton = all.statics;
-  const double rho = opts_.spectral_radius;
-  alphaM_ = (2.0 * rho - 1.0) / (rho + 1.0);
-  alphaF_ = rho / (rho + 1.0);
-  gamma_ = 0.5 + alphaF_ - alphaM_;
-  beta_ = 0.25 * (gamma_ + 0.5) * (gamma_ + 0.5);
   ls_ = loadsAt(0.0);
   MPI_Comm comm = asm_.mesh().comm;
   SinewCallThrow(comm, asm_.createMatrix(&J_));
   SinewCallThrow(comm, asm_.createVector(&F_));
-  for (Vec* v : {&Un_, &Vn_, &An_, &Qn_, &V1_, &A1_, &Q1_, &Cu_}) SinewCallThrow(comm, VecDuplicate(F_, v));
   const Scheme scheme = checkScheme(asm_.mesh(), settings.scheme);
-  useTS_ = scheme == Scheme::TSAlpha2;
-  midpoint_ = scheme == Scheme::Midpoint;
-  if (midpoint_) for (Vec* v : {&Um_, &Vm_}) SinewCallThrow(comm, VecDuplicate(F_, v));
   maxCuts_ = newton.maxCuts;
   growAfter_ = settings.dtGrowAfter;
   if (growAfter_ < 0) throw SceneError("-dt_grow_after", "expected a count >= 0, got " + std::to_string(growAfter_));
@@ -124,73 +115,40 @@ DynamicAnalysis::DynamicAnalysis(Assembler& assembler, const DynamicsOptions& op
     for (const LocalElement& e : asm_.mesh().elements)
       for (int j = 0; e.firstMultiplier >= 0 && j < e.kernel->numConstraints(); ++j) k[e.firstMultiplier + j] = 0.0;
     SinewCallThrow(comm, VecRestoreArray(keep_, &k));
-    if (midpoint_) {  // the constraint rows of the midpoint rule: notKeep_ = 1 - keep_, scale 1 + notKeep_
-      SinewCallThrow(comm, VecDuplicate(F_, &notKeep_));
-      SinewCallThrow(comm, VecDuplicate(F_, &Fend_));
-      SinewCallThrow(comm, VecDuplicate(F_, &constraintScale_));
-      SinewCallThrow(comm, VecSet(notKeep_, 1.0));
-      SinewCallThrow(comm, VecAXPY(notKeep_, -1.0, keep_));
-      SinewCallThrow(comm, VecWAXPY(constraintScale_, 1.0, notKeep_, keep_));
-      SinewCallThrow(comm, VecAXPY(constraintScale_, 1.0, notKeep_));
-    }
+  }
+  // the scheme, with the multipliers (no rates) and the rotation unknowns (Lie-group form) of the model
+  if (scheme == Scheme::TSAlpha2) {
+    auto ts = std::make_unique<TSAlpha2Scheme>(static_cast<MotionEquations&>(*this));
+    tsScheme_ = ts.get();
+    scheme_ = std::move(ts);
+  } else if (scheme == Scheme::Midpoint) {
+    auto mid = std::make_unique<MidpointScheme>(F_, keep_, &asm_);
+    stepScheme_ = midpointScheme_ = mid.get();
+    scheme_ = std::move(mid);
+    if (keep_) SinewCallThrow(comm, VecDuplicate(F_, &Fend_));
+  } else {
+    auto alpha = std::make_unique<GeneralizedAlphaScheme>(opts_.spectral_radius, F_, keep_, &asm_);
+    stepScheme_ = alphaScheme_ = alpha.get();
+    scheme_ = std::move(alpha);
   }
 }
 
 DynamicAnalysis::~DynamicAnalysis() {
+  scheme_.reset();
   SNESDestroy(&snes_);
   MatDestroy(&J_);
   MatDestroy(&Jop_);
-  for (Vec* v : {&F_, &Un_, &Vn_, &An_, &Qn_, &V1_, &A1_, &Q1_, &Cu_, &keep_, &Um_, &Vm_, &U0_, &notKeep_, &Fend_, &constraintScale_})
-    VecDestroy(v);
+  for (Vec* v : {&F_, &keep_, &U0_, &Fend_}) VecDestroy(v);
 }
 
-// ---------------------------------------------------------------- Arnold-Brüls, own step loop
+// ---------------------------------------------------------------- the step schemes' own step loop
 // (its Newton step: dynamic_newton.cpp)
-
-PetscErrorCode DynamicAnalysis::rates(Vec U) {
-  PetscFunctionBeginUser;
-  if (midpoint_) {
-    // qd_{n+1} = 2 (q_{n+1} - q_n) / h - qd_n; spins (Simo & Wong 1991, spatial form):
-    // w_{n+1} = 2 theta / h - exp(theta) w_n, theta = log(R_{n+1} R_n^T) (q_n = 0 there)
-    PetscCall(VecCopy(Vn_, Cu_));
-    PetscCall(asm_.rotateSpins(U, Cu_));
-    PetscCall(VecWAXPY(V1_, -1.0, Un_, U));
-    PetscCall(VecAXPBY(V1_, -1.0, 2.0 / h_, Cu_));
-    // (qd_{n+1} - qd_n) / h: the inertia of the translations (and output accelerations)
-    PetscCall(VecWAXPY(A1_, -1.0, Vn_, V1_));
-    PetscCall(VecScale(A1_, 1.0 / h_));
-    PetscCall(VecCopy(A1_, Q1_));
-    // mid configuration and velocity: q_n + (q_{n+1} - q_n) / 2 (rotations exp(theta / 2) R_n)
-    PetscCall(VecAXPBYPCZ(Um_, 0.5, 0.5, 0.0, Un_, U));
-    PetscCall(VecAXPBYPCZ(Vm_, 0.5, 0.5, 0.0, Vn_, V1_));
-    if (notKeep_) {  // the multipliers are those of the mid-step forces themselves (no average)
-      PetscCall(VecPointwiseMult(Um_, keep_, Um_));
-      PetscCall(VecPointwiseMult(Cu_, notKeep_, U));
-      PetscCall(VecAXPY(Um_, 1.0, Cu_));
-    }
-    PetscFunctionReturn(PETSC_SUCCESS);
-  }
-  const double h = h_, bh2 = beta_ * h * h;
-  // a_{n+1} = (q_{n+1} - Cu) / (beta h^2)
-  PetscCall(VecWAXPY(A1_, -1.0, Cu_, U));
-  PetscCall(VecScale(A1_, 1.0 / bh2));
-  // qd_{n+1} = qd_n + h (1 - gamma) a_n + h gamma a_{n+1}
-  PetscCall(VecCopy(Vn_, V1_));
-  PetscCall(VecAXPBYPCZ(V1_, h * (1.0 - gamma_), h * gamma_, 1.0, An_, A1_));
-  // qdd_{n+1} = ((1 - alpha_m) a_{n+1} + alpha_m a_n - alpha_f qdd_n) / (1 - alpha_f)
-  PetscCall(VecSet(Q1_, 0.0));
-  PetscCall(VecAXPBYPCZ(Q1_, (1.0 - alphaM_) / (1.0 - alphaF_), alphaM_ / (1.0 - alphaF_), 0.0, A1_, An_));
-  PetscCall(VecAXPY(Q1_, -alphaF_ / (1.0 - alphaF_), Qn_));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
 
 PetscErrorCode DynamicAnalysis::formFunction(SNES, Vec U, Vec F, void* ctx) {
   PetscFunctionBeginUser;
   auto* self = static_cast<DynamicAnalysis*>(ctx);
-  PetscCall(self->rates(U));
-  if (self->midpoint_) PetscFunctionReturn(self->midpointResidual(U, F));
-  PetscCall(self->asm_.dynamicResidual(U, self->V1_, self->Q1_, self->ls_, F));
-  PetscCall(self->damping_.addForce(self->V1_, F));
+  PetscCall(self->stepScheme_->rates(U));
+  PetscCall(self->stepResidual(U, self->stepScheme_->evaluation(U), F));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -274,19 +232,16 @@ PetscErrorCode DynamicAnalysis::step(double t1, bool* ok, int* its, double* fnor
   if (asm_.mixedStressNewton()) {  // the mixed-stress tangent linearizes from the converged q_n (also on a retry)
     LoadState lsn = ls_;
     lsn.time = t1 - h;
-    PetscCall(asm_.setMixedReference(Un_, lsn));
+    PetscCall(asm_.setMixedReference(stepScheme_->state().q, lsn));
   }
   ls_.time = t1;
-  // Cu = q_n + h qd_n + h^2 (1/2 - beta) a_n; predictor q = q_n + h qd_n + h^2/2 a_n or q_n
-  PetscCall(VecCopy(Un_, Cu_));
-  PetscCall(VecAXPBYPCZ(Cu_, h, h * h * (0.5 - beta_), 1.0, Vn_, An_));
+  PetscCall(stepScheme_->beginStep(h));
   Vec U;
   PetscCall(SNESGetSolution(snes_, &U));
-  // guarded: start Newton at q_n (an extrapolation by the accelerations of a step load on a fine
-  // mesh lands far outside Newton's reach: stiff axial waves)
-  if (restPredictor_ || predictor_ == Predictor::State) PetscCall(VecCopy(Un_, U));
-  else if (midpoint_) PetscCall(VecWAXPY(U, h, Vn_, Un_));
-  else PetscCall(VecWAXPY(U, h * h * beta_, An_, Cu_));
+  // Newton starts at the scheme's extrapolation or at q_n; guarded: at q_n (an extrapolation by the
+  // accelerations of a step load on a fine mesh lands far outside Newton's reach: stiff axial waves)
+  if (restPredictor_ || predictor_ == Predictor::State) PetscCall(VecCopy(stepScheme_->state().q, U));
+  else PetscCall(stepScheme_->predict(U));
   PetscCall(SNESSolve(snes_, nullptr, U));
   PetscCall(SNESGetConvergedReason(snes_, why));
   PetscInt n;
@@ -298,24 +253,9 @@ PetscErrorCode DynamicAnalysis::step(double t1, bool* ok, int* its, double* fnor
   *ok = *why > 0;
   if (!*ok) jacobianValid_ = false;  // a failed solve starts the retry from a fresh Jacobian
   if (*ok) {
-    PetscCall(rates(U));
-    if (commit) PetscCall(commitStep(U));
+    PetscCall(stepScheme_->rates(U));
+    if (commit) PetscCall(stepScheme_->commit(U));
   }
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-PetscErrorCode DynamicAnalysis::commitStep(Vec U) {
-  PetscFunctionBeginUser;
-  PetscCall(VecCopy(U, Un_));
-  PetscCall(VecCopy(V1_, Vn_));
-  PetscCall(VecCopy(A1_, An_));
-  PetscCall(VecCopy(Q1_, Qn_));
-  if (keep_)  // multipliers are algebraic (index 3): no velocity or acceleration; predictor lambda_n
-    for (Vec v : {Vn_, An_, Qn_}) PetscCall(VecPointwiseMult(v, keep_, v));
-  // Lie-group form for Frame6 nodes: R_{n+1} = exp(theta) R_n, then theta_{n+1} = 0, so the next
-  // step's rotation unknowns are again the spatial increment h Delta q from R_{n+1}. V and A
-  // hold spatial angular velocities and accelerations (vectors in the fixed frame): no transport.
-  PetscCall(asm_.absorbRotations(Un_));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -391,27 +331,28 @@ PetscErrorCode DynamicAnalysis::runArnoldBruls(Vec U, const StepCallback& onStep
   PetscCall(VecDestroy(&Usol));
 
   bool ok = false;
+  const SchemeState state = stepScheme_->state();  // the scheme's step start q_n, qd_n, a_n, qdd_n
   // a resumed run: the damping of the start state (setupResumedDamping), or, from a checkpoint
   // without that state (older files, Restart::resumeDynamics warns), of the resumed state
-  if (resumed_ && !dampingReady_) PetscCall(setupDamping(Un_));
+  if (resumed_ && !dampingReady_) PetscCall(setupDamping(state.q));
   if (!resumed_) {
-    PetscCall(VecCopy(U, Un_));
-    PetscCall(asm_.absorbRotations(Un_));  // rotation unknowns are increments from R_n (0 at a step start)
-    PetscCall(setupDamping(Un_));
-    PetscCall(VecSet(Vn_, 0.0));
-    PetscCall(initialAccelerations(Un_, Vn_, Qn_, &ok));
+    PetscCall(VecCopy(U, state.q));
+    PetscCall(asm_.absorbRotations(state.q));  // rotation unknowns are increments from R_n (0 at a step start)
+    PetscCall(setupDamping(state.q));
+    PetscCall(VecSet(state.qd, 0.0));
+    PetscCall(initialAccelerations(state.q, state.qd, state.qdd, &ok));
     if (!ok) {
       *converged = false;
       PetscFunctionReturn(PETSC_SUCCESS);
     }
-    PetscCall(VecCopy(Qn_, An_));  // a_0 = qdd_0
+    PetscCall(VecCopy(state.qdd, state.a));  // a_0 = qdd_0
     progress_ = {0, 0.0, opts_.dt, 0, 0.0};
-    if (onStep) PetscCall(onStep(0, 0.0, Un_, Vn_, Qn_));
+    if (onStep) PetscCall(onStep(0, 0.0, state.q, state.qd, state.qdd));
   }
 
   if (adaptive()) {
     PetscCall(runAdaptive(onStep, converged));
-    PetscCall(VecCopy(Un_, U));
+    PetscCall(VecCopy(state.q, U));
     PetscFunctionReturn(PETSC_SUCCESS);
   }
   const double dt = opts_.dt, tend = opts_.tend;
@@ -450,7 +391,7 @@ PetscErrorCode DynamicAnalysis::runArnoldBruls(Vec U, const StepCallback& onStep
     report_.reducedSteps += reduced || control.cuts() > 0;
     report_.time = t;
     progress_ = {k, t, control.carried(), control.successes(), 0.0};
-    if (onStep) PetscCall(onStep(k, t, Un_, Vn_, Qn_));
+    if (onStep) PetscCall(onStep(k, t, state.q, state.qd, state.qdd));
     if (stop_ && *stop_) *stop = StepStop::Interrupted;
     return PETSC_SUCCESS;
   };
@@ -466,111 +407,100 @@ PetscErrorCode DynamicAnalysis::runArnoldBruls(Vec U, const StepCallback& onStep
     failure_ = msg.str();
     *converged = false;
   }
-  PetscCall(VecCopy(Un_, U));
+  PetscCall(VecCopy(state.q, U));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-// Implicit midpoint rule: (p_{n+1} - p_n) / h + f_int(q_{n+1/2}, qd_{n+1/2}) = f_ext(t_{n+1/2}), with the
-// momenta p = m qd of nodal masses (M qd for constant element masses) and J_s w of rotary inertia,
-// the forces at the mid configuration q_n + (q_{n+1} - q_n) / 2 (rotations exp(theta / 2) R_n).
-// Internal forces of any configuration have zero resultant force and moment, so p and
-// H = sum x x p + J_s w change only by the external impulse: exactly, for a converged step.
-PetscErrorCode DynamicAnalysis::midpointResidual(Vec U, Vec F) {
+// The midpoint rule's momentum balance (MidpointScheme): (p_{n+1} - p_n) / h + f_int(q_{n+1/2}, qd_{n+1/2}) =
+// f_ext(t_{n+1/2}), with the momenta p = m qd of nodal masses (M qd for constant element masses) and
+// J_s w of rotary inertia (set here: Assembler::setRotaryMomentum). Internal forces of any
+// configuration have zero resultant force and moment, so p and H = sum x x p + J_s w change only by
+// the external impulse: exactly, for a converged step.
+PetscErrorCode DynamicAnalysis::withRotaryMomentum(Vec U, const std::function<PetscErrorCode()>& evaluate) {
   PetscFunctionBeginUser;
-  LoadState lsm = ls_;
-  lsm.time -= 0.5 * h_;
   const PetscScalar *u, *w0;
+  Vec Vn = stepScheme_->state().qd;
   PetscCall(VecGetArrayRead(U, &u));
-  PetscCall(VecGetArrayRead(Vn_, &w0));
+  PetscCall(VecGetArrayRead(Vn, &w0));
   asm_.setRotaryMomentum({u, w0, h_});
-  const PetscErrorCode ierr = asm_.dynamicResidual(Um_, Vm_, A1_, lsm, F);
+  const PetscErrorCode ierr = evaluate();
   asm_.setRotaryMomentum({});
-  PetscCall(VecRestoreArrayRead(Vn_, &w0));
+  PetscCall(VecRestoreArrayRead(Vn, &w0));
   PetscCall(VecRestoreArrayRead(U, &u));
   PetscCall(ierr);
-  PetscCall(damping_.addForce(Vm_, F));
-  if (notKeep_) {
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode DynamicAnalysis::stepResidual(Vec U, const EvaluationPoint& e, Vec F) {
+  PetscFunctionBeginUser;
+  LoadState ls = ls_;
+  ls.time += e.timeShift;
+  if (e.midStep) PetscCall(withRotaryMomentum(U, [&] { return asm_.dynamicResidual(e.q, e.qd, e.qdd, ls, F); }));
+  else PetscCall(asm_.dynamicResidual(e.q, e.qd, e.qdd, ls, F));
+  PetscCall(damping_.addForce(e.qd, F));
+  if (e.midStep && Fend_) {
     // Rigid elements and rigid deformation modes: their constraints g(q_{n+1}) = 0 hold at the step's
     // end (the rows of the residual at U), while their forces G(q_{n+1/2})^T lambda act at the mid
     // configuration with the other forces. g is invariant under rigid motions, so those forces have
     // no resultant moment there either: the momentum balance stays exact.
     PetscCall(asm_.residual(U, ls_, Fend_));
     PetscCall(VecPointwiseMult(F, keep_, F));
-    PetscCall(VecPointwiseMult(Fend_, notKeep_, Fend_));
+    PetscCall(VecPointwiseMult(Fend_, midpointScheme_->constraintRows(), Fend_));
     PetscCall(VecAXPY(F, 1.0, Fend_));
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode DynamicAnalysis::stepJacobian(Vec U, const EvaluationPoint& e, Mat P) {
+  PetscFunctionBeginUser;
+  LoadState ls = ls_;
+  ls.time += e.timeShift;
+  // midpoint: the rotary inertia's block exact (rotaryMomentumStep; the elements' rotation columns are
+  // those of the mid state)
+  if (e.midStep) PetscCall(withRotaryMomentum(U, [&] { return asm_.dynamicJacobian(e.q, e.qd, ls, e.shiftV, e.shiftA, P); }));
+  else PetscCall(asm_.dynamicJacobian(e.q, e.qd, ls, e.shiftV, e.shiftA, P));
+  PetscCall(damping_.addJacobian(e.shiftV, P));
+  if (e.jacobianScale != 1.0) PetscCall(MatScale(P, e.jacobianScale));
+  if (e.midStep && Fend_) {
+    // constraint rows d g(q_{n+1}) / d q_{n+1} ~ G(q_{n+1/2}) (twice the halved mid rows) and
+    // multiplier columns G^T (lambda is the mid-step multiplier itself): scale both by 2
+    PetscCall(MatDiagonalScale(P, midpointScheme_->constraintScale(), midpointScheme_->constraintScale()));
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 // ---------------------------------------------------------------- PETSc TSALPHA2 (Chung-Hulbert)
 
-PetscErrorCode DynamicAnalysis::tsI2Function(TS, PetscReal t, Vec U, Vec V, Vec A, Vec F, void* ctx) {
+PetscErrorCode DynamicAnalysis::motionResidual(double t, Vec q, Vec qd, Vec qdd, Vec F) {
   PetscFunctionBeginUser;
-  auto* self = static_cast<DynamicAnalysis*>(ctx);
-  LoadState ls = self->ls_;
+  LoadState ls = ls_;
   ls.time = t;
-  PetscCall(self->asm_.dynamicResidual(U, V, A, ls, F));
-  PetscCall(self->damping_.addForce(V, F));
+  PetscCall(asm_.dynamicResidual(q, qd, qdd, ls, F));
+  PetscCall(damping_.addForce(qd, F));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode DynamicAnalysis::tsI2Jacobian(TS, PetscReal t, Vec U, Vec V, Vec, PetscReal shiftV, PetscReal shiftA, Mat,
-                                             Mat P, void* ctx) {
+PetscErrorCode DynamicAnalysis::motionTangent(double t, Vec q, Vec qd, double shiftV, double shiftA, Mat P) {
   PetscFunctionBeginUser;
-  auto* self = static_cast<DynamicAnalysis*>(ctx);
-  LoadState ls = self->ls_;
+  LoadState ls = ls_;
   ls.time = t;
-  PetscCall(self->asm_.dynamicJacobian(U, V, ls, shiftV, shiftA, P));
-  PetscCall(self->damping_.addJacobian(shiftV, P));
+  PetscCall(asm_.dynamicJacobian(q, qd, ls, shiftV, shiftA, P));
+  PetscCall(damping_.addJacobian(shiftV, P));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
-
-namespace {
-struct TSMonitorCtx {
-  const DynamicAnalysis::StepCallback* onStep;
-  const bool* stop;
-  Vec A;
-  DynamicsReport* report;
-};
-PetscErrorCode tsMonitor(TS ts, PetscInt step, PetscReal t, Vec U, void* ctx) {
-  PetscFunctionBeginUser;
-  auto* m = static_cast<TSMonitorCtx*>(ctx);
-  if (step == 0) PetscFunctionReturn(PETSC_SUCCESS);  // t = 0 is written before TSSolve
-  Vec X, V;
-  PetscCall(TS2GetSolution(ts, &X, &V));
-  m->report->steps = static_cast<int>(step);
-  m->report->time = t;
-  if (*m->onStep) PetscCall((*m->onStep)(static_cast<int>(step), t, U, V, m->A));
-  if (m->stop && *m->stop) PetscCall(TSSetMaxSteps(ts, step));  // TSSolve ends after the step in progress
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-}  // namespace
 
 PetscErrorCode DynamicAnalysis::runTSAlpha2(Vec U, const StepCallback& onStep, bool* converged) {
   PetscFunctionBeginUser;
-  MPI_Comm comm = asm_.mesh().comm;
-  TS ts;
-  PetscCall(TSCreate(comm, &ts));
-  PetscCall(TSSetType(ts, TSALPHA2));
-  PetscCall(TSSetI2Function(ts, F_, tsI2Function, this));
-  PetscCall(TSSetI2Jacobian(ts, J_, J_, tsI2Jacobian, this));
-  PetscCall(TSAlpha2SetRadius(ts, opts_.spectral_radius));
-  PetscCall(TSSetTimeStep(ts, opts_.dt));
-  PetscCall(TSSetMaxTime(ts, opts_.tend));
-  PetscCall(TSSetExactFinalTime(ts, TS_EXACTFINALTIME_MATCHSTEP));
-  PetscCall(TSSetMaxSNESFailures(ts, -1));  // a failed step is retried with a smaller step
-  PetscCall(TSSetMaxStepRejections(ts, maxCuts_));
-  PetscCall(TSSetErrorIfStepFails(ts, PETSC_FALSE));  // a failed step ends with Sinew's message (converged reason)
+  PetscCall(tsScheme_->create(F_, J_, opts_.spectral_radius, opts_.dt, opts_.tend, maxCuts_));
   SNES snes;
   KSP ksp;
-  PetscCall(TSGetSNES(ts, &snes));
+  PetscCall(tsScheme_->snes(&snes));
   PetscCall(SNESSetTolerances(snes, 1e-50, 1e-10, 1e-12, 50, 10000));
   newtonTest_.rules() = newtonRules();
   PetscCall(SNESSetConvergenceTest(snes, convergenceTest, this, nullptr));
   PetscCall(SNESGetKSP(snes, &ksp));
   PetscCall(useDirectSolver(ksp));
-  Vec V, A;
-  PetscCall(VecDuplicate(U, &V));
+  Vec V = tsScheme_->state().qd, A;
   PetscCall(VecDuplicate(U, &A));
   PetscCall(VecSet(V, 0.0));
   bool ok = false;
@@ -578,24 +508,22 @@ PetscErrorCode DynamicAnalysis::runTSAlpha2(Vec U, const StepCallback& onStep, b
   PetscCall(initialAccelerations(U, V, A, &ok));
   if (ok) {
     if (onStep) PetscCall(onStep(0, 0.0, U, V, A));
-    TSMonitorCtx mctx{&onStep, stop_, A, &report_};
     PetscCall(VecSet(A, 0.0));  // TSALPHA2 does not expose its accelerations: sensors see qdd = 0
-    PetscCall(TSMonitorSet(ts, tsMonitor, &mctx, nullptr));
-    PetscCall(TS2SetSolution(ts, U, V));
-    PetscCall(TSSetFromOptions(ts));
-    PetscCall(TSSolve(ts, U));
-    PetscInt snesIts = 0, rejected = 0;
-    PetscCall(TSGetSNESIterations(ts, &snesIts));
-    PetscCall(TSGetStepRejections(ts, &rejected));
-    report_.newtonIterations = static_cast<int>(snesIts);
-    report_.jacobians = static_cast<int>(snesIts);  // TS assembles a Jacobian at every Newton iteration
-    report_.reducedSteps = static_cast<int>(rejected);
+    PetscCall(tsScheme_->solve(U, [&](int step, double t, Vec q, Vec qd, bool* stop) -> PetscErrorCode {
+      report_.steps = step;
+      report_.time = t;
+      if (onStep) PetscCall(onStep(step, t, q, qd, A));
+      *stop = stop_ && *stop_;
+      return PETSC_SUCCESS;
+    }));
+    int rejected = 0;
     TSConvergedReason why;
-    PetscCall(TSGetConvergedReason(ts, &why));
+    double tfail = 0;
+    PetscCall(tsScheme_->statistics(&report_.newtonIterations, &rejected, &why, &tfail));
+    report_.jacobians = report_.newtonIterations;  // TS assembles a Jacobian at every Newton iteration
+    report_.reducedSteps = rejected;
     ok = why > 0;
     if (!ok) {
-      PetscReal tfail = 0;
-      PetscCall(TSGetTime(ts, &tfail));
       std::ostringstream msg;
       msg << "opt.dynamics with -dynamics_scheme tsalpha2: PETSc's TSALPHA2 stopped at t = " << tfail << " ("
           << TSConvergedReasons[why] << ", after " << report_.steps
@@ -605,9 +533,7 @@ PetscErrorCode DynamicAnalysis::runTSAlpha2(Vec U, const StepCallback& onStep, b
     }
   }
   *converged = ok;
-  PetscCall(VecDestroy(&V));
   PetscCall(VecDestroy(&A));
-  PetscCall(TSDestroy(&ts));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -625,16 +551,13 @@ PetscErrorCode DynamicAnalysis::setupDamping(Vec U) {
 
 PetscErrorCode DynamicAnalysis::resume(const DynamicsProgress& p, Vec U, Vec V, Vec A, Vec Qdd) {
   PetscFunctionBeginUser;
-  if (useTS_)
+  if (!scheme_->restartable())
     SETERRQ(asm_.mesh().comm, PETSC_ERR_SUP, "-dynamics_scheme tsalpha2 keeps its state inside PETSc TS: it cannot resume");
   progress_ = p;
   report_.steps = p.step;
   report_.time = p.time;
   resumed_ = true;
-  PetscCall(VecCopy(U, Un_));
-  PetscCall(VecCopy(V, Vn_));
-  PetscCall(VecCopy(A, An_));
-  PetscCall(VecCopy(Qdd, Qn_));
+  PetscCall(stepScheme_->restore({U, V, A, Qdd}));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -648,7 +571,7 @@ PetscErrorCode DynamicAnalysis::setupResumedDamping(Vec U0) {
 PetscErrorCode DynamicAnalysis::run(Vec U, const StepCallback& onStep, bool* converged) {
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(SinewEvents::get().dynamics, 0, 0, 0, 0));
-  if (useTS_) PetscCall(runTSAlpha2(U, onStep, converged));
+  if (tsScheme_) PetscCall(runTSAlpha2(U, onStep, converged));
   else PetscCall(runArnoldBruls(U, onStep, converged));
   PetscCall(PetscLogEventEnd(SinewEvents::get().dynamics, 0, 0, 0, 0));
   PetscFunctionReturn(PETSC_SUCCESS);

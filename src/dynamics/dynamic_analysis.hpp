@@ -1,17 +1,14 @@
-// Implicit time integration of M qdd + f_int(q, qd, t) = f_ext(t) with the generalized-alpha
-// method in the variant of Arnold & Brüls (2007), as Exudyn's GeneralizedAlpha solver uses it:
-//   q_{n+1}  = q_n + h qd_n + h^2 (1/2 - beta) a_n + h^2 beta a_{n+1}
-//   qd_{n+1} = qd_n + h (1 - gamma) a_n + h gamma a_{n+1}
-//   (1 - alpha_m) a_{n+1} + alpha_m a_n = (1 - alpha_f) qdd_{n+1} + alpha_f qdd_n
-//   M qdd_{n+1} + f_int(q_{n+1}, qd_{n+1}, t_{n+1}) = f_ext(t_{n+1})      (equilibrium at t_{n+1})
-// alpha_m = (2 rho - 1)/(rho + 1), alpha_f = rho/(rho + 1), gamma = 1/2 + alpha_f - alpha_m,
-// beta = (gamma + 1/2)^2 / 4 (rho = spectral radius at infinity), a_0 = qdd_0 from M qdd_0 =
-// f_ext(0) - f_int(q_0, qd_0, 0). Each step is one SNES solve for q_{n+1} (options without
-// prefix: -snes_*, -ksp_*, -pc_*); a failed step is retried with halved steps (-max_cuts).
-// -dynamics_scheme midpoint: the implicit midpoint rule, spins by Simo & Wong (1991), which keeps
-// linear and angular momentum exactly (midpointResidual).
-// PETSc's TSALPHA2 is the Chung-Hulbert variant (equilibrium at t_{n+1-alpha_f}); it is
-// available with -dynamics_scheme tsalpha2 (docs/ancf_cable2d.md compares both).
+// Implicit time integration of M qdd + f_int(q, qd, t) = f_ext(t) with one of the schemes of
+// time_scheme.hpp (-dynamics_scheme), which own their parameters and state:
+//   arnold_bruls: generalized alpha as Exudyn uses it (GeneralizedAlphaScheme, the default)
+//   midpoint: the implicit midpoint rule, keeps linear and angular momentum exactly (MidpointScheme)
+//   tsalpha2: PETSc's TSALPHA2, the Chung-Hulbert variant (TSAlpha2Scheme; docs/ancf_cable2d.md
+//   compares it with the default)
+// DynamicAnalysis orchestrates: the start (a_0 = qdd_0 from M qdd_0 = f_ext(0) - f_int(q_0, qd_0, 0)),
+// the Newton solve of each step of the first two for q_{n+1} (one SNES solve; options without prefix:
+// -snes_*, -ksp_*, -pc_*; modified Newton, the ANCF solver choices: dynamic_newton.cpp), damping, the
+// step loop through the StepController (a failed step is retried with halved steps, -max_cuts;
+// adaptive steps: dynamic_step_control.cpp) and the output rows.
 // Beams (docs/dynamics.md): Frame6 rotation unknowns are spatial increments from R_n, absorbed into
 // R_ref after every converged step (Lie-group form; V and A hold spatial angular velocities and
 // accelerations); Lagrange multipliers of rigid modes are index-3 unknowns without rates.
@@ -25,6 +22,10 @@
 
 #include "assembly/assembler.hpp"
 #include "dynamics/damping.hpp"
+#include "dynamics/generalized_alpha_scheme.hpp"
+#include "dynamics/midpoint_scheme.hpp"
+#include "dynamics/time_scheme.hpp"
+#include "dynamics/tsalpha2_scheme.hpp"
 #include "settings/settings.hpp"
 #include "sinew/model.hpp"
 #include "solvers/ancf/corotated_newton_matrix.hpp"
@@ -59,13 +60,13 @@ struct DynamicsProgress {
   double scale = 0;    ///< adaptive steps (error): largest displacement |U|_inf so far (errorRatio)
 };
 
-class DynamicAnalysis {
+class DynamicAnalysis : private MotionEquations {
  public:
   /// settings.dynamics: the flags of the time loop; settings.statics: the Newton settings shared with
   /// statics (-max_cuts, -force_rtol, -newton_mixed_stresses); settings.eigen: modal damping's
   /// frequency analysis.
   DynamicAnalysis(Assembler& assembler, const DynamicsOptions& opts, const Settings& settings);
-  ~DynamicAnalysis();
+  ~DynamicAnalysis() override;
   DynamicAnalysis(const DynamicAnalysis&) = delete;
   DynamicAnalysis& operator=(const DynamicAnalysis&) = delete;
 
@@ -114,33 +115,39 @@ class DynamicAnalysis {
   Vec dampingState() const { return U0_; }
   /// State after the last converged time step (valid inside the step callback).
   const DynamicsProgress& progress() const { return progress_; }
-  /// Auxiliary (algorithmic) accelerations a_n of the last converged step.
-  Vec auxiliaryAccelerations() const { return An_; }
+  /// The time-integration scheme (-dynamics_scheme) with its state.
+  const TimeScheme& scheme() const { return *scheme_; }
+  /// Auxiliary (algorithmic) accelerations a_n of the last converged step (null with tsalpha2).
+  Vec auxiliaryAccelerations() const { return scheme_->state().a; }
   /// True for -dynamics_scheme tsalpha2 (PETSc TS; it cannot be resumed from a checkpoint).
-  bool usesPetscTS() const { return useTS_; }
+  bool usesPetscTS() const { return tsScheme_ != nullptr; }
   const std::string& failureMessage() const { return failure_; }
-  bool midpoint() const { return midpoint_; }
-  double alphaM() const { return alphaM_; }
-  double alphaF() const { return alphaF_; }
+  bool midpoint() const { return midpointScheme_ != nullptr; }
+  /// alpha_m and alpha_f of the Arnold-Brüls scheme at opt.dynamics.spectral_radius (the summary line).
+  double alphaM() const { return GeneralizedAlphaParameters::fromSpectralRadius(opts_.spectral_radius).alphaM; }
+  double alphaF() const { return GeneralizedAlphaParameters::fromSpectralRadius(opts_.spectral_radius).alphaF; }
 
  private:
   static PetscErrorCode formFunction(SNES, Vec U, Vec F, void* ctx);
   static PetscErrorCode formJacobian(SNES, Vec U, Mat J, Mat P, void* ctx);
   static PetscErrorCode convergenceTest(SNES, PetscInt it, PetscReal xnorm, PetscReal snorm, PetscReal fnorm,
                                         SNESConvergedReason* reason, void* ctx);
-  static PetscErrorCode tsI2Function(TS, PetscReal t, Vec U, Vec V, Vec A, Vec F, void* ctx);
-  static PetscErrorCode tsI2Jacobian(TS, PetscReal t, Vec U, Vec V, Vec A, PetscReal shiftV, PetscReal shiftA, Mat J,
-                                     Mat P, void* ctx);
+  /// MotionEquations (TSAlpha2Scheme): M qdd + f_int(q, qd, t) - f_ext(t) + C qd and K + shiftV C + shiftA M.
+  PetscErrorCode motionResidual(double t, Vec q, Vec qd, Vec qdd, Vec F) override;
+  PetscErrorCode motionTangent(double t, Vec q, Vec qd, double shiftV, double shiftA, Mat P) override;
+  /// The step equation of the step scheme at the iterate U (rates computed): the equations of motion
+  /// at its evaluation point e; the midpoint rule's rotary inertia as the momentum change over the
+  /// step and, with multipliers, their constraints at the step's end.
+  PetscErrorCode stepResidual(Vec U, const EvaluationPoint& e, Vec F);
+  /// Its derivative by U: e.jacobianScale (K + e.shiftV C + e.shiftA M) at e (midpoint: constraint rows
+  /// and multiplier columns scaled by 2).
+  PetscErrorCode stepJacobian(Vec U, const EvaluationPoint& e, Mat P);
+  /// Runs `evaluate` with the midpoint rule's rotary momentum of the iterate U set in the assembler.
+  PetscErrorCode withRotaryMomentum(Vec U, const std::function<PetscErrorCode()>& evaluate);
   PetscErrorCode useDynamicsSolver(KSP ksp);
   PetscErrorCode initialAccelerations(Vec U, Vec V, Vec Qdd, bool* ok);
-  /// a_{n+1}, qd_{n+1}, qdd_{n+1} of the iterate U (step size h_).
-  PetscErrorCode rates(Vec U);
-  /// -dynamics_scheme midpoint: residual of the implicit midpoint rule at the iterate U (after rates(U)).
-  PetscErrorCode midpointResidual(Vec U, Vec F);
   /// Solves the step to t1 (size h_); with commit, a converged step becomes the new step start.
   PetscErrorCode step(double t1, bool* ok, int* its, double* fnorm, SNESConvergedReason* why, bool commit = true);
-  /// Makes the converged iterate U (rates computed) the step start q_n, qd_n, a_n, qdd_n.
-  PetscErrorCode commitStep(Vec U);
   /// Local error of the converged step (rates of U computed), relative to tolerance * largest displacement:
   /// eta = h^2 |beta - 1/6| ||a_{n+1} - a_n||_inf / (tol * scale); accepted at eta <= 1. scale: the
   /// largest ||U||_inf of the run so far and of U, at least 1e-3 of the model size; *scale out.
@@ -158,7 +165,11 @@ class DynamicAnalysis {
   bool dampingReady_ = false;  ///< setupResumedDamping was called
   DynamicsProgress progress_;
   DynamicsOptions opts_;
-  double alphaM_, alphaF_, gamma_, beta_;
+  std::unique_ptr<TimeScheme> scheme_;  ///< the scheme of -dynamics_scheme; one of:
+  StepScheme* stepScheme_ = nullptr;    ///< arnold_bruls or midpoint (Sinew's Newton per step)
+  GeneralizedAlphaScheme* alphaScheme_ = nullptr;
+  MidpointScheme* midpointScheme_ = nullptr;
+  TSAlpha2Scheme* tsScheme_ = nullptr;
   double h_ = 0;
   LoadState ls_;
   SNES snes_ = nullptr;
@@ -191,8 +202,6 @@ class DynamicAnalysis {
   int mumpsWorkspace_ = 100;  ///< -mat_mumps_icntl_14 of the MUMPS step solver (DynamicsSettings::mumpsWorkspace)
   static PetscErrorCode applyNewtonMatrix(Mat A, Vec x, Vec y);
   Vec F_ = nullptr;
-  Vec Un_ = nullptr, Vn_ = nullptr, An_ = nullptr, Qn_ = nullptr;  // step start: q, qd, a (algorithmic), qdd
-  Vec V1_ = nullptr, A1_ = nullptr, Q1_ = nullptr, Cu_ = nullptr;  // iterate rates; Cu = predictor part of q
   /// 1 on coordinates, 0 on Lagrange multipliers (index-3 constraints: no rates); null without multipliers
   Vec keep_ = nullptr;
   Vec U0_ = nullptr;  ///< dampingState()
@@ -204,11 +213,7 @@ class DynamicAnalysis {
   NewtonRules newtonRules() const;
   static constexpr double kUpdateRtol = 1e-6;  ///< update test: estimated error <= this * |U|
   static constexpr double kMidpointUpdateRtol = 1e-14;  ///< midpoint: a step ends at an update <= this * |U|
-  bool useTS_ = false;
-  bool midpoint_ = false;                 ///< -dynamics_scheme midpoint (momentum-conserving; docs/dynamics.md)
-  Vec Um_ = nullptr, Vm_ = nullptr;       ///< midpoint: mid state and velocity of the iterate
-  /// midpoint with multipliers: 1 on their rows; work vector; 2 on their rows, 1 elsewhere (Jacobian scale)
-  Vec notKeep_ = nullptr, Fend_ = nullptr, constraintScale_ = nullptr;
+  Vec Fend_ = nullptr;  ///< midpoint with multipliers: the residual at the step's end (their constraint rows)
   // Modified Newton (as Exudyn's): the factored Jacobian is kept across iterations and time steps
   // while Newton contracts by at least kContractivity: measured on the residual with the
   // acceleration predictor; with the state predictor on the residual at the first iteration and on

@@ -53,9 +53,8 @@ PetscErrorCode DynamicAnalysis::formJacobian(SNES snes, Vec U, Mat, Mat P, void*
   PetscFunctionBeginUser;
   auto* self = static_cast<DynamicAnalysis*>(ctx);
   const double h = self->h_;
-  // generalized alpha: dqd/dq = gamma/(beta h), dqdd/dq = (1 - alpha_m)/((1 - alpha_f) beta h^2)
-  const double shiftV = self->gamma_ / (self->beta_ * h);
-  const double shiftA = (1.0 - self->alphaM_) / ((1.0 - self->alphaF_) * self->beta_ * h * h);
+  // the scheme's dqd/dq (generalized alpha: gamma/(beta h)), for the damping of a corotated rebuild
+  const double shiftV = self->stepScheme_->evaluation(U).shiftV;
   PetscInt it = 0;
   PetscReal fnorm = 0;
   if (snes) {
@@ -143,33 +142,10 @@ PetscErrorCode DynamicAnalysis::formJacobian(SNES snes, Vec U, Mat, Mat P, void*
     }
   }
   self->lastCorotated_ = false;
-  if (self->midpoint_) {
-    // d/dq_{n+1} of the midpoint residual: (K + (2/h) C + (4/h^2) M) / 2 at the mid state, the rotary
-    // inertia's block exact (rotaryMomentumStep; the elements' rotation columns are those of the mid state)
-    PetscCall(self->rates(U));
-    LoadState lsm = self->ls_;
-    lsm.time -= 0.5 * h;
-    const PetscScalar *u, *w0;
-    PetscCall(VecGetArrayRead(U, &u));
-    PetscCall(VecGetArrayRead(self->Vn_, &w0));
-    self->asm_.setRotaryMomentum({u, w0, h});
-    const PetscErrorCode ierr = self->asm_.dynamicJacobian(self->Um_, self->Vm_, lsm, 2.0 / h, 4.0 / (h * h), P);
-    self->asm_.setRotaryMomentum({});
-    PetscCall(VecRestoreArrayRead(self->Vn_, &w0));
-    PetscCall(VecRestoreArrayRead(U, &u));
-    PetscCall(ierr);
-    PetscCall(self->damping_.addJacobian(2.0 / h, P));
-    PetscCall(MatScale(P, 0.5));
-    if (self->notKeep_) {
-      // constraint rows d g(q_{n+1}) / d q_{n+1} ~ G(q_{n+1/2}) (twice the halved mid rows) and
-      // multiplier columns G^T (lambda is the mid-step multiplier itself): scale both by 2
-      PetscCall(MatDiagonalScale(P, self->constraintScale_, self->constraintScale_));
-    }
-  } else {
-  PetscCall(self->rates(U));
-  PetscCall(self->asm_.dynamicJacobian(U, self->V1_, self->ls_, shiftV, shiftA, P));
-  PetscCall(self->damping_.addJacobian(shiftV, P));
-  }
+  // d/dq_{n+1} of the step equation (generalized alpha: K + gamma/(beta h) C + (1 - alpha_m)/((1 -
+  // alpha_f) beta h^2) M at q_{n+1}; midpoint: (K + (2/h) C + (4/h^2) M) / 2 at the mid state)
+  PetscCall(self->stepScheme_->rates(U));
+  PetscCall(self->stepJacobian(U, self->stepScheme_->evaluation(U), P));
   ++self->report_.jacobians;
   self->matrixIt_ = it;
   self->jacobianValid_ = true;
@@ -235,7 +211,7 @@ NewtonRules DynamicAnalysis::newtonRules() const {
     r.updateRtol = kUpdateRtol;
   }
   r.atRest = true;
-  if (midpoint_) r.finalUpdateRtol = kMidpointUpdateRtol;
+  if (midpointScheme_) r.finalUpdateRtol = kMidpointUpdateRtol;
   return r;
 }
 

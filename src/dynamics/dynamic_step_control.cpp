@@ -42,25 +42,22 @@ void DynamicAnalysis::checkStepControl(const DistributedMesh& mesh, const Dynami
   stepControl(opts, settings, checkScheme(mesh, settings.scheme));
 }
 
-// Zienkiewicz & Xie (1991) type estimate of the local error of q_{n+1}: the Newmark/alpha update
-// q_{n+1} = q_n + h qd_n + h^2 (1/2 - beta) a_n + h^2 beta a_{n+1} differs from the Taylor series by
-// h^3 (beta - 1/6) da/dt + O(h^4), and h da/dt ~ a_{n+1} - a_n (algorithmic accelerations; spatial
-// angular accelerations for rotations; multipliers masked). It is compared with tolerance times the
-// largest displacement of the unknowns (inf-norm over translations, rotation increments, ANCF
-// coordinates: mixed units, meant for models whose rotations and displacements/size are of one order).
+// The local error of q_{n+1} (GeneralizedAlphaScheme::localError: h^2 |beta - 1/6| ||a_{n+1} - a_n||,
+// algorithmic accelerations; spatial angular accelerations for rotations; multipliers masked) is
+// compared with tolerance times the largest displacement of the unknowns (inf-norm over translations,
+// rotation increments, ANCF coordinates: mixed units, meant for models whose rotations and
+// displacements/size are of one order).
 PetscErrorCode DynamicAnalysis::errorRatio(Vec U, double* eta, double* scale) {
   PetscFunctionBeginUser;
-  PetscCall(VecWAXPY(F_, -1.0, An_, A1_));  // F_ is free here: the residual of the solve is not needed
-  if (keep_) PetscCall(VecPointwiseMult(F_, keep_, F_));
-  PetscReal da = 0, u = 0;
-  PetscCall(VecNorm(F_, NORM_INFINITY, &da));
+  double err = 0;
+  PetscCall(alphaScheme_->localError(F_, &err));  // F_ is free here: the residual of the solve is not needed
+  PetscReal u = 0;
   if (keep_) {  // the displacement scale without the multipliers
     PetscCall(VecPointwiseMult(F_, keep_, U));
     PetscCall(VecNorm(F_, NORM_INFINITY, &u));
   } else {
     PetscCall(VecNorm(U, NORM_INFINITY, &u));
   }
-  const double err = h_ * h_ * std::abs(beta_ - 1.0 / 6.0) * da;
   // the largest displacement so far (not the current one: it passes 0 twice per oscillation), and at
   // least 1e-3 of the model size (at rest under a load that rises from 0 the error and the motion of
   // the first step are of the same order at any h: relative to |U| alone the step would go to dt_min)
@@ -121,14 +118,14 @@ PetscErrorCode DynamicAnalysis::runAdaptive(const StepCallback& onStep, bool* co
   double fnorm = 0;
   SteppedProcedure timeSteps = timeStep(false, &why, &fnorm);
   timeSteps.accept = [&](double, double t1, double h, const StepAttempt&) -> PetscErrorCode {
-    PetscCall(commitStep(U));
+    PetscCall(stepScheme_->commit(U));
     setGuarded(false);
     adaptScale_ = stepScale;
     lastH_ = h;
     ++report_.acceptedSteps;
     report_.hMin = report_.hMin > 0 ? std::min(report_.hMin, h) : h;
     report_.hMax = std::max(report_.hMax, h);
-    if (onSubstep_) PetscCall(onSubstep_(t1, Un_, Vn_));
+    if (onSubstep_) PetscCall(onSubstep_(t1, stepScheme_->state().q, stepScheme_->state().qd));
     return PETSC_SUCCESS;
   };
   // output rows r at step krow(r) = min(nsteps, r every), time krow dt (tend at the last)
@@ -148,7 +145,8 @@ PetscErrorCode DynamicAnalysis::runAdaptive(const StepCallback& onStep, bool* co
     report_.steps = k;
     report_.time = t;
     progress_ = {k, t, control.carried(), report_.acceptedSteps, adaptScale_};
-    if (onStep) PetscCall(onStep(k, t, Un_, Vn_, Qn_));
+    const SchemeState s = stepScheme_->state();
+    if (onStep) PetscCall(onStep(k, t, s.q, s.qd, s.qdd));
     if (stop_ && *stop_) *stop = StepStop::Interrupted;
     return PETSC_SUCCESS;
   };

@@ -166,7 +166,8 @@ struct Options {
   std::vector<int> compliance_nodes;  ///< 0-based; empty = all nodes
   std::optional<DynamicsOptions> dynamics;
   std::optional<ContinuationOptions> continuation;
-  int nfreq = 6;   ///< Sinew: number of frequencies (also -eps_nev)
+  int nfreq = 6;   ///< Sinew: number of frequencies (also -eps_nev); kAllFrequencies: all (SPACAR Light's out.freq, nfreq: all)
+  static constexpr int kAllFrequencies = 0;
   int nbuck = 3;   ///< Sinew: number of buckling multipliers
   OutputSteps output_steps;
   std::optional<StepAnalysisRows> step_analyses;  ///< Sinew: nullopt = the default of each procedure

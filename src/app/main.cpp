@@ -7,6 +7,7 @@
 #include "app/command_line.hpp"
 #include "app/interrupt.hpp"
 #include "app/runner.hpp"
+#include "solvers/ancf/cable_coarse_space.hpp"
 #include "solvers/ancf/node_rotated_pc.hpp"
 #include "solvers/cut_corrected_lu.hpp"
 
@@ -36,6 +37,7 @@ int main(int argc, char** argv) {
   // Sinew's preconditioners are PETSc PC types: -pc_type cutlu / noderotated name them like PETSc's own
   PetscCall(sinew::registerCutCorrectedLU());
   PetscCall(sinew::registerNodeRotatedPC());
+  PetscCall(sinew::registerCableCoarsePC());
   sinew::installInterruptHandlers();  // after PETSc's, which would abort on SIGTERM/SIGUSR1
   int code = 0;
   bool stop = false;

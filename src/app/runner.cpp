@@ -128,6 +128,12 @@ PetscErrorCode runScene(int argc, char** argv, int* exitCode) {
     dmesh = std::make_unique<DistributedMesh>(
         distributeMesh(comm, model, fe, makeKernelFactory(model, settings.dynamics.beamMass)));
     checkContinuationControl(model, *dmesh);  // collective, after the collective distribution
+    // nfreq: all asks SLEPc for every eigenpair: a dense-sized problem, bounded to small models
+    constexpr long kAllFrequenciesMax = 2000;
+    if (plan.frequencies && model.opt.nfreq == Options::kAllFrequencies && dmesh->numGlobalUnknowns > kAllFrequenciesMax)
+      throw SceneError("opt.nfreq", "all frequencies of a model with " + std::to_string(dmesh->numGlobalUnknowns) +
+                                        " unknowns (all is for models up to " + std::to_string(kAllFrequenciesMax) +
+                                        " unknowns): give the number of frequencies wanted");
     if (plan.dynamics) DynamicAnalysis::checkScheme(*dmesh, settings.dynamics.scheme);
     if (plan.dynamics && model.opt.dynamics)
       DynamicAnalysis::checkStepControl(*dmesh, *model.opt.dynamics, settings.dynamics);

@@ -40,7 +40,7 @@ const std::vector<OptionDoc>& sceneOptionDocs() {
        "target_iterations, tolerance} varies the step (dt = first step, rows at multiples of dt * output_every); "
        "start: rest (default: from the unloaded or form-found state) or static (from the end of the static load "
        "steps, loads at t = 0)"},
-      {"nfreq", "integer >= 1", "6", "number of natural frequencies"},
+      {"nfreq", "integer >= 1 or all", "6", "number of natural frequencies; all: every finite one, as SPACAR Light's out.freq (models up to 2000 unknowns)"},
       {"continuation", "{method, ds, max_steps, stop_load_factor, node, direction, stop_displacement, constraint, psi, ds_max}",
        "none",
        "path following instead of load steps; arclength (Crisfield, cylindrical or spherical) or displacement control "
@@ -370,7 +370,7 @@ void parseOptions(const YAML::Node& opt, SceneContext& ctx) {
       }
     } else if (k == "dynamics") parseDynamics(v, p, o);
     else if (k == "continuation") parseContinuation(v, p, ctx);
-    else if (k == "nfreq") o.nfreq = getIntAtLeast(v, p, 1);
+    else if (k == "nfreq") o.nfreq = v.IsScalar() && v.Scalar() == "all" ? Options::kAllFrequencies : getIntAtLeast(v, p, 1);
     else if (k == "nbuck") o.nbuck = getIntAtLeast(v, p, 1);
     else if (k == "output_steps") o.output_steps = parseOutputSteps(v, p);
     else if (k == "step_analyses") o.step_analyses = parseStepAnalyses(v, p);

@@ -85,14 +85,15 @@ double frequencyHz(double omega2, double zeroTol) {
 }
 
 ModalAnalysis::ModalAnalysis(Assembler& assembler, int nfreq, bool writeResults, const EigenSettings& settings)
-    : asm_(assembler), write_(writeResults), nev_(nfreq) {
+    : asm_(assembler), write_(writeResults), all_(nfreq == Options::kAllFrequencies),
+      nev_(all_ ? static_cast<int>(assembler.mesh().numGlobalUnknowns) : nfreq) {
   MPI_Comm comm = asm_.mesh().comm;
   SinewCallThrow(comm, asm_.createMatrix(&K_));
   SinewCallThrow(comm, asm_.createMatrix(&M_));
   SinewCallThrow(comm, MatCreateVecs(K_, &dK_, &dM_));
   SinewCallThrow(comm, EPSCreate(comm, &eps_));
   SinewCallThrow(comm, EPSSetProblemType(eps_, EPS_GHEP));
-  SinewCallThrow(comm, EPSSetDimensions(eps_, nfreq, PETSC_DEFAULT, PETSC_DEFAULT));
+  SinewCallThrow(comm, EPSSetDimensions(eps_, nev_, PETSC_DEFAULT, PETSC_DEFAULT));
   SinewCallThrow(comm, EPSSetWhichEigenpairs(eps_, EPS_TARGET_MAGNITUDE));
   SinewCallThrow(comm, EPSSetTarget(eps_, 0.0));
   SinewCallThrow(comm, EPSSetPurify(eps_, PETSC_TRUE));  // keeps the multipliers' infinite eigenvalues out
@@ -123,7 +124,7 @@ ModalAnalysis::ModalAnalysis(Assembler& assembler, int nfreq, bool writeResults,
   nev_ = static_cast<int>(nev);
   // never more pairs than unknowns (nfreq 100000 allocated that many vectors: 48 s, a 373 MB file)
   const long N = asm_.mesh().numGlobalUnknowns;
-  if (nev_ > N) {
+  if (nev_ > N && !all_) {
     SinewCallThrow(comm, PetscPrintf(comm, "warning: %d natural frequencies asked for (nfreq), the model has %ld unknowns: "
                                            "computing at most %ld\n", nev_, N, N));
     nev_ = static_cast<int>(N);
@@ -228,7 +229,8 @@ PetscErrorCode ModalAnalysis::clampToFiniteModes() {
   const long multipliers = m.numGlobalUnknowns - counts[1];
   const long finite = counts[0] - multipliers;
   if (finite < 1 || nev_ <= finite) PetscFunctionReturn(PETSC_SUCCESS);
-  PetscCall(PetscPrintf(m.comm,
+  if (!all_)  // nfreq: all asks for every finite one: no warning
+    PetscCall(PetscPrintf(m.comm,
                         "warning: %d natural frequencies asked for, the model has %ld finite ones (%ld unknowns, %ld with "
                         "mass, %ld constraint multipliers): computing %ld\n",
                         nev_, finite, m.numGlobalUnknowns, counts[0], multipliers, finite));

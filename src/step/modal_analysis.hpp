@@ -58,6 +58,7 @@ class ModalAnalysis : public StepAnalysis {
 
   Assembler& asm_;
   bool write_;
+  bool all_ = false;  ///< nfreq: all (every finite frequency)
   int nev_ = 6;
   bool userTarget_ = false;
   double shiftRel_ = 1e-8;

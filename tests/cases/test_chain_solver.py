@@ -88,7 +88,8 @@ def static(name, np_=2, args=()):
     return tip, out
 
 
-stip, out = static("chain_static", args=["-fine_ksp_view"])
+stip, out = static("chain_static", args=["-fine_ksp_view", "-ksp_view"])
+st.check("type: cablecoarse" in out, "the two-level preconditioner is the registered PC type cablecoarse (-ksp_view)")
 st.check("type: redundant" in out and re.search(r"ordering:\s*rcm", out) is not None and "mumps" not in out.lower(),
          "the fine LU of a 2-rank ANCF chain in statics is not the redundant PETSc LU in RCM order (-fine_ksp_view)")
 stip_m, _ = static("chain_static_mumps", args=["-fine_pc_type", "lu", "-fine_pc_factor_mat_solver_type", "mumps"])

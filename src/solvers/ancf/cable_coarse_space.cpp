@@ -1,5 +1,7 @@
 #include "solvers/ancf/cable_coarse_space.hpp"
 
+#include <petsc/private/pcimpl.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -190,13 +192,44 @@ CableCoarseSpace::~CableCoarseSpace() {
   for (Vec* v : {&rc_, &yc_, &t1_, &t2_}) VecDestroy(v);
 }
 
+namespace {
+
+// PC type PCCABLECOARSE: pc->data is the CableCoarseSpace that installed it (owned by the statics)
+PetscErrorCode cableCoarseDestroy(PC pc) {
+  PetscFunctionBeginUser;
+  pc->data = nullptr;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode cableCoarseView(PC pc, PetscViewer viewer) {
+  PetscFunctionBeginUser;
+  PetscCall(PetscViewerASCIIPrintf(viewer, "  Sinew cable coarse space + LU (two-level, multiplicative); fine LU: -fine_ksp_view\n"));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode createCableCoarse(PC pc) {
+  PetscFunctionBeginUser;
+  pc->data = nullptr;
+  pc->ops->setup = CableCoarseSpace::setUp;
+  pc->ops->apply = CableCoarseSpace::apply;
+  pc->ops->destroy = cableCoarseDestroy;
+  pc->ops->view = cableCoarseView;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+}  // namespace
+
+PetscErrorCode registerCableCoarsePC() {
+  PetscFunctionBeginUser;
+  PetscCall(PCRegister(PCCABLECOARSE, createCableCoarse));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode CableCoarseSpace::install(PC pc) {
   PetscFunctionBeginUser;
-  PetscCall(PCSetType(pc, PCSHELL));
-  PetscCall(PCShellSetContext(pc, this));
-  PetscCall(PCShellSetSetUp(pc, setUp));
-  PetscCall(PCShellSetApply(pc, apply));
-  PetscCall(PCShellSetName(pc, "Sinew cable coarse space + LU (two-level, multiplicative)"));
+  PetscCall(registerCableCoarsePC());
+  PetscCall(PCSetType(pc, PCCABLECOARSE));
+  pc->data = this;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -327,9 +360,9 @@ PetscErrorCode CableCoarseSpace::assembleCoarse() {
 
 PetscErrorCode CableCoarseSpace::setUp(PC pc) {
   PetscFunctionBeginUser;
-  void* ctx;
-  PetscCall(PCShellGetContext(pc, &ctx));
-  auto* self = static_cast<CableCoarseSpace*>(ctx);
+  auto* self = static_cast<CableCoarseSpace*>(pc->data);
+  if (!self) SETERRQ(PetscObjectComm(reinterpret_cast<PetscObject>(pc)), PETSC_ERR_ARG_WRONGSTATE,
+                     "PC cablecoarse: no cable coarse space installed (it is set up by the ANCF statics)");
   PetscCall(PetscLogEventBegin(SinewEvents::get().coarseSpace, 0, 0, 0, 0));
   Mat A, P;
   PetscCall(PCGetOperators(pc, &A, &P));
@@ -350,9 +383,9 @@ PetscErrorCode CableCoarseSpace::setUp(PC pc) {
 // y = y2 + P Ac^-1 P^T (x - J y2),  y2 = y1 + LU^-1 (x - J y1),  y1 = P Ac^-1 P^T x
 PetscErrorCode CableCoarseSpace::apply(PC pc, Vec x, Vec y) {
   PetscFunctionBeginUser;
-  void* ctx;
-  PetscCall(PCShellGetContext(pc, &ctx));
-  auto* self = static_cast<CableCoarseSpace*>(ctx);
+  auto* self = static_cast<CableCoarseSpace*>(pc->data);
+  if (!self) SETERRQ(PetscObjectComm(reinterpret_cast<PetscObject>(pc)), PETSC_ERR_ARG_WRONGSTATE,
+                     "PC cablecoarse: no cable coarse space installed (it is set up by the ANCF statics)");
   PetscCall(VecSet(y, 0.0));
   PetscCall(self->coarseCorrection(x, y));
   PetscCall(self->asm_.applyTangent(y, self->t1_));

@@ -23,6 +23,11 @@
 
 namespace sinew {
 
+/// The PC type name of the cable coarse space (CableCoarseSpace::install).
+#define PCCABLECOARSE "cablecoarse"
+/// PCRegister of PCCABLECOARSE (main() at start-up; install() again, for library users).
+PetscErrorCode registerCableCoarsePC();
+
 class CableCoarseSpace {
  public:
   /// Coarse elements of about `ratio` fine elements along every split ancf_cable2d scene element.
@@ -34,7 +39,11 @@ class CableCoarseSpace {
 
   /// Makes `pc` this preconditioner; the fine LU is a KSP with options prefix "fine_" (MUMPS, or
   /// PETSc LU for ANCF-only models on one process; -fine_pc_factor_* changes it).
+  /// Makes pc this coarse space's preconditioner: the registered PC type PCCABLECOARSE.
   PetscErrorCode install(PC pc);
+  /// The PC type's set-up (fine LU of the preconditioning matrix, coarse matrix) and application.
+  static PetscErrorCode setUp(PC pc);
+  static PetscErrorCode apply(PC pc, Vec x, Vec y);
   int coarseNodes() const { return static_cast<int>(nodeCount_); }
   /// Coarse predictor (grid sequencing without a second mesh): solves the nonlinear problem in the
   /// coarse space, P^T F(U + P u) = 0, by Newton with Jacobian Ac (a SNES on the replicated coarse
@@ -53,8 +62,6 @@ class CableCoarseSpace {
   static int defaultRatio(const DistributedMesh& mesh, int minSplit);
 
  private:
-  static PetscErrorCode setUp(PC pc);
-  static PetscErrorCode apply(PC pc, Vec x, Vec y);
   PetscErrorCode restrictTo(Vec fine, Vec coarse);   // coarse = P^T fine (replicated)
   PetscErrorCode prolongAdd(Vec coarse, Vec fine);   // fine += P coarse (owned rows)
   PetscErrorCode coarseCorrection(Vec r, Vec y);     // y += P Ac^-1 P^T r

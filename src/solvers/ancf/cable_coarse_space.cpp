@@ -201,7 +201,7 @@ PetscErrorCode cableCoarseDestroy(PC pc) {
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode cableCoarseView(PC pc, PetscViewer viewer) {
+PetscErrorCode cableCoarseView(PC, PetscViewer viewer) {
   PetscFunctionBeginUser;
   PetscCall(PetscViewerASCIIPrintf(viewer, "  Sinew cable coarse space + LU (two-level, multiplicative); fine LU: -fine_ksp_view\n"));
   PetscFunctionReturn(PETSC_SUCCESS);

@@ -232,6 +232,20 @@ void parseContinuation(const YAML::Node& v, const std::string& path, SceneContex
 
 namespace {
 
+/// "every:k" -> k; 0 when what follows "every:" is not an integer >= 1; -1 when s is not "every:...".
+int everyCount(const std::string& s) {
+  if (s.rfind("every:", 0) != 0) return -1;
+  const std::string k = s.substr(6);
+  std::size_t used = 0;
+  int every = 0;
+  try {
+    every = std::stoi(k, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  return used == 0 || used != k.size() || every < 1 ? 0 : every;
+}
+
 OutputSteps parseOutputSteps(const YAML::Node& v, const std::string& p) {
   OutputSteps out;
   const std::string expected = "expected all, last, every:k or a list of step numbers, got ";
@@ -247,16 +261,8 @@ OutputSteps parseOutputSteps(const YAML::Node& v, const std::string& p) {
     out.kind = OutputSteps::Kind::Last;
     return out;
   }
-  if (s.rfind("every:", 0) == 0) {
-    const std::string k = s.substr(6);
-    std::size_t used = 0;
-    int every = 0;
-    try {
-      every = std::stoi(k, &used);
-    } catch (const std::exception&) {
-      used = 0;
-    }
-    if (used == 0 || used != k.size() || every < 1) fail(p, "every:k needs an integer k >= 1, got " + describe(v));
+  if (const int every = everyCount(s); every >= 0) {
+    if (every == 0) fail(p, "every:k needs an integer k >= 1, got " + describe(v));
     out.kind = OutputSteps::Kind::Every;
     out.every = every;
     return out;
@@ -279,16 +285,8 @@ StepAnalysisRows parseStepAnalyses(const YAML::Node& v, const std::string& p) {
     out.kind = s == "last" ? StepAnalysisRows::Kind::Last : StepAnalysisRows::Kind::None;
     return out;
   }
-  if (s.rfind("every:", 0) == 0) {
-    const std::string k = s.substr(6);
-    std::size_t used = 0;
-    int every = 0;
-    try {
-      every = std::stoi(k, &used);
-    } catch (const std::exception&) {
-      used = 0;
-    }
-    if (used == 0 || used != k.size() || every < 1) fail(p, expected + describe(v));
+  if (const int every = everyCount(s); every >= 0) {
+    if (every == 0) fail(p, expected + describe(v));
     out.kind = StepAnalysisRows::Kind::Every;
     out.every = every;
     return out;

@@ -1,3 +1,4 @@
+# ctest-processors: 1
 # ctest-labels: smoke
 """Element kinds stay in src/elements/ (DEVELOPERS.md, "Adding things / An element"): no code outside
 it casts an ElementKernel to a concrete kernel class (every class in src/elements/*.hpp that derives

@@ -1,3 +1,4 @@
+# ctest-processors: 1
 # ctest-labels: smoke
 """The code's rooms (DEVELOPERS.md, "Map of the code"), checked on the sources:
 1. every folder under src/ is a known room, and a room includes only the rooms listed before it

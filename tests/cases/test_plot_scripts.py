@@ -1,3 +1,4 @@
+# ctest-processors: 1
 """The plot scripts' pictures of issue 24 item 14 (1 rank each; scenes from runs/ read, not changed).
 - plot_results.py colours the deformed shape by stress: runs/sail_masts.yaml (membrane, edge cables,
   beam masts) gives filled membranes in viridis with a colour bar "membrane first principal resultant

@@ -40,7 +40,7 @@ out = os.path.join(st.WORK, "scripts_run_term.h5")
 for stale in (out, out + ".part"):
     if os.path.exists(stale):
         os.remove(stale)
-proc = subprocess.Popen([RUN, scene, "-o", out, "-loadsteps", "100000", "-calccompl", "false"], env=env,
+proc = subprocess.Popen([RUN, scene, "-o", out, "-loadsteps", "100000", "-calccompl", "false", "-calcbuck", "false", "-calcfreq", "false"], env=env,
                         stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
 seen = []
 for line in proc.stdout:  # the first progress lines: the run is under way
@@ -61,7 +61,7 @@ else:
 
 # 3. a rank killed by a signal: scripts/run says so
 out = os.path.join(st.WORK, "scripts_run_kill.h5")
-proc = subprocess.Popen([RUN, scene, "-o", out, "-loadsteps", "100000", "-calccompl", "false"], env=env,
+proc = subprocess.Popen([RUN, scene, "-o", out, "-loadsteps", "100000", "-calccompl", "false", "-calcbuck", "false", "-calcfreq", "false"], env=env,
                         stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
 seen = []
 for line in proc.stdout:

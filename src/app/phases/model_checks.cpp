@@ -191,11 +191,10 @@ PetscErrorCode checkLoadedModelAfterFormFinding(RunContext& ctx, const Constrain
   PetscCall(PetscLogEventEnd(SinewEvents::get().constraintCheck, 0, 0, 0, 0));
   ctx.times.check += MPI_Wtime() - tCheck;
   if (!check.singular) PetscFunctionReturn(PETSC_SUCCESS);
-  ctx.converged = false;
-  ctx.failure = "the load analysis after form finding cannot start (elastic_restart_method " +
-                ctx.model.formfinding->elastic_restart_method + ", found shape):\n" + check.message +
-                "  (a restart without prestress leaves flat or straight parts of the found shape without stiffness "
-                "across them; elastic_restart_method FORCE keeps the prestress)\n";
+  ctx.fail("the load analysis after form finding cannot start (elastic_restart_method " +
+           ctx.model.formfinding->elastic_restart_method + ", found shape):\n" + check.message +
+           "  (a restart without prestress leaves flat or straight parts of the found shape without stiffness "
+           "across them; elastic_restart_method FORCE keeps the prestress)\n");
   *modelError = true;
   PetscFunctionReturn(PETSC_SUCCESS);
 }

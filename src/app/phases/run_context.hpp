@@ -39,8 +39,14 @@ struct RunContext {
   int nextStep = 0;  ///< next row of the step-indexed datasets
   Timings times;
   std::vector<StepReport> reports;
-  bool converged = true;
-  std::string failure;
+  bool converged = true;  ///< until a procedure fails (fail())
+  std::string failure;    ///< the first failure's message
+  /// A procedure failed: the run is not converged; the first failure's message is kept.
+  void fail(const std::string& message) {
+    if (!converged) return;
+    converged = false;
+    failure = message;
+  }
   std::string summaryLines;  ///< extra lines for the stdout summary (rank 0)
   Progress progress;
   /// The step loops end after the current step (equal on every rank): a signal arrived

@@ -68,10 +68,7 @@ PetscErrorCode runContinuation(RunContext& ctx) {
   ctx.lastStepName = "path point";
   ctx.guardedWrite([&]() { ctx.file.writeArray("path/critical_points", rows, {static_cast<long>(path.criticalPoints().size()), 4}); });
   ctx.summaryLines += path.summary();
-  if (!ok && ctx.converged) {
-    ctx.converged = false;
-    ctx.failure = path.failureMessage();
-  }
+  if (!ok) ctx.fail(path.failureMessage());
   // why the path ended (/path attribute stop_reason); max_steps before the scene's stop criterion is short of it
   const std::vector<PathPoint>& pts = path.points();
   const ContinuationOptions& opts = *ctx.model.opt.continuation;
@@ -79,11 +76,8 @@ PetscErrorCode runContinuation(RunContext& ctx) {
                               pts.empty() ? 0.0 : pts.back().controlValue, !ok, ctx.stop);
   ctx.guardedWrite([&]() { ctx.file.writeStateAttribute("path", "stop_reason", end.reason); });
   ctx.summaryLines += "  path ended: " + end.reason + "\n";
-  if (end.endedShort && ctx.converged) {
-    ctx.converged = false;
-    ctx.failure = "path following ended short: " + end.reason +
-                  "; give a larger opt.continuation.max_steps (or ds_max, the largest step)";
-  }
+  if (end.endedShort)
+    ctx.fail("path following ended short: " + end.reason + "; give a larger opt.continuation.max_steps (or ds_max, the largest step)");
   std::vector<double> lambdas, controls;
   for (const PathPoint& p : pts) {
     lambdas.push_back(p.loadFactor);

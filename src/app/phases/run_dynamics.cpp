@@ -143,10 +143,7 @@ PetscErrorCode runDynamics(RunContext& ctx) {
   ctx.checkpointState = nullptr;
   if (!ok && !ctx.stop) PetscCall(ctx.writeSkippedLast(ctx.U));
   if (ok) PetscCall(ctx.finishStepAnalyses(ctx.U));
-  if (!ok && ctx.converged && !ctx.stop) {
-    ctx.converged = false;
-    ctx.failure = dyn.failureMessage();
-  }
+  if (!ok && !ctx.stop) ctx.fail(dyn.failureMessage());
   const DynamicsReport& r = dyn.report();
   std::ostringstream s;
   s << "  dynamics: " << r.steps << " of " << nsteps << " steps of dt = " << opts.dt << " to t = " << r.time;

@@ -161,8 +161,7 @@ PetscErrorCode runFormFinding(RunContext& ctx) {
   ctx.times.formfindingIts = 0;
   for (const auto& r : reps) ctx.times.formfindingIts += r.newtonIterations;
   if (!ok && !ctx.stop) {
-    ctx.converged = false;
-    ctx.failure = analysis.failureMessage();
+    ctx.fail(analysis.failureMessage());
   } else if (ok && !ctx.stop) {
     PetscCall(analysis.restart(ctx.U));
   }

@@ -86,8 +86,7 @@ PetscErrorCode runStatics(RunContext& ctx, bool resumeStatics, const ConstraintC
                         " applications; coarse predictor " + std::to_string(cs->predictorIterations()) +
                         " Newton iterations\n";
   if (!ok && ctx.converged) {
-    ctx.converged = false;
-    ctx.failure = statics.failureMessage();
+    ctx.fail(statics.failureMessage());
     if (statics.linearSolveFailed() && check.enabled) {  // name the mechanism / redundancy if there is one
       LoadState ls;
       ls.loadFactor = ls.time = ctx.reports.empty() ? 0.0 : ctx.reports.back().loadFactor;

@@ -405,22 +405,18 @@ PetscErrorCode FormFindingAnalysis::run(Vec U, const StepCallback& onStep, bool*
     std::tie(rep.lambda, rep.xurs) = stepMode(ff_, k);
     setMode(rep.lambda, rep.xurs);
     PetscCall(VecCopy(U, Uprev));
-    PetscCall(SNESSolve(snes_, nullptr, U));
-    SNESConvergedReason why;
-    PetscInt its;
-    PetscReal fnorm;
-    PetscCall(SNESGetConvergedReason(snes_, &why));
-    PetscCall(SNESGetIterationNumber(snes_, &its));
-    PetscCall(SNESGetFunctionNorm(snes_, &fnorm));
-    rep.newtonIterations = static_cast<int>(its);
-    rep.residualNorm = fnorm;
+    NewtonOutcome out;
+    PetscCall(solveNewton(snes_, U, &out));
+    const SNESConvergedReason why = out.reason;
+    rep.newtonIterations = out.iterations;
+    rep.residualNorm = out.residualNorm;
     rep.equilibrium = why > 0;
     a->iterations = rep.newtonIterations;
     a->reason = SNESConvergedReasons[why];
     std::ostringstream msg;
     if (why < 0 && why != SNES_DIVERGED_MAX_IT) {
       msg << "formfinding step " << k << " of " << nsteps << ": no equilibrium (" << SNESConvergedReasons[why]
-          << ", residual norm " << fnorm << ") for the form-found sets " << setNames()
+          << ", residual norm " << out.residualNorm << ") for the form-found sets " << setNames()
           << ". A singular tangent means a mechanism: a node held only by unstressed elements, a free membrane "
              "edge without an edge cable, or supports missing. Check prestress and supports; -ff_snes_monitor "
              "shows the iterations.";

@@ -235,14 +235,12 @@ PetscErrorCode StaticAnalysis::solveIncrement(Vec U, double lambda, bool* ok, in
   PetscFunctionBeginUser;
   ls_.loadFactor = lambda;
   ls_.time = timeAt(lambda);
-  PetscCall(SNESSolve(snes_, nullptr, U));
-  PetscCall(SNESGetConvergedReason(snes_, why));
-  PetscInt n;
-  PetscCall(SNESGetIterationNumber(snes_, &n));
-  PetscReal f;
-  PetscCall(SNESGetFunctionNorm(snes_, &f));
-  *its = static_cast<int>(n);
-  *fnorm = f;
+  NewtonOutcome out;
+  PetscCall(solveNewton(snes_, U, &out));
+  *why = out.reason;
+  *its = out.iterations;
+  *fnorm = out.residualNorm;
+  const double f = out.residualNorm;
   // a reported convergence with a residual above its start value (a line search ending on a wild
   // trial point) is a failure, whatever the reason code says; not so when both are at the round-off
   // floor (a load below it: the Newton step is the solution, its residual round-off)

@@ -242,14 +242,11 @@ PetscErrorCode DynamicAnalysis::step(double t1, bool* ok, int* its, double* fnor
   // accelerations of a step load on a fine mesh lands far outside Newton's reach: stiff axial waves)
   if (restPredictor_ || predictor_ == Predictor::State) PetscCall(VecCopy(stepScheme_->state().q, U));
   else PetscCall(stepScheme_->predict(U));
-  PetscCall(SNESSolve(snes_, nullptr, U));
-  PetscCall(SNESGetConvergedReason(snes_, why));
-  PetscInt n;
-  PetscCall(SNESGetIterationNumber(snes_, &n));
-  PetscReal f;
-  PetscCall(SNESGetFunctionNorm(snes_, &f));
-  *its = static_cast<int>(n);
-  *fnorm = f;
+  NewtonOutcome out;
+  PetscCall(solveNewton(snes_, U, &out));
+  *why = out.reason;
+  *its = out.iterations;
+  *fnorm = out.residualNorm;
   *ok = *why > 0;
   if (!*ok) jacobianValid_ = false;  // a failed solve starts the retry from a fresh Jacobian
   if (*ok) {

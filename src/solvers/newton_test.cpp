@@ -115,4 +115,17 @@ void NewtonTest::decide(const NewtonIterate& x, double atol, double rtol, double
   if (!std::isfinite(fnorm)) *reason = SNES_DIVERGED_FNORM_NAN;
 }
 
+PetscErrorCode solveNewton(SNES snes, Vec U, NewtonOutcome* outcome) {
+  PetscFunctionBeginUser;
+  PetscCall(SNESSolve(snes, nullptr, U));
+  PetscCall(SNESGetConvergedReason(snes, &outcome->reason));
+  PetscInt n = 0;
+  PetscCall(SNESGetIterationNumber(snes, &n));
+  outcome->iterations = static_cast<int>(n);
+  PetscReal f = 0;
+  PetscCall(SNESGetFunctionNorm(snes, &f));
+  outcome->residualNorm = f;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 }  // namespace sinew

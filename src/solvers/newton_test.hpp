@@ -121,4 +121,14 @@ class NewtonTest {
   bool onUpdate_ = false;
 };
 
+/// What a Newton solve ended with: SNES's reason, its iterations and the last residual norm.
+struct NewtonOutcome {
+  SNESConvergedReason reason = SNES_CONVERGED_ITERATING;
+  int iterations = 0;
+  double residualNorm = 0;
+};
+
+/// SNESSolve from U (the initial guess, overwritten by the solution) and its outcome.
+PetscErrorCode solveNewton(SNES snes, Vec U, NewtonOutcome* outcome);
+
 }  // namespace sinew

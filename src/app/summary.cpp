@@ -31,6 +31,43 @@ void tensileLines(std::ostringstream& s, const TensileSummary& t) {
 
 // A model without rotations: the node that moves most and the reactions (listed up to
 // kReactionTableRows supports, else their sum and the largest).
+/// The last step's node table (`motion`: indices into NodeSummaryRow::v, 0..5 = ux uy uz rx ry rz) and
+/// reaction table (`reaction`: 6..11 = Fx Fy Fz Mx My Mz; nodes whose reactions there are all 0 left out).
+void nodeTables(std::ostringstream& s, const std::vector<NodeSummaryRow>& nodes, const std::vector<int>& motion,
+                const std::vector<int>& reaction) {
+  static const char* kHeads[12] = {"      ux [m]", "      uy [m]", "      uz [m]", "   rx [rad]", "   ry [rad]", "   rz [rad]",
+                                   "      Fx [N]", "      Fy [N]", "      Fz [N]", "    Mx [N m]", "    My [N m]", "    Mz [N m]"};
+  char cell[48];
+  s << "\n loaded and supported nodes, and the node that moves most (last step)\n node";
+  for (int k : motion) s << kHeads[k];
+  s << "\n";
+  for (const auto& n : nodes) {
+    std::snprintf(cell, sizeof cell, " %4d", n.node);
+    s << cell;
+    for (int k : motion) {  // displacements in m, rotations in rad
+      if (k < 3) std::snprintf(cell, sizeof cell, " %11.4e", n.v[k]);
+      else std::snprintf(cell, sizeof cell, " %10.4g", n.v[k]);
+      s << cell;
+    }
+    s << "\n";
+  }
+  s << "\n reactions (last step)\n node";
+  for (int k : reaction) s << kHeads[k];
+  s << "\n";
+  for (const auto& n : nodes) {
+    bool any = false;
+    for (int k : reaction) any = any || n.v[k] != 0.0;
+    if (!any) continue;
+    std::snprintf(cell, sizeof cell, " %4d", n.node);
+    s << cell;
+    for (int k : reaction) {
+      std::snprintf(cell, sizeof cell, " %11.4e", n.v[k]);
+      s << cell;
+    }
+    s << "\n";
+  }
+}
+
 void pointNodeLines(std::ostringstream& s, const SummaryBody& b) {
   char line[256];
   if (b.mostMoving.node > 0) {
@@ -103,51 +140,11 @@ PetscErrorCode printSummary(MPI_Comm comm, const SummaryBody& b) {
     tensileLines(s, b.tensile);
     pointNodeLines(s, b);
   } else if (!b.nodes.empty() && b.planar) {
-    s << "\n loaded and supported nodes, and the node that moves most (last step)\n"
-         " node      ux [m]      uy [m]   rz [rad]\n";
-    for (const auto& n : b.nodes) {
-      std::snprintf(line, sizeof line, " %4d %11.4e %11.4e %10.4g\n", n.node, n.v[0], n.v[1], n.v[5]);
-      s << line;
-    }
-    s << "\n reactions (last step)\n"
-         " node      Fx [N]      Fy [N]    Mz [N m]\n";
-    for (const auto& n : b.nodes) {
-      if (n.v[6] == 0.0 && n.v[7] == 0.0 && n.v[11] == 0.0) continue;
-      std::snprintf(line, sizeof line, " %4d %11.4e %11.4e %11.4e\n", n.node, n.v[6], n.v[7], n.v[11]);
-      s << line;
-    }
+    nodeTables(s, b.nodes, {0, 1, 5}, {6, 7, 11});
   } else if (!b.nodes.empty() && !b.rotations) {  // point nodes only (cables, membranes with beams absent): no rotation columns
-    s << "\n loaded and supported nodes, and the node that moves most (last step)\n"
-         " node      ux [m]      uy [m]      uz [m]\n";
-    for (const auto& n : b.nodes) {
-      std::snprintf(line, sizeof line, " %4d %11.4e %11.4e %11.4e\n", n.node, n.v[0], n.v[1], n.v[2]);
-      s << line;
-    }
-    s << "\n reactions (last step)\n"
-         " node      Fx [N]      Fy [N]      Fz [N]\n";
-    for (const auto& n : b.nodes) {
-      if (n.v[6] == 0.0 && n.v[7] == 0.0 && n.v[8] == 0.0) continue;
-      std::snprintf(line, sizeof line, " %4d %11.4e %11.4e %11.4e\n", n.node, n.v[6], n.v[7], n.v[8]);
-      s << line;
-    }
+    nodeTables(s, b.nodes, {0, 1, 2}, {6, 7, 8});
   } else if (!b.nodes.empty()) {
-    s << "\n loaded and supported nodes, and the node that moves most (last step)\n"
-         " node      ux [m]      uy [m]      uz [m]   rx [rad]   ry [rad]   rz [rad]\n";
-    for (const auto& n : b.nodes) {
-      std::snprintf(line, sizeof line, " %4d %11.4e %11.4e %11.4e %10.4g %10.4g %10.4g\n", n.node, n.v[0], n.v[1], n.v[2],
-                    n.v[3], n.v[4], n.v[5]);
-      s << line;
-    }
-    s << "\n reactions (last step)\n"
-         " node      Fx [N]      Fy [N]      Fz [N]    Mx [N m]    My [N m]    Mz [N m]\n";
-    for (const auto& n : b.nodes) {
-      bool any = false;
-      for (int k = 6; k < 12; ++k) any |= n.v[k] != 0.0;
-      if (!any) continue;
-      std::snprintf(line, sizeof line, " %4d %11.4e %11.4e %11.4e %11.4e %11.4e %11.4e\n", n.node, n.v[6], n.v[7], n.v[8],
-                    n.v[9], n.v[10], n.v[11]);
-      s << line;
-    }
+    nodeTables(s, b.nodes, {0, 1, 2, 3, 4, 5}, {6, 7, 8, 9, 10, 11});
   }
   if (!b.tensileOnly) tensileLines(s, b.tensile);  // cables / membranes beside beams
   if (b.stress) {

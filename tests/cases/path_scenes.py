@@ -1,11 +1,26 @@
 """Scene builders shared by the path-following tests (test_continuation_lee, _euler, _subcritical,
-test_restart_continuation): Lee's frame, the perfect Euler column and a clamped cosine arch (sources in
-those tests)."""
+test_restart_continuation, test_continuation_stop_reason): Lee's frame, the perfect Euler column, a
+clamped cosine arch and the von Mises truss (sources in those tests)."""
+import math
+
 import numpy as np
 
 import beamtools as bt
 
 LEE_L, LEE_E, LEE_N = 120.0, 720.0, 20
+# von Mises truss: half span, rise, bar diameter (A = 1e-3 with E = 1e7: EA = 1e4)
+TRUSS_A, TRUSS_H, TRUSS_D = 1.0, 0.1, math.sqrt(4 * 1e-3 / math.pi)
+
+
+def von_mises_truss(cont):
+    """Two pinned bars (axial mode only) meeting at the apex node 2, a unit load down on it; `cont`:
+    the opt.continuation block. Scene text."""
+    a, H = TRUSS_A, TRUSS_H
+    return bt.yaml_text({"title": "von Mises truss", "nodes": [[-a, 0, 0], [0, H, 0], [a, 0, 0]], "elements": [[1, 2], [3, 2]],
+            "nprops": {"1": {"fix": True}, "3": {"fix": True},
+                       "2": {"fix_z": True, "fix_orien": True, "force": [0, -1, 0]}},
+            "eprops": [{"elems": [1, 2], "flex": [1], "emod": 1e7, "smod": 4e6, "cshape": "circ", "dim": [TRUSS_D]}],
+            "opt": {"rls": {"1": [2, 3, 4, 5, 6], "2": [2, 3, 4, 5, 6]}, "calccompl": False, "continuation": cont}})
 
 
 def lee_frame(max_steps=38):

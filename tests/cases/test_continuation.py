@@ -15,11 +15,10 @@ import math
 
 import numpy as np
 
-import beamtools as bt
+import path_scenes
 import sinewtest as st
 
-a, H, EA = 1.0, 0.1, 1e4
-d = math.sqrt(4 * 1e-3 / math.pi)  # A = 1e-3, E = 1e7
+a, H, EA = path_scenes.TRUSS_A, path_scenes.TRUSS_H, 1e4  # A = 1e-3, E = 1e7 (path_scenes.von_mises_truss)
 L0 = math.hypot(a, H)
 
 
@@ -37,12 +36,7 @@ wlim = ws[np.argmax(P(ws))]
 Pmax = P(wlim)
 
 
-def scene(cont):
-    return bt.yaml_text({"title": "von Mises truss", "nodes": [[-a, 0, 0], [0, H, 0], [a, 0, 0]], "elements": [[1, 2], [3, 2]],
-            "nprops": {"1": {"fix": True}, "3": {"fix": True},
-                       "2": {"fix_z": True, "fix_orien": True, "force": [0, -1, 0]}},
-            "eprops": [{"elems": [1, 2], "flex": [1], "emod": 1e7, "smod": 4e6, "cshape": "circ", "dim": [d]}],
-            "opt": {"rls": {"1": [2, 3, 4, 5, 6], "2": [2, 3, 4, 5, 6]}, "calccompl": False, "continuation": cont}})
+scene = path_scenes.von_mises_truss
 
 
 def path(h5):

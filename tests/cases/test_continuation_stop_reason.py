@@ -4,21 +4,11 @@ scene gave ends short of what it asked: exit 3, converged = 0 (it exited 0 with 
 points, load factor 0.58069"). The von Mises truss of test_continuation, 2 ranks: max_steps 5
 before stop_displacement -0.25 (exit 3), the same path to its stop_displacement (exit 0), and
 max_steps as the only end (exit 0, "max_steps 5 reached")."""
-import math
 
-import beamtools as bt
+import path_scenes
 import sinewtest as st
 
-a, H = 1.0, 0.1
-d = math.sqrt(4 * 1e-3 / math.pi)
-
-
-def scene(cont):
-    return bt.yaml_text({"title": "von Mises truss", "nodes": [[-a, 0, 0], [0, H, 0], [a, 0, 0]], "elements": [[1, 2], [3, 2]],
-            "nprops": {"1": {"fix": True}, "3": {"fix": True},
-                       "2": {"fix_z": True, "fix_orien": True, "force": [0, -1, 0]}},
-            "eprops": [{"elems": [1, 2], "flex": [1], "emod": 1e7, "smod": 4e6, "cshape": "circ", "dim": [d]}],
-            "opt": {"rls": {"1": [2, 3, 4, 5, 6], "2": [2, 3, 4, 5, 6]}, "calccompl": False, "continuation": cont}})
+scene = path_scenes.von_mises_truss
 
 
 def reason(h5):

@@ -8,14 +8,9 @@ import argparse
 import os
 import sys
 
-import matplotlib
+import numpy as np
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-
-import numpy as np  # noqa: E402
-
-from plot_results import open_result  # noqa: E402
+from plot_results import load_matplotlib, open_result
 
 IN_NAMES = ["force_x", "force_y", "force_z", "moment_x", "moment_y", "moment_z"]
 OUT_NAMES = ["displ_x", "displ_y", "displ_z", "veloc_x", "veloc_y", "veloc_z"]
@@ -51,6 +46,7 @@ def main():
     hi = 10 * (w_modes.max() if w_modes.size else 1.0)
     w = np.logspace(np.log10(lo), np.log10(hi), a.points)
     H = frequency_response(A, B, C, D, w)
+    plt = load_matplotlib()  # after the input was read: bad files fail fast
     fig, ax = plt.subplots(2, 1, sharex=True, figsize=(8, 7))
     for o, (on, oc) in enumerate(outs):
         for i, (inn, ic) in enumerate(ins):

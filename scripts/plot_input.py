@@ -24,14 +24,10 @@ import sys
 import tempfile
 
 import h5py
-import matplotlib
 import numpy as np
 import yaml
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-
-from plot_results import BLUE, RIGID_GREY, open_result, parse_scene, rigid_elements, scene_text  # noqa: E402
+from plot_results import BLUE, RIGID_GREY, load_matplotlib, open_result, parse_scene, rigid_elements, scene_text
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 
@@ -138,6 +134,7 @@ def draw(a, path, name=None):
     flat = np.ptp(nodes[:, 2]) < 1e-12 * max(np.ptp(nodes), 1e-300) if len(nodes) else True
     view = a.view or ("xy" if flat else "3d")
     axes = {"xy": (0, 1), "xz": (0, 2), "yz": (1, 2)}
+    plt = load_matplotlib()  # after the input was read: bad files fail fast
     fig = plt.figure(figsize=(8, 6))
     if view == "3d":
         ax = fig.add_subplot(projection="3d")

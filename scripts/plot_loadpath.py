@@ -18,13 +18,9 @@ import argparse
 import os
 import sys
 
-import matplotlib
+import numpy as np
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
-
-from plot_results import open_result, parse_scene, scene_text  # noqa: E402
+from plot_results import load_matplotlib, open_result, parse_scene, scene_text
 
 # ramped loads of a scene (docs/scene.md): the load axis is drawn when exactly one of them is given
 NODE_RAMPED = ("force", "moment", "displ_x", "displ_y", "displ_z", "rot")
@@ -98,6 +94,7 @@ def main():
         scene_title = str(scene.get("title") or "")
 
     out = a.output or f"{os.path.splitext(a.file)[0]}_node{'-'.join(map(str, a.node))}_{a.dir}.png"
+    plt = load_matplotlib()  # after the input was read: bad files fail fast
     fig, ax = plt.subplots(figsize=(6.4, 4.8))
     label = "|u|" if a.dir == "abs" else f"u_{a.dir}"
     counts = {"stable": 0, "unstable": 0, "limit": 0, "bifurcation": 0}

@@ -36,15 +36,25 @@ import os
 import sys
 
 import h5py
-import matplotlib
 import numpy as np
 import yaml
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-from matplotlib.animation import PillowWriter  # noqa: E402
-from matplotlib.collections import LineCollection, PolyCollection  # noqa: E402
-from mpl_toolkits.mplot3d.art3d import Line3DCollection, Poly3DCollection  # noqa: E402
+# matplotlib's names, bound by load_matplotlib() once the input was read
+matplotlib = plt = PillowWriter = LineCollection = PolyCollection = Line3DCollection = Poly3DCollection = None
+
+
+def load_matplotlib():
+    """Imports matplotlib (Agg backend, no display) into this module's names and returns pyplot. The
+    scripts call it after reading their input, so a missing or wrong file is reported without the
+    second that importing matplotlib takes."""
+    global matplotlib, plt, PillowWriter, LineCollection, PolyCollection, Line3DCollection, Poly3DCollection
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    from matplotlib.animation import PillowWriter
+    from matplotlib.collections import LineCollection, PolyCollection
+    from mpl_toolkits.mplot3d.art3d import Line3DCollection, Poly3DCollection
+    return plt
 
 LABEL_LIMIT = 200       # node numbers drawn up to this many nodes (--labels auto)
 NODE_DOT_LIMIT = 200    # node dots drawn up to this many nodes
@@ -482,6 +492,7 @@ def main():
             sys.exit(f"--scale '{a.scale}': expected auto or a number")
 
     res = Result(a.h5, "n1" if a.stress == "off" else a.stress)
+    load_matplotlib()
     k = res.row(a.step)
     size = res.size()
     labels = a.labels == "on" or (a.labels == "auto" and len(res.node_p0) <= LABEL_LIMIT)

@@ -8,13 +8,9 @@ import argparse
 import os
 import sys
 
-import matplotlib
 import yaml
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-
-from plot_results import open_result  # noqa: E402
+from plot_results import load_matplotlib, open_result
 
 # Exudyn output variable -> (component names, unit); vectors are global x, y, z unless "Local"
 VARIABLES = {
@@ -66,6 +62,7 @@ def main():
         x = f[xname][:]
         variables = sensor_variables(f)
         names = sorted(f["sensors"].keys())
+        plt = load_matplotlib()  # after the input was read: bad files fail fast
         fig, axes = plt.subplots(len(names), 1, figsize=(7, 2.6 * len(names)), squeeze=False, sharex=True)
         for ax, name in zip(axes[:, 0], names):
             v = f["sensors/" + name][:]

@@ -3,6 +3,9 @@
 
 #include <csignal>
 #include <cstdlib>
+#include <string>
+
+#include <unistd.h>
 
 #include "app/command_line.hpp"
 #include "app/interrupt.hpp"
@@ -25,6 +28,14 @@ void quickSingletonStart() {
   setenv("OMPI_MCA_ess_singleton_isolated", "1", 0);
   setenv("OMPI_MCA_pml", "ob1", 0);
   setenv("OMPI_MCA_btl", "self,vader", 0);
+  // An isolated singleton's session directory is always <tmp>/ompi.<host>.<uid>/jf.0/1, made at
+  // MPI_Init and removed at exit: two runs started side by side (a parameter sweep, xargs -P, a test
+  // running three at a time) race on it, and the loser aborts in MPI_Init ("A call to mkdir was
+  // unable to create the desired directory: .../jf.0/1"; seen under load). One directory per process,
+  // removed by Open MPI at exit as before.
+  const char* tmp = std::getenv("TMPDIR");
+  const std::string session = std::string(tmp && *tmp ? tmp : "/tmp") + "/ompi.sinew." + std::to_string(getpid());
+  setenv("OMPI_MCA_orte_jobfam_session_dir", session.c_str(), 0);
 }
 }  // namespace
 

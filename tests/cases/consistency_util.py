@@ -15,7 +15,7 @@ def run(name, path, np_, args=(), timeout=400):
     for stale in (out, out + ".part"):
         if os.path.exists(stale):
             os.remove(stale)
-    cmd = [st.MPIEXEC, "-n", str(np_), st.BIN, path, "-o", out] + list(args)
+    cmd = st.launcher(np_) + [path, "-o", out] + list(args)
     try:
         p = subprocess.run(cmd, env=st.ENV, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, timeout=timeout)
     except subprocess.TimeoutExpired:

@@ -44,7 +44,7 @@ def run(name, np_, args, out=True, env=None):
     os.makedirs(cwd, exist_ok=True)
     for stale in os.listdir(cwd):
         os.remove(os.path.join(cwd, stale))
-    cmd = [st.MPIEXEC, "-n", str(np_), st.BIN, SCENE_PATH] + (["-o", os.path.join(cwd, "out.h5")] if out else []) + \
+    cmd = st.launcher(np_) + [SCENE_PATH] + (["-o", os.path.join(cwd, "out.h5")] if out else []) + \
         list(args)
     try:
         p = subprocess.run(cmd, env=dict(st.ENV, **(env or {})), cwd=cwd, stdout=subprocess.PIPE,

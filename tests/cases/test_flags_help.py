@@ -65,7 +65,7 @@ st.check(not outside, f"options read outside src/settings/ in {', '.join(sorted(
 
 def run(np_, args):
     try:
-        p = subprocess.run([st.MPIEXEC, "-n", str(np_), st.BIN] + args, env=st.ENV, cwd=st.WORK, stdout=subprocess.PIPE,
+        p = subprocess.run(st.launcher(np_) + args, env=st.ENV, cwd=st.WORK, stdout=subprocess.PIPE,
                            stderr=subprocess.STDOUT, text=True, timeout=TIMEOUT)
     except subprocess.TimeoutExpired:
         st.fail(f"sinew {' '.join(args)} on {np_} rank(s): no exit within {TIMEOUT} s")

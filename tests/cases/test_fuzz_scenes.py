@@ -45,7 +45,7 @@ def run(job):
     for stale in (out, out + ".part"):
         if os.path.exists(stale):
             os.remove(stale)
-    cmd = [st.MPIEXEC, "-n", str(np_), st.BIN, path, "-o", out, "-silent", "true"] + flags
+    cmd = st.launcher(np_) + [path, "-o", out, "-silent", "true"] + flags
     try:
         p = subprocess.run(cmd, env=st.ENV, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, timeout=TIMEOUT)
         return job, p.returncode, p.stdout.decode("utf-8", "replace"), out

@@ -84,7 +84,7 @@ def run(name, text, np_, args=()):
     for stale in (out, out + ".part"):
         if os.path.exists(stale):
             os.remove(stale)
-    cmd = [st.MPIEXEC, "-n", str(np_), st.BIN, path, "-o", out] + list(args)
+    cmd = st.launcher(np_) + [path, "-o", out] + list(args)
     t0 = time.time()
     try:
         p = subprocess.run(cmd, env=st.ENV, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, timeout=TIMEOUT)

@@ -95,7 +95,7 @@ for name, text, want, avoid in CASES:
         for stale in (out, out + ".part"):
             if os.path.exists(stale):
                 os.remove(stale)
-        cmd = [st.MPIEXEC, "-n", str(np_), st.BIN, path, "-o", out]
+        cmd = st.launcher(np_) + [path, "-o", out]
         try:
             p = subprocess.run(cmd, env=st.ENV, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, timeout=120)
             log, code = p.stdout.decode("utf-8", "replace"), p.returncode

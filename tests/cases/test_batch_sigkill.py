@@ -19,10 +19,11 @@ withSteps = 0
 for i in range(KILLS):
     remove_outputs(out)
     run = Run(CROSSHINGE, out, ["-loadsteps", "400", "-calcbuck", "false", "-calccompl", "false"])
-    # wait for the analysis to start, then kill at a random moment within the next second (tens of
-    # steps, each writing and committing: the kill lands at a random point of the step cycle)
+    # wait for the analysis to start, then kill at a random moment within the next 0.3 s (several
+    # steps, each writing and committing: the kill lands at a random point of the step cycle; a longer
+    # window only adds steps before the same kind of moment)
     run.wait_for_steps(1, timeout=120)
-    time.sleep(random.uniform(0.0, 1.0))
+    time.sleep(random.uniform(0.0, 0.3))
     printed = run.steps_printed()
     for pid in run.ranks():
         os.kill(pid, signal.SIGKILL)

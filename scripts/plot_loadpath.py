@@ -9,7 +9,8 @@ N is 1-based as in the scene file. A path-following result (opt.continuation: /p
 /path/critical_points) is drawn in segments: stable (no negative eigenvalue of the tangent) solid,
 unstable dashed and red; limit points are marked with triangles, bifurcation points with diamonds, and
 the counts are printed ("segments: stable S, unstable U; limit points L, bifurcation points B").
-The left axis is the load factor. When the scene (stored in the result file) ramps exactly one load,
+The left axis is the load factor; a time history (a dynamics result: /time) is drawn over time, time
+along the horizontal axis. When the scene (stored in the result file) ramps exactly one load,
 a `force` or a `moment` of one node, the right axis is that load itself: load factor x its
 component when it acts along one axis ("load F_y [N]"), else x its magnitude ("load |F| [N]"); the
 script prints what it used ("load axis: ..."). Needs python3-h5py and matplotlib (Agg, no display).
@@ -137,9 +138,15 @@ def main():
             # p0 is the unloaded state: start the path there when the first load factor is above zero.
             if step_name == "load_factor" and has_p0 and len(ys) and ys[0] > 0:
                 xs, ys = np.concatenate(([0.0], xs)), np.concatenate(([0.0], ys))
+            if step_name == "time":  # a time history: time along the horizontal axis
+                xs, ys = ys, xs
             ax.plot(xs, ys, "o-", ms=3, color=color, label=name)
-    ax.set_xlabel(f"{label} [m]")
-    ax.set_ylabel("load factor [-] (applied loads x factor)" if step_name == "load_factor" else "time [s]")
+    if step_name == "time" and neg is None:
+        ax.set_xlabel("time [s]")
+        ax.set_ylabel(f"{label} [m]")
+    else:
+        ax.set_xlabel(f"{label} [m]")
+        ax.set_ylabel("load factor [-] (applied loads x factor)" if step_name == "load_factor" else "time [s]")
     if step_name == "load_factor":
         load, why = ramped_load(scene)
         if load is None:

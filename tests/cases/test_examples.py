@@ -10,6 +10,8 @@ their closed form or published value:
   cantilever_step     first peak near 2 P L^3 / (3 E I) (sudden load), back to the start after T1
   parallel_guide_bode static gain L^3 / (24 E I), f1 = sqrt(k / (m + 13/35 m_leaves)) / (2 pi)
   parallel_guide_sensors  held state L^3 / (24 E I) F, mean foot moment F L / 4, a = -(2 pi f1)^2 u
+  membrane_drum       f11 = sqrt(n0 / m) sqrt(2) / (2 L) of the square membrane, the centre swinging
+                      about the static 0.07367 p L^2 / n0 (series solution of n0 lap w = -p)
 The older scenes carry their reference values in their comments (Exudyn's tip of A1 and A5, the C1
 and C2 form-finding values; test_ancf_* and test_ff_reference check those models); here they are run. Long scenes get reduced flags
 (FLAGS) that keep what is checked.
@@ -148,4 +150,13 @@ if "parallel_guide_sensors" in results:
              what="parallel_guide_sensors: f1 [Hz] from -a/u of the sensors (measured -8.4e-4)")
 
 print("  timings [s]: " + ", ".join(f"{n} {s:.1f}" for n, s in timings.items()) + f"; total {sum(timings.values()):.1f}")
+if "membrane_drum" in results:
+    with st.h5(results["membrane_drum"]) as f:
+        tt, w, f1 = f["time"][:], f["node/p"][:, 40, 2] - f["node/p0"][40, 2], f["freq"][-1, 0]
+    n0, mass, L, p = 1000.0, 1.0, 1.0, 10.0
+    f11 = math.sqrt(n0 / mass) * math.sqrt(2) / (2 * L)
+    st.close(f1, f11, rtol=1e-2, what="membrane_drum: f1 [Hz] vs sqrt(n0/m) sqrt(2) / 2L (measured +6.5e-3, the 8 x 8 mesh)")
+    st.close(np.mean(w[tt <= 1 / f11]), 0.0736713 * p * L ** 2 / n0, rtol=2e-3,
+             what="membrane_drum: centre's mean over the first period vs the static 0.07367 p L^2 / n0 (measured -5.7e-4)")
+
 st.done()

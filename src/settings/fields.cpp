@@ -70,6 +70,7 @@ const std::vector<Field<EigenSettings>>& eigenFields() {
       {"freq_shift_rel", realIn(0, 1, true, false), &flag_groups::modal, "1e-8", "shift-and-invert target -freq_shift_rel * min diag(K)/diag(M)", &EigenSettings::freqShiftRel},
       {"eps_nev", integerAtLeast(1), &flag_groups::modal, "nfreq", "(SLEPc) frequencies computed; overrides opt.nfreq", std::monostate{}},
       {"eps_target", anyReal(), &flag_groups::modal, "automatic", "(SLEPc) shift-and-invert target; of the frequency analysis, replaces -freq_shift_rel", GivenRef<EigenSettings>{&EigenSettings::userTarget}},
+      {"eigen_dense_max_unknowns", integerAtLeast(0), &flag_groups::modal, "120", "dense eigensolver up to this many unknowns; frequencies and buckling by LAPACK: the same shift-and-invert problem as SLEPc's, gathered and solved dense on rank 0 (0: always SLEPc; docs/performance.md)", &EigenSettings::denseMaxUnknowns},
       {"buck_eps_nev", integerAtLeast(1), &flag_groups::modal, "automatic", "(SLEPc) buckling multipliers computed (default: grown until nbuck positive ones)", GivenRef<EigenSettings>{&EigenSettings::userBucklingNev}},
   };
   return fields;

@@ -82,6 +82,7 @@ struct EigenSettings {
   double freqShiftRel = 1e-8;   ///< -freq_shift_rel
   bool userTarget = false;      ///< -eps_target given: SLEPc's target (EPSSetFromOptions) replaces the automatic one
   bool userBucklingNev = false;  ///< -buck_eps_nev given: SLEPc's count, not grown until nbuck positive ones
+  int denseMaxUnknowns = 120;   ///< -eigen_dense_max_unknowns: dense LAPACK solve up to this many unknowns (0: always SLEPc)
   bool operator==(const EigenSettings&) const = default;
 };
 

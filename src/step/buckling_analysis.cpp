@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "parallel/collective_error.hpp"
+#include "step/dense_gather.hpp"
 #include "step/modal_analysis.hpp"
 
 namespace sinew {
@@ -42,6 +43,7 @@ BucklingAnalysis::BucklingAnalysis(Assembler& assembler, int nbuck, const EigenS
   }
   SinewCallThrow(comm, EPSSetFromOptions(eps_));
   userNev_ = settings.userBucklingNev;
+  dense_ = asm_.mesh().numGlobalUnknowns <= settings.denseMaxUnknowns;
 }
 
 BucklingAnalysis::~BucklingAnalysis() {
@@ -80,6 +82,25 @@ PetscErrorCode BucklingAnalysis::solve(int nev, int* nconv) {
   PetscInt n;
   PetscCall(EPSGetConverged(eps_, &n));
   *nconv = static_cast<int>(n);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+// Every pair of the pencil SLEPc solves (K_m or its element-wise operator, and -K_g), dense on rank 0
+// about the target, nearest first; to every rank.
+PetscErrorCode BucklingAnalysis::solveDense(DenseEigenpairs& pairs) {
+  PetscFunctionBeginUser;
+  const DistributedMesh& mesh = asm_.mesh();
+  std::vector<double> A, B;
+  if (elementwise_) PetscCall(operatorToDense(Kop_, A));
+  else PetscCall(gatherDense(Km_, A));
+  PetscCall(gatherDense(Kg_, B));
+  PetscScalar target;
+  PetscCall(EPSGetTarget(eps_, &target));
+  const int n = static_cast<int>(mesh.numGlobalUnknowns);
+  PetscCall(PetscLogEventBegin(SinewEvents::get().eigen, 0, 0, 0, 0));
+  if (mesh.rank == 0) pairs = generalPencil(A, B, n, target, n);
+  PetscCall(broadcastPairs(mesh.comm, pairs));
+  PetscCall(PetscLogEventEnd(SinewEvents::get().eigen, 0, 0, 0, 0));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -136,18 +157,34 @@ PetscErrorCode BucklingAnalysis::atStep(Vec U, const LoadState& ls, ResultFile& 
     std::vector<Pair> positive;
     int nev = 2 * nbuck_ + 2, nconv = 0;
     EPSConvergedReason reason = EPS_CONVERGED_ITERATING;
+    DenseEigenpairs dense;
     for (int attempt = 0; attempt < 3; ++attempt) {
       for (auto& p : positive) PetscCall(VecDestroy(&p.x));
       positive.clear();
-      PetscCall(solve(std::min<int>(nev, static_cast<int>(N)), &nconv));
-      PetscCall(EPSGetConvergedReason(eps_, &reason));
+      if (dense_) {  // every pair at once; -buck_eps_nev: SLEPc's count of the nearest
+        PetscCall(solveDense(dense));
+        PetscInt userNev, ncv, mpd;
+        PetscCall(EPSGetDimensions(eps_, &userNev, &ncv, &mpd));
+        nconv = userNev_ ? std::min<int>(dense.count(), static_cast<int>(userNev)) : dense.count();
+        reason = dense.singular ? EPS_DIVERGED_BREAKDOWN : EPS_CONVERGED_TOL;
+      } else {
+        PetscCall(solve(std::min<int>(nev, static_cast<int>(N)), &nconv));
+        PetscCall(EPSGetConvergedReason(eps_, &reason));
+      }
       for (int i = 0; i < nconv; ++i) {
         PetscScalar kr, ki;
         Vec x;
-        PetscCall(MatCreateVecs(Km_, &x, nullptr));
-        PetscCall(EPSGetEigenpair(eps_, i, &kr, &ki, x, nullptr));
         PetscReal est = 0;
-        PetscCall(EPSGetErrorEstimate(eps_, i, &est));
+        PetscCall(MatCreateVecs(Km_, &x, nullptr));
+        if (dense_) {
+          kr = dense.re[i];
+          ki = dense.im[i];
+          est = dense.estimate[i];
+          PetscCall(pairVector(dense, i, x));
+        } else {
+          PetscCall(EPSGetEigenpair(eps_, i, &kr, &ki, x, nullptr));
+          PetscCall(EPSGetErrorEstimate(eps_, i, &est));
+        }
         double back = 0;
         PetscCall(refine(x, &kr, &back));
         // mu ||K_g|| > 1e4 ||K_m||: a null direction of K_g (infinite multiplier) computed at round-off level;
@@ -157,14 +194,14 @@ PetscErrorCode BucklingAnalysis::atStep(Vec U, const LoadState& ls, ResultFile& 
         else PetscCall(VecDestroy(&x));
       }
       // enough positive multipliers, or the nearest ones are all negative and the spectrum is exhausted
-      if (static_cast<int>(positive.size()) >= nbuck_ || userNev_ || nev >= N) break;
+      if (static_cast<int>(positive.size()) >= nbuck_ || userNev_ || nev >= N || dense_) break;
       nev *= 4;
     }
     std::sort(positive.begin(), positive.end(), [](const Pair& a, const Pair& b) { return a.mu < b.mu; });
     PetscReal tol;
     PetscInt maxit;
     PetscCall(EPSGetTolerances(eps_, &tol, &maxit));
-    tol_ = tol;
+    tol_ = tol > 0 ? tol : SLEPC_DEFAULT_TOL;  // set by EPSSetUp, which the dense path skips
     double worst = 0;
     for (int j = 0; j < nbuck_ && j < static_cast<int>(positive.size()); ++j) {
       mu_[j] = positive[j].mu;
@@ -181,12 +218,16 @@ PetscErrorCode BucklingAnalysis::atStep(Vec U, const LoadState& ls, ResultFile& 
                             "-buck_eps_tol %.1e (/buck_error_estimate, /buck_backward_error)\n",
                             step_, worst, tol_));
     PetscCall(PetscInfo(nullptr, "buckling step %d: %d converged (%s), %zu positive multipliers kept\n", step_, nconv,
-                        EPSConvergedReasons[reason], shapes.size()));
+                        dense_ ? "dense LAPACK" : EPSConvergedReasons[reason], shapes.size()));
     if (reason < 0 && shapes.empty()) {
       *ok = false;
       std::ostringstream msg;
-      msg << "buckling at step " << step_ << ": SLEPc did not converge (" << EPSConvergedReasons[reason]
-          << "); try -buck_eps_max_it, -buck_eps_ncv or -buck_eps_tol";
+      if (dense_)
+        msg << "buckling at step " << step_ << ": the dense eigensolver failed (K_m singular at the target); "
+            << "try -eigen_dense_max_unknowns 0 (SLEPc) or -buck_eps_target";
+      else
+        msg << "buckling at step " << step_ << ": SLEPc did not converge (" << EPSConvergedReasons[reason]
+            << "); try -buck_eps_max_it, -buck_eps_ncv or -buck_eps_tol";
       failure_ = msg.str();
     }
   }
@@ -222,6 +263,9 @@ std::string BucklingAnalysis::summary() const {
   }
   s << "\n";
   if (anyInf) s << "   inf: no (further) positive multiplier: no compressive stress state that the current load can buckle\n";
+  if (dense_)
+    s << "   eigensolver: dense LAPACK for " << asm_.mesh().numGlobalUnknowns
+      << " unknowns (up to -eigen_dense_max_unknowns; 0: SLEPc)\n";
   return s.str();
 }
 

@@ -3,7 +3,9 @@
 // included) and K_g the stress-dependent part (multiplier terms included), from
 // Assembler::splitTangent. SLEPc GNHEP, shift-and-invert about 0 with a MUMPS LU; the nearest
 // eigenvalues are computed and the smallest positive real ones kept (more are computed when the
-// nearest ones are negative). Options prefix "buck_": -buck_eps_*, -buck_st_*.
+// nearest ones are negative). Options prefix "buck_": -buck_eps_*, -buck_st_*. Models up to
+// -eigen_dense_max_unknowns solve the same shift-and-invert problem dense (LAPACK, every pair at
+// once; step/dense_eigen.hpp); the pairs then go through the same selection and output.
 #pragma once
 #include <slepceps.h>
 
@@ -12,6 +14,7 @@
 
 #include "assembly/assembler.hpp"
 #include "settings/settings.hpp"
+#include "step/dense_eigen.hpp"
 #include "step/step_analysis.hpp"
 
 namespace sinew {
@@ -34,8 +37,10 @@ class BucklingAnalysis : public StepAnalysis {
 
  private:
   PetscErrorCode solve(int nev, int* nconv);
+  PetscErrorCode solveDense(DenseEigenpairs& pairs);
   static PetscErrorCode materialMult(Mat A, Vec x, Vec y);
   PetscErrorCode refine(Vec x, PetscScalar* mu, double* backward);
+  bool dense_ = false;        // -eigen_dense_max_unknowns: LAPACK on rank 0 instead of SLEPc
   bool elementwise_ = false;  // -eigen_operator: K_m x = (element-wise K) x - K_g x
   Mat Kop_ = nullptr;
   std::vector<double> estimate_, backward_;

@@ -1,5 +1,6 @@
 #include "parallel/collective_error.hpp"
 #include "solvers/solver_defaults.hpp"
+#include "step/dense_gather.hpp"
 #include "step/modal_analysis.hpp"
 
 #include <algorithm>
@@ -132,6 +133,7 @@ ModalAnalysis::ModalAnalysis(Assembler& assembler, int nfreq, bool writeResults,
   }
   userTarget_ = settings.userTarget;
   shiftRel_ = settings.freqShiftRel;
+  dense_ = N <= settings.denseMaxUnknowns;
   modes_.resize(nev_, nullptr);
   for (Vec& v : modes_) SinewCallThrow(comm, MatCreateVecs(K_, &v, nullptr));
 }
@@ -243,6 +245,33 @@ PetscErrorCode ModalAnalysis::clampToFiniteModes() {
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+// The pencil SLEPc solves, gathered to rank 0 and solved dense about the target; the pairs (nearest
+// first, as SLEPc orders them) go to every rank. With the element-wise operator, the dense solve of
+// the assembled K gives a basis of the nearest modes and a Rayleigh-Ritz step with the element-wise
+// products in that basis the pairs (a dense factorization perturbs soft modes by eps ||K||, as the
+// assembled products do; the element-wise products do not).
+PetscErrorCode ModalAnalysis::solveDense(double target, DenseEigenpairs& pairs) {
+  PetscFunctionBeginUser;
+  const DistributedMesh& mesh = asm_.mesh();
+  const int n = static_cast<int>(mesh.numGlobalUnknowns);
+  std::vector<double> K, M;
+  PetscCall(gatherDense(K_, K));
+  PetscCall(gatherDense(M_, M));
+  // the Ritz basis: twice the pairs looked at (a wider one adds stiff modes, whose reduced
+  // eigenproblem's round-off, eps lambda_max, would reach the soft ones)
+  if (mesh.rank == 0) pairs = symmetricPencil(K, M, n, target, elementwise_ ? 2 * (nev_ + 8) : nev_ + 8);
+  PetscCall(broadcastPairs(mesh.comm, pairs));
+  if (elementwise_ && !pairs.singular) {
+    std::vector<double> KX;
+    PetscCall(operatorProducts(Kop_, pairs, KX));
+    PetscReal normK;
+    PetscCall(MatNorm(K_, NORM_INFINITY, &normK));
+    if (mesh.rank == 0) pairs = ritzPairs(pairs.vectors, KX, M, n, pairs.wanted(), target, normK, nev_ + 8);
+    PetscCall(broadcastPairs(mesh.comm, pairs));
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode ModalAnalysis::atStep(Vec U, const LoadState& ls, ResultFile& file, bool* ok) {
   PetscFunctionBeginUser;
   ++step_;
@@ -252,7 +281,7 @@ PetscErrorCode ModalAnalysis::atStep(Vec U, const LoadState& ls, ResultFile& fil
   PetscCall(shiftTarget(&sigma, &scale));
   if (step_ == 1) PetscCall(clampToFiniteModes());
   if (!userTarget_) PetscCall(EPSSetTarget(eps_, sigma));
-  if (elementwise_) {
+  if (elementwise_ && !dense_) {
     PetscScalar target;
     PetscCall(EPSGetTarget(eps_, &target));
     PetscCall(MatCopy(K_, P_, SAME_NONZERO_PATTERN));
@@ -266,21 +295,29 @@ PetscErrorCode ModalAnalysis::atStep(Vec U, const LoadState& ls, ResultFile& fil
   }
 
   PetscCall(PetscLogEventBegin(SinewEvents::get().eigen, 0, 0, 0, 0));
-  PetscCall(EPSSolve(eps_));
-  PetscCall(PetscLogEventEnd(SinewEvents::get().eigen, 0, 0, 0, 0));
+  DenseEigenpairs dense;
   PetscInt nconv;
-  PetscCall(EPSGetConverged(eps_, &nconv));
+  EPSConvergedReason reason = EPS_CONVERGED_TOL;
+  if (dense_) {
+    PetscScalar target;
+    PetscCall(EPSGetTarget(eps_, &target));
+    PetscCall(solveDense(target, dense));
+    nconv = dense.count();
+  } else {
+    PetscCall(EPSSolve(eps_));
+    PetscCall(EPSGetConverged(eps_, &nconv));
+    PetscCall(EPSGetConvergedReason(eps_, &reason));
+  }
+  PetscCall(PetscLogEventEnd(SinewEvents::get().eigen, 0, 0, 0, 0));
   PetscReal tol;
   PetscInt maxit;
   PetscCall(EPSGetTolerances(eps_, &tol, &maxit));
-  tol_ = tol;
+  tol_ = tol > 0 ? tol : SLEPC_DEFAULT_TOL;  // set by EPSSetUp, which the dense path skips
   PetscReal normK, normM;  // scales of the backward error
   PetscCall(MatNorm(K_, NORM_INFINITY, &normK));
   PetscCall(MatNorm(M_, NORM_INFINITY, &normM));
   Vec r;
   PetscCall(MatCreateVecs(K_, &r, nullptr));
-  EPSConvergedReason reason;
-  PetscCall(EPSGetConvergedReason(eps_, &reason));
 
   // eigenpairs: drop infinite ones (zero mass norm: constraint directions), M-normalize the rest
   PetscReal mmax;
@@ -299,7 +336,12 @@ PetscErrorCode ModalAnalysis::atStep(Vec U, const LoadState& ls, ResultFile& fil
     PetscScalar kr, ki;
     Vec x;
     PetscCall(MatCreateVecs(K_, &x, nullptr));
-    PetscCall(EPSGetEigenpair(eps_, i, &kr, &ki, x, nullptr));
+    if (dense_) {
+      kr = dense.re[i];
+      PetscCall(pairVector(dense, i, x));
+    } else {
+      PetscCall(EPSGetEigenpair(eps_, i, &kr, &ki, x, nullptr));
+    }
     PetscReal xn;
     PetscCall(VecNormalize(x, &xn));
     PetscCall(MatMult(M_, x, Mx));
@@ -311,7 +353,8 @@ PetscErrorCode ModalAnalysis::atStep(Vec U, const LoadState& ls, ResultFile& fil
       continue;
     }
     PetscReal estimate = 0;
-    PetscCall(EPSGetErrorEstimate(eps_, i, &estimate));
+    if (dense_) estimate = dense.estimate[i];
+    else PetscCall(EPSGetErrorEstimate(eps_, i, &estimate));
     PetscCall(VecScale(x, 1.0 / std::sqrt(xMx)));
     PetscCall(MatMult(M_, x, Mx));
     if (elementwise_) {  // Rayleigh quotient with the accurate operator (error quadratic in the mode's)
@@ -349,7 +392,7 @@ PetscErrorCode ModalAnalysis::atStep(Vec U, const LoadState& ls, ResultFile& fil
   }
   for (Vec& x : found) PetscCall(VecDestroy(&x));
   PetscCall(PetscInfo(nullptr, "step %d: target %g (scale %g), %d converged, reason %s\n", step_, userTarget_ ? 0.0 : sigma,
-                      scale, static_cast<int>(nconv), EPSConvergedReasons[reason]));
+                      scale, static_cast<int>(nconv), dense_ ? "dense LAPACK" : EPSConvergedReasons[reason]));
   if (elementwise_) {
     const long rf = asm_.rigidFreeElements();
     PetscCall(PetscInfo(nullptr, "step %d: %ld elements (all ranks; %ld local) apply K rigid-motion free\n", step_, rf, static_cast<long>(mesh.elements.size())));
@@ -358,9 +401,14 @@ PetscErrorCode ModalAnalysis::atStep(Vec U, const LoadState& ls, ResultFile& fil
   if (static_cast<int>(pairs.size()) < nev_) {
     *ok = false;
     std::ostringstream msg;
-    msg << "natural frequencies at step " << step_ << ": SLEPc converged " << pairs.size() << " of " << nev_
-        << " eigenpairs (" << EPSConvergedReasons[reason]
-        << "); try -eps_max_it, -eps_ncv, a looser -eps_tol, or fewer frequencies (-nfreq)";
+    msg << "natural frequencies at step " << step_ << ": ";
+    if (dense_)
+      msg << "the dense eigensolver found " << pairs.size() << " of " << nev_ << " eigenpairs"
+          << (dense.singular ? " (K - sigma M is singular at the target)" : "")
+          << "; try -eigen_dense_max_unknowns 0 (SLEPc), -eps_target, or fewer frequencies (-nfreq)";
+    else
+      msg << "SLEPc converged " << pairs.size() << " of " << nev_ << " eigenpairs (" << EPSConvergedReasons[reason]
+          << "); try -eps_max_it, -eps_ncv, a looser -eps_tol, or fewer frequencies (-nfreq)";
     failure_ = msg.str();
   }
   if (worst > tol_) {
@@ -405,6 +453,9 @@ std::string ModalAnalysis::summary() const {
   s << "\n";
   if (zeros) s << "   " << zeros << " rigid-body mode(s) (omega^2 at round-off level, reported as 0)\n";
   if (negative) s << "   " << negative << " negative omega^2 reported as -sqrt(-omega^2)/(2 pi): the state is unstable\n";
+  if (dense_)
+    s << "   eigensolver: dense LAPACK for " << asm_.mesh().numGlobalUnknowns
+      << " unknowns (up to -eigen_dense_max_unknowns; 0: SLEPc)\n";
   if (asymmetry_ > 1e-6) {
     std::snprintf(buf, sizeof buf, "%.2e", asymmetry_);
     s << "   tangent asymmetry ||K - K^T||/||K|| up to " << buf << " (non-conservative loads): symmetric part used\n";

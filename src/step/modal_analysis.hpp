@@ -3,6 +3,8 @@
 // (GHEP, shift-and-invert, MUMPS LU). Supports are eliminated; rigid deformation modes are
 // multipliers with zero mass rows (infinite eigenvalues, which shift-and-invert maps to 0 and
 // purification keeps out). Options prefix "": every -eps_* / -st_* flag acts on this solver.
+// Models up to -eigen_dense_max_unknowns solve the same shift-and-invert problem dense (LAPACK,
+// step/dense_eigen.hpp) instead; the pairs then go through the same selection and output.
 #pragma once
 #include <slepceps.h>
 
@@ -11,6 +13,7 @@
 
 #include "assembly/assembler.hpp"
 #include "settings/settings.hpp"
+#include "step/dense_eigen.hpp"
 #include "step/step_analysis.hpp"
 
 namespace sinew {
@@ -54,6 +57,7 @@ class ModalAnalysis : public StepAnalysis {
   PetscErrorCode assemble(Vec U, const LoadState& ls);
   PetscErrorCode shiftTarget(double* sigma, double* scale);
   PetscErrorCode clampToFiniteModes();
+  PetscErrorCode solveDense(double target, DenseEigenpairs& pairs);
   static PetscErrorCode stiffnessMult(Mat A, Vec x, Vec y);
 
   Assembler& asm_;
@@ -64,6 +68,7 @@ class ModalAnalysis : public StepAnalysis {
   double shiftRel_ = 1e-8;
   Mat K_ = nullptr, Kt_ = nullptr, M_ = nullptr;
   Mat Kskew_ = nullptr;  ///< (K^T - K)/2 of the assembled tangent, added to the element-wise products (or null)
+  bool dense_ = false;         // -eigen_dense_max_unknowns: LAPACK on rank 0 instead of SLEPc
   bool elementwise_ = false;   // -eigen_operator: K applied element by element (rigid-motion free)
   Mat Kop_ = nullptr;          // shell: Assembler::applyTangent(x, y, true)
   Mat P_ = nullptr;            // assembled K - sigma M: the preconditioner (LU) of the inner GMRES

@@ -1,0 +1,346 @@
+#include "step/dense_eigen.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+
+// LAPACK / BLAS (Fortran interfaces; the library linked is Debian's liblapack.so.3 alternative)
+extern "C" {
+void dsyevd_(const char* jobz, const char* uplo, const int* n, double* a, const int* lda, double* w, double* work,
+             const int* lwork, int* iwork, const int* liwork, int* info);
+void dgetrf_(const int* m, const int* n, double* a, const int* lda, int* ipiv, int* info);
+void dgetrs_(const char* trans, const int* n, const int* nrhs, const double* a, const int* lda, const int* ipiv,
+             double* b, const int* ldb, int* info);
+void dgeev_(const char* jobvl, const char* jobvr, const int* n, double* a, const int* lda, double* wr, double* wi,
+            double* vl, const int* ldvl, double* vr, const int* ldvr, double* work, const int* lwork, int* info);
+void dggev_(const char* jobvl, const char* jobvr, const int* n, double* a, const int* lda, double* b, const int* ldb,
+            double* alphar, double* alphai, double* beta, double* vl, const int* ldvl, double* vr, const int* ldvr,
+            double* work, const int* lwork, int* info);
+void dsygvd_(const int* itype, const char* jobz, const char* uplo, const int* n, double* a, const int* lda, double* b,
+             const int* ldb, double* w, double* work, const int* lwork, int* iwork, const int* liwork, int* info);
+void dgemm_(const char* ta, const char* tb, const int* m, const int* n, const int* k, const double* alpha,
+            const double* a, const int* lda, const double* b, const int* ldb, const double* beta, double* c,
+            const int* ldc);
+}
+
+namespace sinew {
+
+namespace {
+
+constexpr double kEps = std::numeric_limits<double>::epsilon();
+
+// C (m x n) = op(A) op(B), column-major
+void gemm(char ta, char tb, int m, int n, int k, const double* a, int lda, const double* b, int ldb, double* c) {
+  const double one = 1.0, zero = 0.0;
+  if (m > 0 && n > 0) dgemm_(&ta, &tb, &m, &n, &k, &one, a, &lda, b, &ldb, &zero, c, &m);
+}
+
+// Eigen-decomposition of the symmetric a (n x n, overwritten by the eigenvectors); ascending w.
+bool symmetricEigen(std::vector<double>& a, int n, std::vector<double>& w) {
+  w.assign(n, 0.0);
+  if (n == 0) return true;
+  int info = 0, lwork = -1, liwork = -1, iq = 0;
+  double wq = 0;
+  dsyevd_("V", "L", &n, a.data(), &n, w.data(), &wq, &lwork, &iq, &liwork, &info);
+  lwork = static_cast<int>(wq);
+  liwork = iq;
+  std::vector<double> work(std::max(lwork, 1));
+  std::vector<int> iwork(std::max(liwork, 1));
+  dsyevd_("V", "L", &n, a.data(), &n, w.data(), work.data(), &lwork, iwork.data(), &liwork, &info);
+  return info == 0;
+}
+
+// Generalized symmetric-definite H z = lambda G z (G positive definite; H overwritten by Z, G by its
+// Cholesky factor); ascending w.
+bool symmetricDefiniteEigen(std::vector<double>& H, std::vector<double>& G, int n, std::vector<double>& w) {
+  w.assign(n, 0.0);
+  if (n == 0) return true;
+  int info = 0, lwork = -1, liwork = -1, iq = 0, itype = 1;
+  double wq = 0;
+  dsygvd_(&itype, "V", "L", &n, H.data(), &n, G.data(), &n, w.data(), &wq, &lwork, &iq, &liwork, &info);
+  lwork = static_cast<int>(wq);
+  liwork = iq;
+  std::vector<double> work(std::max(lwork, 1));
+  std::vector<int> iwork(std::max(liwork, 1));
+  dsygvd_(&itype, "V", "L", &n, H.data(), &n, G.data(), &n, w.data(), work.data(), &lwork, iwork.data(), &liwork, &info);
+  return info == 0;
+}
+
+double normInf(const std::vector<double>& A, int n) {
+  double m = 0;
+  for (int i = 0; i < n; ++i) {
+    double r = 0;
+    for (int j = 0; j < n; ++j) r += std::abs(A[static_cast<size_t>(j) * n + i]);
+    m = std::max(m, r);
+  }
+  return m;
+}
+
+// Normwise backward error ||A x - lambda B x|| / ((||A|| + |lambda| ||B||) ||x||) of a complex pair
+// (xr + i xi, lr + i li), given ax = A x and bx = B x (real and imaginary parts).
+double backwardError(const std::vector<double>& axr, const std::vector<double>& axi, const std::vector<double>& bxr,
+                     const std::vector<double>& bxi, const double* xr, const double* xi, double lr, double li,
+                     double normA, double normB) {
+  double rr = 0, xx = 0;
+  for (size_t i = 0; i < axr.size(); ++i) {
+    const double a = axr[i] - (lr * bxr[i] - li * bxi[i]), b = axi[i] - (lr * bxi[i] + li * bxr[i]);
+    rr += a * a + b * b;
+    xx += xr[i] * xr[i] + (xi ? xi[i] * xi[i] : 0.0);
+  }
+  const double scale = (normA + std::hypot(lr, li) * normB) * std::sqrt(xx);
+  return scale > 0 ? std::sqrt(rr) / scale : 0.0;
+}
+
+// LU of A - sigma B in place; false when singular
+bool shiftedLU(const std::vector<double>& A, const std::vector<double>& B, int n, double sigma,
+               std::vector<double>& lu, std::vector<int>& piv) {
+  lu.resize(static_cast<size_t>(n) * n);
+  for (size_t i = 0; i < lu.size(); ++i) lu[i] = A[i] - sigma * B[i];
+  piv.assign(n, 0);
+  int info = 0;
+  if (n > 0) dgetrf_(&n, &n, lu.data(), &n, piv.data(), &info);
+  return info == 0;
+}
+
+void luSolve(const std::vector<double>& lu, const std::vector<int>& piv, int n, int nrhs, double* b) {
+  int info = 0;
+  if (n > 0 && nrhs > 0) dgetrs_("N", &n, &nrhs, lu.data(), &n, piv.data(), b, &n, &info);
+}
+
+// Symmetric equilibration of a pencil: D with d_i = 1/sqrt(max_j |A_ij|) (rows of translations,
+// rotations and multipliers differ by orders of magnitude in their units), A <- D A D, B <- D B D;
+// the eigenvalues are unchanged, x = D x~.
+std::vector<double> equilibrate(std::vector<double>& A, std::vector<double>& B, int n) {
+  std::vector<double> d(n, 1.0);
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) d[i] = j == 0 ? std::abs(A[i]) : std::max(d[i], std::abs(A[static_cast<size_t>(j) * n + i]));
+  for (double& v : d) v = v > 0 ? 1.0 / std::sqrt(v) : 1.0;
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const size_t ij = static_cast<size_t>(j) * n + i;
+      A[ij] *= d[i] * d[j];
+      B[ij] *= d[i] * d[j];
+    }
+  return d;
+}
+
+}  // namespace
+
+void fixSign(double* x, int n) {
+  int imax = 0;
+  for (int i = 1; i < n; ++i)
+    if (std::abs(x[i]) > (1.0 + 1e-8) * std::abs(x[imax])) imax = i;
+  if (n > 0 && x[imax] < 0)
+    for (int i = 0; i < n; ++i) x[i] = -x[i];
+}
+
+DenseEigenpairs symmetricPencil(const std::vector<double>& A0, const std::vector<double>& B0, int n, double sigma,
+                                int want) {
+  DenseEigenpairs out;
+  out.n = n;
+  std::vector<double> A(A0), B(B0);
+  const std::vector<double> D = equilibrate(A, B, n);
+  std::vector<double> lu;
+  std::vector<int> piv;
+  if (!shiftedLU(A, B, n, sigma, lu, piv)) {
+    out.singular = true;
+    return out;
+  }
+  // B = L L^T from B's eigenpairs above round-off
+  std::vector<double> Q(B), d;
+  if (!symmetricEigen(Q, n, d)) {
+    out.singular = true;
+    return out;
+  }
+  const double dmax = n > 0 ? std::max(0.0, d.back()) : 0.0;
+  std::vector<int> keep;
+  for (int j = 0; j < n; ++j)
+    if (d[j] > n * kEps * dmax) keep.push_back(j);
+  const int r = static_cast<int>(keep.size());
+  std::vector<double> L(static_cast<size_t>(n) * r);
+  for (int c = 0; c < r; ++c) {
+    const double s = std::sqrt(d[keep[c]]);
+    for (int i = 0; i < n; ++i) L[static_cast<size_t>(c) * n + i] = s * Q[static_cast<size_t>(keep[c]) * n + i];
+  }
+  // W = (A - sigma B)^-1 L, H = L^T W (symmetric up to round-off)
+  std::vector<double> W(L), H(static_cast<size_t>(r) * r);
+  luSolve(lu, piv, n, r, W.data());
+  gemm('T', 'N', r, r, n, L.data(), n, W.data(), n, H.data());
+  for (int i = 0; i < r; ++i)
+    for (int j = 0; j < i; ++j) {
+      const double h = 0.5 * (H[static_cast<size_t>(j) * r + i] + H[static_cast<size_t>(i) * r + j]);
+      H[static_cast<size_t>(j) * r + i] = H[static_cast<size_t>(i) * r + j] = h;
+    }
+  std::vector<double> theta;
+  if (!symmetricEigen(H, r, theta)) {
+    out.singular = true;
+    return out;
+  }
+  // finite eigenvalues (theta above round-off), nearest to sigma (largest |theta|) first
+  double tmax = 0;
+  for (double t : theta) tmax = std::max(tmax, std::abs(t));
+  std::vector<int> order;
+  for (int j = 0; j < r; ++j)
+    if (std::abs(theta[j]) > r * kEps * tmax) order.push_back(j);
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return std::abs(theta[a]) > std::abs(theta[b]); });
+  for (int j : order) out.re.push_back(sigma + 1.0 / theta[j]);
+  out.im.assign(out.re.size(), 0.0);
+  const int k = std::min<int>(want, out.count());
+  // x_j = W y_j / theta_j
+  std::vector<double> Y(static_cast<size_t>(r) * k);
+  for (int c = 0; c < k; ++c)
+    for (int i = 0; i < r; ++i)
+      Y[static_cast<size_t>(c) * r + i] = H[static_cast<size_t>(order[c]) * r + i] / theta[order[c]];
+  out.vectors.assign(static_cast<size_t>(n) * k, 0.0);
+  gemm('N', 'N', n, k, r, W.data(), n, Y.data(), r, out.vectors.data());
+  for (int c = 0; c < k; ++c) {
+    double* x = &out.vectors[static_cast<size_t>(c) * n];
+    for (int i = 0; i < n; ++i) x[i] *= D[i];
+    fixSign(x, n);
+  }
+  // estimate: the pair's backward error in the pencil (A, B), as the dense solver's accuracy figure
+  std::vector<double> AX(static_cast<size_t>(n) * k), BX(static_cast<size_t>(n) * k), zero(n, 0.0);
+  gemm('N', 'N', n, k, n, A0.data(), n, out.vectors.data(), n, AX.data());
+  gemm('N', 'N', n, k, n, B0.data(), n, out.vectors.data(), n, BX.data());
+  out.estimate.assign(k, 0.0);
+  const double nA = normInf(A0, n), nB = normInf(B0, n);
+  for (int c = 0; c < k; ++c) {
+    const size_t o = static_cast<size_t>(c) * n;
+    const std::vector<double> ax(AX.begin() + o, AX.begin() + o + n), bx(BX.begin() + o, BX.begin() + o + n);
+    // Rayleigh quotient x^T A x / x^T B x: sigma + 1/theta carries eps theta_max / theta of the rigid
+    // modes' huge theta (free-free structures); the quotient's error is quadratic in the vector's
+    const double xax = std::inner_product(ax.begin(), ax.end(), &out.vectors[o], 0.0);
+    const double xbx = std::inner_product(bx.begin(), bx.end(), &out.vectors[o], 0.0);
+    if (xbx > 0) out.re[c] = xax / xbx;
+    out.estimate[c] = backwardError(ax, zero, bx, zero, &out.vectors[o], nullptr, out.re[c], 0.0, nA, nB);
+  }
+  return out;
+}
+
+DenseEigenpairs ritzPairs(const std::vector<double>& X, const std::vector<double>& AX, const std::vector<double>& B,
+                          int n, int m, double sigma, double normA, int want) {
+  DenseEigenpairs out;
+  out.n = n;
+  // S = X^T A X (symmetrized), C = X^T B X
+  std::vector<double> S(static_cast<size_t>(m) * m), BX(static_cast<size_t>(n) * m), C(static_cast<size_t>(m) * m);
+  gemm('T', 'N', m, m, n, X.data(), n, AX.data(), n, S.data());
+  gemm('N', 'N', n, m, n, B.data(), n, X.data(), n, BX.data());
+  gemm('T', 'N', m, m, n, X.data(), n, BX.data(), n, C.data());
+  for (int i = 0; i < m; ++i)
+    for (int j = 0; j < i; ++j) {
+      const size_t ij = static_cast<size_t>(j) * m + i, ji = static_cast<size_t>(i) * m + j;
+      S[ij] = S[ji] = 0.5 * (S[ij] + S[ji]);
+      C[ij] = C[ji] = 0.5 * (C[ij] + C[ji]);
+    }
+  std::vector<double> lambda;
+  if (!symmetricDefiniteEigen(S, C, m, lambda)) {
+    out.singular = true;
+    return out;
+  }
+  std::vector<int> order(m);
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(),
+                   [&](int a, int b) { return std::abs(lambda[a] - sigma) < std::abs(lambda[b] - sigma); });
+  for (int j : order) out.re.push_back(lambda[j]);
+  out.im.assign(m, 0.0);
+  const int k = std::min(want, m);
+  std::vector<double> Z(static_cast<size_t>(m) * k);
+  for (int c = 0; c < k; ++c) std::copy_n(&S[static_cast<size_t>(order[c]) * m], m, &Z[static_cast<size_t>(c) * m]);
+  out.vectors.assign(static_cast<size_t>(n) * k, 0.0);
+  gemm('N', 'N', n, k, m, X.data(), n, Z.data(), m, out.vectors.data());
+  // estimate: backward error with A x = (A X) z, the accurate products combined
+  std::vector<double> AXZ(static_cast<size_t>(n) * k), BXZ(static_cast<size_t>(n) * k), zero(n, 0.0);
+  gemm('N', 'N', n, k, m, AX.data(), n, Z.data(), m, AXZ.data());
+  gemm('N', 'N', n, k, m, BX.data(), n, Z.data(), m, BXZ.data());
+  const double nB = normInf(B, n);
+  out.estimate.assign(k, 0.0);
+  for (int c = 0; c < k; ++c) {
+    const size_t o = static_cast<size_t>(c) * n;
+    const std::vector<double> ax(AXZ.begin() + o, AXZ.begin() + o + n), bx(BXZ.begin() + o, BXZ.begin() + o + n);
+    out.estimate[c] = backwardError(ax, zero, bx, zero, &out.vectors[o], nullptr, out.re[c], 0.0, normA, nB);
+    if (out.vectors[o + std::max_element(&out.vectors[o], &out.vectors[o] + n, [](double a, double b) {
+          return std::abs(a) < std::abs(b); }) - &out.vectors[o]] < 0)
+      for (int i = 0; i < n; ++i) out.vectors[o + i] = -out.vectors[o + i];
+  }
+  return out;
+}
+
+DenseEigenpairs generalPencil(const std::vector<double>& A0, const std::vector<double>& B0, int n, double sigma,
+                              int want) {
+  DenseEigenpairs out;
+  out.n = n;
+  std::vector<double> A(A0), B(B0);
+  const std::vector<double> D = equilibrate(A, B, n);
+  // QZ of the pencil (backward stable in A and B, where T = A^-1 B would carry cond(A) eps)
+  std::vector<double> ar(n), ai(n), beta(n), vr(static_cast<size_t>(n) * n), vl(vr.size());
+  int info = 0, lwork = -1;
+  double wq = 0;
+  if (n > 0) {
+    dggev_("V", "V", &n, A.data(), &n, B.data(), &n, ar.data(), ai.data(), beta.data(), vl.data(), &n, vr.data(), &n,
+           &wq, &lwork, &info);
+    lwork = static_cast<int>(wq);
+    std::vector<double> work(std::max(lwork, 1));
+    dggev_("V", "V", &n, A.data(), &n, B.data(), &n, ar.data(), ai.data(), beta.data(), vl.data(), &n, vr.data(), &n,
+           work.data(), &lwork, &info);
+  }
+  if (info != 0) {
+    out.singular = true;
+    return out;
+  }
+  // finite lambda = alpha / beta (beta above round-off of |alpha|), nearest to sigma first
+  std::vector<int> order;
+  for (int j = 0; j < n; ++j)
+    if (std::abs(beta[j]) > n * kEps * std::hypot(ar[j], ai[j])) order.push_back(j);
+  auto dist = [&](int j) { return std::hypot(ar[j] / beta[j] - sigma, ai[j] / beta[j]); };
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return dist(a) < dist(b); });
+  for (int j : order) {
+    out.re.push_back(ar[j] / beta[j]);
+    out.im.push_back(ai[j] / beta[j]);
+  }
+  const int k = std::min<int>(want, out.count());
+  out.vectors.assign(static_cast<size_t>(n) * k, 0.0);
+  out.estimate.assign(k, 0.0);
+  const double nA = normInf(A0, n), nB = normInf(B0, n);
+  for (int c = 0; c < k; ++c) {
+    const int j = order[c];
+    // a complex pair (j, j+1) has vectors vr_j +- i vr_j+1 (the first has ai > 0)
+    std::vector<double> xr(n), xi(n, 0.0);
+    if (ai[j] == 0.0) {
+      std::copy_n(&vr[static_cast<size_t>(j) * n], n, xr.begin());
+    } else {
+      const bool first = ai[j] > 0;
+      const int p = first ? j : j - 1;
+      std::copy_n(&vr[static_cast<size_t>(p) * n], n, xr.begin());
+      for (int i = 0; i < n; ++i) xi[i] = (first ? 1.0 : -1.0) * vr[static_cast<size_t>(p + 1) * n + i];
+    }
+    for (int i = 0; i < n; ++i) {
+      xr[i] *= D[i];
+      xi[i] *= D[i];
+    }
+    std::vector<double> axr(n), axi(n), bxr(n), bxi(n);
+    gemm('N', 'N', n, 1, n, A0.data(), n, xr.data(), n, axr.data());
+    gemm('N', 'N', n, 1, n, A0.data(), n, xi.data(), n, axi.data());
+    gemm('N', 'N', n, 1, n, B0.data(), n, xr.data(), n, bxr.data());
+    gemm('N', 'N', n, 1, n, B0.data(), n, xi.data(), n, bxi.data());
+    if (ai[j] == 0.0) {  // two-sided Rayleigh quotient y^T A x / y^T B x (y = D y~): error quadratic in the vectors'
+      double yax = 0, ybx = 0;
+      for (int i = 0; i < n; ++i) {
+        const double y = D[i] * vl[static_cast<size_t>(j) * n + i];
+        yax += y * axr[i];
+        ybx += y * bxr[i];
+      }
+      if (ybx != 0.0 && std::isfinite(yax / ybx)) out.re[c] = yax / ybx;
+    }
+    out.estimate[c] = backwardError(axr, axi, bxr, bxi, xr.data(), xi.data(), out.re[c], out.im[c], nA, nB);
+    double nr = 0;
+    for (double v : xr) nr += v * v;
+    nr = std::sqrt(nr);
+    double* x = &out.vectors[static_cast<size_t>(c) * n];
+    for (int i = 0; i < n; ++i) x[i] = nr > 0 ? xr[i] / nr : 0.0;
+    fixSign(x, n);
+  }
+  return out;
+}
+
+}  // namespace sinew

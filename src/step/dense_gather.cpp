@@ -1,0 +1,109 @@
+#include "step/dense_gather.hpp"
+
+#include <algorithm>
+#include <numeric>
+
+namespace sinew {
+
+PetscErrorCode gatherDense(Mat A, std::vector<double>& full) {
+  PetscFunctionBeginUser;
+  MPI_Comm comm = PetscObjectComm(reinterpret_cast<PetscObject>(A));
+  PetscMPIInt rank, size;
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  PetscCallMPI(MPI_Comm_size(comm, &size));
+  PetscInt n, r0, r1;
+  PetscCall(MatGetSize(A, &n, nullptr));
+  PetscCall(MatGetOwnershipRange(A, &r0, &r1));
+  // my rows, row-major
+  std::vector<double> rows(static_cast<size_t>(r1 - r0) * n, 0.0);
+  for (PetscInt i = r0; i < r1; ++i) {
+    PetscInt nc;
+    const PetscInt* cols;
+    const PetscScalar* vals;
+    PetscCall(MatGetRow(A, i, &nc, &cols, &vals));
+    for (PetscInt k = 0; k < nc; ++k) rows[static_cast<size_t>(i - r0) * n + cols[k]] = vals[k];
+    PetscCall(MatRestoreRow(A, i, &nc, &cols, &vals));
+  }
+  int mine = static_cast<int>(rows.size());
+  std::vector<int> counts(rank == 0 ? size : 0), displs(counts.size());
+  PetscCallMPI(MPI_Gather(&mine, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, comm));
+  std::vector<double> rowMajor;
+  if (rank == 0) {
+    std::exclusive_scan(counts.begin(), counts.end(), displs.begin(), 0);
+    rowMajor.resize(static_cast<size_t>(n) * n);
+  }
+  PetscCallMPI(MPI_Gatherv(rows.data(), mine, MPI_DOUBLE, rowMajor.data(), counts.data(), displs.data(), MPI_DOUBLE, 0, comm));
+  full.assign(rank == 0 ? static_cast<size_t>(n) * n : 0, 0.0);
+  if (rank == 0)
+    for (PetscInt i = 0; i < n; ++i)
+      for (PetscInt j = 0; j < n; ++j) full[static_cast<size_t>(j) * n + i] = rowMajor[static_cast<size_t>(i) * n + j];
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode operatorToDense(Mat A, std::vector<double>& full) {
+  PetscFunctionBeginUser;
+  Mat D;
+  PetscCall(MatComputeOperator(A, MATDENSE, &D));
+  PetscCall(gatherDense(D, full));
+  PetscCall(MatDestroy(&D));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode operatorProducts(Mat A, const DenseEigenpairs& p, std::vector<double>& AX) {
+  PetscFunctionBeginUser;
+  Vec x, y, y0;
+  VecScatter toZero;
+  PetscCall(MatCreateVecs(A, &x, &y));
+  PetscCall(VecScatterCreateToZero(y, &toZero, &y0));
+  PetscInt n0;
+  PetscCall(VecGetSize(y0, &n0));  // n on rank 0, 0 elsewhere
+  AX.assign(static_cast<size_t>(n0) * p.wanted(), 0.0);
+  for (int j = 0; j < p.wanted(); ++j) {
+    PetscCall(pairVector(p, j, x));
+    PetscCall(MatMult(A, x, y));
+    PetscCall(VecScatterBegin(toZero, y, y0, INSERT_VALUES, SCATTER_FORWARD));
+    PetscCall(VecScatterEnd(toZero, y, y0, INSERT_VALUES, SCATTER_FORWARD));
+    const PetscScalar* a;
+    PetscCall(VecGetArrayRead(y0, &a));
+    std::copy_n(a, n0, &AX[static_cast<size_t>(j) * n0]);
+    PetscCall(VecRestoreArrayRead(y0, &a));
+  }
+  PetscCall(VecScatterDestroy(&toZero));
+  PetscCall(VecDestroy(&y0));
+  PetscCall(VecDestroy(&x));
+  PetscCall(VecDestroy(&y));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode broadcastPairs(MPI_Comm comm, DenseEigenpairs& p) {
+  PetscFunctionBeginUser;
+  int head[2] = {p.n, p.singular ? 1 : 0};
+  int counts[2] = {p.count(), p.wanted()};
+  PetscCallMPI(MPI_Bcast(head, 2, MPI_INT, 0, comm));
+  PetscCallMPI(MPI_Bcast(counts, 2, MPI_INT, 0, comm));
+  p.n = head[0];
+  p.singular = head[1] != 0;
+  p.re.resize(counts[0]);
+  p.im.resize(counts[0]);
+  p.estimate.resize(counts[1]);
+  p.vectors.resize(static_cast<size_t>(p.n) * counts[1]);
+  PetscCallMPI(MPI_Bcast(p.re.data(), counts[0], MPI_DOUBLE, 0, comm));
+  PetscCallMPI(MPI_Bcast(p.im.data(), counts[0], MPI_DOUBLE, 0, comm));
+  PetscCallMPI(MPI_Bcast(p.estimate.data(), counts[1], MPI_DOUBLE, 0, comm));
+  PetscCallMPI(MPI_Bcast(p.vectors.data(), static_cast<int>(p.vectors.size()), MPI_DOUBLE, 0, comm));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode pairVector(const DenseEigenpairs& p, int j, Vec x) {
+  PetscFunctionBeginUser;
+  PetscInt r0, r1;
+  PetscCall(VecGetOwnershipRange(x, &r0, &r1));
+  PetscScalar* a;
+  PetscCall(VecGetArray(x, &a));
+  const double* col = &p.vectors[static_cast<size_t>(j) * p.n];
+  for (PetscInt i = r0; i < r1; ++i) a[i - r0] = col[i];
+  PetscCall(VecRestoreArray(x, &a));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+}  // namespace sinew

@@ -1,0 +1,31 @@
+// Distributed PETSc matrices to one rank for the dense eigensolvers (step/dense_eigen.hpp), and
+// their eigenpairs back to every rank.
+#pragma once
+#include <petscmat.h>
+
+#include <vector>
+
+#include "sinew/petsc_compat.hpp"
+
+#include "step/dense_eigen.hpp"
+
+namespace sinew {
+
+/// The global n x n matrix A (AIJ or dense: any type with MatGetRow) as a column-major array on
+/// rank 0 (empty on the other ranks). Collective.
+PetscErrorCode gatherDense(Mat A, std::vector<double>& full);
+
+/// The dense matrix of an operator known by its products (a shell: the element-wise tangent),
+/// columns A e_j, on rank 0 as gatherDense. Collective.
+PetscErrorCode operatorToDense(Mat A, std::vector<double>& full);
+
+/// The products A x_j of every vector of `pairs` (on every rank), column-major n x wanted() on rank 0. Collective.
+PetscErrorCode operatorProducts(Mat A, const DenseEigenpairs& pairs, std::vector<double>& AX);
+
+/// The eigenpairs computed on rank 0 to every rank (eigenvalues, estimates, vectors). Collective.
+PetscErrorCode broadcastPairs(MPI_Comm comm, DenseEigenpairs& pairs);
+
+/// This rank's owned part of column j of pairs.vectors into the distributed vector x. Not collective.
+PetscErrorCode pairVector(const DenseEigenpairs& pairs, int j, Vec x);
+
+}  // namespace sinew

@@ -123,7 +123,14 @@ double ContinuationAnalysis::modelPathSize() const {
 
 PetscErrorCode ContinuationAnalysis::turnAngle(Vec U, Vec Uprev, double dl, Vec dUprev, double dlPrev, double* angle) {
   PetscFunctionBeginUser;
-  const double w = opt_.constraint == "spherical" ? opt_.psi * opt_.psi * lastQnorm_ * lastQnorm_ : 0.0;
+  // the load factor's weight: the spherical constraint's psi^2 |q|^2; with the cylindrical one, that of
+  // the first path step, (ds_1 / lambda_1)^2, so that the path's first tangent is at 45 degrees (a
+  // limit point turns it by about as much; kept in the checkpoint with the points)
+  double w = opt_.constraint == "spherical" ? opt_.psi * opt_.psi * lastQnorm_ * lastQnorm_ : 0.0;
+  if (opt_.constraint != "spherical" && !points_.empty() && points_.front().loadFactor != 0.0) {
+    const double r = points_.front().arcLength / points_.front().loadFactor;
+    w = r * r;
+  }
   PetscCall(VecWAXPY(work_, -1.0, Uprev, U));
   PetscReal dd, pp, dp;
   PetscCall(VecDot(work_, work_, &dd));

@@ -111,7 +111,8 @@ class ContinuationAnalysis {
   /// every free translation and 1 at every free rotation or ANCF slope (collective).
   double modelPathSize() const;
   /// Angle [rad] between the step just taken, (U - Uprev, dl), and the one before, (dUprev, dlPrev), in the
-  /// arc-length metric (the load term psi^2 |q|^2 dl^2 with the spherical constraint); 0 without a step before.
+  /// metric |dU|^2 + w dl^2 (w = psi^2 |q|^2 with the spherical constraint, else that of the first step:
+  /// its tangent at 45 degrees); 0 without a step before.
   PetscErrorCode turnAngle(Vec U, Vec Uprev, double dl, Vec dUprev, double dlPrev, double* angle);
   void classify();
 

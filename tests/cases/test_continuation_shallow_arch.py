@@ -13,7 +13,7 @@ no turn-back warning. Checks (2 ranks, -continuation_lowest_eigenvalue):
   (2) the centre deflection's two turns and the inverted state (load factor crossing 0) vs theory;
   (3) the count of negative eigenvalues: 0 before the bifurcation, 1 from it to the first limit point;
   (4) the path stays symmetric (the quarter-span points move alike);
-  (5) no turn-back warning; the path reaches u = -22 mm in fewer than 150 points (the step grows from
+  (5) no turn-back warning; the path reaches u = -22 mm in fewer than 150 points (116) (the step grows from
       ds by default: 400 points of ds = 0.002 reached u = -21.7 mm before)."""
 import numpy as np
 

@@ -139,7 +139,7 @@ struct ContinuationOptions {
   std::string constraint = "cylindrical"; ///< arclength: cylindrical | spherical
   double psi = 1.0;                       ///< spherical: scale of the load term (psi^2 |q|^2 dlambda^2)
   double ds = 0.0;                        ///< arc length (arclength) or displacement increment (displacement)
-  double ds_max = 0.0;                    ///< largest arc length (default |ds|: steps shrink on failure, grow back to it)
+  double ds_max = 0.0;                    ///< largest step; 0: from the model (arclength) or |ds| (displacement)
   int max_steps = 100;
   std::optional<double> stop_load_factor;
   int node = -1;                          ///< 0-based scene node of the control DOF (displacement control, output)

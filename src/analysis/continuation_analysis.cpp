@@ -34,6 +34,17 @@ ContinuationAnalysis::ContinuationAnalysis(Assembler& assembler, const Continuat
   inertia_ = settings.inertia;
   lowest_ = settings.lowestEigenvalue;
   branchSwitch_ = settings.branchSwitch;
+  // the largest step: the scene's ds_max; else, in arc length, a fraction of the model's size in the
+  // arc-length metric (the step grows from ds by the corrector's iteration count, and the turn of the
+  // path per step bounds it where the path curves); displacement control keeps |ds|
+  if (opt_.ds_max > 0) {
+    dsMax_ = opt_.ds_max;
+  } else if (opt_.method != "displacement") {
+    dsMax_ = std::max(std::abs(opt_.ds), kAutoFraction * modelPathSize());
+    angleControl_ = true;
+  } else {
+    dsMax_ = std::abs(opt_.ds);
+  }
   // the control DOF: a unit vector over the unknowns (the node's owner sets its entry)
   long local = 0;
   for (const LocalElement& el : asm_.mesh().elements) local += el.kernel->numConstraints();
@@ -415,6 +426,7 @@ PetscErrorCode ContinuationAnalysis::step(Vec U, double* lambda, double ds, Vec 
   PetscCall(loadDerivative(U, lambda0, q_));
   PetscReal qnorm;
   PetscCall(VecNorm(q_, NORM_2, &qnorm));
+  lastQnorm_ = qnorm;
   PetscCall(factor(U, lambda0));
   PetscCall(KSPSolve(ksp_, q_, duq_));
   KSPConvergedReason kr;
@@ -546,22 +558,48 @@ PetscErrorCode ContinuationAnalysis::run(Vec U, const PointCallback& onPoint, bo
   if (inertia_ && !resumed) PetscCall(negativeEigenvalues(U, 0.0, &prevNeg, nullptr));
   const std::string sizeName = opt_.method == "displacement" ? "displacement increment" : "arc length";
   // one step per path point, halved (at most -max_cuts times) on failure; adaptive arc length: aim
-  // at desiredIts corrector iterations, within [ds/2, 2 ds] from point to point and |ds| <= ds_max
-  IterationTarget aim(desiredIts_, 0.5, 2.0, opt_.ds_max);
+  // at desiredIts corrector iterations, within [ds/2, 2 ds] from point to point and |ds| <= ds_max.
+  // With the model's ds_max (angleControl_) the turn of the path per step counts as iterations too:
+  // a step that turned the path by theta counts as desiredIts (theta / kTargetAngle)^2 iterations, so
+  // that the next step is about kTargetAngle / theta times as long; one that turned it by more than
+  // kMaxAngle is repeated from its start that much shorter (at most 3 times per point). The count
+  // is what the checkpoint keeps (ckIts_), so a restarted path takes the same steps.
+  IterationTarget aim(desiredIts_, 0.5, 2.0, dsMax_);
   StepRules rules;
   rules.maxCuts = maxCuts_;
-  rules.strategy = aim;
+  std::vector<Mat3> Rsave;
+  double turn = 0.0, lambdaStart = lambda;
+  int correctorIts = 0, repeats = 0;
+  rules.strategy = [&](double h, double proposal, const StepAttempt& a, double* next, bool* reject) -> int {
+    if (angleControl_ && turn > kMaxAngle && repeats < 3) {
+      ++repeats;
+      *reject = true;
+      *next = h * std::max(kTargetAngle / turn, 0.25);
+      PetscCall(VecCopy(Uprev, U));  // back to the step's start
+      lambda = lambdaStart;
+      asm_.setReferenceRotations(Rsave);
+      return PETSC_SUCCESS;
+    }
+    return aim(h, proposal, a, next, reject);
+  };
   StepController control(rules, {"path step", "load factor", sizeName});
   control.resume(ds);
-  std::vector<Mat3> Rsave;
   SteppedProcedure path;
   path.solve = [&](double, double, double h, StepAttempt* a) -> PetscErrorCode {
     Rsave = asm_.referenceRotations();
     PetscCall(VecCopy(U, Uprev));
+    lambdaStart = lambda;
     PetscCall(step(U, &lambda, h, dUprev, dlPrev, control.step() == 1, &a->converged, &a->iterations));
     a->reason = "corrector did not converge";
     a->at = lambda;
+    correctorIts = a->iterations;
+    turn = 0.0;
     if (!a->converged) asm_.setReferenceRotations(Rsave);
+    else if (angleControl_ && !(switchedAt_ > 0 && !points_.empty() && points_.back().step == switchedAt_)) {
+      PetscCall(turnAngle(U, Uprev, lambda - lambdaStart, dUprev, dlPrev, &turn));
+      const double equivalent = std::ceil(desiredIts_ * (turn / kTargetAngle) * (turn / kTargetAngle));
+      a->iterations = std::max(a->iterations, static_cast<int>(std::min(equivalent, 1000.0)));
+    }
     return PETSC_SUCCESS;
   };
   path.accept = [&](double, double, double h, const StepAttempt& a) -> PetscErrorCode {
@@ -573,6 +611,7 @@ PetscErrorCode ContinuationAnalysis::run(Vec U, const PointCallback& onPoint, bo
     PetscCall(asm_.absorbRotations(U));
     ds = h;
     its = a.iterations;
+    repeats = 0;
     return PETSC_SUCCESS;
   };
   path.print = [comm](const std::string& m) { PetscPrintf(comm, "%s", m.c_str()); };
@@ -625,7 +664,7 @@ PetscErrorCode ContinuationAnalysis::run(Vec U, const PointCallback& onPoint, bo
     p.cuts = control.cuts();
     p.loadFactor = lambda;
     p.arcLength = ds;
-    p.iterations = its;
+    p.iterations = correctorIts;
     p.residualNorm = lastResidual_;
     PetscCall(controlDisplacement(U, lambda, &p.controlValue));
     if (inertia_) PetscCall(pathSlopes(U, lambda, dUprev, dlPrev, &p));

@@ -107,6 +107,13 @@ class ContinuationAnalysis {
   /// Path tangent at a converged point, oriented along dUlast: d lambda / ds and d u_control / ds.
   PetscErrorCode pathSlopes(Vec U, double lambda, Vec dUlast, double dlLast, PathPoint* p);
   PetscErrorCode step(Vec U, double* lambda, double ds, Vec dUprev, double dlPrev, bool first, bool* ok, int* its);
+  /// The model's size in the arc-length metric: |s| with s = D (bounding-box diagonal of the nodes) at
+  /// every free translation and 1 at every free rotation or ANCF slope (collective).
+  double modelPathSize() const;
+  /// Angle [rad] between the step just taken, (U - Uprev, dl), and the one before, (dUprev, dlPrev), in the
+  /// metric |dU|^2 + w dl^2 (w = psi^2 |q|^2 with the spherical constraint, else that of the first step:
+  /// its tangent at 45 degrees); 0 without a step before.
+  PetscErrorCode turnAngle(Vec U, Vec Uprev, double dl, Vec dUprev, double dlPrev, double* angle);
   void classify();
 
   Assembler& asm_;
@@ -118,6 +125,14 @@ class ContinuationAnalysis {
   double ckDs_ = 0, ckDlPrev_ = 0;  ///< step state at the reported point (checkpointState)
   int ckIts_ = 0;
   double lastResidual_ = 0;  ///< |R| of the last converged corrector (the path point's residual)
+  double lastQnorm_ = 0;     ///< |q| at the start of the last step (the spherical constraint's load scale)
+  /// The largest step: ds_max, or (arclength without ds_max) kAutoFraction of modelPathSize(), at least
+  /// |ds|; then the turn of the path from step to step is bounded too (angleControl_).
+  double dsMax_ = 0;
+  bool angleControl_ = false;
+  static constexpr double kAutoFraction = 0.02;  ///< default ds_max / model size in the arc-length metric
+  static constexpr double kTargetAngle = 0.1;    ///< the turn per step aimed at [rad]
+  static constexpr double kMaxAngle = 0.25;      ///< a step that turns the path more is repeated shorter [rad]
   Mat K_ = nullptr;
   Mat Ks_ = nullptr;   ///< symmetric part of K_ (follower pressure makes K_ unsymmetric); see stabilityMatrix
   Mat stab_ = nullptr; ///< the matrix whose inertia / lowest eigenvalue is taken: K_ or Ks_

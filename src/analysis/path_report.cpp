@@ -110,6 +110,24 @@ PathTurnBack pathTurnBack(const std::vector<double>& lambda, const std::vector<d
     if (far < limit || !(there - now > 0.5 * there)) continue;
     size_t back = i;  // follow the way back to its end
     while (back + 1 < n && std::abs(u[back + 1] - u[0]) <= std::abs(u[back] - u[0])) ++back;
+    // a way back on another branch (other load factors at the same displacements: the symmetric path
+    // of a pinned shallow arch loops so) revisits no state: the way back must run along the way there
+    // in the plane of the scaled load factor and displacement (median distance below 0.05)
+    double L = 0, D = 0;
+    for (size_t j = 0; j <= back; ++j) {
+      L = std::max(L, std::abs(lambda[j]));
+      D = std::max(D, std::abs(u[j]));
+    }
+    if (!(L > 0) || !(D > 0)) return r;
+    std::vector<double> dist;
+    for (size_t j = far + 1; j <= back; ++j) {
+      double d = 1e300;
+      for (size_t m = limit + 1; m <= far; ++m)
+        d = std::min(d, segmentDistance({lambda[j] / L, u[j] / D}, {lambda[m - 1] / L, u[m - 1] / D}, {lambda[m] / L, u[m] / D}));
+      dist.push_back(d);
+    }
+    std::nth_element(dist.begin(), dist.begin() + static_cast<long>(dist.size() / 2), dist.end());
+    if (dist.empty() || dist[dist.size() / 2] > 0.05) return r;
     r.limit = static_cast<int>(limit);
     r.turn = static_cast<int>(far);
     r.back = static_cast<int>(back);

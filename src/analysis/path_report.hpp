@@ -33,7 +33,11 @@ PathRetrace pathRetrace(const std::vector<double>& lambda, const std::vector<dou
 
 /// A path whose followed displacement turns back after a limit point (the load factor's first
 /// maximum) and runs back over more than half of the way it had gone from the start (a snap-back
-/// turns back over a small part of it): it revisits the displacements of that way. limit, turn and
+/// turns back over a small part of it), along the way it came: the median distance of the points
+/// on the way back from the way there (after the limit point), in the plane of the load factor and
+/// the displacement scaled by their largest magnitudes, is below 0.05. It revisits states of that
+/// way. A way back at other load factors is another branch (a pinned shallow arch's symmetric path
+/// loops so: tests/cases/test_continuation_shallow_arch.py) and no turn-back. limit, turn and
 /// back are 0-based point indices (the limit point, the farthest point before the turn, the end of
 /// the way back); -1 when none.
 struct PathTurnBack {

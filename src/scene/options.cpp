@@ -206,7 +206,7 @@ void parseContinuation(const YAML::Node& v, const std::string& path, SceneContex
   c.ds = getNumber(v["ds"], childPath(path, "ds"));
   if (!(std::abs(c.ds) > 0.0) || !std::isfinite(c.ds)) fail(childPath(path, "ds"), "expected a nonzero number, got " + fmt(c.ds));
   if (c.method == "arclength" && c.ds < 0) fail(childPath(path, "ds"), "an arc length is positive, got " + fmt(c.ds));
-  c.ds_max = v["ds_max"].IsDefined() ? getPositive(v["ds_max"], childPath(path, "ds_max")) : std::abs(c.ds);
+  c.ds_max = v["ds_max"].IsDefined() ? getPositive(v["ds_max"], childPath(path, "ds_max")) : 0.0;  // 0: the analysis's default
   if (v["max_steps"].IsDefined()) {
     // every path point is a result row, and the checkpoint keeps 17 values per possible point
     c.max_steps = getIntAtLeast(v["max_steps"], childPath(path, "max_steps"), 1);

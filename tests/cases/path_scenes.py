@@ -75,3 +75,44 @@ def clamped_arch(h, imperfection=0.0, n=40, ds=0.008, max_steps=10, L=0.1, t=0.5
                          "opt": {"calccompl": False,
                                  "continuation": {"method": "arclength", "ds": ds, "ds_max": ds, "node": c,
                                                   "direction": "y", "max_steps": max_steps}}}), c
+
+
+def pinned_shallow_arch(cont, n=40, L=1.0, h=0.01, wd=0.02, t=0.004, E=210e9, P=100.0):
+    """Issue 24's shallow pinned arch: circular, span L, rise h, rect wd x t (bending about the weak axis
+    in the arch plane), steel, both ends pinned (fix_pos), a downward force P at mid-span (load factor
+    1 = P); `cont`: the opt.continuation block (node and direction are set here). (scene text, mid node)."""
+    R = (L ** 2 / 4 + h ** 2) / (2 * h)
+    x = np.linspace(0, L, n + 1)
+    y = np.sqrt(R ** 2 - (x - L / 2) ** 2) - (R - h)
+    c = n // 2 + 1
+    nprops = {i + 1: {"fix_z": True} for i in range(n + 1)}
+    nprops[1] = {"fix_pos": True}
+    nprops[n + 1] = {"fix_pos": True}
+    nprops[c] = {"fix_z": True, "force": [0, -P, 0]}
+    return bt.yaml_text({"title": "shallow pinned arch", "nodes": [[float(a), float(b), 0.0] for a, b in zip(x, y)],
+                         "elements": [[i + 1, i + 2] for i in range(n)], "nprops": nprops,
+                         "eprops": [{"elems": list(range(1, n + 1)), "flex": [1, 2, 3, 4, 5, 6], "emod": E, "smod": E / 2.6,
+                                     "cshape": "rect", "dim": [wd, t], "orien": [0, 0, 1]}],
+                         "opt": {"calccompl": False, "continuation": dict(cont, node=c, direction="y")}}), c
+
+
+def deep_arch(cont, n=40, R=100.0, angle=215.0, EI=1e6, EA=1e8, P=1000.0):
+    """The deep circular arch of DaDeppo & Schmidt (1975): radius R, opening angle `angle` (degrees),
+    clamped at the left end, pinned at the right, a downward force P at the apex (load factor 1 = P;
+    P R^2/EI = 10 with the defaults), EI and EA of a square section; `cont`: the opt.continuation
+    block (node and direction are set here). (scene text, apex node)."""
+    d = math.sqrt(12 * EI / EA)  # square d x d: I/A = d^2/12
+    Em = EA / d ** 2
+    half = math.radians(angle) / 2
+    phi = np.linspace(-half, half, n + 1)
+    c = n // 2 + 1
+    nodes = [[float(R * math.sin(p)), float(R * math.cos(p)), 0.0] for p in phi]
+    nprops = {i + 1: {"fix_z": True} for i in range(n + 1)}
+    nprops[1] = {"fix": True}
+    nprops[n + 1] = {"fix_pos": True}
+    nprops[c] = {"fix_z": True, "force": [0, -P, 0]}
+    return bt.yaml_text({"title": "deep circular arch", "nodes": nodes, "elements": [[i + 1, i + 2] for i in range(n)],
+                         "nprops": nprops,
+                         "eprops": [{"elems": list(range(1, n + 1)), "flex": [1, 2, 3, 4, 5, 6], "emod": Em, "smod": Em / 2.6,
+                                     "cshape": "rect", "dim": [d, d], "orien": [0, 0, 1]}],
+                         "opt": {"calccompl": False, "continuation": dict(cont, node=c, direction="y")}}), c

@@ -58,16 +58,22 @@ TEST(PathReport, Retrace) {
 }
 
 TEST(PathReport, TurnBack) {
-  // the shallow arch of issue 24: limit at u = -0.0053, on to u = -0.0170, back to u = -0.0057, on
-  // to the inverted state
-  const std::vector<double> lambda = {0, 0.02, 0.0415, 0.03, 0, -0.044, -0.06, 0, 0.054, 0.03, -0.04, 0, 0.27};
-  const std::vector<double> u = {0, -0.0011, -0.0053, -0.0089, -0.0142, -0.0170, -0.0150, -0.0100, -0.0059, -0.0065,
-                                 -0.0150, -0.0200, -0.0250};
+  // a path that turns back after its limit point and runs back down the way it came (load factors
+  // within 1e-3 of those there): limit at u = -0.0053, on to u = -0.0170, back to u = -0.0057
+  const std::vector<double> lambda = {0, 0.02, 0.0415, 0.03, 0.01, -0.01, 0.0101, 0.0301, 0.0405, 0.03};
+  const std::vector<double> u = {0, -0.0011, -0.0053, -0.0089, -0.0130, -0.0170, -0.0130, -0.0089, -0.0057, -0.0100};
   const auto r = sinew::pathTurnBack(lambda, u);
   EXPECT_EQ(r.limit, 2);
   EXPECT_EQ(r.turn, 5);
   EXPECT_EQ(r.back, 8);
-  EXPECT_NEAR(r.fraction, (0.0170 - 0.0059) / 0.0170, 1e-12);
+  EXPECT_NEAR(r.fraction, (0.0170 - 0.0057) / 0.0170, 1e-12);
+  // the shallow arch of issue 24 as shallow-arch theory and Sinew follow it: limit at u = -0.0052, on
+  // to u = -0.0171, back to u = -0.0057 at other load factors (a loop of the symmetric path), on to
+  // the inverted state: another branch, no turn-back
+  const std::vector<double> la = {0, 0.2, 0.415, 0.2, -0.3, -0.618, -0.45, -0.2, 0.3, 0.553, 0.49, 0.2, -0.45, 0, 0.3};
+  const std::vector<double> ua = {0, -0.0011, -0.0052, -0.0089, -0.0130, -0.0155, -0.0171, -0.0150, -0.0090, -0.0061,
+                                  -0.0057, -0.0090, -0.0165, -0.0202, -0.0215};
+  EXPECT_EQ(sinew::pathTurnBack(la, ua).turn, -1);
   // a snap-back (Lee's frame): the displacement turns back over a small part of its way, then on
   const std::vector<double> l2 = {0, 10, 18.5, 10, 0, -9, -5, 5, 20};
   const std::vector<double> u2 = {0, -20, -40, -55, -70, -80, -65, -75, -100};

@@ -387,8 +387,14 @@ PetscErrorCode FormFindingAnalysis::run(Vec U, const StepCallback& onStep, bool*
   // in-plane collapse of a flat membrane has zero normal change but a growing total change)
   auto stops = [&]() {
     const size_t n = reports_.size();
-    return n >= 2 && reports_[n - 1].step >= 2 && reports_[n - 1].shapeChangeNormal < ff_.formfinding_tolerance &&
+    return n >= 2 && reports_[n - 1].step >= 2 && reports_[n - 1].shapeChangeNormal < ff_.formfinding_tolerance.value_or(0.0) &&
            reports_[n - 1].shapeChange <= reports_[n - 2].shapeChange;
+  };
+  // the shape found at the end: below formfinding_tolerance, or without one (CARAT++'s fixed step
+  // count) below kShapeConverged in the last step
+  const double judged = ff_.formfinding_tolerance.value_or(FormFinding::kShapeConverged);
+  auto found = [&]() {
+    return ff_.formfinding_tolerance ? stops() : (!reports_.empty() && reports_.back().shapeChangeNormal < judged);
   };
   // one URS step per report step, never cut (a failed step ends form finding); a resumed run
   // (resume()) continues after its last step, unless that step ended form finding
@@ -472,18 +478,36 @@ PetscErrorCode FormFindingAnalysis::run(Vec U, const StepCallback& onStep, bool*
         << reports_.back().residualNorm << "); raise max_iter_equilibrium or formfinding_step";
     failure_ = msg.str();
     *ok = false;
-  } else if (*ok && !interrupted && ff_.formfinding_tolerance > 0.0 && !stops()) {
+  } else if (*ok && !interrupted && judged > 0.0 && !found()) {
     // formfinding_step used up before the stop criterion (issue 10 item 14): the last shape is
     // written (and kept in the result file) but it is not the found shape
     const FormFindingStepReport& r = reports_.back();
     std::ostringstream msg;
     msg << "formfinding: the shape is not converged after formfinding_step = " << nsteps
-        << " steps: normal shape change " << r.shapeChangeNormal << " of the model size in the last step (formfinding_tolerance "
-        << ff_.formfinding_tolerance << ")";
+        << " steps: normal shape change " << r.shapeChangeNormal << " of the model size in the last step ("
+        << (ff_.formfinding_tolerance ? "formfinding_tolerance " : "a found shape changes by less than ") << judged << ")";
     if (reports_.size() >= 2 && r.shapeChange > reports_[reports_.size() - 2].shapeChange)
       msg << ", total change growing (" << reports_[reports_.size() - 2].shapeChange << " -> " << r.shapeChange << ")";
-    msg << ", mesh quality " << r.meshQuality << " of the form-found sets " << setNames()
-        << ". Raise formfinding_step, or formfinding_tolerance for a mesh that drifts in its surface "
+    msg << ", mesh quality " << r.meshQuality << " of the form-found sets " << setNames() << ". ";
+    // drifting: the change per step decays by less than half over the last five steps
+    const size_t n = reports_.size();
+    const double c0 = n >= 6 ? reports_[n - 6].shapeChangeNormal : 0.0;
+    if (c0 > 0.0 && r.shapeChangeNormal > 0.5 * c0) {
+      const double rate = std::pow(r.shapeChangeNormal / c0, 0.2);
+      msg << "The shape drifts: its change per step decays only by a factor " << rate << " per step";
+      if (rate < 1.0)
+        msg << " (about " << std::ceil(std::log(judged / r.shapeChangeNormal) / std::log(rate)) << " more steps to "
+            << judged << ")";
+      msg << ". ";
+      bool cablesOnly = true;
+      for (int set : ffSets_) cablesOnly = cablesOnly && eprops_[static_cast<size_t>(set)].type() == ElementType::Cable;
+      if (cablesOnly)
+        msg << "A cable net whose cables keep a constant force (prestress) has a unique shape only where those forces "
+               "can hold on its boundary (nets along straight rulings); elsewhere its nodes slide step after step. "
+               "Find the shape by the force density method in one step (formfinding_step: 1, formfinding_tolerance: 0: "
+               "q = prestress / initial length, as runs/hypar_net.yaml), or give cables whose forces fit the boundary. ";
+    }
+    msg << "Raise formfinding_step, or formfinding_tolerance for a mesh that drifts in its surface "
            "(docs/formfinding.md); formfinding_tolerance: 0 runs exactly formfinding_step steps without a stop rule.";
     failure_ = msg.str();
     *ok = false;

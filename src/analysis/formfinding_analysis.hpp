@@ -30,7 +30,8 @@
 //      adaption first for the sets in stress_adaption: lambda_max, mue_relax); a membrane whose
 //      area drops below 1e-3 of its initial area, or degenerates, is an error (crumpling);
 //   5. the step is reported (residual ||R||, s_k, smallest membrane mesh quality); the loop stops
-//      early when n_k < formfinding_tolerance (Sinew extension, default 1e-9), k >= 2 and
+//      early when n_k < formfinding_tolerance (Sinew extension; not given: all formfinding_step
+//      steps as CARAT++ runs them, the shape found when n_k < 1e-6 at the end), k >= 2 and
 //      s_k <= s_{k-1}: the shape has converged even when the mesh still drifts in the surface (a
 //      growing total change is an in-plane collapse, not convergence).
 // The solution vector U always holds displacements from the initial geometry.

@@ -55,16 +55,16 @@ def ramped_load(scene):
     if key not in ("force", "moment") or not isinstance(node, int):
         return None, f"the ramped load is {key} of {node}, not a force or moment of one node"
     if not isinstance(value, list) or not all(isinstance(v, (int, float)) for v in value) or len(value) not in (2, 3):
-        return None, f"nprops.{node}.{key} is not a list of numbers"
+        return None, f"nprops({node}).{key} is not a list of numbers"
     v = np.array(value, float)
     symbol, unit = ("F", "N") if key == "force" else ("M", "N m")
     nonzero = np.nonzero(v)[0]
     if not nonzero.size:
-        return None, f"nprops.{node}.{key} is zero"
+        return None, f"nprops({node}).{key} is zero"
     if len(nonzero) == 1:
         i = int(nonzero[0])
-        return (f"load {symbol}_{'xyz'[i]}", unit, float(v[i]), f"nprops.{node}.{key} = {value}"), ""
-    return (f"load |{symbol}|", unit, float(np.linalg.norm(v)), f"nprops.{node}.{key} = {value}"), ""
+        return (f"load {symbol}_{'xyz'[i]}", unit, float(v[i]), f"nprops({node}).{key} = {value}"), ""
+    return (f"load |{symbol}|", unit, float(np.linalg.norm(v)), f"nprops({node}).{key} = {value}"), ""
 
 
 def main():

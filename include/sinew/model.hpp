@@ -63,6 +63,21 @@ inline const char* elementTypeName(ElementType t) {
   return "beam";
 }
 
+/// Scene field paths number list entries from 1, as SPACAR Light (MATLAB) does: `eprops(2).emod`,
+/// `dim(1)`; an index into an indexed path is a matrix entry: `nodes(3,2)`, `elements(2,1)`. index0 is
+/// the 0-based position.
+inline std::string indexedPath(const std::string& path, std::size_t index0) {
+  const std::string n = std::to_string(index0 + 1);
+  if (!path.empty() && path.back() == ')') return path.substr(0, path.size() - 1) + "," + n + ")";
+  return path + "(" + n + ")";
+}
+/// `eprops(set + 1)`: the name of eprops set `set` (0-based) in messages and field paths.
+inline std::string epropsName(int set) { return indexedPath("eprops", static_cast<std::size_t>(set)); }
+/// `nprops(node + 1).field`: the path of a field of node `node` (0-based).
+inline std::string npropsPath(int node, const std::string& field) {
+  return indexedPath("nprops", static_cast<std::size_t>(node)) + "." + field;
+}
+
 /// An eprops set: the fields every kind has, and the properties of its kind (element_properties.hpp).
 struct ElementSet {
   using Properties = std::variant<BeamProperties, CableProperties, MembraneProperties, AncfCable2DProperties>;

@@ -1,10 +1,12 @@
 #include "analysis/constraint_check.hpp"
+#include "analysis/stiffness_spread.hpp"
 #include "solvers/solver_defaults.hpp"
 
 #include <petscksp.h>
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
 #include <map>
 #include <set>
 #include <sstream>
@@ -89,9 +91,122 @@ std::string groupedModes(const std::string& lines, size_t maxItems) {
   return ranked(s.str(), maxItems);
 }
 
+/// Guard vectors iterated beside the -constraint_check_vectors asked for: the subspace then holds the
+/// null space and the next directions converged, so its Ritz values (below) do not depend on the
+/// random start, i.e. on the rank count.
+constexpr PetscInt kGuardVectors = 2;
+
+/// A mechanism in a model whose element stiffnesses span more than this / tol is blamed on the spread:
+/// a direction resisted only by elements 1/ratio as stiff as the diagonal of its rows looks null
+/// (||J v|| <= tol ||D v||) once 1/ratio nears tol.
+constexpr double kUnresolvedSpread = 0.1;
+
+/// Eigenvalues (ascending, *w) and eigenvectors (columns of the row-major n x n *V) of the symmetric
+/// row-major n x n matrix A, by cyclic Jacobi rotations (n is a handful: the constraint check's block).
+void symmetricEigen(int n, std::vector<double> A, std::vector<double>* w, std::vector<double>* V) {
+  const auto at = [n](std::vector<double>& M, int i, int j) -> double& { return M[static_cast<size_t>(i * n + j)]; };
+  V->assign(static_cast<size_t>(n * n), 0.0);
+  for (int i = 0; i < n; ++i) at(*V, i, i) = 1.0;
+  for (int sweep = 0; sweep < 100; ++sweep) {
+    double off = 0.0, diag = 0.0;
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j) (i == j ? diag : off) += at(A, i, j) * at(A, i, j);
+    if (off <= 1e-32 * diag || off == 0.0) break;
+    for (int p = 0; p < n; ++p)
+      for (int q = p + 1; q < n; ++q) {
+        if (at(A, p, q) == 0.0) continue;
+        // rotation (c, s) that zeroes A_pq: t = tan, theta = (A_qq - A_pp) / (2 A_pq)
+        const double theta = (at(A, q, q) - at(A, p, p)) / (2.0 * at(A, p, q));
+        const double t = (theta >= 0 ? 1.0 : -1.0) / (std::abs(theta) + std::sqrt(theta * theta + 1.0));
+        const double c = 1.0 / std::sqrt(t * t + 1.0), s = t * c;
+        for (int k = 0; k < n; ++k) {  // A <- A G (columns p, q)
+          const double akp = at(A, k, p), akq = at(A, k, q);
+          at(A, k, p) = c * akp - s * akq;
+          at(A, k, q) = s * akp + c * akq;
+        }
+        for (int k = 0; k < n; ++k) {  // A <- G^T A (rows p, q)
+          const double apk = at(A, p, k), aqk = at(A, q, k);
+          at(A, p, k) = c * apk - s * aqk;
+          at(A, q, k) = s * apk + c * aqk;
+        }
+        for (int k = 0; k < n; ++k) {  // V <- V G
+          const double vkp = at(*V, k, p), vkq = at(*V, k, q);
+          at(*V, k, p) = c * vkp - s * vkq;
+          at(*V, k, q) = s * vkp + c * vkq;
+        }
+      }
+  }
+  std::vector<int> order(static_cast<size_t>(n));
+  for (int i = 0; i < n; ++i) order[static_cast<size_t>(i)] = i;
+  std::sort(order.begin(), order.end(), [&](int a, int b) { return at(A, a, a) < at(A, b, b); });
+  std::vector<double> sortedV(V->size());
+  w->resize(static_cast<size_t>(n));
+  for (int i = 0; i < n; ++i) {
+    const int o = order[static_cast<size_t>(i)];
+    (*w)[static_cast<size_t>(i)] = at(A, o, o);
+    for (int k = 0; k < n; ++k) at(sortedV, k, i) = at(*V, k, o);
+  }
+  *V = std::move(sortedV);
+}
+
+/// The null directions of span X: the v = D^-1 q, q in span(D X), that minimise ||J v|| / ||D v||
+/// (Rayleigh-Ritz for the singular values of J D^-1 on span(D X): Q orthonormal basis of D X,
+/// C = (J D^-1 Q)^T (J D^-1 Q), C c = mu c); null where mu <= tol^2. A property of the subspace,
+/// not of its basis: the same directions and count whatever vectors the iteration ended with.
+/// Returns them (new vectors, unit length) in *dirs, most null first.
+PetscErrorCode nullDirections(Mat J, Vec D, const std::vector<Vec>& X, PetscReal tol, std::vector<Vec>* dirs) {
+  PetscFunctionBeginUser;
+  std::vector<Vec> Q;
+  for (Vec x : X) {  // Q = orth(D X), Gram-Schmidt twice; a dependent column is dropped
+    Vec q;
+    PetscCall(VecDuplicate(x, &q));
+    PetscCall(VecPointwiseMult(q, D, x));
+    PetscReal n0, n;
+    PetscCall(VecNorm(q, NORM_2, &n0));
+    for (int pass = 0; pass < 2; ++pass)
+      for (Vec qi : Q) {
+        PetscScalar c;
+        PetscCall(VecDot(q, qi, &c));
+        PetscCall(VecAXPY(q, -c, qi));
+      }
+    PetscCall(VecNormalize(q, &n));
+    if (n > 1e-10 * n0) Q.push_back(q);
+    else PetscCall(VecDestroy(&q));
+  }
+  const PetscInt b = static_cast<PetscInt>(Q.size());
+  std::vector<Vec> Z(Q.size());
+  for (PetscInt j = 0; j < b; ++j) {  // Z = J D^-1 Q
+    Vec w;
+    PetscCall(VecDuplicate(Q[j], &w));
+    PetscCall(VecDuplicate(Q[j], &Z[j]));
+    PetscCall(VecPointwiseDivide(w, Q[j], D));
+    PetscCall(MatMult(J, w, Z[j]));
+    PetscCall(VecDestroy(&w));
+  }
+  std::vector<double> C(static_cast<size_t>(b * b)), mu;
+  for (PetscInt j = 0; j < b; ++j) PetscCall(VecMDot(Z[j], b, Z.data(), &C[static_cast<size_t>(j * b)]));
+  std::vector<double> V;
+  symmetricEigen(static_cast<int>(b), C, &mu, &V);  // every rank computes the same
+  for (PetscInt i = 0; i < b; ++i) {
+    if (!(mu[static_cast<size_t>(i)] <= tol * tol)) break;
+    Vec v;  // v = D^-1 Q c_i (column i of V holds c_i)
+    PetscCall(VecDuplicate(Q[0], &v));
+    PetscCall(VecSet(v, 0.0));
+    for (PetscInt j = 0; j < b; ++j) PetscCall(VecAXPY(v, V[static_cast<size_t>(j * b + i)], Q[static_cast<size_t>(j)]));
+    PetscCall(VecPointwiseDivide(v, v, D));
+    PetscReal n;
+    PetscCall(VecNormalize(v, &n));
+    dirs->push_back(v);
+  }
+  for (auto& z : Z) PetscCall(VecDestroy(&z));
+  for (auto& q : Q) PetscCall(VecDestroy(&q));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 }  // namespace
 
-PetscErrorCode checkConstraints(Assembler& assembler, const Model& model, Vec U, const LoadState& ls,
+PetscErrorCode checkConstraints(
+Assembler& assembler, const Model& model, Vec U, const LoadState& ls,
                                 const ModelCheckSettings& settings, ConstraintReport* report) {
   PetscFunctionBeginUser;
   *report = ConstraintReport{};
@@ -178,8 +293,10 @@ PetscErrorCode checkConstraints(Assembler& assembler, const Model& model, Vec U,
     report->message = msg.str();
   }
 
-  // Subspace inverse iteration: X <- (J + sigma D)^{-1} D X, orthonormalized.
-  std::vector<Vec> X(nvec);
+  // Subspace inverse iteration: X <- (J + sigma D)^{-1} D X, orthonormalized, with guard vectors
+  // beyond the nvec directions asked for; then the null directions of the converged subspace.
+  const PetscInt block = std::min<PetscInt>(nvec + kGuardVectors, static_cast<PetscInt>(m.numGlobalUnknowns));
+  std::vector<Vec> X(block), nullDirs;
   Vec t, r;
   PetscCall(VecDuplicate(D, &t));
   PetscCall(VecDuplicate(D, &r));
@@ -194,7 +311,7 @@ PetscErrorCode checkConstraints(Assembler& assembler, const Model& model, Vec U,
     }
     PetscCall(PetscRandomDestroy(&rnd));
     for (int it = 0; it < 4; ++it) {
-      for (PetscInt j = 0; j < nvec; ++j) {
+      for (PetscInt j = 0; j < block; ++j) {
         PetscCall(VecPointwiseMult(t, D, X[j]));
         PetscCall(KSPSolve(ksp, t, X[j]));
         for (PetscInt i = 0; i < j; ++i) {  // modified Gram-Schmidt
@@ -206,22 +323,17 @@ PetscErrorCode checkConstraints(Assembler& assembler, const Model& model, Vec U,
         PetscCall(VecNormalize(X[j], &nrm));
       }
     }
+    PetscCall(nullDirections(J, D, X, tol, &nullDirs));
   }
 
-  // Null directions: ||J v|| <= tol ||D v||. Name their DOFs/multipliers.
+  // Null directions: min ||J v|| / ||D v|| <= tol over span X. Name their DOFs/multipliers.
   std::ostringstream nodeLines, multLines, rlsLines;
   std::set<int> rlsNamed;
   int mech = 0, redund = 0;
-  for (PetscInt j = 0; j < nvec && !failed; ++j) {
-    PetscReal jn, dn;
-    PetscCall(MatMult(J, X[j], r));
-    PetscCall(VecPointwiseMult(t, D, X[j]));
-    PetscCall(VecNorm(r, NORM_2, &jn));
-    PetscCall(VecNorm(t, NORM_2, &dn));
-    if (!(jn <= tol * dn)) continue;
+  for (Vec vj : nullDirs) {
     // weighted components sqrt|D_i| |v_i|; split into node and multiplier parts
     const PetscScalar *v, *d;
-    PetscCall(VecGetArrayRead(X[j], &v));
+    PetscCall(VecGetArrayRead(vj, &v));
     PetscCall(VecGetArrayRead(D, &d));
     double part[2] = {0, 0}, mx[2] = {0, 0};
     for (int i = 0; i < nloc; ++i) {
@@ -261,11 +373,11 @@ PetscErrorCode checkConstraints(Assembler& assembler, const Model& model, Vec U,
       }
     }
     PetscCall(VecRestoreArrayRead(D, &d));
-    PetscCall(VecRestoreArrayRead(X[j], &v));
+    PetscCall(VecRestoreArrayRead(vj, &v));
     nodeLines << mine.str();
     if (isMech) {
       // releases of the elements touching the moving nodes (ghost values needed)
-      PetscCall(VecCopy(X[j], Dg));
+      PetscCall(VecCopy(vj, Dg));
       PetscCall(VecGhostUpdateBegin(Dg, INSERT_VALUES, SCATTER_FORWARD));
       PetscCall(VecGhostUpdateEnd(Dg, INSERT_VALUES, SCATTER_FORWARD));
       Vec gl;
@@ -303,19 +415,33 @@ PetscErrorCode checkConstraints(Assembler& assembler, const Model& model, Vec U,
       if (seen.insert(line).second) uniq += line + "\n";
     rlsAll = uniq;
   }
+  StiffnessSpread spread;
+  if (mech) PetscCall(stiffnessSpread(assembler, U, ls, &spread));
   if (mech || redund) {
     report->singular = true;
     report->mechanisms = mech;
     report->redundant = redund;
     if (mech) {
-      msg << "error: the model is a mechanism (under-constrained): " << mech << (mech == nvec ? " or more" : "") << " free motion" << (mech > 1 ? "s" : "")
+      msg << "error: the model is a mechanism (under-constrained): " << mech << (mech == block ? " or more" : "") << " free motion" << (mech > 1 ? "s" : "")
           << " with zero stiffness\n  moving: " << ranked(nodesAll, 12) << "\n";
       if (!rlsAll.empty()) msg << "  released modes nearby: " << ranked(rlsAll, 8) << "\n";
-      msg << "  fix: add a support (nprops fix / fix_pos / fix_orien / fix_x..z), make a deformation mode flexible "
+      const bool spreadCause = spread.ratio() * tol >= kUnresolvedSpread;
+      if (spreadCause) {
+        std::ostringstream ratio;
+        ratio << std::setprecision(2) << spread.ratio() << " times stiffer than element " << spread.softest + 1
+              << " (largest vs smallest translational diagonal of the element tangents, EA/L, 12 EI/L^3), near or beyond the 1/tol = " << 1.0 / tol;
+        msg << "  likely cause: the element stiffnesses, not the supports: element " << spread.stiffest + 1 << " is "
+            << ratio.str() << " within which the check (-constraint_check_tol) tells the softer elements' stiffness "
+            << "from the stiffest one's round-off (double precision keeps 16 digits)\n"
+            << "  fix: make element " << spread.stiffest + 1 << " rigid (an element in no eprops set, or flex: []) instead "
+            << "of giving it a huge stiffness, or bring the ratio below " << kUnresolvedSpread / tol << "\n";
+      }
+      msg << (spreadCause ? "  if the model does move freely: " : "  fix: ")
+          << "add a support (nprops fix / fix_pos / fix_orien / fix_x..z), make a deformation mode flexible "
              "(eprops flex), or release fewer modes (opt.rls)\n";
     }
     if (redund) {
-      msg << "error: the model is over-constrained: " << redund << (redund == nvec ? " or more" : "")
+      msg << "error: the model is over-constrained: " << redund << (redund == block ? " or more" : "")
           << " redundant rigid-mode constraint" << (redund > 1 ? "s" : "")
           << " (dependent rows of the constraint Jacobian)\n  redundant among: " << groupedModes(multAll, 12)
           << " (over-constrained)\n"
@@ -324,6 +450,7 @@ PetscErrorCode checkConstraints(Assembler& assembler, const Model& model, Vec U,
     report->message = msg.str();
   }
   for (auto& x : X) PetscCall(VecDestroy(&x));
+  for (auto& x : nullDirs) PetscCall(VecDestroy(&x));
   PetscCall(VecDestroy(&t));
   PetscCall(VecDestroy(&r));
   PetscCall(VecDestroy(&D));

@@ -7,7 +7,9 @@
 //       lives on the node DOFs -> the nodes/DOFs that move and the nearby releases are named.
 // Null vectors come from subspace inverse iteration on the shifted pencil (J + sigma D) x = D y,
 // D = diag(|J_ii|) on node rows and -||G_i||^2 / mean(diag K) on multiplier rows, factored
-// once with MUMPS (works in parallel); a direction is null when ||J v|| <= tol ||D v||.
+// once with MUMPS (works in parallel), then Rayleigh-Ritz on that subspace: a direction is null
+// when ||J v|| <= tol ||D v||, counted independently of the start vectors (and the rank count).
+// A mechanism in a model with a huge element stiffness ratio names the ratio (stiffness_spread.hpp).
 #pragma once
 #include <petscvec.h>
 

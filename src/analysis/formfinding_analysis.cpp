@@ -365,7 +365,7 @@ std::string FormFindingAnalysis::setNames() const {
   std::ostringstream s;
   for (size_t i = 0; i < ffSets_.size(); ++i) {
     const ElementSet& es = eprops_[static_cast<size_t>(ffSets_[i])];
-    s << (i ? ", " : "") << "eprops[" << ffSets_[i] << "] (" << elementTypeName(es.type()) << " set " << ffSets_[i] + 1 << ")";
+    s << (i ? ", " : "") << epropsName(ffSets_[i]) << " (" << elementTypeName(es.type()) << " set)";
   }
   return s.str();
 }

@@ -46,7 +46,7 @@ void list(std::ostringstream& o, const std::string& title, const std::vector<std
 
 std::string setLine(const ElementSet& s, std::size_t index) {
   std::ostringstream o;
-  o << "eprops[" << index << "] " << elementTypeName(s.type()) << ", element" << (s.elems.size() > 1 ? "s " : " ")
+  o << epropsName(static_cast<int>(index)) << " " << elementTypeName(s.type()) << ", element" << (s.elems.size() > 1 ? "s " : " ")
     << numbers(s.elems) << ":";
   double dens = 0;
   if (const auto* b = s.as<BeamProperties>()) {

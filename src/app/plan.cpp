@@ -44,7 +44,7 @@ Plan makePlan(const Model& model) {
         for (int k : model.elements[e]) frame |= k == nd;
       }
       if (!frame)
-        throw SceneError("sensors[" + std::to_string(i) + "].node",
+        throw SceneError(indexedPath("sensors", i) + ".node",
                          "node sensors sample beam nodes; node " + std::to_string(nd + 1) + " is on no beam or rigid element");
       continue;
     }
@@ -52,7 +52,7 @@ Plan makePlan(const Model& model) {
     const ElementType type = set < 0 ? ElementType::Beam : model.eprops[set].type();  // rigid elements are beams
     const ElementKind& kind = elementKind(type);
     if (!kind.elementSensors)
-      throw SceneError("sensors[" + std::to_string(i) + "].element",
+      throw SceneError(indexedPath("sensors", i) + ".element",
                        "sensors sample ancf_cable2d and beam elements; element " + std::to_string(e + 1) + " is a " +
                            elementTypeName(type));
     // the kind's sensor variables (beams: src/elements/beam_corotational_sensor.cpp; ancf_cable2d: the scene reader checks them)
@@ -60,7 +60,7 @@ Plan makePlan(const Model& model) {
         vars && std::find(vars->begin(), vars->end(), model.sensors[i].variable) == vars->end()) {
       std::string list;
       for (const auto& v : *vars) list += (list.empty() ? "" : ", ") + v;
-      throw SceneError("sensors[" + std::to_string(i) + "].variable",
+      throw SceneError(indexedPath("sensors", i) + ".variable",
                        "'" + model.sensors[i].variable + "' is not available along " + elementTypeName(type) + " element " +
                            std::to_string(e + 1) + "; " + elementTypeName(type) + " sensors give " + list);
     }
@@ -80,7 +80,7 @@ Plan makePlan(const Model& model) {
       throw SceneError("opt.calcbuck", "buckling together with opt.transfer: SPACAR Light computes the state-space model "
                                        "of the unloaded structure and no buckling with it; set opt.calcbuck: false or "
                                        "opt.transfer: false");
-    auto loadPath = [](int node, const std::string& field) { return "nprops." + std::to_string(node + 1) + "." + field; };
+    auto loadPath = [](int node, const std::string& field) { return npropsPath(node, field); };
     for (const auto& [node, np] : model.nprops) {
       std::string field;
       const char* axes[3] = {"x", "y", "z"};

@@ -54,9 +54,9 @@ void warnings(MPI_Comm comm, const Model& model) {
       const char* fields = kind.missingPrestress ? kind.missingPrestress(s) : nullptr;
       if (fields)
         PetscPrintf(comm,
-                    "warning: eprops[%zu] (%s set %zu) is form-found with zero prestress (%s): it carries no force and "
+                    "warning: eprops(%zu) (%s set) is form-found with zero prestress (%s): it carries no force and "
                     "gives no stiffness in form finding\n",
-                    static_cast<size_t>(set), elementTypeName(s.type()), static_cast<size_t>(set) + 1, fields);
+                    static_cast<size_t>(set) + 1, elementTypeName(s.type()), fields);
     }
   }
   if (model.nodes.size() > model.connectedNodes) {

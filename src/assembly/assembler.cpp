@@ -309,7 +309,7 @@ void Assembler::evaluateElement(const LocalElement& el, const KernelInput& in, c
     el.kernel->evaluate(in, needs, out_);
   } catch (const ElementValueError& ex) {
     if (elementValueError_.empty()) {
-      elementValueError_ = "error: " + ex.law() + (el.set >= 0 ? " of eprops[" + std::to_string(el.set) + "]" : std::string()) +
+      elementValueError_ = "error: " + ex.law() + (el.set >= 0 ? " of " + epropsName(el.set) : std::string()) +
                            " returned " + ex.returned() + ", which is not finite, at element " + std::to_string(el.sceneElement + 1);
       if (el.numSub > 1)
         elementValueError_ += " (part " + std::to_string(el.subIndex + 1) + " of " + std::to_string(el.numSub) + ")";

@@ -20,7 +20,7 @@ double sceneElementLength(const Model& model, int e) {
 }
 
 /// beamSection of set `set` for scene element e; its errors ("eprops.smod") name the set and the
-/// element ("eprops[0].smod", as the scene check does).
+/// element ("eprops(1).smod", as the scene check does).
 BeamSection sectionOf(const BeamProperties& s, int set, const Model& model, int e) {
   try {
     return beamSection(s, sceneElementLength(model, e));
@@ -28,7 +28,7 @@ BeamSection sectionOf(const BeamProperties& s, int set, const Model& model, int 
     const std::string field = ex.path().rfind("eprops.", 0) == 0 ? ex.path().substr(7) : std::string();
     const std::string prefix = ex.path() + ": ";
     const std::string what = std::string(ex.what()).rfind(prefix, 0) == 0 ? std::string(ex.what()).substr(prefix.size()) : ex.what();
-    throw SceneError("eprops[" + std::to_string(set) + "]" + (field.empty() ? "" : "." + field),
+    throw SceneError(epropsName(set) + (field.empty() ? "" : "." + field),
                      what + " (element " + std::to_string(e + 1) + ")");
   }
 }
@@ -62,7 +62,7 @@ ElementKernels makeKernelFactory(const Model& model, BeamMass beamMass) {
     try {
       (*ancf)[static_cast<int>(set)] = std::make_shared<const AncfCable2DParameters>(ancfCable2DParameters(*a));
     } catch (const std::invalid_argument& ex) {
-      throw SceneError("eprops[" + std::to_string(set) + "]", ex.what());
+      throw SceneError(epropsName(set), ex.what());
     }
   }
   // -beam_mass lumped: beams give their inertia to their nodes (docs/dynamics.md, "Free-floating beams")

@@ -32,9 +32,9 @@ std::vector<std::string> beamWarnings(const Model& model, std::size_t set) {
   const ElementSet& s = model.eprops[set];
   const BeamProperties& b = beam(s);
   if (b.cshape == CrossSection::Rect && !b.orien && !s.elems.empty())
-    w.push_back("eprops[" + std::to_string(set) + "] element" + (s.elems.size() > 1 ? "s " : " ") +
+    w.push_back(epropsName(static_cast<int>(set)) + " element" + (s.elems.size() > 1 ? "s " : " ") +
                 elementNumbers(s.elems, 5) +
-                ": cshape rect without orien (SPACAR Light requires it); the width dim[0] is taken along the global z "
+                ": cshape rect without orien (SPACAR Light requires it); the width dim(1) is taken along the global z "
                 "axis (global y for an element along z): give orien");
   std::vector<int> shortElems;  // every element of the set with L/w < 3, and the smallest L/w
   double smallest = HUGE_VAL;
@@ -48,7 +48,7 @@ std::vector<std::string> beamWarnings(const Model& model, std::size_t set) {
   if (!shortElems.empty()) {
     char ratio[40];
     std::snprintf(ratio, sizeof ratio, "%.3g", smallest);
-    w.push_back("eprops[" + std::to_string(set) + "] element" + (shortElems.size() > 1 ? "s " : " ") +
+    w.push_back(epropsName(static_cast<int>(set)) + " element" + (shortElems.size() > 1 ? "s " : " ") +
                 elementNumbers(shortElems, 5) + ": L/w " + (shortElems.size() > 1 ? "down to " : "= ") + ratio +
                 " < 3 without cw; constrained warping stiffens torsion (set cw: true)");
   }

@@ -13,7 +13,7 @@ namespace sinew {
 namespace {
 
 std::string nodeField(int sceneNode, const char* field) {
-  return "nprops." + std::to_string(sceneNode + 1) + "." + field;
+  return npropsPath(sceneNode, field);
 }
 
 /// METIS k-way partition of the element dual graph, computed on rank 0 and broadcast.
@@ -51,17 +51,17 @@ std::vector<int> partitionElements(MPI_Comm comm, const FeMesh& fe, int nparts) 
 std::shared_ptr<const NodeTimeFunctions> nodeTimeFunctions(const NodeProps& p, int s, bool ancf) {
   if (!p.hasTimeFunctions()) return nullptr;
   auto f = std::make_shared<NodeTimeFunctions>();
-  const std::string node = "nprops." + std::to_string(s + 1) + ".";
+  const std::string node = npropsPath(s, "");
   auto compile = [&](std::optional<Expression>& slot, const std::string& text, const std::string& field) {
     if (!text.empty()) slot = Expression::compile(text, node + field);
   };
   for (int k = 0; k < (ancf ? 2 : 3); ++k) {
-    compile(f->load[k], p.force_t[k], "force[" + std::to_string(k) + "]");
+    compile(f->load[k], p.force_t[k], indexedPath("force", static_cast<std::size_t>(k)));
     compile(f->prescribed[k], p.displ_t[k], std::string("displ_") + "xyz"[k]);
-    if (!ancf) compile(f->load[3 + k], p.moment_t[k], "moment[" + std::to_string(k) + "]");
+    if (!ancf) compile(f->load[3 + k], p.moment_t[k], indexedPath("moment", static_cast<std::size_t>(k)));
   }
   if (ancf) compile(f->load[4], p.moment_t[2], "moment");  // the torque about z acts on the slope
-  compile(f->rotAngle, p.rot_t, "rot[0]");
+  compile(f->rotAngle, p.rot_t, "rot(1)");
   f->rotAxis = p.rot_axis;
   return f;
 }

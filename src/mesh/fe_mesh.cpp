@@ -69,7 +69,7 @@ FeMesh discretize(const Model& model) {
     if (connected[n]) last = n;
   for (int n = 0; n < last; ++n)
     if (!connected[n])
-      throw SceneError("nodes[" + std::to_string(n) + "]",
+      throw SceneError(indexedPath("nodes", static_cast<std::size_t>(n)),
                        "node " + std::to_string(n + 1) + " is not connected to any element");
   mesh.connected.assign(mesh.X.size(), 1);
   for (int n = last + 1; n < nn; ++n) mesh.connected[n] = 0;

@@ -42,6 +42,20 @@ long globalFeElements(const DistributedMesh& m) {
   return mx + 1;
 }
 
+/// A variable-length string attribute of obj (as h5::writeAttribute writes it).
+std::string readTextAttribute(hid_t obj, const char* name, const std::string& what) {
+  h5::Handle attr(H5Aopen(obj, name, H5P_DEFAULT), H5Aclose, what);
+  char* s = nullptr;
+  h5::Handle mtype(H5Tcopy(H5T_C_S1), H5Tclose, "string type");
+  h5::check(H5Tset_size(mtype, H5T_VARIABLE), "string size");
+  h5::check(H5Tset_cset(mtype, H5T_CSET_UTF8), "string charset");
+  h5::check(H5Aread(attr, mtype, &s), what + " read");
+  const std::string text = s ? s : "";
+  h5::Handle space(H5Aget_space(attr), H5Sclose, what + " space");
+  H5Dvlen_reclaim(mtype, space, H5P_DEFAULT, &s);
+  return text;
+}
+
 bool linkExists(hid_t f, const std::string& name) {
   return h5::check(H5Lexists(f, name.c_str(), H5P_DEFAULT), "checkpoint: lookup of /" + name) > 0;
 }
@@ -182,18 +196,7 @@ CheckpointReader::CheckpointReader(MPI_Comm comm, const std::string& path, const
     throw std::runtime_error(path + " has no checkpoint (/" + group_ + "): it was not written by a run that can be continued "
                                     "(no step was written, or -showinputonly)");
   h5::Handle g(H5Gopen2(f, group_.c_str(), H5P_DEFAULT), H5Gclose, path + ": group /" + group_);
-  {
-    h5::Handle attr(H5Aopen(g, "fingerprint", H5P_DEFAULT), H5Aclose, path + ": /checkpoint fingerprint");
-    h5::Handle type(H5Aget_type(attr), H5Tclose, path + ": fingerprint type");
-    char* s = nullptr;
-    h5::Handle mtype(H5Tcopy(H5T_C_S1), H5Tclose, "string type");
-    h5::check(H5Tset_size(mtype, H5T_VARIABLE), "string size");
-    h5::check(H5Tset_cset(mtype, H5T_CSET_UTF8), "string charset");
-    h5::check(H5Aread(attr, mtype, &s), path + ": fingerprint read");
-    fingerprint_ = s ? s : "";
-    h5::Handle space(H5Aget_space(attr), H5Sclose, "fingerprint space");
-    H5Dvlen_reclaim(mtype, space, H5P_DEFAULT, &s);
-  }
+  fingerprint_ = readTextAttribute(g, "fingerprint", path + ": /checkpoint fingerprint");
   h5::Handle ds(H5Dopen2(f, (group_ + "/scalars").c_str(), H5P_DEFAULT), H5Dclose, path + ": /" + group_ + "/scalars");
   const auto dims = datasetDims(ds, "/" + group_ + "/scalars");
   if (dims.size() != 1 || dims[0] != hsize_t(kNumScalars))
@@ -273,6 +276,16 @@ std::vector<std::string> checkpointVectors(CheckpointPhase p) {
     case CheckpointPhase::Continuation: return {"U", "dU"};
   }
   return {};
+}
+
+std::string CheckpointReader::sceneText() const {
+  const hid_t f = static_cast<hid_t>(file_);
+  if (H5Aexists(f, "scene") <= 0) return {};
+  try {
+    return readTextAttribute(f, "scene", path_ + ": scene attribute");
+  } catch (const std::exception&) {
+    return {};
+  }
 }
 
 std::string CheckpointReader::table(const char* kind) const {

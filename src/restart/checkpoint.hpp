@@ -117,6 +117,8 @@ class CheckpointReader {
   CheckpointPhase phase() const { return static_cast<CheckpointPhase>(static_cast<int>(scalars_[kCkPhase])); }
   int rows() const { return static_cast<int>(scalars_[kCkRows]); }
   const std::string& fingerprint() const { return fingerprint_; }
+  /// The scene text of the run that wrote the file (root attribute `scene`); empty when it has none.
+  std::string sceneText() const;
   long feNodes() const { return feNodes_; }
   long feElements() const { return feElements_; }
   /// Form-finding history rows (kFormFindingColumns each); empty when none.

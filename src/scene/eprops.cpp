@@ -268,11 +268,11 @@ std::string nodeList(const std::vector<int>& nodes) {
   return s;
 }
 
-/// "a beam element (eprops[0])", "a rigid beam (in no eprops set)".
+/// "a beam element (eprops(1))", "a rigid beam (in no eprops set)".
 std::string elementKind(const Model& m, int e) {
   const int set = m.elementSet[static_cast<std::size_t>(e)];
   if (set < 0) return "a rigid beam (in no eprops set)";
-  return std::string("a ") + elementTypeName(m.eprops[static_cast<std::size_t>(set)].type()) + " element (eprops[" + std::to_string(set) + "])";
+  return std::string("a ") + elementTypeName(m.eprops[static_cast<std::size_t>(set)].type()) + " element (" + epropsName(set) + ")";
 }
 
 /// Two elements of the same type on the same node set (in any order) are one element given twice;
@@ -387,7 +387,7 @@ void parseEprops(const YAML::Node& eprops, SceneContext& ctx) {
     for (const auto& [e, pk] : members) {
       const int other = m.elementSet[static_cast<std::size_t>(e)];
       if (other >= 0)
-        fail(pk, ctx.elementLabel(e) + " is already in eprops[" + std::to_string(other) + "] (" + where[static_cast<std::size_t>(e)] +
+        fail(pk, ctx.elementLabel(e) + " is already in " + epropsName(other) + " (" + where[static_cast<std::size_t>(e)] +
                      "); an element belongs to one set");
       m.elementSet[static_cast<std::size_t>(e)] = static_cast<int>(i);
       where[static_cast<std::size_t>(e)] = pk;
@@ -411,7 +411,7 @@ void checkElementTypes(SceneContext& ctx) {
   int ancfSet = -1;
   for (std::size_t i = 0; i < m.eprops.size(); ++i)
     if (m.eprops[i].type() == ElementType::AncfCable2D && ancfSet < 0) ancfSet = static_cast<int>(i);
-  const std::string ancfPath = "eprops[" + std::to_string(ancfSet) + "]";
+  const std::string ancfPath = epropsName(ancfSet);
 
   for (std::size_t i = 0; i < m.eprops.size(); ++i) {
     const ElementType t = m.eprops[i].type();
@@ -445,8 +445,8 @@ void checkElementTypes(SceneContext& ctx) {
     const ElementType t = m.eprops[static_cast<std::size_t>(set)].type();
     const bool ok = t == ElementType::Membrane ? (nn == 3 || nn == 4) : nn == 2;
     if (!ok)
-      fail(ctx.elementPath(ei), ctx.elementLabel(ei) + " has " + std::to_string(nn) + " nodes, but eprops[" + std::to_string(set) +
-                                    "] makes it a " + elementTypeName(t) + ", which needs " +
+      fail(ctx.elementPath(ei), ctx.elementLabel(ei) + " has " + std::to_string(nn) + " nodes, but " + epropsName(set) +
+                                    " makes it a " + elementTypeName(t) + ", which needs " +
                                     (t == ElementType::Membrane ? "3 or 4" : "2"));
     if (t == ElementType::Membrane) {
       // Zero area: a triangle (or either half of a quad split along 1-3) with collinear nodes.

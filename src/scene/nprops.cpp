@@ -54,8 +54,8 @@ std::array<double, 6> getMominertia(const YAML::Node& v, const std::string& p) {
     for (std::size_t i = 0; i < 3; ++i)
       for (std::size_t j = i + 1; j < 3; ++j)
         if (std::abs(a[i][j] - a[j][i]) > 1e-12 * scale)
-          fail(p, "expected a symmetric matrix, but [" + std::to_string(i) + "][" + std::to_string(j) + "] = " + fmt(a[i][j]) +
-                      " and [" + std::to_string(j) + "][" + std::to_string(i) + "] = " + fmt(a[j][i]));
+          fail(p, "expected a symmetric matrix, but (" + std::to_string(i + 1) + "," + std::to_string(j + 1) + ") = " + fmt(a[i][j]) +
+                      " and (" + std::to_string(j + 1) + "," + std::to_string(i + 1) + ") = " + fmt(a[j][i]));
     I = {a[0][0], a[0][1], a[0][2], a[1][1], a[1][2], a[2][2]};
   } else {
     fail(p, what + ", got a list of " + std::to_string(v.size()));
@@ -242,7 +242,7 @@ void parseNprops(const YAML::Node& nprops, SceneContext& ctx) {
   std::map<int, std::string> seen;
   for (auto it = nprops.begin(); it != nprops.end(); ++it) {
     const std::string key = keyString(it->first, "nprops");
-    const std::string path = childPath("nprops", key);
+    const std::string path = numberedPath("nprops", key);
     Entry e{path, it->second, {}};
     if (isNodeNumber(key)) {
       const int node = checkedKeyIndex(it->first, path, "node", m.nodes.size());

@@ -96,14 +96,14 @@ void parseRls(const YAML::Node& v, const std::string& path, SceneContext& ctx) {
   Model& m = ctx.model;
   if (!v.IsMap()) fail(path, "expected a map from element numbers to released modes ({3: [2, 3]}), got " + describe(v));
   for (auto it = v.begin(); it != v.end(); ++it) {
-    const std::string p = childPath(path, keyString(it->first, path));
+    const std::string p = numberedPath(path, keyString(it->first, path));
     const int e = checkedKeyIndex(it->first, p, "element", m.elements.size());
     if (m.opt.rls.count(e)) fail(p, "element " + std::to_string(e + 1) + " is given twice");
     const int set = m.elementSet[static_cast<std::size_t>(e)];
     const ElementSet* s = set >= 0 ? &m.eprops[static_cast<std::size_t>(set)] : nullptr;
     if (s && s->type() != ElementType::Beam)
       fail(p, "element " + std::to_string(e + 1) + " is a " + elementTypeName(s->type()) +
-                  " (eprops[" + std::to_string(set) + "]); rls releases deformation modes of beam elements");
+                  " (" + epropsName(set) + "); rls releases deformation modes of beam elements");
     const auto modes = getInts(it->second, p, true);
     std::vector<int> released;
     for (std::size_t i = 0; i < modes.size(); ++i) {
@@ -112,8 +112,8 @@ void parseRls(const YAML::Node& v, const std::string& path, SceneContext& ctx) {
       if (std::find(released.begin(), released.end(), modes[i]) != released.end())
         fail(pi, "mode " + std::to_string(modes[i]) + " is listed twice");
       if (s && s->get<BeamProperties>().flex[static_cast<std::size_t>(modes[i] - 1)])
-        fail(pi, "mode " + std::to_string(modes[i]) + " of element " + std::to_string(e + 1) + " is flexible (eprops[" +
-                     std::to_string(set) + "].flex); a mode is either flexible or released");
+        fail(pi, "mode " + std::to_string(modes[i]) + " of element " + std::to_string(e + 1) + " is flexible (" +
+                     epropsName(set) + ".flex); a mode is either flexible or released");
       released.push_back(modes[i]);
     }
     m.opt.rls[e] = released;
@@ -396,7 +396,7 @@ void parseFormfinding(const YAML::Node& ff, SceneContext& ctx) {
     for (std::size_t i = 0; i < (v.IsSequence() ? v.size() : 1); ++i) {
       const std::string pi = v.IsSequence() ? indexPath(p(k), i) : p(k);
       const int s = checkedIndex(v.IsSequence() ? v[i] : v, pi, "eprops set", m.eprops.size());
-      if (std::find(out.begin(), out.end(), s) != out.end()) fail(pi, "eprops set " + std::to_string(s + 1) + " is listed twice");
+      if (std::find(out.begin(), out.end(), s) != out.end()) fail(pi, epropsName(s) + " is listed twice");
       out.push_back(s);
     }
     return out;
@@ -423,11 +423,11 @@ void parseFormfinding(const YAML::Node& ff, SceneContext& ctx) {
   if (ff["max_shape_change"].IsDefined()) f.max_shape_change = getPositive(ff["max_shape_change"], p("max_shape_change"), kRatio);
   for (int s : f.formfinding_elements)
     if (!elementKind(m.eprops[static_cast<std::size_t>(s)].type()).formFindable)
-      fail(p("formfinding_elements"), "eprops set " + std::to_string(s + 1) + " is not a cable or membrane set (only those can be form-found)");
+      fail(p("formfinding_elements"), epropsName(s) + " is not a cable or membrane set (only those can be form-found)");
   for (int s : f.stress_adaption)
     if (std::find(f.formfinding_elements.begin(), f.formfinding_elements.end(), s) == f.formfinding_elements.end() &&
         !f.formfinding_elements.empty())
-      fail(p("stress_adaption"), "eprops set " + std::to_string(s + 1) + " is not in formfinding_elements");
+      fail(p("stress_adaption"), epropsName(s) + " is not in formfinding_elements");
   // stress adaption that cannot act (issue 10 item 16): N0 <- (1 - mue_relax) s N0 + mue_relax N0 with
   // s = stretch / clamp(stretch, 1/lambda_max, lambda_max) (docs/formfinding.md)
   if (f.lambda_max < 1.0)
@@ -498,7 +498,7 @@ void parseSensors(const YAML::Node& sensors, SceneContext& ctx) {
       fail(childPath(path, "name"), "expected a name without '/', got '" + s.name + "'");
     for (std::size_t j = 0; j < m.sensors.size(); ++j)
       if (m.sensors[j].name == s.name)
-        fail(childPath(path, "name"), "sensor name '" + s.name + "' is already used by sensors[" + std::to_string(j) + "]");
+        fail(childPath(path, "name"), "sensor name '" + s.name + "' is already used by " + indexPath("sensors", j));
     m.sensors.push_back(s);
   }
 }

@@ -73,7 +73,7 @@ int parseNodes(const YAML::Node& nodes, Model& m) {
     if (n != 2 && n != 3) fail(path, "expected 2 or 3 numbers (x, y[, z]) for node " + std::to_string(i + 1) + ", got " + std::to_string(n));
     if (dim == 0) dim = n;
     if (n != dim)
-      fail(path, "expected " + std::to_string(dim) + " numbers like nodes[0] (all nodes have the same dimension), got " + std::to_string(n));
+      fail(path, "expected " + std::to_string(dim) + " numbers like nodes(1) (all nodes have the same dimension), got " + std::to_string(n));
     const auto x = getNumbers(row, path, kCoordinate);
     m.nodes.push_back({x[0], x[1], n == 3 ? x[2] : 0.0});
   }
@@ -296,7 +296,7 @@ void checkConnectivity(SceneContext& ctx) {
     for (int k = 2; k >= 0; --k)
       if (np.displ[k] || np.displ_initial[k]) field = std::string(np.displ[k] ? "displ_" : "displ_initial_") + "xyz"[k];
     if (!field.empty())
-      fail("nprops." + std::to_string(node + 1) + "." + field,
+      fail(npropsPath(node, field),
            "node " + std::to_string(node + 1) + " is not connected to any element (a trailing node, held fixed): " + field +
                " has nothing to act on");
   }
@@ -368,7 +368,7 @@ void parseRoot(const YAML::Node& root, const std::string& baseDir, Model& m) {
   if (!m.opt.dynamics)
     for (const auto& [node, np] : m.nprops)
       if (np.hasTimeFunctions()) {
-        m.warnings.push_back("nprops." + std::to_string(node + 1) +
+        m.warnings.push_back(indexedPath("nprops", static_cast<std::size_t>(node)) +
                              ": loads or prescribed motions given as functions of time act in statics with their value "
                              "at t = 0 (ramped by the load factor); they follow t only in a time integration (opt.dynamics)");
         break;
@@ -415,37 +415,47 @@ int lineOf(const YAML::Node& root, const std::string& path) {
   YAML::Node cur;
   cur.reset(root);
   int line = 0;
-  std::size_t i = 0;
-  while (i < path.size()) {
-    if (path[i] == '.') ++i;
-    if (i < path.size() && path[i] == '[') {
-      const std::size_t close = path.find(']', i);
-      if (close == std::string::npos) break;
-      const std::size_t k = std::stoul(path.substr(i + 1, close - i - 1));
-      i = close + 1;
-      if (!cur.IsSequence() || k >= cur.size()) break;
+  // one step down: the map entry `key`, or list entry `key` (1-based) of a sequence
+  const auto step = [&](const std::string& key, bool numbered) {
+    if (numbered && cur.IsSequence()) {
+      const std::size_t k = std::stoul(key);
+      if (k < 1 || k > cur.size()) return false;
       const YAML::Node& seq = cur;
-      YAML::Node next = seq[k];
+      YAML::Node next = seq[k - 1];
       cur.reset(next);
       if (cur.Mark().line >= 0) line = cur.Mark().line + 1;
-      continue;
+      return true;
     }
-    std::size_t end = path.find_first_of(".[", i);
-    if (end == std::string::npos) end = path.size();
-    const std::string key = path.substr(i, end - i);
-    i = end;
-    if (!cur.IsMap()) break;
-    bool found = false;
+    if (!cur.IsMap()) return false;
     for (auto it = cur.begin(); it != cur.end(); ++it) {
       if (it->first.IsScalar() && it->first.Scalar() == key) {
         if (it->first.Mark().line >= 0) line = it->first.Mark().line + 1;
         YAML::Node next = it->second;
         cur.reset(next);
-        found = true;
-        break;
+        return true;
       }
     }
-    if (!found) break;
+    return false;
+  };
+  std::size_t i = 0;
+  while (i < path.size()) {
+    if (path[i] == '.') ++i;
+    if (i < path.size() && path[i] == '(') {  // (k) or (k,l): 1-based list entries or numbered map keys
+      const std::size_t close = path.find(')', i);
+      if (close == std::string::npos) break;
+      std::istringstream parts(path.substr(i + 1, close - i - 1));
+      i = close + 1;
+      bool ok = true;
+      for (std::string part; ok && std::getline(parts, part, ',');)
+        ok = !part.empty() && part.find_first_not_of("0123456789") == std::string::npos && step(part, true);
+      if (!ok) break;
+      continue;
+    }
+    std::size_t end = path.find_first_of(".(", i);
+    if (end == std::string::npos) end = path.size();
+    const std::string key = path.substr(i, end - i);
+    i = end;
+    if (!step(key, false)) break;
   }
   return line;
 }
@@ -458,7 +468,7 @@ SceneError locate(const SceneError& e, const YAML::Node& root,
   if (path == "mesh" && message.find(".msh") != std::string::npos) return SceneError(path, message);
   for (const auto& [name, value] : overridden) {
     const std::string p = "opt." + name;
-    if (path == p || path.rfind(p + ".", 0) == 0 || path.rfind(p + "[", 0) == 0)
+    if (path == p || path.rfind(p + ".", 0) == 0 || path.rfind(p + "(", 0) == 0)
       return SceneError(path, message + " (from the command line: -" + name + " " + value + ")");
   }
   const int line = lineOf(root, path);

@@ -16,8 +16,11 @@ std::string childPath(const std::string& path, const std::string& key) {
   return path.empty() ? key : path + "." + key;
 }
 
-std::string indexPath(const std::string& path, std::size_t i) {
-  return path + "[" + std::to_string(i) + "]";
+std::string indexPath(const std::string& path, std::size_t i) { return indexedPath(path, i); }
+
+std::string numberedPath(const std::string& path, const std::string& key) {
+  const bool number = !key.empty() && std::all_of(key.begin(), key.end(), [](char c) { return c >= '0' && c <= '9'; });
+  return number ? path + "(" + key + ")" : childPath(path, key);
 }
 
 std::string fmt(double v) {

@@ -1,6 +1,7 @@
-// Typed access to YAML scene fields. Every getter takes the field's path (e.g. "eprops[2].dim")
+// Typed access to YAML scene fields. Every getter takes the field's path (e.g. "eprops(2).dim")
 // and throws sinew::SceneError(path, "expected ..., got ...") when the value does not fit.
-// Paths: map keys joined with '.', list positions 0-based in brackets.
+// Paths: map keys joined with '.', list positions 1-based in parentheses as in SPACAR Light
+// (MATLAB): eprops(2).dim(1), nodes(3,2) (indexedPath, sinew/model.hpp); nprops(4) for node 4.
 #pragma once
 #include <yaml-cpp/yaml.h>
 
@@ -14,7 +15,11 @@
 namespace sinew::scene {
 
 std::string childPath(const std::string& path, const std::string& key);
+/// path(i + 1): list entry i (0-based) of path, 1-based as SPACAR Light numbers it.
 std::string indexPath(const std::string& path, std::size_t i);
+/// The entry of a map keyed by numbers (nprops by node, opt.rls by element): path(key) for a number
+/// ("nprops(4)"), path.key for a name (a Gmsh physical group: "nprops.edge").
+std::string numberedPath(const std::string& path, const std::string& key);
 
 /// Short description of a value for messages: "a map", "a list of 2", "nothing", "'abc'", "3.5".
 std::string describe(const YAML::Node& n);

@@ -1,5 +1,6 @@
 #include "solvers/solver_defaults.hpp"
 #include "step/buckling_analysis.hpp"
+#include "step/backward_error.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -105,8 +106,8 @@ PetscErrorCode BucklingAnalysis::solveDense(DenseEigenpairs& pairs) {
 }
 
 // Rayleigh quotient mu = x^T K_m x / x^T (-K_g) x with the operator used (element-wise: accurate for
-// the smooth modes of fine meshes; error quadratic in the mode's), and the backward error
-// ||K_m x - mu (-K_g) x|| / ((||K_m|| + |mu| ||K_g||) ||x||). Kg_ holds -K_g.
+// the smooth modes of fine meshes; error quadratic in the mode's), and the backward error of
+// K_m x - mu (-K_g) x, rotations scaled by the model size (scaledBackwardError). Kg_ holds -K_g.
 PetscErrorCode BucklingAnalysis::refine(Vec x, PetscScalar* mu, double* backward) {
   PetscFunctionBeginUser;
   if (!std::isfinite(*mu)) PetscFunctionReturn(PETSC_SUCCESS);
@@ -120,12 +121,10 @@ PetscErrorCode BucklingAnalysis::refine(Vec x, PetscScalar* mu, double* backward
   PetscCall(VecDot(x, b, &xb));
   if (elementwise_ && xb != 0.0) *mu = xa / xb;
   PetscCall(VecAXPY(a, -*mu, b));
-  PetscReal rn, xn, nm, ng;
-  PetscCall(VecNorm(a, NORM_2, &rn));
-  PetscCall(VecNorm(x, NORM_2, &xn));
-  PetscCall(MatNorm(Km_, NORM_INFINITY, &nm));
-  PetscCall(MatNorm(Kg_, NORM_INFINITY, &ng));
-  *backward = rn / ((nm + std::abs(*mu) * ng) * xn);
+  UnitFreeNorms scaled;
+  PetscCall(unitFreeNorms(asm_.mesh(), Km_, Kg_, &scaled));
+  PetscCall(scaledBackwardError(scaled, x, a, *mu, backward));
+  PetscCall(destroyUnitFreeNorms(&scaled));
   PetscCall(VecDestroy(&a));
   PetscCall(VecDestroy(&b));
   PetscFunctionReturn(PETSC_SUCCESS);

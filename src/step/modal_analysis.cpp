@@ -2,6 +2,7 @@
 #include "solvers/solver_defaults.hpp"
 #include "step/dense_gather.hpp"
 #include "step/modal_analysis.hpp"
+#include "step/backward_error.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -313,9 +314,8 @@ PetscErrorCode ModalAnalysis::atStep(Vec U, const LoadState& ls, ResultFile& fil
   PetscInt maxit;
   PetscCall(EPSGetTolerances(eps_, &tol, &maxit));
   tol_ = tol > 0 ? tol : SLEPC_DEFAULT_TOL;  // set by EPSSetUp, which the dense path skips
-  PetscReal normK, normM;  // scales of the backward error
-  PetscCall(MatNorm(K_, NORM_INFINITY, &normK));
-  PetscCall(MatNorm(M_, NORM_INFINITY, &normM));
+  UnitFreeNorms scaled;  // scales of the backward error
+  PetscCall(unitFreeNorms(mesh, K_, M_, &scaled));
   Vec r;
   PetscCall(MatCreateVecs(K_, &r, nullptr));
 
@@ -365,17 +365,16 @@ PetscErrorCode ModalAnalysis::atStep(Vec U, const LoadState& ls, ResultFile& fil
     } else {
       PetscCall(MatMult(K_, x, r));
     }
-    // backward error ||K x - lambda M x|| / ((||K|| + |lambda| ||M||) ||x||) with the operator used
+    // backward error of K x - lambda M x with the operator used, rotations scaled by the model size
     PetscCall(VecAXPY(r, -kr, Mx));
-    PetscReal rn, xn2;
-    PetscCall(VecNorm(r, NORM_2, &rn));
-    PetscCall(VecNorm(x, NORM_2, &xn2));
-    const double backward = rn / ((normK + std::abs(kr) * normM) * xn2);
+    PetscReal backward;
+    PetscCall(scaledBackwardError(scaled, x, r, kr, &backward));
     pairs.push_back({kr, static_cast<int>(found.size()), estimate, backward});
     found.push_back(x);
   }
   PetscCall(VecDestroy(&Mx));
   PetscCall(VecDestroy(&r));
+  PetscCall(destroyUnitFreeNorms(&scaled));
   std::stable_sort(pairs.begin(), pairs.end(), [](const Pair& a, const Pair& b) { return a.lambda < b.lambda; });
 
   const double zeroTol = 1e-6 * scale;

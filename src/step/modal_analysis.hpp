@@ -73,7 +73,7 @@ class ModalAnalysis : public StepAnalysis {
   Mat Kop_ = nullptr;          // shell: Assembler::applyTangent(x, y, true)
   Mat P_ = nullptr;            // assembled K - sigma M: the preconditioner (LU) of the inner GMRES
   std::vector<double> estimate_;  // SLEPc's error estimate per reported pair, last step
-  std::vector<double> backward_;  // backward error ||K x - lambda M x|| / ((||K|| + |lambda| ||M||) ||x||)
+  std::vector<double> backward_;  // backward error of K x - lambda M x, unit-free (scaledBackwardError)
   double tol_ = 1e-8;
   int warned_ = 0;
   Vec dK_ = nullptr, dM_ = nullptr;

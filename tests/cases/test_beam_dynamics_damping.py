@@ -92,7 +92,7 @@ st.check(abs(er) < 2e-3, "Rayleigh damping (zeta at f1 and f2): the same logarit
 
 # validation: the error names the field, exit 2
 base = {"tend": T1, "dt": T1 / 10}
-for bad, field in (({"modal_damping": -0.1}, "modal_damping"), ({"modal_damping": [0.01, -1]}, "modal_damping[1]"),
+for bad, field in (({"modal_damping": -0.1}, "modal_damping"), ({"modal_damping": [0.01, -1]}, "modal_damping(2)"),
                    ({"stiffness_proportional_damping": -1e-4}, "stiffness_proportional_damping"),
                    ({"modal_damping_modes": 3}, "modal_damping_modes")):
     _, out = st.run("beamdamp_bad", bt.yaml_text(scene({"calccompl": False, "dynamics": {**base, **bad}})), expect_exit=2)

@@ -99,11 +99,11 @@ for k, (e, xi, nd) in enumerate(ends):
         st.check(d < 1e-15, f"element {e} xi = {xi:g}: {v} = node {nd} sensor to round-off")
 
 # errors name the field (exit 2)
-bad_cases = [({"element": 7, "xi": 0.5, "variable": "Position", "name": "b"}, "sensors[0].element"),
-             ({"element": 1, "xi": 1.5, "variable": "Position", "name": "b"}, "sensors[0].xi"),
-             ({"element": 1, "xi": 0.5, "x": 0.2, "variable": "Position", "name": "b"}, "sensors[0].xi"),
-             ({"element": 1, "xi": 0.5, "variable": "Director1", "name": "b"}, "sensors[0].variable"),
-             ({"element": 1, "xi": 0.5, "variable": "Pressure", "name": "b"}, "sensors[0].variable")]
+bad_cases = [({"element": 7, "xi": 0.5, "variable": "Position", "name": "b"}, "sensors(1).element"),
+             ({"element": 1, "xi": 1.5, "variable": "Position", "name": "b"}, "sensors(1).xi"),
+             ({"element": 1, "xi": 0.5, "x": 0.2, "variable": "Position", "name": "b"}, "sensors(1).xi"),
+             ({"element": 1, "xi": 0.5, "variable": "Director1", "name": "b"}, "sensors(1).variable"),
+             ({"element": 1, "xi": 0.5, "variable": "Pressure", "name": "b"}, "sensors(1).variable")]
 for k, (bad, field) in enumerate(bad_cases):
     _, out = st.run(f"beam_element_sensors_bad{k}", bt.yaml_text(dict(scene, sensors=[bad])), expect_exit=2)
     st.check(field in out, f"bad sensor {bad} refused naming {field}")

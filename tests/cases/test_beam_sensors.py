@@ -61,5 +61,5 @@ st.check(np.max(np.abs(s["AngularVelocity"][:, 2])) > 0.01, "sensors: the tip ro
 # a node sensor names either a node or an element position: refused naming the field (exit 2)
 bad = dict(scene, sensors=[{"node": tip, "element": 1, "variable": "Position", "name": "x"}])
 _, out = st.run("beam_sensors_bad", bt.yaml_text(bad), expect_exit=2)
-st.check("sensors[0].node" in out, "node and element together refused, naming sensors[0].node")
+st.check("sensors(1).node" in out, "node and element together refused, naming sensors(1).node")
 st.done()

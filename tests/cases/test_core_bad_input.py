@@ -51,17 +51,17 @@ def no_emod(s):
 # (name, scene text or None for a missing file, extra flags, [fragments the message must contain])
 CASES = [
     ("unknown_key", scene(setitem(["opt", "loadstep"], 3)), [], ["opt.loadstep", "unknown key", "did you mean 'loadsteps'"]),
-    ("vector_length", scene(setitem(["nprops", 3, "force"], [0, -10])), [], ["nprops.3.force", "expected 3 numbers", "got 2"]),
-    ("element_node_range", scene(setitem(["elements"], [[1, 2], [2, 7]])), [], ["elements[1]", "node 7 does not exist"]),
-    ("nprops_node_range", scene(setitem(["nprops", 9], {"fix": True})), [], ["nprops.9", "node 9 does not exist"]),
-    ("zero_length", scene(setitem(["nodes"], [[0, 0, 0], [0.5, 0, 0], [0.5, 0, 0]])), [], ["elements[1]", "zero length"]),
-    ("missing_emod", scene(no_emod), [], ["eprops[0].emod", "missing"]),
-    ("dim_length", scene(setitem(["eprops", 0, "dim"], [0.02])), [], ["eprops[0].dim", "expected 2 numbers", "rect"]),
+    ("vector_length", scene(setitem(["nprops", 3, "force"], [0, -10])), [], ["nprops(3).force", "expected 3 numbers", "got 2"]),
+    ("element_node_range", scene(setitem(["elements"], [[1, 2], [2, 7]])), [], ["elements(2,2)", "node 7 does not exist"]),
+    ("nprops_node_range", scene(setitem(["nprops", 9], {"fix": True})), [], ["nprops(9)", "node 9 does not exist"]),
+    ("zero_length", scene(setitem(["nodes"], [[0, 0, 0], [0.5, 0, 0], [0.5, 0, 0]])), [], ["elements(2)", "zero length"]),
+    ("missing_emod", scene(no_emod), [], ["eprops(1).emod", "missing"]),
+    ("dim_length", scene(setitem(["eprops", 0, "dim"], [0.02])), [], ["eprops(1).dim", "expected 2 numbers", "rect"]),
     ("override_value", scene(lambda s: None), ["-loadsteps", "abc"], ["opt.loadsteps", "-loadsteps abc", "expected an integer"]),
     ("missing_file", None, [], ["cannot open scene file", "no_such_scene.yaml"]),
-    ("two_sets", scene(two_sets), [], ["eprops[1].elems", "already in eprops[0]"]),
-    ("three_node_beam", scene(three_node), [], ["elements[2]", "has 3 nodes", "eprops[0]"]),
-    ("load_on_fixed", scene(setitem(["nprops", 1], {"fix": True, "force": [1, 0, 0]})), [], ["nprops.1.force", "fix"]),
+    ("two_sets", scene(two_sets), [], ["eprops(2).elems", "already in eprops(1)"]),
+    ("three_node_beam", scene(three_node), [], ["elements(3)", "has 3 nodes", "eprops(1)"]),
+    ("load_on_fixed", scene(setitem(["nprops", 1], {"fix": True, "force": [1, 0, 0]})), [], ["nprops(1).force", "fix"]),
 ]
 
 for name, text, flags, fragments in CASES:

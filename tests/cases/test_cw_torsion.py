@@ -43,7 +43,7 @@ st.close(twist(out), T * L / (G * It * f_cw), rtol=1e-6, what="twist with cw vs 
 st.check("warning" not in log, "cw: true -> no warping warning")
 out, log = st.run("cw_off", scene(False), np_=2)
 st.close(twist(out), T * L / (G * It), rtol=1e-6, what="twist without cw vs T L / (G I_t)")
-st.check("warning: eprops[0] element 1: L/w = 1 < 3 without cw" in log, "L/w < 3 without cw: warning printed")
+st.check("warning: eprops(1) element 1: L/w = 1 < 3 without cw" in log, "L/w < 3 without cw: warning printed")
 st.check(f_cw > 1.5, f"the warping factor matters here (f_cw = {f_cw:.3f})")
 # a long leaf (L/w = 5) gets no warning
 out, log = st.run("cw_long", scene(False).replace(f"[{L}, 0, 0]", f"[{5 * w}, 0, 0]"), np_=2)

@@ -99,9 +99,9 @@ compare(h2, rest, "time functions 2 -> 1 (stopped at t = 0.2)", other_ranks=h1)
 
 # validation: the field is named, exit 2
 _, o = st.run("tfun_bad_syntax", scene({4: {"force": ["sin(2*pi*t", 0, 0]}}), expect_exit=2)
-st.check("nprops.4.force[0]" in o, "a syntax error names nprops.4.force[0]")
+st.check("nprops(4).force(1)" in o, "a syntax error names nprops(4).force(1)")
 _, o = st.run("tfun_bad_var", scene({1: {"displ_x": "0.001*axialStrain"}}), expect_exit=2)
-st.check("nprops.1.displ_x" in o and "only use t" in o, "a force-law argument in a function of time names nprops.1.displ_x")
+st.check("nprops(1).displ_x" in o and "only use t" in o, "a force-law argument in a function of time names nprops(1).displ_x")
 _, o = st.run("tfun_bad_rot", scene({5: {"rot": ["0.1*t", 0, 0]}}), expect_exit=2)
-st.check("nprops.5.rot[0]" in o and "fixed axis" in o, "a rotation vector with a function names the entry")
+st.check("nprops(5).rot(1)" in o and "fixed axis" in o, "a rotation vector with a function names the entry")
 st.done()

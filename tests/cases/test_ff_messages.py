@@ -24,7 +24,7 @@ def error_line(log):
 out, log = run("ffm_catenoid", to_yaml(catenoid_scene(halfh=0.7, nt=16, nz=8, steps=300, tol=1e-8)), expect_exit=3)
 e = error_line(log)
 print("  A:", e)
-check("collapsed" in e and "membrane set 1" in e, "A: collapse naming the membrane set")
+check("collapsed" in e and "eprops(1) (membrane set)" in e, "A: collapse naming the membrane set")
 # before: "... the prestress is too low against the edge cables or loads"
 check("against the edge cables" not in e and "too low for" not in e and "unsupported" not in e,
       "A: the hint blames no edge cables, loads or free edges (the catenoid has none)")
@@ -60,7 +60,7 @@ net = {"title": "cable patch with an unstressed cable",
 out, log = run("ffm_net", to_yaml(net))
 w = [l for l in log.splitlines() if l.startswith("warning") and "zero prestress" in l]
 print("  C:", w)
-check(len(w) == 1 and "eprops[1] (cable set 2)" in w[0], "C: warning naming the zero-prestress cable set")
+check(len(w) == 1 and "eprops(2) (cable set)" in w[0], "C: warning naming the zero-prestress cable set")
 check("membrane mesh quality" not in log, "C: no membrane mesh quality line for a cable net")
 check("form finding (URS)" in log, "C: the form-finding summary is printed")
 done()

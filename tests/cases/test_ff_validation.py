@@ -67,13 +67,13 @@ with h5(out) as f:
     check(int(f.attrs["converged"]) == 1, "emod 0: converged")
 ld = copy.deepcopy(sc)
 ld["nprops"]["5"] = {"force": [0, 0, -1]}
-refused("ffv_emod0_load", ld, "eprops[0].emod", "emod 0 with a load after form finding")
+refused("ffv_emod0_load", ld, "eprops(1).emod", "emod 0 with a load after form finding")
 nf = copy.deepcopy(sc)
 del nf["formfinding"]
-refused("ffv_emod0_noff", nf, "eprops[0].emod", "emod 0 without form finding")
+refused("ffv_emod0_noff", nf, "eprops(1).emod", "emod 0 without form finding")
 dp = copy.deepcopy(sc)
 dp["formfinding"]["elastic_restart_method"] = "DISPLACEMENT"
-refused("ffv_emod0_disp", dp, "eprops[0].emod", "emod 0 with elastic_restart_method DISPLACEMENT")
+refused("ffv_emod0_disp", dp, "eprops(1).emod", "emod 0 with elastic_restart_method DISPLACEMENT")
 
 # JSON scene: nprops keys are strings
 js = json.dumps(base, indent=1)

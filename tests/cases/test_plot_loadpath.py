@@ -32,7 +32,7 @@ print("  " + p.stdout.strip().replace("\n", "\n  "))
 st.check(p.returncode == 0, f"plot_loadpath.py exit {p.returncode}")
 st.check("segments: stable 2, unstable 1; limit points 2, bifurcation points 0" in p.stdout,
          "counts: 2 stable segments, 1 unstable, 2 limit points")
-st.check("load axis: load F_y [N] = load factor x -1 (nprops.2.force = [0, -1, 0])" in p.stdout,
+st.check("load axis: load F_y [N] = load factor x -1 (nprops(2).force = [0, -1, 0])" in p.stdout,
          "the load itself on a second axis: F_y = load factor x (-1 N), the apex's one ramped force")
 if st.check(os.path.exists(png) and os.path.getsize(png) > 5000, "PNG written (> 5 kB)"):
     img = Image.open(png).convert("RGB")

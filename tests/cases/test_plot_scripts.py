@@ -123,7 +123,7 @@ out = script("plot_input.py", text, expect=2)
 st.check(len(out.strip().splitlines()) == 1 and "neither" in out, "a text file: one line, exit 2")
 bad = st.scene_file("plot_scripts_bad_scene", "nodes: [[0, 0, 0]]\nelements: [[1, 5]]\n")
 out = script("plot_input.py", bad, expect=2)
-st.check(out.startswith("error: elements[0][1]") and "Traceback" not in out, "a scene error is Sinew's line, exit 2")
+st.check(out.startswith("error: elements(1,2)") and "Traceback" not in out, "a scene error is Sinew's line, exit 2")
 
 # ---- every plot script: a missing file and a text file are one line, non-zero, no traceback
 for name, extra in (("plot_results.py", []), ("plot_input.py", []), ("plot_loadpath.py", ["--node", "1"]),

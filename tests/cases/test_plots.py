@@ -106,7 +106,7 @@ st.check("step 9" in out, "a step outside 1..4 is named in the error")
 p = subprocess.run(["/usr/bin/python3", os.path.join(st.SOURCE, "scripts", "plot_loadpath.py"), h5, "--node", "2",
                     "--dir", "z", "-o", os.path.join(work, "plots_loadpath.png")], capture_output=True, text=True, timeout=300)
 print("  plot_loadpath.py: " + p.stdout.strip().replace("\n", " | "))
-st.check(p.returncode == 0 and "load axis: load F_z [N] = load factor x -20 (nprops.2.force = [0, 0, -20])" in p.stdout,
+st.check(p.returncode == 0 and "load axis: load F_z [N] = load factor x -20 (nprops(2).force = [0, 0, -20])" in p.stdout,
          "load-stepped result: the load axis is the tip force F_z = load factor x -20 N")
 
 # A synthetic 3D result with 300 nodes: no node numbers; 3D view (the nodes span x, y and z)

@@ -13,7 +13,9 @@ the initial support load alone) and equal a run with the moment scaled by 14/9 i
 scene (a moved node, an added node and element, added gravity) or another opt.load_ramp is refused
 with exit 2, naming what changed, before any file is written."""
 import os
+import shutil
 
+import h5py
 import numpy as np
 import yaml
 
@@ -65,14 +67,27 @@ with st.h5(ext) as e, st.h5(ref2) as r, st.h5(scaled) as s:
 scene = yaml.safe_load(open(ch))
 scene["nodes"][4] = [0.0, 0.13, 0.0]
 moved, out = restarted("rs_ch_moved", to_yaml(scene), 2, part, opts, expect_exit=2)
-st.check("node coordinates changed" in out, "moved node: 'node coordinates changed' expected in the message")
+st.check("nodes(5,2) changed: 0.12 -> 0.13" in out, "moved node: the field, 1-based, and its values expected in the message")
 st.check(not os.path.exists(moved), "refused restart: no result file expected")
 scene = yaml.safe_load(open(ch))
 scene["nodes"].append([0.0, 0.2, 0.0])
 scene["elements"].append([5, 6])
 _, out = restarted("rs_ch_added", to_yaml(scene), 2, part, opts, expect_exit=2)
-st.check("nodes (6 here, 5 in" in out and "elements (5 here, 4 in" in out,
+st.check("nodes changed: 5 entries -> 6" in out and "elements changed: 4 entries -> 5" in out,
          "added node/element: node and element counts expected in the message")
+# a changed property names its field and values (issue 24 item 13), also with the scene written anew
+scene = yaml.safe_load(open(ch))
+scene["eprops"][0]["emod"] = 2.0e11
+_, out = restarted("rs_ch_emod", to_yaml(scene), 2, part, opts, expect_exit=2)
+st.check("eprops(1).emod changed: 210e9 -> 200000000000" in out and "nbeams" not in out,
+         "changed emod: 'eprops(1).emod changed: 210e9 -> 200000000000' (and nothing else) expected")
+# a checkpoint without the scene text (a file from before the text was kept, or edited): the category
+old_file = os.path.join(st.WORK, "rs_ch_noscene.h5")
+shutil.copyfile(part, old_file)
+with h5py.File(old_file, "r+") as f:
+    del f.attrs["scene"]
+_, out = restarted("rs_ch_emod_old", to_yaml(scene), 2, old_file, opts, expect_exit=2)
+st.check("eprops changed" in out, "no scene text in the checkpoint file: the changed category ('eprops changed') expected")
 _, out = restarted("rs_ch_gravity", ch, 2, part, opts + ["-gravity", "0,-9.81,0"], expect_exit=2)
 st.check("loads" in out and "changed" in out, "added gravity during statics: refused, naming the loads")
 _, out = restarted("rs_ch_ramp", ch, 2, part, opts + ["-load_ramp", "uniform"], expect_exit=2)

@@ -132,14 +132,14 @@ expect("eps_type", beam(nbeams=2), 4, ["internal solver error", "Unknown EPS typ
 
 # 4. and 6. non-finite user functions: which one, which set, element and time
 expect("uf_dynamics_div0", dyn_div0, 3,
-       ['bendingMomentUserFunction "', "1/0*curvature", "of eprops[0] returned nan", "not finite", "at element 1",
+       ['bendingMomentUserFunction "', "1/0*curvature", "of eprops(1) returned nan", "not finite", "at element 1",
         "time t = 0"], avoid=["mass matrix", "singular"])
 for tag, expr, value in (("sqrt", "sqrt(-1)", "nan"), ("log", "log(0)", "-inf"), ("exp", "exp(1000)", "inf")):
     expect("uf_statics_" + tag, with_law(ANCF_STATICS, "bendingMomentUserFunction", expr), 3,
-           [f'bendingMomentUserFunction "{expr}" of eprops[0] returned {value}', "at element 1 (part 1 of 32)", "time t = "],
+           [f'bendingMomentUserFunction "{expr}" of eprops(1) returned {value}', "at element 1 (part 1 of 32)", "time t = "],
            avoid=["mechanism", "singular"])
 expect("uf_statics_axial_div0", with_law(ANCF_STATICS, "axialForceUserFunction", "1/0"), 3,
-       ['axialForceUserFunction "1/0" of eprops[0] returned inf', "at element 1", "time t = "], avoid=["mechanism"])
+       ['axialForceUserFunction "1/0" of eprops(1) returned inf', "at element 1", "time t = "], avoid=["mechanism"])
 
 # 5. nfreq above the number of unknowns: 2 beams x 2 parts, node 1 clamped: 4 free nodes = 24 unknowns
 for nfreq in (25, 100000):

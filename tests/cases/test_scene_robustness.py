@@ -68,12 +68,12 @@ ancf_axial = "\n".join("    physicsAxialStiffness: 1e308" if ln.strip().startswi
 
 # (name, scene text, or a path to run as is; fragments the error line must hold; fragments it must not)
 CASES = [
-    ("dens_huge", beam(dens="1e308"), ["eprops[0].dens", "1e+308", "[1e-20, 1e+20]"], []),
-    ("dens_tiny", beam(dens="1e-308"), ["eprops[0].dens", "1e-308", "[1e-20, 1e+20]"], []),
-    ("emod_huge", beam(emod="1e308"), ["eprops[0].emod", "1e+308"], ["mechanism"]),
-    ("node_far", beam(x2="1e308"), ["nodes[1][0]", "coordinate", "1e+308"], ["coincide"]),
+    ("dens_huge", beam(dens="1e308"), ["eprops(1).dens", "1e+308", "[1e-20, 1e+20]"], []),
+    ("dens_tiny", beam(dens="1e-308"), ["eprops(1).dens", "1e-308", "[1e-20, 1e+20]"], []),
+    ("emod_huge", beam(emod="1e308"), ["eprops(1).emod", "1e+308"], ["mechanism"]),
+    ("node_far", beam(x2="1e308"), ["nodes(2,1)", "coordinate", "1e+308"], ["coincide"]),
     ("ancf_axial_huge", ancf_axial, ["physicsAxialStiffness", "1e+308"], []),
-    ("duplicated_element", beam(extra="\n  - [2, 1]", elems="1, 2, 3"), ["elements[2]", "element 3 duplicates element 1"], []),
+    ("duplicated_element", beam(extra="\n  - [2, 1]", elems="1, 2, 3"), ["elements(3)", "element 3 duplicates element 1"], []),
     ("two_documents", beam() + "---\ntitle: second\n", ["the file holds 2 YAML documents", "Sinew reads one"], []),
     ("deep_nesting", "nodes: " + "[" * 100000 + "]" * 100000 + "\n", ["the nesting is too deep", "line 1"], ["bad file"]),
     ("empty_file", "", ["is empty"], ["nodes: missing"]),

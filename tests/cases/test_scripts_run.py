@@ -5,7 +5,10 @@
   a readable result file (SIGTERM to mpirun itself would kill the ranks).
 - A rank killed by a signal (Open MPI's own note about it is silenced with the boilerplate) is said
   by scripts/run with the signal's number and the exit status 128 + signal.
-- -o given to scripts/run replaces its out/<scene>.h5."""
+- -o given to scripts/run replaces its out/<scene>.h5.
+- Without a rank count scripts/run chooses one from the model size and says so on one line: 1 rank
+  for the 66 unknowns of crosshinge (issue 24 item 2); an explicit -n 2 (or -np 2) wins, with no
+  such line."""
 import os
 import signal
 import subprocess
@@ -17,7 +20,7 @@ import sinewtest as st
 
 RUN = os.path.join(st.SOURCE, "scripts", "run")
 env = dict(st.ENV, SINEW_BUILD_DIR=os.path.dirname(os.path.abspath(st.BIN)), SINEW_BUILD_TARGETS="sinew")
-for k in ("OMPI_MCA_orte_execute_quiet",):  # scripts/run's own setting, not the caller's
+for k in ("OMPI_MCA_orte_execute_quiet", "SINEW_NP"):  # scripts/run's own settings, not the caller's
     env.pop(k, None)
 BOILERPLATE = ("Primary job", "mpirun detected", "-------", "Per user-direction")
 
@@ -77,6 +80,25 @@ seen += rest.splitlines()
 print(f"SIGKILL of a rank: exit {proc.returncode}; last lines {seen[-2:]}")
 st.check(proc.returncode == 128 + signal.SIGKILL, f"a rank killed: exit {proc.returncode}, expected {128 + signal.SIGKILL}")
 st.check(any("ended on signal 9" in s for s in seen), "scripts/run names the signal that ended a rank")
+# 4. the rank count: chosen from the model size (1 rank for 66 unknowns), an explicit -n / -np wins
+quick = ["-loadsteps", "1", "-calccompl", "false", "-calcbuck", "false", "-calcfreq", "false"]
+for name, count, expect in (("auto", [], 1), ("n2", ["-n", "2"], 2), ("np2", ["-np", "2"], 2), ("n1", ["-n", "1"], 1)):
+    o = os.path.join(st.WORK, f"scripts_run_ranks_{name}.h5")
+    p = subprocess.run([RUN, scene, "-o", o] + count + quick, env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                       text=True, timeout=300)
+    chose = [ln for ln in p.stdout.splitlines() if ln.startswith("scripts/run:")]
+    ranks = [ln for ln in p.stdout.splitlines() if "unknowns" in ln and "scene " in ln]
+    print(f"ranks {name}: exit {p.returncode}; {chose}; {ranks}")
+    st.check(p.returncode == 0, f"ranks {name}: exit {p.returncode}")
+    plural = "rank" if expect == 1 else "ranks"
+    st.check(any(f", {expect} {plural}, 66 unknowns" in ln for ln in ranks), f"ranks {name}: the run used {expect} {plural}: {ranks}")
+    if count:
+        st.check(not chose, f"ranks {name}: an explicit count is not second-guessed: {chose}")
+    else:
+        st.check(len(chose) == 1 and chose[0].startswith("scripts/run: 1 rank (66 unknowns"),
+                 f"ranks {name}: one line saying 1 rank for 66 unknowns and why: {chose}")
+    if os.path.exists(o):
+        os.remove(o)
 for f in (out, out + ".part", os.path.join(st.WORK, "scripts_run_term.h5")):
     if os.path.exists(f):
         os.remove(f)

@@ -30,7 +30,7 @@ with st.h5(out) as f:
 xdmf = open(os.path.splitext(out)[0] + ".xdmf").read()
 st.check('<Grid Name="input"' in xdmf and "step_0" not in xdmf, "showinputonly: the XDMF shows the grid 'input', no steps")
 for said in ("input (opt.showinputonly: read and checked, nothing solved)", "nodes: 3 (3D)", "elements: 2",
-             "eprops[0] beam, element 1: flex [1, 2, 3, 4, 5, 6], rect [0.02, 0.0005]",
+             "eprops(1) beam, element 1: flex [1, 2, 3, 4, 5, 6], rect [0.02, 0.0005]",
              "rigid, massless (in no set): element 2", "node 1: fix", "node 3: force [0, 0, 0.1]",
              "picture: scripts/plot_input.py"):
     st.check(said in log, f"showinputonly summary says '{said}'")

@@ -26,5 +26,5 @@ for node in (0, 1):
 # a zero axis is a scene error naming the field
 bad = dict(scene, nprops={1: {"fix_pos": True, "rot_initial": [0.3, 0, 0, 0]}})
 _, log = st.run("spacar_rotations_zero_axis", bad, expect_exit=2)
-st.check("nprops.1.rot_initial" in log and "axis" in log, "zero axis: " + log.strip()[-200:])
+st.check("nprops(1).rot_initial" in log and "axis" in log, "zero axis: " + log.strip()[-200:])
 st.done()

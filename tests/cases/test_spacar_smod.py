@@ -22,7 +22,7 @@ _, log = st.run("smod_missing", SCENE, expect_exit=2)
 err = [ln for ln in log.splitlines() if ln.startswith("error:")]
 print("  message:", err)
 st.check(len(err) == 1, f"one error line, got {len(err)}")
-st.check(err and "eprops[0].smod" in err[0] and "line 6" in err[0], "the error names eprops[0].smod and line 6 (the set)")
+st.check(err and "eprops(1).smod" in err[0] and "line 6" in err[0], "the error names eprops(1).smod and line 6 (the set)")
 st.check(err and "modes 3 and 4 (bending, with shear deformation) need smod" in err[0], "the error says why smod is needed")
 # elongation only: no smod needed
 out, log = st.run("smod_axial", SCENE.replace("flex: [3, 4]", "flex: [1]"))

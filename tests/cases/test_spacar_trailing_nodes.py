@@ -41,12 +41,12 @@ with st.h5(ref) as r, st.h5(out) as f:
 middle = dict(base, nodes=[[0, 0, 0], [9, 9, 9], [0.5, 0, 0], [0.5, 0.5, 0]], elements=[[1, 3], [3, 4]],
               nprops={1: {"fix": True}, 4: {"force": [0, 0, -5]}})
 _, log = st.run("trailing_middle", middle, expect_exit=2)
-st.check("nodes[1]" in log and "node 2 is not connected to any element" in log, "middle unconnected node: " + log.strip()[-300:])
+st.check("nodes(2)" in log and "node 2 is not connected to any element" in log, "middle unconnected node: " + log.strip()[-300:])
 # a load or a mass on a trailing node has nothing to act on
 for field, value in (("force", [1, 0, 0]), ("mass", 1.0)):
     bad = dict(trailing, nprops={**base["nprops"], 5: {field: value}})
     _, log = st.run("trailing_" + field, bad, expect_exit=2)
-    st.check(f"nprops.5.{field}" in log and "not connected" in log, f"{field} on a trailing node: " + log.strip()[-300:])
+    st.check(f"nprops(5).{field}" in log and "not connected" in log, f"{field} on a trailing node: " + log.strip()[-300:])
 # path following controlled at a trailing node: refused, naming the field
 cont = dict(trailing, opt={"continuation": {"method": "arclength", "ds": 0.01, "node": 5, "direction": "y",
                                             "stop_displacement": -0.1}})

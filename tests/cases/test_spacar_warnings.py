@@ -27,7 +27,7 @@ def cantilever(force, orien=None, elems=2):
 
 
 out, log = st.run("warn_rect_y", cantilever([0, F, 0]))
-st.check("warning: eprops[0] elements 1, 2: cshape rect without orien" in log and "global z" in log,
+st.check("warning: eprops(1) elements 1, 2: cshape rect without orien" in log and "global z" in log,
          "rect without orien: warning naming the set and the elements: " + log[:400])
 with st.h5(out) as f:
     uy = f["node/p"][-1, 2, 1]
@@ -44,7 +44,7 @@ short = {"nodes": [[0, 0, 0], [0.02, 0, 0]], "elements": [[1, 2]], "nprops": {1:
          "eprops": [{"elems": [1], "flex": [1, 2, 3, 4, 5, 6], "emod": E, "smod": G, "cshape": "rect",
                      "dim": [w, t], "orien": [0, 1, 0]}], "opt": {"loadsteps": 1, "calccompl": False}}
 _, log = st.run("warn_lw_torsion", short)
-st.check("warning: eprops[0] element 1: L/w = 2 < 3 without cw" in log, "flexible torsion, L/w = 2: warping warning")
+st.check("warning: eprops(1) element 1: L/w = 2 < 3 without cw" in log, "flexible torsion, L/w = 2: warping warning")
 no_torsion = dict(short, eprops=[dict(short["eprops"][0], flex=[1, 3, 4, 5, 6])])
 _, log = st.run("warn_lw_no_torsion", no_torsion)
 st.check("L/w" not in log, "torsion rigid (flex without 2): no warping warning")

@@ -52,7 +52,7 @@ st.check(p.returncode == 0 and os.path.exists(png) and os.path.getsize(png) > 10
 
 bad = {1: {"fix": True}, 2: {"force": [0, 0, 1e-3], "transfer_in": ["force_z"], "transfer_out": ["displ_z"]}}
 _, out = st.run("statespace_with_load", beam_x(L, W, T, 4, bad, opt={"transfer": True}), expect_exit=2)
-st.check("nprops.2.force" in out and "opt.transfer" in out, "refusal names nprops.2.force and opt.transfer: " + out.strip()[-300:])
+st.check("nprops(2).force" in out and "opt.transfer" in out, "refusal names nprops(2).force and opt.transfer: " + out.strip()[-300:])
 noout = {1: {"fix": True}, 2: {"transfer_in": ["force_z"]}}
 _, out = st.run("statespace_no_output", beam_x(L, W, T, 4, noout, opt={"transfer": True}), expect_exit=2)
 st.check("transfer_out" in out, "refusal names transfer_out")

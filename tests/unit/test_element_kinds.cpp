@@ -78,10 +78,10 @@ TEST(ElementKinds, BeamWarnings) {
   m.eprops = {setOf(b, {0, 1})};
   const std::vector<std::string> w = elementKind(ElementType::Beam).warnings(m, 0);
   ASSERT_EQ(w.size(), 2u);
-  EXPECT_EQ(w[0], "eprops[0] elements 1, 2: cshape rect without orien (SPACAR Light requires it); the width dim[0] is taken "
+  EXPECT_EQ(w[0], "eprops(1) elements 1, 2: cshape rect without orien (SPACAR Light requires it); the width dim(1) is taken "
                   "along the global z axis (global y for an element along z): give orien");
   // every short element is named (issue 24 item 13), with the smallest ratio
-  EXPECT_EQ(w[1], "eprops[0] elements 1, 2: L/w down to 2 < 3 without cw; constrained warping stiffens torsion (set cw: true)");
+  EXPECT_EQ(w[1], "eprops(1) elements 1, 2: L/w down to 2 < 3 without cw; constrained warping stiffens torsion (set cw: true)");
   b.orien = Vec3{0, 0, 1};
   b.cw = true;
   m.eprops = {setOf(b, {0, 1})};

@@ -214,7 +214,7 @@ SceneError sceneError(const std::string& text) {
 TEST(GmshReader, SceneErrors) {
   const std::string base = "mesh: ../../../meshes/square_tri.msh\n";
   SceneError e = sceneError(base + "eprops:\n  - {physical: sial, type: membrane, thickness: 0.001, emod: 1e9, nu: 0.3}\n");
-  EXPECT_EQ(e.path(), "eprops[0].physical");
+  EXPECT_EQ(e.path(), "eprops(1).physical");
   EXPECT_NE(std::string(e.what()).find("no physical group 'sial'"), std::string::npos) << e.what();
   EXPECT_NE(std::string(e.what()).find("did you mean 'sail'?"), std::string::npos) << e.what();
 
@@ -230,7 +230,7 @@ TEST(GmshReader, SceneErrors) {
 
   // A 2D scene with a mesh off the plane z = 0 is caught node by node; here the mesh is planar.
   e = sceneError("nodes: [[0, 0]]\n" + base + "eprops:\n  - {physical: sail, type: membrane, thickness: 0.001, emod: 1e9, nu: 0.3}\n");
-  EXPECT_EQ(e.path(), "eprops[0].type");
+  EXPECT_EQ(e.path(), "eprops(1).type");
   EXPECT_NE(std::string(e.what()).find("membrane elements need a 3D model"), std::string::npos) << e.what();
 
   // A missing mesh file, through readScene.

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "elements/beam_section.hpp"
+#include "elements/element_kinds.hpp"
 #include "scene/scene_reader.hpp"
 
 #ifndef SINEW_SOURCE_DIR
@@ -49,7 +50,7 @@ TEST(SpacarScene, ScalarAndOneElementListAreTheSame) {
   EXPECT_EQ(c.opt.loadsteps, 3);
   EXPECT_EQ(c.opt.nfreq, 2);
   // rect still needs its two numbers
-  EXPECT_EQ(parseError(beam("1: {fix: true}", "flex: [1], emod: 1e9, cshape: rect, dim: 0.01")).path(), "eprops[0].dim");
+  EXPECT_EQ(parseError(beam("1: {fix: true}", "flex: [1], emod: 1e9, cshape: rect, dim: 0.01")).path(), "eprops(1).dim");
 }
 
 // item 16 (JSON): object keys are strings, "1" is node 1
@@ -81,8 +82,8 @@ TEST(SpacarScene, RotationAngleAxis) {
   EXPECT_DOUBLE_EQ((*np.rot_initial)[1], 0.3);
   EXPECT_DOUBLE_EQ((*np.rot_initial)[2], 0.4);
   EXPECT_DOUBLE_EQ((*np.rot)[2], 0.3);
-  EXPECT_EQ(parseError(beam("1: {fix_pos: true, rot: [0.5, 0, 0, 0]}", "flex: []")).path(), "nprops.1.rot");
-  EXPECT_EQ(parseError(beam("1: {fix_pos: true, rot: [0.5, 0]}", "flex: []")).path(), "nprops.1.rot");
+  EXPECT_EQ(parseError(beam("1: {fix_pos: true, rot: [0.5, 0, 0, 0]}", "flex: []")).path(), "nprops(1).rot");
+  EXPECT_EQ(parseError(beam("1: {fix_pos: true, rot: [0.5, 0]}", "flex: []")).path(), "nprops(1).rot");
 }
 
 }  // namespace
@@ -102,8 +103,8 @@ TEST(SpacarScene, VisualizationVocabulary) {
   // the seed's colour table (issue 24 item 15): darkblue (0, 124, 176)/255, grey 198/255
   EXPECT_EQ(color("darkblue"), color("[0, 124, 176]"));
   EXPECT_EQ(color("grey"), color("[198, 198, 198]"));
-  EXPECT_EQ(parseError(beam("1: {fix: true}", "flex: [], color: purple")).path(), "eprops[0].color");
-  EXPECT_EQ(parseError(beam("1: {fix: true}", "flex: [], color: 7")).path(), "eprops[0].color");
+  EXPECT_EQ(parseError(beam("1: {fix: true}", "flex: [], color: purple")).path(), "eprops(1).color");
+  EXPECT_EQ(parseError(beam("1: {fix: true}", "flex: [], color: 7")).path(), "eprops(1).color");
   const Model m = parse(beam("1: {fix: true}", "flex: [1, 2], emod: 1e9, smod: 4e8, cshape: rect, dim: [0.01, 0.001], "
                                                "warping: true, opacity: 0.5, hide: true",
                              "spavisual: false, customvis: {file: part.stl}"));
@@ -113,7 +114,7 @@ TEST(SpacarScene, VisualizationVocabulary) {
   EXPECT_TRUE(m.opt.customvis);
   EXPECT_EQ(parseError(beam("1: {fix: true}", "flex: [2], smod: 4e8, cshape: rect, dim: [0.01, 0.001], cw: true, warping: true"))
                 .path(),
-            "eprops[0].warping");
+            "eprops(1).warping");
 }
 
 }  // namespace
@@ -167,8 +168,37 @@ TEST(SpacarScene, ModulusRequirementsAgree) {
   EXPECT_EQ(cases, 512);
   // flex [3, 4] without smod: the error names the set's smod and says why
   const SceneError e = parseError(beam("1: {fix: true}", "flex: [3, 4], emod: 210e9, cshape: rect, dim: [0.01, 0.001], orien: [0, 0, 1]"));
-  EXPECT_EQ(e.path(), "eprops[0].smod");
+  EXPECT_EQ(e.path(), "eprops(1).smod");
   EXPECT_NE(std::string(e.what()).find("modes 3 and 4 (bending, with shear deformation) need smod"), std::string::npos) << e.what();
 }
 
 }  // namespace
+
+namespace {
+
+/// Two beams, two property sets; `second` is the second set's fields (elems included).
+std::string twoSets(const std::string& second, const std::string& nodes = "[[0, 0, 0], [1, 0, 0], [2, 0, 0]]") {
+  return "nodes: " + nodes + "\nelements: [[1, 2], [2, 3]]\nnprops: {1: {fix: true}, 3: {force: [0, 1, 0]}}\neprops:\n"
+         "  - {elems: [1], flex: [1, 2, 3, 4, 5, 6], emod: 210e9, smod: 80e9, cshape: circ, dim: [0.01]}\n"
+         "  - {" + second + "}\n";
+}
+
+}  // namespace
+
+// issue 24 item 13: set, list and matrix numbers in field paths and messages are 1-based as in SPACAR
+// Light (eprops(2) is the second set): each of these was 0-based (eprops[1], dim[1], nodes[2][0]).
+TEST(SpacarScene, FieldPathsAreOneBased) {
+  const std::string beam2 = "elems: [2], flex: [1, 2, 3, 4, 5, 6], emod: 210e9, smod: 80e9, cshape: rect, orien: [0, 0, 1], dim: ";
+  EXPECT_EQ(parseError(twoSets(beam2 + "[0.01, -1]")).path(), "eprops(2).dim(2)");
+  EXPECT_EQ(parseError(twoSets(beam2 + "[0.01, 0.01]", "[[0, 0, 0], [1, 0, 0], [1e300, 0, 0]]")).path(), "nodes(3,1)");
+  const SceneError again = parseError(twoSets("elems: [1], flex: [], cshape: circ, dim: [0.01]"));
+  EXPECT_EQ(again.path(), "eprops(2).elems(1)");
+  EXPECT_NE(std::string(again.what()).find("already in eprops(1)"), std::string::npos) << again.what();
+  EXPECT_EQ(parseError(twoSets(beam2 + "[0.01, 0.01]") + "opt: {rls: {2: [1]}}").path(), "opt.rls(2,1)");
+  // warnings: the second set, by its 1-based number
+  const Model m = parse(twoSets("elems: [2], flex: [1, 2, 3, 4, 5, 6], emod: 210e9, smod: 80e9, cshape: rect, dim: [0.5, 0.01]"));
+  ASSERT_EQ(m.eprops.size(), 2u);
+  const auto w = sinew::elementKind(m.eprops[1].type()).warnings(m, 1);
+  ASSERT_FALSE(w.empty());
+  EXPECT_EQ(w[0].rfind("eprops(2) element 2: cshape rect without orien", 0), 0u) << w[0];
+}

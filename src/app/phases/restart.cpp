@@ -12,6 +12,7 @@
 #include <map>
 #include <sstream>
 
+#include "app/phases/scene_changes.hpp"
 #include "output/output_target.hpp"
 
 namespace sinew {
@@ -218,7 +219,7 @@ void Restart::check(MPI_Comm comm, const std::string& src, const std::string& pa
   const auto now = parseLines(fingerprint), then = parseLines(reader_->fingerprint());
   std::map<std::string, std::string> old(then.begin(), then.end());
   std::string diff;
-  bool loadsDiffer = false;
+  bool loadsDiffer = false, loadsRefused = false;
   for (const auto& [what, value] : now) {
     auto it = old.find(what);
     const std::string before = it == old.end() ? "?" : it->second;
@@ -239,11 +240,23 @@ void Restart::check(MPI_Comm comm, const std::string& src, const std::string& pa
       found = true;
     } catch (const std::exception&) {
     }
-    if (!found) diff = "loads (nprops force/moment/displ/rot, eprops pressure/massProportionalLoad, gravity) changed";
+    if (!found) {
+      diff = "loads (nprops force/moment/displ/rot, eprops pressure/massProportionalLoad, gravity) changed";
+      loadsRefused = true;
+    }
   }
-  if (!diff.empty())
-    throw SceneError("-restart", "the scene differs from the run that wrote " + path + ": " + diff +
+  if (!diff.empty()) {
+    // the fields that changed, from the scene text the earlier run stored (every result file has it);
+    // the fingerprint's categories where it has none or the change is not in the text (a mesh file)
+    const auto fields = sceneFieldChanges(reader_->sceneText(), model.sceneText, [&](const std::string& key) {
+      return (isLoadKey(key) || key == "gravity") == loadsRefused;
+    });
+    std::string named;
+    for (size_t i = 0; i < fields.size() && i < 6; ++i) named += (i ? "; " : "") + fields[i];
+    if (fields.size() > 6) named += "; and " + std::to_string(fields.size() - 6) + " more";
+    throw SceneError("-restart", "the scene differs from the run that wrote " + path + ": " + (named.empty() ? diff : named) +
                                      ". A restart continues the same scene (other loads only after form finding).");
+  }
   const CheckpointPhase ph = reader_->phase();
   const auto& sc = reader_->scalars();
   const bool hadFF = sc[kCkFormFinding] != 0.0;

@@ -246,9 +246,9 @@ PetscErrorCode runScene(int argc, char** argv, int* exitCode) {
   }
   if (*exitCode) PetscFunctionReturn(PETSC_SUCCESS);
 
-  std::unique_ptr<ResultFile> file;
+  std::unique_ptr<Hdf5ResultFile> file;
   try {
-    file = std::make_unique<ResultFile>(comm, h5, layout);
+    file = std::make_unique<Hdf5ResultFile>(comm, h5, layout);
     file->setSyncInterval(settings.output.fsyncInterval);
   } catch (const std::exception& ex) {
     PetscCall(PetscPrintf(comm, "error: cannot create %s: %s\n", h5.c_str(), ex.what()));

@@ -5,6 +5,7 @@
 #include <slepcsys.h>
 
 #include <cctype>
+#include <cstdlib>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -24,6 +25,19 @@ namespace sinew {
 
 const char* sinewVersion() { return SINEW_VERSION; }
 
+// Measured with hyperfine (`sinew -version`, one run, minimum of 12 starts, machine under load): 0.49 s
+// by default, 0.36 s without the daemon (ess_singleton_isolated), 0.28 s also without the network
+// probing. A user's own OMPI_MCA_* settings win (setenv does not overwrite); under mpirun/srun
+// nothing changes.
+void quickSingletonStart() {
+  if (std::getenv("OMPI_COMM_WORLD_SIZE") || std::getenv("PMIX_RANK") || std::getenv("PMI_RANK") ||
+      std::getenv("SLURM_PROCID"))
+    return;
+  setenv("OMPI_MCA_ess_singleton_isolated", "1", 0);
+  setenv("OMPI_MCA_pml", "ob1", 0);
+  setenv("OMPI_MCA_btl", "self,vader", 0);
+}
+
 const char* usageText() {
   return "Sinew: parallel finite elements for flexures, cables and membranes.\n"
          "Usage: mpirun -n N sinew scene.yaml [-o result.h5] [-<opt field> value ...] [Sinew flags] [PETSc options]\n"
@@ -37,7 +51,8 @@ std::string lower(std::string s) {
   return s;
 }
 
-/// "" when the option is a Sinew flag with an accepted value or a PETSc/SLEPc option.
+}  // namespace
+
 std::string optionProblem(const std::string& given, const char* value) {
   const std::string name = lower(given);
   if (const Flag* f = findFlag(name)) return checkFlagValue(*f, value);
@@ -51,6 +66,8 @@ std::string optionProblem(const std::string& given, const char* value) {
            p + " are -" + p + "<PETSc option>, e.g. -" + p + "ksp_view)";
   return "unknown flag -" + given + " (neither a Sinew flag nor a PETSc/SLEPc option; sinew -help lists them)";
 }
+
+namespace {
 
 /// Every option no one has read yet: at start-up, all but the few PETSc's initialization reads
 /// (-help, -version, -options_file, -log_view, ...), which are PETSc's own.

@@ -2,7 +2,6 @@
 #include <slepcsys.h>
 
 #include <csignal>
-#include <cstdlib>
 
 #include "app/command_line.hpp"
 #include "app/interrupt.hpp"
@@ -11,25 +10,8 @@
 #include "solvers/ancf/node_rotated_pc.hpp"
 #include "solvers/cut_corrected_lu.hpp"
 
-namespace {
-// Started without a launcher (`sinew scene.yaml`: an MPI singleton), Open MPI would fork a helper
-// daemon and probe every network transport at MPI_Init, for one process that talks to nobody.
-// Measured with hyperfine (`sinew -version`, one run, minimum of 12 starts, machine under load): 0.49 s
-// by default, 0.36 s without
-// the daemon (ess_singleton_isolated), 0.28 s also without the network probing. A user's own
-// OMPI_MCA_* settings win (setenv does not overwrite); under mpirun/srun nothing changes.
-void quickSingletonStart() {
-  if (std::getenv("OMPI_COMM_WORLD_SIZE") || std::getenv("PMIX_RANK") || std::getenv("PMI_RANK") ||
-      std::getenv("SLURM_PROCID"))
-    return;
-  setenv("OMPI_MCA_ess_singleton_isolated", "1", 0);
-  setenv("OMPI_MCA_pml", "ob1", 0);
-  setenv("OMPI_MCA_btl", "self,vader", 0);
-}
-}  // namespace
-
 int main(int argc, char** argv) {
-  quickSingletonStart();
+  sinew::quickSingletonStart();
   std::signal(SIGXFSZ, SIG_IGN);  // a file-size limit (ulimit -f) becomes a write error, also in MPI_Init
   // -help, -help_dev, -version are Sinew's: taken out before PETSc would print its banners for them
   const sinew::StartRequest request = sinew::takeStartRequest(&argc, argv);

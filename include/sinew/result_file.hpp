@@ -52,22 +52,17 @@ class ResultFileError : public std::runtime_error {
   explicit ResultFileError(const std::string& what);
 };
 
-/// Crash-safe: from construction on, `path` always names a complete HDF5 file holding every
-/// committed step (converged = 0 until close), so a run killed at any moment leaves a file that
-/// h5py opens. Writes go to `path.part` (a second copy) and become visible at commit()
-/// (src/output/result_file.cpp explains the scheme and its cost).
+/// Where a run's results go: the datasets and root attributes of design.md section 3, written by
+/// the procedures and step analyses through these calls. Two stores: Hdf5ResultFile (the parallel
+/// HDF5 file and the XDMF beside it) and ResultStore (the same datasets in memory,
+/// sinew/result_store.hpp). Every method is collective over the communicator unless it says otherwise.
 class ResultFile {
  public:
-  /// Creates the file (with /mesh connectivity and the root attributes) and publishes it under
-  /// `path` with no steps yet.
-  ResultFile(MPI_Comm comm, const std::string& path, const ResultLayout& layout);
-  ~ResultFile();
-  ResultFile(const ResultFile&) = delete;
-  ResultFile& operator=(const ResultFile&) = delete;
+  virtual ~ResultFile() = default;
 
   /// Starts step `step` (0-based, consecutive) with its load factor or time. Every step-indexed
   /// dataset written afterwards for this step goes to row `step`.
-  void beginStep(int step, double stepValue);
+  virtual void beginStep(int step, double stepValue) = 0;
   /// Step-analysis rows (frequencies, buckling, compliance: the analyses opt.step_analyses runs at
   /// some rows only): between beginAnalysisRow() and endAnalysisRow() every step-indexed write goes
   /// to a dataset with one row per step-analysis row ([m, ...] instead of [ns, ...], HDF5 attribute
@@ -75,48 +70,92 @@ class ResultFile {
   /// (int64, 0-based step rows) says which step each row belongs to; it is written only while those
   /// rows are not every step row (0, 1, ..., ns - 1), so a run that analyses every step keeps the
   /// [ns, ...] datasets of earlier versions. A dataset stays on the rows it was created on.
-  void beginAnalysisRow();
-  void endAnalysisRow();
+  virtual void beginAnalysisRow() = 0;
+  virtual void endAnalysisRow() = 0;
   /// Step row of each step-analysis row so far (the same on every rank).
-  const std::vector<long>& analysisRows() const;
+  virtual const std::vector<long>& analysisRows() const = 0;
   /// [ns, nn, inner...] dataset ("node/p", "node/CMglob" with inner {6,6}): this rank's rows, in
-  /// the order of layout.ownedNodes, each of prod(inner) values.
-  void writeNodeField(const std::string& name, std::span<const double> values, std::vector<long> inner);
+  /// the order of layout.ownedNodes, each of prod(inner) values. A row never written holds NaN.
+  virtual void writeNodeField(const std::string& name, std::span<const double> values, std::vector<long> inner) = 0;
   /// [ns, ne, inner...] dataset ("element/stressmax" with inner {}): rows of layout.ownedElements.
-  void writeElementField(const std::string& name, std::span<const double> values, std::vector<long> inner);
+  virtual void writeElementField(const std::string& name, std::span<const double> values, std::vector<long> inner) = 0;
   /// [ns, nmesh, inner...] dataset ("mesh/p", "mesh/u", "mesh/mode_freq_1"): rows of ownedMeshNodes.
   /// Fields named mesh/* other than mesh/p appear as point attributes in the XDMF (mesh/u as
   /// "displacement"); the XDMF geometry is mesh/p0 (docs/results.md, "Opening the XDMF in ParaView").
-  void writeMeshField(const std::string& name, std::span<const double> values, std::vector<long> inner);
+  virtual void writeMeshField(const std::string& name, std::span<const double> values, std::vector<long> inner) = 0;
   /// [ns, ncells, inner...] dataset "cell/<cells>/<quantity>" ("cell/lines/axial_force") over the
   /// cells of one kind (`cells`: "lines", "triangles" or "quads"): this rank's cells of that kind in
   /// the order of layout.lines (triangles, quads), so that row c belongs to /mesh/<cells>[c]. Shown
   /// as a cell attribute in the XDMF.
-  void writeCellField(const std::string& cells, const std::string& quantity, std::span<const double> values,
-                      std::vector<long> inner);
+  virtual void writeCellField(const std::string& cells, const std::string& quantity, std::span<const double> values,
+                              std::vector<long> inner) = 0;
   /// Global rows of this rank's cells of one kind ("lines", "triangles", "quads") in /cell/<cells>/*.
-  const std::vector<long>& ownedCellRows(const std::string& cells) const;
+  virtual const std::vector<long>& ownedCellRows(const std::string& cells) const = 0;
   /// [ns] or [ns, k] dataset ("stressmax", "freq", "buck", "sensors/tip"): rank 0's values are written.
-  /// One value makes a [ns] dataset unless `table` ([ns, k] also for k = 1: /freq, /buck).
-  void writeStepRow(const std::string& name, std::span<const double> values, bool table = false);
+  /// One value makes a [ns] dataset unless `table` ([ns, k] also for k = 1: /freq, /buck). k is fixed
+  /// at the first write; a later row with fewer values is padded with 0.
+  virtual void writeStepRow(const std::string& name, std::span<const double> values, bool table = false) = 0;
   /// A dataset written once (statespace/A, formfinding/residual): rank 0's values, given shape.
-  void writeArray(const std::string& name, std::span<const double> values, std::vector<long> shape);
-  /// Restart state (src/output/checkpoint.*): fixed-size datasets without a step axis, created at
+  virtual void writeArray(const std::string& name, std::span<const double> values, std::vector<long> shape) = 0;
+  /// Restart state (src/restart/checkpoint.*): fixed-size datasets without a step axis, created at
   /// their first write and overwritten in place by every later one. They are recorded like every
   /// other write, so commit() publishes them together with the step rows they belong to (no flush
   /// of their own). [numRows, m] table from this rank's rows `rows` (global 0-based ids, each row
   /// on one rank; rows no rank holds are NaN), m values per row. A name's rows are fixed at its
   /// first write.
-  void writeStateTable(const std::string& name, long numRows, long m, std::span<const long> rows,
-                       std::span<const double> values);
+  virtual void writeStateTable(const std::string& name, long numRows, long m, std::span<const long> rows,
+                               std::span<const double> values) = 0;
   /// [shape] state array of rank 0's values, overwritten in place.
-  void writeStateArray(const std::string& name, std::span<const double> values, std::vector<long> shape);
+  virtual void writeStateArray(const std::string& name, std::span<const double> values, std::vector<long> shape) = 0;
   /// String attribute `attr` of the group `group` (created when missing; also a group of step
   /// datasets, /path): rank 0's text.
-  void writeStateAttribute(const std::string& group, const std::string& attr, const std::string& text);
-  /// Makes everything written so far the content of the file under the final name (atomically)
-  /// and rewrites the XDMF (rank 0) for those steps. Call after every step.
-  void commit();
+  virtual void writeStateAttribute(const std::string& group, const std::string& attr, const std::string& text) = 0;
+  /// Makes everything written so far the committed content (the file: under its final name,
+  /// atomically, with the XDMF). Call after every step.
+  virtual void commit() = 0;
+  /// Sets root attribute `converged` and ends the writing. Idempotent. After a failed write
+  /// (failed()), the file under the final name keeps the last committed state.
+  virtual void close(bool converged) = 0;
+  virtual int stepsWritten() const = 0;
+  /// A write or commit threw ResultFileError; later writes throw too.
+  virtual bool failed() const = 0;
+};
+
+/// The HDF5 result file. Crash-safe: from construction on, `path` always names a complete HDF5 file
+/// holding every committed step (converged = 0 until close), so a run killed at any moment leaves a
+/// file that h5py opens. Writes go to `path.part` (a second copy) and become visible at commit()
+/// (src/output/result_file.cpp explains the scheme and its cost); commit() also rewrites the XDMF
+/// (rank 0) for the committed steps, and close() publishes the file with the XDMF listing every step.
+class Hdf5ResultFile final : public ResultFile {
+ public:
+  /// Creates the file (with /mesh connectivity and the root attributes) and publishes it under
+  /// `path` with no steps yet.
+  Hdf5ResultFile(MPI_Comm comm, const std::string& path, const ResultLayout& layout);
+  ~Hdf5ResultFile() override;
+  Hdf5ResultFile(const Hdf5ResultFile&) = delete;
+  Hdf5ResultFile& operator=(const Hdf5ResultFile&) = delete;
+
+  void beginStep(int step, double stepValue) override;
+  void beginAnalysisRow() override;
+  void endAnalysisRow() override;
+  const std::vector<long>& analysisRows() const override;
+  void writeNodeField(const std::string& name, std::span<const double> values, std::vector<long> inner) override;
+  void writeElementField(const std::string& name, std::span<const double> values, std::vector<long> inner) override;
+  void writeMeshField(const std::string& name, std::span<const double> values, std::vector<long> inner) override;
+  void writeCellField(const std::string& cells, const std::string& quantity, std::span<const double> values,
+                      std::vector<long> inner) override;
+  const std::vector<long>& ownedCellRows(const std::string& cells) const override;
+  void writeStepRow(const std::string& name, std::span<const double> values, bool table = false) override;
+  void writeArray(const std::string& name, std::span<const double> values, std::vector<long> shape) override;
+  void writeStateTable(const std::string& name, long numRows, long m, std::span<const long> rows,
+                       std::span<const double> values) override;
+  void writeStateArray(const std::string& name, std::span<const double> values, std::vector<long> shape) override;
+  void writeStateAttribute(const std::string& group, const std::string& attr, const std::string& text) override;
+  void commit() override;
+  void close(bool converged) override;
+  int stepsWritten() const override;
+  bool failed() const override;
+
   /// On one process, a commit forces the file to the disk (fsync) only when `seconds` have passed
   /// since the last one that did (0: every commit); the published file survives a killed run either
   /// way (src/output/file_sync.hpp). Default 10 s. With several processes every commit syncs.
@@ -124,16 +163,8 @@ class ResultFile {
   /// Commits so far, and how many of them were forced to the disk.
   long commits() const;
   long syncedCommits() const;
-  /// Sets root attribute `converged`, closes the file, publishes it under its final name and writes
-  /// the XDMF (rank 0) listing the steps written. Idempotent. After a failed write (failed()), the
-  /// file under the final name keeps the last committed state.
-  void close(bool converged);
-
   const std::string& path() const;
   std::string xdmfPath() const;
-  int stepsWritten() const;
-  /// A write or commit threw ResultFileError; later writes throw too.
-  bool failed() const;
 
  private:
   struct Impl;

@@ -7,7 +7,10 @@
     out.step[2].node[5].p  # SPACAR Light's per-step view: (3,) position at load step 2
     out.ndof, out.converged, out.load_factor (or out.time)
 
-Every dataset of the file is also reachable as out.data["node/p"] (a numpy array)."""
+Every dataset of the file is also reachable as out.data["node/p"] (a numpy array).
+
+The datasets come from one of two sources, giving the same object: a result file (load) or the
+in-memory results of a run in this process (from_memory, what Scene.run returns by default)."""
 import h5py
 import numpy as np
 
@@ -92,8 +95,8 @@ class Results:
                 f"converged {self.converged}; {', '.join(have) or 'no step analyses'}>")
 
 
-def load(path):
-    """Reads a Sinew result file (from the command line or Scene.run) into a Results object."""
+def h5_datasets(path):
+    """The datasets (without the restart checkpoint) and root attributes of a result file."""
     data, attrs = {}, {}
     with h5py.File(path, "r") as f:
         for k, v in f.attrs.items():
@@ -103,4 +106,20 @@ def load(path):
             if isinstance(obj, h5py.Dataset) and not name.startswith("checkpoint"):
                 data[name] = obj[()]
         f.visititems(visit)
-    return Results(data, attrs)
+    return data, attrs
+
+
+def memory_datasets(run):
+    """The datasets and root attributes of an in-process run (sinew._core.run's answer)."""
+    data = {k: v for k, v in run["datasets"].items() if not k.startswith("checkpoint")}
+    return data, dict(run["attrs"])
+
+
+def load(path):
+    """Reads a Sinew result file (from the command line or Scene.run) into a Results object."""
+    return Results(*h5_datasets(path))
+
+
+def from_memory(run):
+    """The Results object of an in-process run (sinew._core.run), the same as load() of its file."""
+    return Results(*memory_datasets(run))

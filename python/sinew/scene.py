@@ -5,10 +5,14 @@
     out = sim.run()                      # a sinew.Results (SPACAR Light's `out`)
     out = sim.run(np=2, flags=["-calcbuck", "true"])
 
-run() starts the sinew executable (mpirun -n np when np > 1) on the scene and reads its result
-file; a scene error or a failed run raises SinewError with Sinew's message and exit code; a run
-that did not converge returns its converged steps with out.converged == False (raises with
+run() runs the scene in this process through Sinew's library (the module sinew._core: no process
+start, no file), on the ranks of `comm` (an mpi4py communicator; default all ranks of the job, so
+that `mpirun -n 2 python3 study.py` runs every scene on 2 ranks). run(process=True), or np > 1 asked
+from a one-rank interpreter, starts the sinew executable instead (mpirun -n np) and reads its result
+file. Either way a scene error or a failed run raises SinewError with Sinew's message and exit code;
+a run that did not converge returns its converged steps with out.converged == False (raises with
 check=True)."""
+import atexit
 import copy
 import os
 import shutil
@@ -17,7 +21,7 @@ import tempfile
 
 import yaml
 
-from .results import load
+from .results import from_memory, load
 
 
 class SinewError(RuntimeError):
@@ -43,6 +47,40 @@ def find_binary():
     if not found:
         raise SinewError("no sinew executable found: set SINEW_BIN, build it (scripts/test) or install it", 127)
     return found
+
+
+def core():
+    """The in-process entry point sinew._core, or None when it was not built (python/sinew/__init__.py
+    says where it is looked for). PETSc/SLEPc end at interpreter exit, before mpi4py ends MPI."""
+    global _core_module
+    if _core_module is None:
+        try:
+            from . import _core
+        except ImportError:
+            _core_module = False
+        else:
+            atexit.register(_core.finalize)
+            _core_module = _core
+    return _core_module or None
+
+
+_core_module = None
+
+
+def _comm_size(comm):
+    if comm is not None:
+        return comm.Get_size()
+    for var in ("OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMIX_SIZE", "SLURM_NTASKS"):
+        if os.environ.get(var):
+            return int(os.environ[var])
+    return 1
+
+
+def _raise_or_accept(message, code, output, check):
+    """SinewError unless the run converged or (check False) it failed after converged steps."""
+    if code not in (0, 3) or (code == 3 and check):
+        errors = [ln[len("error: "):] if ln.startswith("error: ") else ln for ln in message.splitlines()]
+        raise SinewError("\n".join(errors) or f"sinew ended with exit {code}", code, output)
 
 
 def _yaml_text(data):
@@ -97,13 +135,36 @@ class Scene:
             f.write(self.to_yaml())
         return path
 
-    def run(self, np=1, flags=(), output=None, check=False, keep_files=False, quiet=True):
-        """Runs the scene; returns a Results object. output: result file to keep (default: a
-        temporary file, removed unless keep_files). flags: extra command-line flags."""
+    def run(self, np=1, flags=(), output=None, check=False, keep_files=False, quiet=True, process=None, comm=None):
+        """Runs the scene; returns a Results object. flags: extra command-line flags (a list of words
+        or a dict {flag: value}). output: result file to write (in-process: written only when given;
+        process: default a temporary file, removed unless keep_files). quiet=False prints Sinew's
+        output. process: True starts the sinew executable (np ranks); None (default) runs in this
+        process on comm's ranks unless np > 1 is asked from a one-rank interpreter."""
+        if process is None:
+            process = core() is None or (np > 1 and _comm_size(comm) == 1)
+        if not process:
+            return self._run_in_process(flags, output, check, quiet, comm)
+        if isinstance(flags, dict):
+            flags = [w for k, v in flags.items() for w in (f"-{k.lstrip('-')}", _flag_word(v))]
+        return self._run_process(np, flags, output, check, keep_files, quiet)
+
+    def _run_in_process(self, flags, output, check, quiet, comm):
+        if output:
+            output = os.path.abspath(output)
+            flags = dict(flags, o=output) if isinstance(flags, dict) else list(flags) + ["-o", output]
+        run = core().run(self.data, flags=flags if isinstance(flags, dict) else [str(f) for f in flags], comm=comm,
+                         echo=not quiet, base_dir=self.base_dir)
+        if run["datasets"] is None and not run["file"]:  # no results: a scene, flag, model or solver error
+            _raise_or_accept(run["message"], run["exit_code"], run["output"], True)
+        _raise_or_accept(run["message"], run["exit_code"], run["output"], check)
+        return load(run["file"]) if run["file"] else from_memory(run)
+
+    def _run_process(self, np, flags, output, check, keep_files, quiet):
         work = tempfile.mkdtemp(prefix="sinew_")
         scene_path = os.path.join(self.base_dir if os.access(self.base_dir, os.W_OK) else work,
                                   f".sinew_scene_{os.getpid()}_{id(self)}.yaml")
-        out = output or os.path.join(work, "result.h5")
+        out = os.path.abspath(output) if output else os.path.join(work, "result.h5")
         try:
             self.write(scene_path)
             cmd = [find_binary(), scene_path, "-o", out] + [str(f) for f in flags]
@@ -128,3 +189,13 @@ class Scene:
                 os.remove(scene_path)
             if not keep_files:
                 shutil.rmtree(work, ignore_errors=True)
+
+
+def _flag_word(v):
+    """A flag value as a command-line word: true/false, comma lists."""
+    if isinstance(v, bool):
+        return "true" if v else "false"
+    if isinstance(v, (list, tuple)) or hasattr(v, "tolist"):
+        v = v.tolist() if hasattr(v, "tolist") else v
+        return ",".join(_flag_word(x) for x in v)
+    return str(v)

@@ -11,7 +11,8 @@ def _fields(d):
     return out
 
 
-def spacarlight(nodes, elements, nprops, eprops, opt=None, np_ranks=1, flags=(), check=False, **extra):
+def spacarlight(nodes, elements, nprops, eprops, opt=None, np_ranks=1, flags=(), check=False, process=None, comm=None,
+                **extra):
     """Builds the scene from SPACAR Light's five inputs and runs it; returns SPACAR Light's `out`
     (a sinew.Results).
     - nodes: (nn, 3) (or (nn, 2)) coordinates; elements: (ne, 2) node numbers, 1-based;
@@ -21,7 +22,9 @@ def spacarlight(nodes, elements, nprops, eprops, opt=None, np_ranks=1, flags=(),
     - opt: a dict of SPACAR Light's opt fields (rls as {element: modes} or a list of {'def': modes}
       per element, from element 1);
     - extra: other scene blocks (formfinding=..., sensors=..., title=...).
-    np_ranks > 1 runs on that many MPI ranks; flags: extra command-line flags (-loadsteps 5 ...)."""
+    Runs in this process on comm's ranks (default: all ranks of the job); np_ranks > 1 from a
+    one-rank interpreter, or process=True, starts the sinew executable (Scene.run). flags: extra
+    command-line flags (-loadsteps 5 ...)."""
     if isinstance(nprops, dict):
         np_map = {int(k): _fields(v) for k, v in nprops.items() if v}
     else:
@@ -36,4 +39,4 @@ def spacarlight(nodes, elements, nprops, eprops, opt=None, np_ranks=1, flags=(),
             "eprops": [_fields(e) for e in (eprops or []) if e],
             "opt": {k: (v.tolist() if isinstance(v, np.ndarray) else v) for k, v in o.items()}}
     data.update(extra)
-    return Scene(data).run(np=np_ranks, flags=flags, check=check)
+    return Scene(data).run(np=np_ranks, flags=flags, check=check, process=process, comm=comm)

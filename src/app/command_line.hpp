@@ -19,6 +19,10 @@ struct StartRequest {
 /// which was given (the last one wins); -help_petsc becomes PETSc's -help. Plain argv, no MPI.
 StartRequest takeStartRequest(int* argc, char** argv);
 
+/// "" when the option `name` (without '-') is a Sinew flag with an accepted value or a PETSc/SLEPc
+/// option, else the message ("unknown flag -loadstep; did you mean -loadsteps?"). Local.
+std::string optionProblem(const std::string& name, const char* value);
+
 /// Collective on comm. Every option in the database (command line, -options_file, PETSC_OPTIONS,
 /// .petscrc) must be a Sinew flag with an accepted value or a PETSc/SLEPc option; otherwise rank 0
 /// prints one line per wrong flag ("error: unknown flag -loadstep; did you mean -loadsteps?") and
@@ -34,6 +38,11 @@ PetscErrorCode petscHelpRequested(PetscBool* help);
 
 /// The text SlepcInitialize prints first under -help_petsc.
 const char* usageText();
+
+/// Before MPI starts: started without a launcher (`sinew scene.yaml`, `python3 study.py`: an MPI
+/// singleton), Open MPI would fork a helper daemon and probe every network transport at MPI_Init,
+/// for one process that talks to nobody; this sets Open MPI's variables that avoid both.
+void quickSingletonStart();
 
 /// Sinew's version (CMake project version).
 const char* sinewVersion();

@@ -1,5 +1,7 @@
 #include "app/progress.hpp"
 
+#include <petscsys.h>
+
 #include <cstdio>
 
 namespace sinew {
@@ -35,7 +37,8 @@ void Progress::step(int index, const std::string& detail) {
                      "  elapsed " + seconds(now - start_);
   const int done = index - firstIndex_ + 1, left = total_ - index;
   if (inPhase >= kEstimateAfter && left > 0 && done > 0) line += ", left ~" + seconds(inPhase / done * left);
-  std::fputs((line + "\n").c_str(), stdout);
+  // through PETSc's printing (the library entry point keeps a run's output: sinew/simulation.hpp)
+  PetscFPrintf(PETSC_COMM_SELF, PETSC_STDOUT, "%s\n", line.c_str());
   std::fflush(stdout);
 }
 

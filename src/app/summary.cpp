@@ -179,7 +179,8 @@ PetscErrorCode printSummary(MPI_Comm comm, const SummaryBody& b) {
     if (b.counters.pressureLoads > 0) s << " pressure: " << b.counters.pressureLoads << " follower element loads (rank 0)\n";
     s << b.developerLines;
   }
-  s << " results: " << b.h5 << " (ParaView: " << b.xdmf << ")";
+  if (b.h5.empty()) s << " results: in memory (no file)";  // the library entry point (sinew/simulation.hpp)
+  else s << " results: " << b.h5 << " (ParaView: " << b.xdmf << ")";
   if (b.verbose) s << "; " << b.commits << " commits, " << b.syncedCommits << " forced to the disk (-output_fsync_interval)";
   s << "\n";
   if (!b.converged) s << "\nerror: " << b.failure << "\n";

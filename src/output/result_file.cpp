@@ -38,7 +38,7 @@
 //   calls (a full disk, a file-size limit) are agreed the same way and thrown as ResultFileError
 //   naming the file, the dataset and the cause.
 // This file holds the public ResultFile methods: each checks its arguments on all ranks together,
-// then hands the write to the store of the two copies (ResultFile::Impl, result_file_impl.hpp),
+// then hands the write to the store of the two copies (Hdf5ResultFile::Impl, result_file_impl.hpp),
 // which moves distributed rows with row plans (row_plan.hpp); the agreement helpers are in
 // collective_agreement.hpp.
 // Open MPI's deprecated C++ bindings warn under -Wcast-function-type when mpi.h is not a system
@@ -70,7 +70,7 @@ using collective::signatureOf;
 
 ResultFileError::ResultFileError(const std::string& what) : std::runtime_error(what) {}
 
-ResultFile::ResultFile(MPI_Comm comm, const std::string& path, const ResultLayout& layout)
+Hdf5ResultFile::Hdf5ResultFile(MPI_Comm comm, const std::string& path, const ResultLayout& layout)
     : impl_(std::make_unique<Impl>()) {
   Impl& m = *impl_;
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);  // failures become ResultFileError, not stack dumps
@@ -114,7 +114,7 @@ ResultFile::ResultFile(MPI_Comm comm, const std::string& path, const ResultLayou
   commit();
 }
 
-ResultFile::~ResultFile() {
+Hdf5ResultFile::~Hdf5ResultFile() {
   if (!impl_ || impl_->closed) return;
   try {
     close(false);
@@ -123,7 +123,7 @@ ResultFile::~ResultFile() {
   }
 }
 
-void ResultFile::beginStep(int step, double stepValue) {
+void Hdf5ResultFile::beginStep(int step, double stepValue) {
   Impl& m = *impl_;
   const std::string what = "dataset /" + m.layout.stepName;
   std::string error = m.stateError(false);
@@ -134,7 +134,7 @@ void ResultFile::beginStep(int step, double stepValue) {
   m.apply([&m, step, stepValue](Sink& s) { m.beginStepIn(s, step, stepValue); });
 }
 
-void ResultFile::beginAnalysisRow() {
+void Hdf5ResultFile::beginAnalysisRow() {
   Impl& m = *impl_;
   const std::string what = std::string("dataset /") + kAnalysisRowsName;
   std::string error = m.stateError(true);
@@ -147,23 +147,23 @@ void ResultFile::beginAnalysisRow() {
   m.apply([&m](Sink& s) { m.beginAnalysisRowIn(s); });
 }
 
-void ResultFile::endAnalysisRow() { impl_->analysisOpen = false; }
+void Hdf5ResultFile::endAnalysisRow() { impl_->analysisOpen = false; }
 
-const std::vector<long>& ResultFile::analysisRows() const { return impl_->leadSink().analysisRows; }
+const std::vector<long>& Hdf5ResultFile::analysisRows() const { return impl_->leadSink().analysisRows; }
 
-void ResultFile::writeNodeField(const std::string& name, std::span<const double> values, std::vector<long> inner) {
+void Hdf5ResultFile::writeNodeField(const std::string& name, std::span<const double> values, std::vector<long> inner) {
   impl_->writeTable(Kind::Node, name, values, std::move(inner));
 }
 
-void ResultFile::writeElementField(const std::string& name, std::span<const double> values, std::vector<long> inner) {
+void Hdf5ResultFile::writeElementField(const std::string& name, std::span<const double> values, std::vector<long> inner) {
   impl_->writeTable(Kind::Element, name, values, std::move(inner));
 }
 
-void ResultFile::writeMeshField(const std::string& name, std::span<const double> values, std::vector<long> inner) {
+void Hdf5ResultFile::writeMeshField(const std::string& name, std::span<const double> values, std::vector<long> inner) {
   impl_->writeTable(Kind::Mesh, name, values, std::move(inner));
 }
 
-void ResultFile::writeCellField(const std::string& cells, const std::string& quantity, std::span<const double> values,
+void Hdf5ResultFile::writeCellField(const std::string& cells, const std::string& quantity, std::span<const double> values,
                                 std::vector<long> inner) {
   Kind kind = Kind::Lines;
   if (cells == "triangles") kind = Kind::Triangles;
@@ -172,12 +172,12 @@ void ResultFile::writeCellField(const std::string& cells, const std::string& qua
   impl_->writeTable(kind, "cell/" + cells + "/" + quantity, values, std::move(inner));
 }
 
-const std::vector<long>& ResultFile::ownedCellRows(const std::string& cells) const {
+const std::vector<long>& Hdf5ResultFile::ownedCellRows(const std::string& cells) const {
   const int k = cells == "lines" ? 0 : (cells == "triangles" ? 1 : 2);
   return impl_->ownedCells[k];
 }
 
-void ResultFile::writeStepRow(const std::string& rawName, std::span<const double> values, bool table) {
+void Hdf5ResultFile::writeStepRow(const std::string& rawName, std::span<const double> values, bool table) {
   Impl& m = *impl_;
   const std::string name = normalized(rawName);
   const std::string what = "dataset /" + name;
@@ -221,7 +221,7 @@ void ResultFile::writeStepRow(const std::string& rawName, std::span<const double
   });
 }
 
-void ResultFile::writeArray(const std::string& rawName, std::span<const double> values, std::vector<long> shape) {
+void Hdf5ResultFile::writeArray(const std::string& rawName, std::span<const double> values, std::vector<long> shape) {
   Impl& m = *impl_;
   const std::string name = normalized(rawName);
   const std::string what = "dataset /" + name;
@@ -246,7 +246,7 @@ void ResultFile::writeArray(const std::string& rawName, std::span<const double> 
   });
 }
 
-void ResultFile::writeStateTable(const std::string& rawName, long numRows, long m, std::span<const long> rows,
+void Hdf5ResultFile::writeStateTable(const std::string& rawName, long numRows, long m, std::span<const long> rows,
                                  std::span<const double> values) {
   Impl& im = *impl_;
   const std::string name = normalized(rawName);
@@ -269,7 +269,7 @@ void ResultFile::writeStateTable(const std::string& rawName, long numRows, long 
   });
 }
 
-void ResultFile::writeStateArray(const std::string& rawName, std::span<const double> values, std::vector<long> shape) {
+void Hdf5ResultFile::writeStateArray(const std::string& rawName, std::span<const double> values, std::vector<long> shape) {
   Impl& im = *impl_;
   const std::string name = normalized(rawName);
   const std::string what = "dataset /" + name;
@@ -287,7 +287,7 @@ void ResultFile::writeStateArray(const std::string& rawName, std::span<const dou
   });
 }
 
-void ResultFile::writeStateAttribute(const std::string& rawGroup, const std::string& attr, const std::string& text) {
+void Hdf5ResultFile::writeStateAttribute(const std::string& rawGroup, const std::string& attr, const std::string& text) {
   Impl& im = *impl_;
   const std::string group = normalized(rawGroup);
   agree(im.comm, im.stateError(false), signatureOf(group + "@" + attr, {}, 14), "group /" + group);
@@ -312,7 +312,7 @@ void ResultFile::writeStateAttribute(const std::string& rawGroup, const std::str
   });
 }
 
-void ResultFile::commit() {
+void Hdf5ResultFile::commit() {
   Impl& m = *impl_;
   agree(m.comm, m.stateError(false), signatureOf("commit", {}, 11), "result file " + m.path + ": commit");
   try {
@@ -372,16 +372,16 @@ void ResultFile::commit() {
   }
 }
 
-long ResultFile::commits() const { return impl_->commits; }
-long ResultFile::syncedCommits() const { return impl_->syncedCommits; }
+long Hdf5ResultFile::commits() const { return impl_->commits; }
+long Hdf5ResultFile::syncedCommits() const { return impl_->syncedCommits; }
 
-void ResultFile::setSyncInterval(double seconds) {
+void Hdf5ResultFile::setSyncInterval(double seconds) {
   impl_->syncInterval = seconds;
   impl_->lastSync = MPI_Wtime();
   impl_->commits = impl_->syncedCommits = 0;  // counted from here (the creation's commit is not)
 }
 
-void ResultFile::close(bool converged) {
+void Hdf5ResultFile::close(bool converged) {
   Impl& m = *impl_;
   if (m.closed) return;
   m.closed = true;
@@ -421,14 +421,14 @@ void ResultFile::close(bool converged) {
   m.sinks[1 - m.lead].closeHandles();  // no longer under any name
 }
 
-const std::string& ResultFile::path() const { return impl_->path; }
+const std::string& Hdf5ResultFile::path() const { return impl_->path; }
 
-std::string ResultFile::xdmfPath() const {
+std::string Hdf5ResultFile::xdmfPath() const {
   return std::filesystem::path(impl_->path).replace_extension(".xdmf").string();
 }
 
-int ResultFile::stepsWritten() const { return impl_->numSteps(); }
+int Hdf5ResultFile::stepsWritten() const { return impl_->numSteps(); }
 
-bool ResultFile::failed() const { return impl_->failed; }
+bool Hdf5ResultFile::failed() const { return impl_->failed; }
 
 }  // namespace sinew

@@ -1,4 +1,4 @@
-// Member functions of ResultFile::Impl (result_file_impl.hpp): creating the two files and their
+// Member functions of Hdf5ResultFile::Impl (result_file_impl.hpp): creating the two files and their
 // step-indexed and state datasets, the collective writes of table rows, NaN filling of rows never
 // written, the /mesh cell tables and reference geometry, and publishing the lead under the final
 // name with its XDMF.
@@ -26,7 +26,7 @@ using collective::broadcastString;
 using collective::product;
 using collective::signatureOf;
 
-void ResultFile::Impl::apply(Op op) {
+void Hdf5ResultFile::Impl::apply(Op op) {
   try {
     op(leadSink());
   } catch (...) {
@@ -36,12 +36,12 @@ void ResultFile::Impl::apply(Op op) {
   log.push_back(std::move(op));
 }
 
-void ResultFile::Impl::writeBox(Sink& s, hid_t dset, hid_t memType, const std::vector<hsize_t>& start,
+void Hdf5ResultFile::Impl::writeBox(Sink& s, hid_t dset, hid_t memType, const std::vector<hsize_t>& start,
                                 const std::vector<hsize_t>& count, const void* data, const std::string& what) {
   agreeStatus(comm, h5::writeBox(dset, memType, start, count, data, s.dxpl, what), what + ": write", s.name);
 }
 
-void ResultFile::Impl::createFile(Sink& s, const std::string& name) {
+void Hdf5ResultFile::Impl::createFile(Sink& s, const std::string& name) {
   const std::string what = "file " + name;
   h5::Handle fapl(H5Pcreate(H5P_FILE_ACCESS), H5Pclose, what + ": access list");
   h5::check(H5Pset_fapl_mpio(fapl, comm, MPI_INFO_NULL), what + ": MPI-IO driver");
@@ -54,7 +54,7 @@ void ResultFile::Impl::createFile(Sink& s, const std::string& name) {
   s.dxpl = h5::collectiveDxpl();
 }
 
-StepDataset& ResultFile::Impl::createStepDataset(Sink& s, const std::string& name, Kind kind, std::vector<long> inner,
+StepDataset& Hdf5ResultFile::Impl::createStepDataset(Sink& s, const std::string& name, Kind kind, std::vector<long> inner,
                                                   long rowLength, bool analysisAxis) {
   const std::string what = "dataset /" + name;
   const int rows = analysisAxis ? s.numAnalysisRows() : s.numSteps();
@@ -96,20 +96,20 @@ StepDataset& ResultFile::Impl::createStepDataset(Sink& s, const std::string& nam
   return s.steps.emplace(name, std::move(sd)).first->second;
 }
 
-std::string ResultFile::Impl::axisError(const StepDataset& sd) const {
+std::string Hdf5ResultFile::Impl::axisError(const StepDataset& sd) const {
   if (sd.analysisAxis == analysisOpen) return "";
   return sd.analysisAxis ? "has one row per step-analysis row, written outside a step-analysis row"
                          : "has one row per step, written inside a step-analysis row";
 }
 
-std::string ResultFile::Impl::stateError(bool needsStep) const {
+std::string Hdf5ResultFile::Impl::stateError(bool needsStep) const {
   if (closed) return "file already closed";
   if (failed) return "an earlier write failed";
   if (needsStep && numSteps() == 0) return "written before the first beginStep";
   return "";
 }
 
-std::string ResultFile::Impl::nameError(const std::string& name) const {
+std::string Hdf5ResultFile::Impl::nameError(const std::string& name) const {
   if (name.empty()) return "empty dataset name";
   if (name == layout.stepName) return "name reserved for the step values";
   if (name == kAnalysisRowsName) return "name reserved for the rows of the step analyses";
@@ -122,7 +122,7 @@ std::string ResultFile::Impl::nameError(const std::string& name) const {
   }
 }
 
-void ResultFile::Impl::beginStepIn(Sink& s, int step, double stepValue) {
+void Hdf5ResultFile::Impl::beginStepIn(Sink& s, int step, double stepValue) {
   const std::string what = "dataset /" + layout.stepName;
   if (step == 0) createStepDataset(s, layout.stepName, Kind::Row, {}, 1);
   s.stepValues.push_back(stepValue);
@@ -140,7 +140,7 @@ void ResultFile::Impl::beginStepIn(Sink& s, int step, double stepValue) {
   sv.written[step] = 1;
 }
 
-void ResultFile::Impl::beginAnalysisRowIn(Sink& s) {
+void Hdf5ResultFile::Impl::beginAnalysisRowIn(Sink& s) {
   s.analysisRows.push_back(s.numSteps() - 1);
   const int row = s.numAnalysisRows() - 1;
   for (auto& [name, sd] : s.steps) {
@@ -154,7 +154,7 @@ void ResultFile::Impl::beginAnalysisRowIn(Sink& s) {
   }
 }
 
-void ResultFile::Impl::writeAnalysisRows(Sink& s) {
+void Hdf5ResultFile::Impl::writeAnalysisRows(Sink& s) {
   const bool everyStep = s.numAnalysisRows() == s.numSteps();  // rows are increasing: then they are 0 .. ns - 1
   if (s.analysisRows.empty() || (everyStep && !s.analysisRowsDset.valid())) return;
   const std::string what = std::string("dataset /") + kAnalysisRowsName;
@@ -172,7 +172,7 @@ void ResultFile::Impl::writeAnalysisRows(Sink& s) {
   writeBox(s, s.analysisRowsDset, H5T_NATIVE_LONG, {0}, dims, rank == 0 ? s.analysisRows.data() : nullptr, what);
 }
 
-void ResultFile::Impl::writeTable(Kind kind, const std::string& rawName, std::span<const double> values,
+void Hdf5ResultFile::Impl::writeTable(Kind kind, const std::string& rawName, std::span<const double> values,
                                   std::vector<long> inner) {
   const std::string name = normalized(rawName);
   const std::string what = "dataset /" + name;
@@ -215,7 +215,7 @@ void ResultFile::Impl::writeTable(Kind kind, const std::string& rawName, std::sp
   });
 }
 
-void ResultFile::Impl::fillUnwritten(Sink& s, const std::string& name, StepDataset& sd) {
+void Hdf5ResultFile::Impl::fillUnwritten(Sink& s, const std::string& name, StepDataset& sd) {
   const std::string what = "dataset /" + name + ": NaN rows";
   const int rows = s.numRows(sd);
   for (int st = 0; st < rows;) {
@@ -246,12 +246,12 @@ void ResultFile::Impl::fillUnwritten(Sink& s, const std::string& name, StepDatas
   }
 }
 
-void ResultFile::Impl::fillAll(Sink& s) {
+void Hdf5ResultFile::Impl::fillAll(Sink& s) {
   for (auto& [name, sd] : s.steps) fillUnwritten(s, name, sd);
   writeAnalysisRows(s);
 }
 
-void ResultFile::Impl::computeCellOffsets() {
+void Hdf5ResultFile::Impl::computeCellOffsets() {
   const std::array<CellKind, 3> kinds = cellKinds();
   long local[3];
   for (int k = 0; k < 3; ++k) local[k] = static_cast<long>(kinds[k].conn->size()) / kinds[k].nodes;
@@ -265,7 +265,7 @@ void ResultFile::Impl::computeCellOffsets() {
   }
 }
 
-void ResultFile::Impl::writeReference(Sink& s, const std::vector<double>& block) {
+void Hdf5ResultFile::Impl::writeReference(Sink& s, const std::vector<double>& block) {
   const std::string what = "dataset /mesh/p0";
   std::vector<hsize_t> dims{hsize_t(layout.numMeshNodes), 3}, start{hsize_t(meshPlan.begin), 0},
       count{hsize_t(meshPlan.count), 3};
@@ -278,7 +278,7 @@ void ResultFile::Impl::writeReference(Sink& s, const std::vector<double>& block)
   h5::check(dset.reset(), what + ": close");
 }
 
-void ResultFile::Impl::writeCells(Sink& s) {
+void Hdf5ResultFile::Impl::writeCells(Sink& s) {
   const std::array<CellKind, 3> kinds = cellKinds();
   h5::Handle lcpl = h5::intermediateGroupLcpl("/mesh");
   for (int k = 0; k < 3; ++k) {
@@ -325,7 +325,7 @@ void ResultFile::Impl::writeCells(Sink& s) {
   }
 }
 
-hid_t ResultFile::Impl::stateDataset(Sink& s, const std::string& name, const std::vector<hsize_t>& dims) {
+hid_t Hdf5ResultFile::Impl::stateDataset(Sink& s, const std::string& name, const std::vector<hsize_t>& dims) {
   auto it = s.state.find(name);
   if (it != s.state.end()) return it->second;
   const std::string what = "dataset /" + name;
@@ -336,7 +336,7 @@ hid_t ResultFile::Impl::stateDataset(Sink& s, const std::string& name, const std
   return s.state.emplace(name, h5::Handle(id, H5Dclose, what + ": create")).first->second;
 }
 
-void ResultFile::Impl::validateLayout() const {
+void Hdf5ResultFile::Impl::validateLayout() const {
   std::string error;
   auto fail = [&](const std::string& e) {
     if (error.empty()) error = e;
@@ -360,7 +360,7 @@ void ResultFile::Impl::validateLayout() const {
         "result file " + path + ": layout");
 }
 
-XdmfDescription ResultFile::Impl::xdmfDescription(const Sink& s) const {
+XdmfDescription Hdf5ResultFile::Impl::xdmfDescription(const Sink& s) const {
   XdmfDescription d;
   d.h5Name = std::filesystem::path(path).filename().string();
   d.numMeshNodes = layout.numMeshNodes;
@@ -420,7 +420,7 @@ XdmfDescription ResultFile::Impl::xdmfDescription(const Sink& s) const {
   return d;
 }
 
-void ResultFile::Impl::publishLead(bool keepOther) {
+void Hdf5ResultFile::Impl::publishLead(bool keepOther) {
   std::string error;
   if (rank == 0) {
     try {

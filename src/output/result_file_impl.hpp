@@ -1,4 +1,4 @@
-// Internals of the result file (ResultFile::Impl): the two-copy store of the crash-safe scheme
+// Internals of the result file (Hdf5ResultFile::Impl): the two-copy store of the crash-safe scheme
 // (result_file.cpp's file comment explains it), i.e. the lead file receiving every write and the
 // published one under the final name, each a Sink with its step-indexed datasets (StepDataset),
 // restart state datasets and groups; the log of writes since the last commit replayed into the
@@ -105,7 +105,7 @@ struct Sink {
 
 }  // namespace result_io
 
-struct ResultFile::Impl {
+struct Hdf5ResultFile::Impl {
   using Sink = result_io::Sink;
   using StepDataset = result_io::StepDataset;
   using CellKind = result_io::CellKind;

@@ -383,7 +383,7 @@ int main(int argc, char** argv) {
   std::string xdmf;
   try {
     const sinew::ResultLayout L = makeLayout(scene);
-    sinew::ResultFile rf(MPI_COMM_WORLD, path, L);
+    sinew::Hdf5ResultFile rf(MPI_COMM_WORLD, path, L);
     xdmf = rf.xdmfPath();
     expect(rf.path() == path, "path()");
     expect(fs::path(xdmf).extension() == ".xdmf" && fs::path(xdmf).stem() == fs::path(path).stem(), "xdmfPath()");
@@ -480,7 +480,7 @@ int main(int argc, char** argv) {
   try {
     sinew::ResultLayout L = makeLayout("interrupted");
     L.stepName = "time";
-    sinew::ResultFile rf(MPI_COMM_WORLD, path2, L);
+    sinew::Hdf5ResultFile rf(MPI_COMM_WORLD, path2, L);
     rf.beginStep(0, 0.125);
     rf.writeNodeField("node/p", rowsOf(1, 0, L.ownedNodes, 3), {3});
   } catch (const std::exception& e) {
@@ -494,14 +494,14 @@ int main(int argc, char** argv) {
       [&] {
         sinew::ResultLayout L = makeLayout("bad");
         if (rank == 0) L.ownedNodes.push_back(kNodes);
-        sinew::ResultFile rf(MPI_COMM_WORLD, path + ".bad.h5", L);
+        sinew::Hdf5ResultFile rf(MPI_COMM_WORLD, path + ".bad.h5", L);
       },
       "an owned row out of range");
   expectThrowOnAllRanks(
       [&] {
         sinew::ResultLayout L = makeLayout("bad");
         if (rank == nproc - 1) L.meshReference.pop_back();
-        sinew::ResultFile rf(MPI_COMM_WORLD, path + ".bad.h5", L);
+        sinew::Hdf5ResultFile rf(MPI_COMM_WORLD, path + ".bad.h5", L);
       },
       "a mesh reference of the wrong size");
   if (nproc > 1)
@@ -509,7 +509,7 @@ int main(int argc, char** argv) {
       [&] {
         sinew::ResultLayout L = makeLayout("bad");
         L.ownedNodes.assign(1, 0);  // every rank claims node 0
-        sinew::ResultFile rf(MPI_COMM_WORLD, path + ".bad.h5", L);
+        sinew::Hdf5ResultFile rf(MPI_COMM_WORLD, path + ".bad.h5", L);
       },
       "a row owned twice");
 

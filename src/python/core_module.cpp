@@ -1,0 +1,183 @@
+// sinew._core: the library entry point (sinew/simulation.hpp) for Python (pybind11). python/sinew
+// calls it from Scene.run() and spacarlight(); see docs/python.md.
+//
+//   _core.run(scene, flags=None, comm=None, echo=False, base_dir=".")
+//     scene: the scene as a dict (sinew.Scene.data: nodes, elements, nprops, eprops, opt, ...),
+//            or a scene file path (str)
+//     flags: command-line flags as a list of words (["-loadsteps", "5", "-snes_monitor"]) or a dict
+//            ({"loadsteps": 5, "calcbuck": True, "gravity": [0, 0, -9.81]})
+//     comm:  an mpi4py communicator (default: MPI_COMM_WORLD)
+//   returns {"exit_code", "message", "output", "file", "datasets": {name: numpy array},
+//            "attrs": {root attribute: int or str}, "group_attrs": {group: {attribute: str}}};
+//   a run that produced no results returns "datasets": None with its exit code and message.
+// PETSc and SLEPc start at the first run (without PETSc's signal handlers, which would take Ctrl-C
+// from the interpreter) and end at interpreter exit (finalize(), registered by python/sinew).
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+#include <yaml-cpp/yaml.h>
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "sinew/simulation.hpp"
+
+namespace py = pybind11;
+
+namespace {
+
+/// A Python value as YAML (the scene dict -> the scene text the reader checks): dicts, lists,
+/// tuples, numpy arrays and scalars, bools, ints, floats (shortest repr: read back exactly), str.
+void emit(YAML::Emitter& out, const py::handle& v) {
+  if (py::isinstance<py::dict>(v)) {
+    out << YAML::BeginMap;
+    for (const auto& [key, value] : py::reinterpret_borrow<py::dict>(v)) {
+      out << YAML::Key;
+      emit(out, key);
+      out << YAML::Value;
+      emit(out, value);
+    }
+    out << YAML::EndMap;
+  } else if (py::hasattr(v, "tolist") && !py::isinstance<py::str>(v)) {  // numpy arrays and scalars
+    emit(out, v.attr("tolist")());
+  } else if (py::isinstance<py::list>(v) || py::isinstance<py::tuple>(v)) {
+    out << YAML::Flow << YAML::BeginSeq;
+    for (const py::handle item : v) emit(out, item);
+    out << YAML::EndSeq;
+  } else if (v.is_none()) {
+    out << YAML::Null;
+  } else if (py::isinstance<py::bool_>(v)) {
+    out << (v.cast<bool>() ? "true" : "false");
+  } else if (py::isinstance<py::float_>(v)) {
+    const double x = v.cast<double>();
+    out << (std::isnan(x) ? std::string(".nan") : std::isinf(x) ? std::string(x > 0 ? ".inf" : "-.inf") : py::repr(v).cast<std::string>());
+  } else if (py::isinstance<py::int_>(v)) {
+    out << py::str(v).cast<std::string>();
+  } else {
+    out << py::str(v).cast<std::string>();
+  }
+}
+
+/// A flag's value as the command line would give it: true/false, comma lists, text.
+std::string flagValue(const py::handle& v) {
+  if (v.is_none()) return "";
+  if (py::isinstance<py::bool_>(v)) return v.cast<bool>() ? "true" : "false";
+  if (py::hasattr(v, "tolist") && !py::isinstance<py::str>(v)) return flagValue(v.attr("tolist")());
+  if (py::isinstance<py::list>(v) || py::isinstance<py::tuple>(v)) {
+    std::string s;
+    for (const py::handle item : v) s += (s.empty() ? "" : ",") + flagValue(item);
+    return s;
+  }
+  return py::str(v).cast<std::string>();
+}
+
+/// A word of a flag list that names a flag: "-name", but not a negative number ("-9.81").
+bool isFlagWord(const std::string& w) {
+  return w.size() > 1 && w[0] == '-' && !(std::isdigit(static_cast<unsigned char>(w[1])) || w[1] == '.');
+}
+
+std::vector<sinew::Flag> flagsOf(const py::object& flags) {
+  std::vector<sinew::Flag> out;
+  if (flags.is_none()) return out;
+  if (py::isinstance<py::dict>(flags)) {
+    for (const auto& [key, value] : py::reinterpret_borrow<py::dict>(flags)) {
+      std::string name = py::str(key).cast<std::string>();
+      if (!name.empty() && name[0] == '-') name.erase(0, 1);
+      out.emplace_back(name, flagValue(value));
+    }
+    return out;
+  }
+  std::vector<std::string> words;
+  for (const py::handle w : flags) words.push_back(py::str(w).cast<std::string>());
+  for (std::size_t i = 0; i < words.size(); ++i) {
+    if (!isFlagWord(words[i])) throw sinew::RunError(2, "error: flag list: " + words[i] + " follows no flag");
+    const std::string name = words[i].substr(1);
+    std::string value;
+    if (i + 1 < words.size() && !isFlagWord(words[i + 1])) value = words[++i];
+    out.emplace_back(name, value);
+  }
+  return out;
+}
+
+MPI_Comm commOf(const py::object& comm) {
+  if (comm.is_none()) return MPI_COMM_WORLD;
+  return MPI_Comm_f2c(comm.attr("py2f")().cast<MPI_Fint>());  // an mpi4py communicator
+}
+
+py::array arrayOf(const std::string& name, const sinew::ResultArray& a) {
+  std::vector<py::ssize_t> shape(a.shape.begin(), a.shape.end());
+  if (static_cast<std::size_t>(a.size()) != (a.integer ? a.integers.size() : a.values.size()))
+    throw std::logic_error("sinew._core: dataset /" + name + ": values do not fill its shape");
+  if (a.integer) {
+    py::array_t<std::int64_t> out(shape);
+    std::copy(a.integers.begin(), a.integers.end(), out.mutable_data());
+    return out;
+  }
+  py::array_t<double> out(shape);
+  std::copy(a.values.begin(), a.values.end(), out.mutable_data());
+  return out;
+}
+
+/// PETSc/SLEPc for this process (once), with extra PETSc options; -no_signal_handler keeps Ctrl-C
+/// (SIGINT) and the other signals the interpreter's.
+void start(const std::vector<std::string>& options) {
+  std::vector<std::string> words{"sinew", "-no_signal_handler"};
+  words.insert(words.end(), options.begin(), options.end());
+  std::vector<char*> argv;
+  for (std::string& w : words) argv.push_back(w.data());
+  argv.push_back(nullptr);
+  int argc = static_cast<int>(words.size());
+  char** args = argv.data();
+  sinew::initialize(&argc, &args);
+}
+
+py::dict run(const py::object& scene, const py::object& flags, const py::object& comm, bool echo,
+             const std::string& baseDir) {
+  sinew::SceneSource source;
+  if (py::isinstance<py::str>(scene)) {
+    source = sinew::SceneSource::file(scene.cast<std::string>());
+  } else {
+    YAML::Emitter text;
+    emit(text, scene);
+    source = sinew::SceneSource::yaml(text.c_str(), baseDir);
+  }
+  py::dict result;
+  result["datasets"] = py::none();
+  try {
+    const std::vector<sinew::Flag> pairs = flagsOf(flags);
+    start({});
+    sinew::RunOutput out = sinew::run(commOf(comm), source, pairs, echo);
+    result["exit_code"] = out.exitCode;
+    result["message"] = out.message;
+    result["output"] = out.output;
+    result["file"] = out.file;
+    py::dict datasets, attrs, groups;
+    for (const auto& [name, a] : out.results.datasets) datasets[py::str(name)] = arrayOf(name, a);
+    for (const auto& [name, v] : out.results.numbers) attrs[py::str(name)] = v;
+    for (const auto& [name, v] : out.results.texts) attrs[py::str(name)] = v;
+    for (const auto& [group, texts] : out.results.groupTexts) groups[py::str(group)] = texts;
+    if (out.file.empty()) result["datasets"] = datasets;
+    result["attrs"] = attrs;
+    result["group_attrs"] = groups;
+  } catch (const sinew::RunError& e) {
+    result["exit_code"] = e.exitCode();
+    result["message"] = std::string(e.what());
+    result["output"] = e.output();
+    result["file"] = "";
+  }
+  return result;
+}
+
+}  // namespace
+
+PYBIND11_MODULE(_core, m) {
+  m.doc() = "Sinew's library entry point: runs scenes in this process, results as numpy arrays (docs/python.md)";
+  m.def("run", &run, py::arg("scene"), py::arg("flags") = py::none(), py::arg("comm") = py::none(),
+        py::arg("echo") = false, py::arg("base_dir") = ".",
+        "Runs a scene (dict or file path) on comm's ranks; returns its datasets, attributes, exit code and message.");
+  m.def("finalize", &sinew::finalize, "Ends PETSc/SLEPc if a run started them (at interpreter exit).");
+  m.def("initialize", &start, py::arg("options") = std::vector<std::string>{},
+        "Starts PETSc/SLEPc (once per process) with extra PETSc options.");
+}

@@ -1,0 +1,132 @@
+#!/usr/bin/python3
+"""In-process runs (sinew._core through Scene.run) against the command line (issue 25): for each
+named runs/ scene, the sinew executable writes its result file on N ranks (mpirun -n N), then
+`mpirun -n N python3 inprocess_compare.py --run` runs the same scenes in one Python process per
+rank (Scene.from_yaml(...).run(), in memory) and every rank saves its `out.data`; every dataset the
+command line wrote (the restart checkpoint aside) must be in every rank's results with the same
+shape, NaN pattern and values to 1e-12 relative (2-norm of the difference over the 2-norm; see
+RTOL_SCENE for the one scene that the command line itself does not reproduce run to run), the root
+attributes equal (the scene text aside: the in-process run reads the scene's dict).
+
+    inprocess_compare.py --np 2 crosshinge lee_frame      (ctest: python_inprocess_*)
+"""
+import argparse
+import glob
+import json
+import os
+import subprocess
+import sys
+import time
+
+import h5py
+import numpy as np
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+SOURCE = os.path.normpath(os.path.join(HERE, "..", ".."))
+sys.path.insert(0, os.path.join(SOURCE, "python"))
+RTOL = 1e-12
+# Not reproducible run to run on 2 ranks: sail_masts' form finding on 2 ranks gives the command line
+# itself results that scatter by 3e-12 from run to run (membrane_n12, Freac; measured over 3 runs) and
+# a final Newton residual /formfinding/residual that varies by 1e-5 relative (its round-off noise;
+# /work/baseline/compare.py checks it to 1e-9 absolute, as here).
+RTOL_SCENE = {("sail_masts", 2): 1e-10}
+RESIDUAL_ATOL = 1e-9
+
+
+def run_in_process(scenes, work):
+    import sinew
+    from mpi4py import MPI
+    rank = MPI.COMM_WORLD.Get_rank()
+    for s in scenes:
+        out = sinew.Scene.from_yaml(os.path.join(SOURCE, "runs", s + ".yaml")).run()
+        np.savez(os.path.join(work, f"{s}_mem_r{rank}.npz"), **{k.replace("/", "|"): v for k, v in out.data.items()})
+        with open(os.path.join(work, f"{s}_mem_r{rank}.json"), "w") as f:
+            json.dump({k: v for k, v in out.attrs.items() if k != "scene"}, f)
+
+
+def compare(scene, cli, mem_npz, mem_json, nranks):
+    problems = []
+    mem = {k.replace("|", "/"): v for k, v in np.load(mem_npz).items()}
+    with h5py.File(cli, "r") as f:
+        names = []
+        f.visititems(lambda n, o: names.append(n) if isinstance(o, h5py.Dataset) and not n.startswith("checkpoint") else None)
+        for n in sorted(set(names) ^ set(mem)):
+            problems.append(f"/{n} only in {'the file' if n in names else 'memory'}")
+        worst = 0.0
+        for n in sorted(set(names) & set(mem)):
+            x, y = f[n][()], mem[n]
+            if x.shape != y.shape or x.dtype.kind != y.dtype.kind:
+                problems.append(f"/{n}: {x.shape} {x.dtype} in the file, {y.shape} {y.dtype} in memory")
+                continue
+            if x.dtype.kind != "f":
+                if not np.array_equal(x, y):
+                    problems.append(f"/{n} differs")
+                continue
+            if not np.array_equal(np.isnan(x), np.isnan(y)):
+                problems.append(f"/{n}: NaN rows differ")
+                continue
+            if n == "formfinding/residual" and nranks > 1:  # round-off noise of the last Newton step
+                if np.nanmax(np.abs(x - y), initial=0) > RESIDUAL_ATOL:
+                    problems.append(f"/{n}: differs by more than {RESIDUAL_ATOL}")
+                continue
+            d, nx = np.linalg.norm(np.nan_to_num(x - y)), np.linalg.norm(np.nan_to_num(x))
+            r = d / nx if nx > 0 else d
+            worst = max(worst, r)
+            if r > RTOL_SCENE.get((scene, nranks), RTOL):
+                problems.append(f"/{n}: relative difference {r:.2e}")
+        attrs = {k: (v.decode() if isinstance(v, bytes) else v.item() if hasattr(v, "item") else v)
+                 for k, v in f.attrs.items() if k != "scene"}
+    with open(mem_json) as fj:
+        mattrs = json.load(fj)
+    if attrs != mattrs:
+        problems.append(f"attributes {attrs} in the file, {mattrs} in memory")
+    return problems, worst, len(names)
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--np", type=int, default=1)
+    ap.add_argument("--run", action="store_true", help="(under mpirun) the in-process runs")
+    ap.add_argument("--work", default=None)
+    ap.add_argument("scenes", nargs="+")
+    a = ap.parse_args()
+    work = a.work or os.path.join(os.environ.get("SINEW_WORK_DIR", "/tmp"),
+                                  f"inprocess_np{a.np}_{'_'.join(a.scenes)}"[:120])
+    if a.run:
+        run_in_process(a.scenes, work)
+        return 0
+    os.makedirs(work, exist_ok=True)
+    for old in glob.glob(os.path.join(work, "*")):
+        os.remove(old)
+    sinew_bin = os.environ.get("SINEW_BIN", os.path.join(SOURCE, "build", "sinew"))
+    mpiexec = os.environ.get("SINEW_MPIEXEC", "mpirun")
+    t = time.time()
+    for s in a.scenes:
+        r = subprocess.run([mpiexec, "-n", str(a.np), sinew_bin, os.path.join(SOURCE, "runs", s + ".yaml"), "-o",
+                            os.path.join(work, s + "_cli.h5"), "-silent", "true"], cwd=os.path.join(SOURCE, "runs"),
+                           capture_output=True, text=True)
+        if r.returncode not in (0, 3):
+            print(f"{s}: the command line ended with exit {r.returncode}\n{r.stdout}{r.stderr}")
+            return 1
+    t_cli = time.time() - t
+    t = time.time()
+    r = subprocess.run([mpiexec, "-n", str(a.np), sys.executable, os.path.abspath(__file__), "--run", "--work", work] +
+                       a.scenes, capture_output=True, text=True)
+    t_mem = time.time() - t
+    if r.returncode != 0:
+        print(f"in-process runs ended with exit {r.returncode}\n{r.stdout}{r.stderr}")
+        return 1
+    failed = False
+    for s in a.scenes:
+        for rank in range(a.np):
+            problems, worst, n = compare(s, os.path.join(work, s + "_cli.h5"), os.path.join(work, f"{s}_mem_r{rank}.npz"),
+                                         os.path.join(work, f"{s}_mem_r{rank}.json"), a.np)
+            print(f"{s} np{a.np} rank {rank}: {n} datasets, worst relative difference {worst:.2e}"
+                  + ("".join(f"\n  {p}" for p in problems)))
+            failed |= bool(problems)
+    print(f"command line {t_cli:.1f} s, in-process {t_mem:.1f} s (including the interpreter and MPI start)")
+    return 1 if failed else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -114,6 +114,9 @@ class Assembler {
     double h = 0;
   };
   void setRotaryMomentum(const RotaryMomentum& m) { momentum_ = m; }
+  /// While on, dynamicJacobian leaves out the kernels that damp their strain rates (the damping's
+  /// beta K0 of the other kinds).
+  void setSkipStrainRateDamped(bool on) { skipStrainRateDamped_ = on; }
   /// Restores/saves the reference rotations (for retrying a failed load increment).
   std::vector<Mat3> referenceRotations() const { return Rref_; }
   void setReferenceRotations(const std::vector<Mat3>& r) { Rref_ = r; }
@@ -313,6 +316,7 @@ class Assembler {
   bool nonFiniteLawsFatal_ = true;
   std::string nonFiniteLaw_;
   RotaryMomentum momentum_;
+  bool skipStrainRateDamped_ = false;
   /// rotaryMomentumStep of free Frame6 node i under momentum_ (its mominertia, R_n = Rref_, theta from u1).
   RotaryMomentumStep midpointMomentum(int i) const;
   const double* vLocal_ = nullptr;  // local form of the velocities while a dynamic evaluation runs

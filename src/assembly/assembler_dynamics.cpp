@@ -209,6 +209,7 @@ PetscErrorCode Assembler::dynamicJacobian(Vec U, Vec V, const LoadState& ls, dou
   if (sink_) sink_->start(shiftA);
   vLocal_ = v;
   for (const LocalElement& el : mesh_.elements) {
+    if (skipStrainRateDamped_ && el.kernel->strainRateDamped()) continue;
     gatherElement(el, q.data(), u, idx.data(), nullptr);
     KernelNeeds needs;
     needs.tangent = true;

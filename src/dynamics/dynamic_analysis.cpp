@@ -26,7 +26,7 @@ DynamicAnalysis::Scheme DynamicAnalysis::checkScheme(const DistributedMesh& mesh
 }
 
 DynamicAnalysis::DynamicAnalysis(Assembler& assembler, const DynamicsOptions& opts, const Settings& all)
-    : asm_(assembler), opts_(opts), damping_(assembler, opts, all.eigen) {
+    : asm_(assembler), opts_(opts), damping_(assembler, opts, all.eigen, all.dynamics.stiffnessDamping) {
   const DynamicsSettings& settings = all.dynamics;
   const StaticsSettings& newton = all.statics;
   ls_ = loadsAt(0.0);

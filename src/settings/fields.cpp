@@ -101,6 +101,7 @@ const std::vector<Field<DynamicsSettings>>& dynamicsFields() {
       {"dynamics_adapt_its", integerAtLeast(1), &flag_groups::dynamics, "4 (opt.dynamics.adaptive.target_iterations)", "adaptive steps by Newton: iterations per step aimed at", &DynamicsSettings::adaptIts},
       {"dynamics_adapt_tol", realIn(0, 1e300, true, false), &flag_groups::dynamics, "1e-4 (opt.dynamics.adaptive.tolerance)", "adaptive steps by error: local error accepted per step; estimate / largest displacement", &DynamicsSettings::adaptTol},
       {"beam_mass", oneOf({"consistent", "lumped"}), &flag_groups::dynamics, "consistent", "beam inertia: consistent or lumped mass; the consistent mass in the current element frame, or lumped on the nodes (rhoA l/2 and the section's rotary inertia with its exact gyroscopic moment: momentum-exact with -dynamics_scheme midpoint)", choiceOf(&DynamicsSettings::beamMass)},
+      {"stiffness_damping", oneOf({"corotated", "initial"}), &flag_groups::dynamics, "corotated", "stiffness-proportional damping of beams; beta S on each element's strain rates (rigid motion undamped), or beta K0 with the tangent of the start state (other element kinds: always K0)", choiceOf(&DynamicsSettings::stiffnessDamping)},
       {"dynamics_energy", boolean(), &flag_groups::dynamics, "false", "write energies and momenta per output step; /energy/{kinetic,strain,external_work,total} and /momentum/{linear,angular} (beams, ANCF)", &DynamicsSettings::energy},
   };
   return fields;

@@ -21,6 +21,7 @@ enum class ChainLU { Auto, Cut, Redundant };                 ///< auto, cut, red
 enum class DynamicsPredictor { Auto, Acceleration, State };  ///< auto, acceleration, state
 enum class TimeStepControl { None, Newton, Error };          ///< none, newton, error
 enum class BeamMass { Consistent, Lumped };                  ///< consistent, lumped
+enum class StiffnessDamping { Corotated, Initial };          ///< corotated, initial
 enum class ComplianceMethod { SelectedInverse, SparseRhs, DenseRhs };  ///< selinv, sparse, dense
 
 /// The result file and checkpoints.
@@ -109,6 +110,7 @@ struct DynamicsSettings {
   std::optional<int> adaptIts;                            ///< -dynamics_adapt_its
   std::optional<double> adaptTol;                         ///< -dynamics_adapt_tol
   BeamMass beamMass = BeamMass::Consistent;               ///< -beam_mass (the kernel factory)
+  StiffnessDamping stiffnessDamping = StiffnessDamping::Corotated;  ///< -stiffness_damping (Damping)
   bool energy = false;                                    ///< -dynamics_energy
   bool operator==(const DynamicsSettings&) const = default;
 };

@@ -80,7 +80,7 @@ TEST(Settings, DefaultsAreTheRegistryDefaults) {
       EXPECT_EQ(defaultMismatch(f, defaults.*component), "") << "-" << f.flag;
     }
   });
-  EXPECT_EQ(fields, 53);
+  EXPECT_EQ(fields, 54);
 }
 
 TEST(Settings, RegistryIsTheFieldTablesThenTheSceneOptFields) {
@@ -152,4 +152,5 @@ TEST(Settings, BuiltInCodeWithChosenValues) {
   EXPECT_EQ(s.continuation, ContinuationSettings{});  // the others keep their defaults
   EXPECT_EQ(s.dynamics.dtMax, std::nullopt);
   EXPECT_EQ(s.dynamics.beamMass, BeamMass::Consistent);
+  EXPECT_EQ(s.dynamics.stiffnessDamping, StiffnessDamping::Corotated);
 }

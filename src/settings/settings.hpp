@@ -18,7 +18,7 @@ enum class OperatorChoice { Auto, Elementwise, Assembled };  ///< auto, elementw
 enum class AutoSwitch { Auto, On, Off };                     ///< auto, true, false
 enum class DynamicsScheme { ArnoldBruls, TSAlpha2, Midpoint };  ///< arnold_bruls, tsalpha2, midpoint
 enum class ChainLU { Auto, Cut, Redundant };                 ///< auto, cut, redundant
-enum class DynamicsPredictor { Auto, Acceleration, State };  ///< auto, acceleration, state
+enum class DynamicsPredictor { Auto, Acceleration, State, Rotation };  ///< auto, acceleration, state, rotation
 enum class TimeStepControl { None, Newton, Error };          ///< none, newton, error
 enum class BeamMass { Consistent, Lumped };                  ///< consistent, lumped
 enum class StiffnessDamping { Corotated, Initial };          ///< corotated, initial

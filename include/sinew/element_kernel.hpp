@@ -143,6 +143,13 @@ class ElementKernel {
   /// Strain energy at state q (its gradient is the internal force without the multipliers' part);
   /// false when the kernel does not provide it (energy output then reports the element kinds).
   virtual bool strainEnergy(const double* /*q*/, double* /*energy*/) const { return false; }
+  /// Stiffness-proportional damping on the strain rates (Kelvin-Voigt; docs/dynamics.md "Damping"): the
+  /// kernel adds beta S epsd, epsd = grad eps . qdot, to its force whenever KernelInput::qdot is given
+  /// (with hasDamping() and D), so rigid motion is never damped. Returns false for kinds that do not
+  /// (their damping stays beta K0 of the start state, src/dynamics/damping.*); beta = 0 switches it off.
+  virtual bool setStrainRateDamping(double /*beta*/) { return false; }
+  /// True while the kernel damps its strain rates (beta > 0).
+  virtual bool strainRateDamped() const { return false; }
   /// Element force output (cable axial force, membrane resultants n11 n22 n12); empty when none.
   virtual void elementForce(const double* /*q*/, std::vector<double>& out) const { out.clear(); }
 

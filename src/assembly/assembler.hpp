@@ -103,6 +103,11 @@ class Assembler {
   PetscErrorCode updateStates(Vec U, const LoadState& ls);
   /// Moves rotation increments into the reference rotations: R_ref = exp(theta) R_ref, theta = 0.
   PetscErrorCode absorbRotations(Vec U);
+  /// Newton's start that follows the rotation (-dynamics_predictor rotation): each Frame6 node
+  /// moves as a rigid body with its spatial spin w and velocity v of V over h: theta = h w,
+  /// x += h T(h w) v (T: left Jacobian of exp; exact for a rigid screw motion at constant w, v).
+  /// U holds q_n (rotations absorbed) and is changed on those nodes' free DOFs (owned entries).
+  PetscErrorCode rigidMotionPredictor(Vec V, double h, Vec U) const;
   /// W <- exp(theta) W on the spins of the free Frame6 nodes (theta from U; owned entries).
   PetscErrorCode rotateSpins(Vec U, Vec W) const;
   /// Midpoint rule (DynamicAnalysis): while set (h > 0), the rotary inertia of free nodes in
@@ -114,6 +119,9 @@ class Assembler {
     double h = 0;
   };
   void setRotaryMomentum(const RotaryMomentum& m) { momentum_ = m; }
+  /// While on, dynamicJacobian leaves out the kernels that damp their strain rates (the damping's
+  /// beta K0 of the other kinds).
+  void setSkipStrainRateDamped(bool on) { skipStrainRateDamped_ = on; }
   /// Restores/saves the reference rotations (for retrying a failed load increment).
   std::vector<Mat3> referenceRotations() const { return Rref_; }
   void setReferenceRotations(const std::vector<Mat3>& r) { Rref_ = r; }
@@ -313,6 +321,7 @@ class Assembler {
   bool nonFiniteLawsFatal_ = true;
   std::string nonFiniteLaw_;
   RotaryMomentum momentum_;
+  bool skipStrainRateDamped_ = false;
   /// rotaryMomentumStep of free Frame6 node i under momentum_ (its mominertia, R_n = Rref_, theta from u1).
   RotaryMomentumStep midpointMomentum(int i) const;
   const double* vLocal_ = nullptr;  // local form of the velocities while a dynamic evaluation runs

@@ -160,6 +160,31 @@ PetscErrorCode Assembler::rotateSpins(Vec U, Vec W) const {
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+PetscErrorCode Assembler::rigidMotionPredictor(Vec V, double h, Vec U) const {
+  PetscFunctionBeginUser;
+  const PetscScalar* v;
+  PetscScalar* u;
+  PetscCall(VecGetArrayRead(V, &v));
+  PetscCall(VecGetArray(U, &u));
+  for (int i = 0; i < mesh_.numOwnedNodes; ++i) {
+    const LocalNode& n = mesh_.nodes[i];
+    if (n.kind != NodeKind::Frame6) continue;
+    Vec3 w{}, vt{};
+    for (int k = 0; k < 3; ++k) {
+      w[k] = n.dof[3 + k] >= 0 ? v[n.dof[3 + k]] : 0.0;
+      vt[k] = n.dof[k] >= 0 ? v[n.dof[k]] : 0.0;
+    }
+    const Vec3 phi = h * w, dx = h * (dexpSO3(phi) * vt);  // x(t) = c + exp(t w)(x_n - c) + t v_par
+    for (int k = 0; k < 3; ++k) {
+      if (n.dof[k] >= 0) u[n.dof[k]] += dx[k];
+      if (n.dof[3 + k] >= 0) u[n.dof[3 + k]] += phi[k];
+    }
+  }
+  PetscCall(VecRestoreArray(U, &u));
+  PetscCall(VecRestoreArrayRead(V, &v));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode Assembler::dynamicResidual(Vec U, Vec V, Vec A, const LoadState& ls, Vec F) {
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(SinewEvents::get().residual, 0, 0, 0, 0));
@@ -209,6 +234,7 @@ PetscErrorCode Assembler::dynamicJacobian(Vec U, Vec V, const LoadState& ls, dou
   if (sink_) sink_->start(shiftA);
   vLocal_ = v;
   for (const LocalElement& el : mesh_.elements) {
+    if (skipStrainRateDamped_ && el.kernel->strainRateDamped()) continue;
     gatherElement(el, q.data(), u, idx.data(), nullptr);
     KernelNeeds needs;
     needs.tangent = true;

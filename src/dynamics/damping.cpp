@@ -7,9 +7,21 @@
 
 namespace sinew {
 
-Damping::Damping(Assembler& assembler, const DynamicsOptions& opts, const EigenSettings& eigen)
+Damping::Damping(Assembler& assembler, const DynamicsOptions& opts, const EigenSettings& eigen, StiffnessDamping mode)
     : asm_(assembler), opts_(opts), eigen_(eigen) {
-  rayleigh_ = opts_.mass_proportional_damping > 0 || opts_.stiffness_proportional_damping > 0;
+  const double beta = opts_.stiffness_proportional_damping;
+  // beta on the strain rates of the kernels that take it (beams), or (initial) beta K0 for every kind
+  int local = 0, others = 0;
+  for (const LocalElement& e : asm_.mesh().elements) {
+    const bool own = e.kernel->setStrainRateDamping(mode == StiffnessDamping::Corotated ? beta : 0.0) && e.kernel->strainRateDamped();
+    local |= own;
+    others |= !own;
+  }
+  int any[2] = {local, others};
+  MPI_Allreduce(MPI_IN_PLACE, any, 2, MPI_INT, MPI_LOR, asm_.mesh().comm);
+  strainRate_ = any[0];
+  const bool stiffnessK0 = beta > 0 && any[1];  // some kinds keep beta K0
+  rayleigh_ = opts_.mass_proportional_damping > 0 || stiffnessK0;
   for (double z : opts_.modal_damping) modal_ = modal_ || z > 0;
 }
 
@@ -34,7 +46,10 @@ PetscErrorCode Damping::setup(Vec U, const LoadState& ls, Vec keep, ResultFile& 
     PetscCall(VecDuplicate(U, &V));
     PetscCall(VecSet(V, 0.0));
     PetscCall(asm_.createMatrix(&C0_));
-    PetscCall(asm_.dynamicJacobian(U, V, ls, 0.0, 0.0, C0_));
+    asm_.setSkipStrainRateDamped(true);  // K0 of the kinds that do not damp their strain rates
+    const PetscErrorCode ierr = asm_.dynamicJacobian(U, V, ls, 0.0, 0.0, C0_);
+    asm_.setSkipStrainRateDamped(false);
+    PetscCall(ierr);
     PetscCall(VecDestroy(&V));
     PetscCall(MatScale(C0_, beta));
     PetscCall(MatAXPY(C0_, alpha, M, SAME_NONZERO_PATTERN));

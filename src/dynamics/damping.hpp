@@ -1,5 +1,9 @@
 // Linear viscous damping of the time integration (opt.dynamics, docs/dynamics.md "Damping"):
 //   f_d = C qd,  C = alpha M0 + beta K0 + M0 Phi diag(2 zeta_i omega_i) Phi^T M0
+// With -stiffness_damping corotated (the default) the beta part of the kernels that damp their own
+// strain rates (beams: sigma_d = beta S epsd, epsd = grad eps . qd; ElementKernel::setStrainRateDamping)
+// is theirs, in their forces and tangents wherever the assembler passes velocities: it never damps rigid
+// motion. K0 then holds the other kinds only; -stiffness_damping initial keeps beta K0 for every kind.
 // M0, K0: consistent mass and tangent stiffness (material + geometric) of the state the time loop
 // starts from (Rayleigh damping with the initial tangent: a constant C, exact for small motions
 // about the start state); Phi, omega: the mass-normalized modes and circular frequencies of that
@@ -23,7 +27,8 @@ namespace sinew {
 class Damping {
  public:
   /// eigen: the settings of the frequency analysis behind modal damping.
-  Damping(Assembler& assembler, const DynamicsOptions& opts, const EigenSettings& eigen);
+  /// mode: -stiffness_damping (corotated: beams damp their strain rates themselves).
+  Damping(Assembler& assembler, const DynamicsOptions& opts, const EigenSettings& eigen, StiffnessDamping mode);
   ~Damping();
   Damping(const Damping&) = delete;
   Damping& operator=(const Damping&) = delete;
@@ -37,6 +42,8 @@ class Damping {
   PetscErrorCode addForce(Vec V, Vec F);
   /// J += shiftV (alpha M0 + beta K0) (the modal part stays out of the Newton matrix).
   PetscErrorCode addJacobian(double shiftV, Mat J);
+  /// Some kernels damp their strain rates (corotated beta; no matrix to build for them).
+  bool strainRateDamping() const { return strainRate_; }
   /// Damped modes: circular frequency and ratio (for the summary).
   const std::vector<double>& modalOmega() const { return omega_; }
   const std::vector<double>& modalZeta() const { return zeta_; }
@@ -46,6 +53,7 @@ class Damping {
   DynamicsOptions opts_;
   EigenSettings eigen_;  ///< of the frequency analysis of modal damping
   bool rayleigh_ = false, modal_ = false;
+  bool strainRate_ = false;  ///< some kernels damp their strain rates (corotated beta)
   Mat C0_ = nullptr;  ///< alpha M0 + beta K0
   Mat M0_ = nullptr;  ///< for the modal part
   std::vector<Vec> phi_;

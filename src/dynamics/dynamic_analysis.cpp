@@ -26,7 +26,7 @@ DynamicAnalysis::Scheme DynamicAnalysis::checkScheme(const DistributedMesh& mesh
 }
 
 DynamicAnalysis::DynamicAnalysis(Assembler& assembler, const DynamicsOptions& opts, const Settings& all)
-    : asm_(assembler), opts_(opts), damping_(assembler, opts, all.eigen) {
+    : asm_(assembler), opts_(opts), damping_(assembler, opts, all.eigen, all.dynamics.stiffnessDamping) {
   const DynamicsSettings& settings = all.dynamics;
   const StaticsSettings& newton = all.statics;
   ls_ = loadsAt(0.0);
@@ -100,9 +100,15 @@ DynamicAnalysis::DynamicAnalysis(Assembler& assembler, const DynamicsOptions& op
   // took 303 Newton iterations with 5 retried steps from the extrapolation, 36 from q_n; without the
   // mixed stresses the extrapolation even converged to another root of the step equations (tip
   // -0.318 m at t = 0.3 s against -0.266 m from q_n and from every smaller step: -0.268 m).
-  predictor_ = pr == DynamicsPredictor::State || (pr == DynamicsPredictor::Auto && (fine || asm_.mixedStressNewton()))
+  predictor_ = pr == DynamicsPredictor::State || pr == DynamicsPredictor::Rotation ||
+                       (pr == DynamicsPredictor::Auto && (fine || asm_.mixedStressNewton()))
                    ? Predictor::State
                    : Predictor::Acceleration;
+  // rotation: q_n moved by each node's rigid motion over the step (Assembler::rigidMotionPredictor),
+  // which follows a fast rotation that q_n misses by h Omega r (the spin-up at 6 rad/s: 3 Newton
+  // iterations per step instead of 4). Not the default: on the leaf swinging under its weight in 12
+  // steps (test_beam_dynamics_swing) it took 62 iterations against 36 from q_n (192 steps: 386 against 510).
+  followRotation_ = pr == DynamicsPredictor::Rotation;
   coordMax_ = asm_.coordinateScale();
   int mult = 0;
   for (const LocalElement& e : asm_.mesh().elements) mult |= e.firstMultiplier >= 0;
@@ -229,7 +235,8 @@ PetscErrorCode DynamicAnalysis::initialAccelerations(Vec U, Vec V, Vec Qdd, bool
 PetscErrorCode DynamicAnalysis::step(double t1, bool* ok, int* its, double* fnorm, SNESConvergedReason* why, bool commit) {
   PetscFunctionBeginUser;
   const double h = h_;
-  if (asm_.mixedStressNewton()) {  // the mixed-stress tangent linearizes from the converged q_n (also on a retry)
+  const bool rotated = followRotation_ && !restPredictor_;
+  if (asm_.mixedStressNewton() && !rotated) {  // the mixed-stress tangent linearizes from the converged q_n (also on a retry)
     LoadState lsn = ls_;
     lsn.time = t1 - h;
     PetscCall(asm_.setMixedReference(stepScheme_->state().q, lsn));
@@ -242,6 +249,13 @@ PetscErrorCode DynamicAnalysis::step(double t1, bool* ok, int* its, double* fnor
   // accelerations of a step load on a fine mesh lands far outside Newton's reach: stiff axial waves)
   if (restPredictor_ || predictor_ == Predictor::State) PetscCall(VecCopy(stepScheme_->state().q, U));
   else PetscCall(stepScheme_->predict(U));
+  if (rotated) {
+    // q_n moved by each node's rigid motion; the mixed stresses linearize from there (linearized from
+    // q_n, the strains of a turn by h Omega are off by ~ (h Omega)^2 / 2 of the element: the spin-up at
+    // 6 rad/s took 4 Newton iterations per step instead of 3)
+    PetscCall(asm_.rigidMotionPredictor(stepScheme_->state().qd, h, U));
+    if (asm_.mixedStressNewton()) PetscCall(asm_.setMixedReference(U, ls_));
+  }
   NewtonOutcome out;
   PetscCall(solveNewton(snes_, U, &out));
   *why = out.reason;

@@ -242,6 +242,7 @@ class DynamicAnalysis : private MotionEquations {
   SteppedProcedure timeStep(bool commit, SNESConvergedReason* why, double* fnorm);
   /// Newton's start of a time step (-dynamics_predictor): q_n + h qd_n + h^2/2 a_n or q_n
   enum class Predictor { Acceleration, State } predictor_ = Predictor::Acceleration;
+  bool followRotation_ = false;  ///< -dynamics_predictor rotation: q_n moved by the nodes' rigid motion
   double jacobianH_ = 0;       ///< step size the kept Jacobian was built for
   int reuseCount_ = 0;         ///< iterations on the kept Jacobian since it was built
   double prevFnorm_ = 0;       ///< residual norm at the previous Jacobian call of this solve

@@ -211,6 +211,32 @@ void BeamCorotational::evaluate(const KernelInput& in, const KernelNeeds& needs,
     if (sig[i] != 0.0)
       for (int a = 0; a < kDofs; ++a) f[a] += sig[i] * k.ge[i][a];
   for (int r = 0; r < nRigid_; ++r) f[kDofs + r] = scale_ * k.eps[rigidIndex_[r]];
+  // strain-rate damping: sigma_d = beta S epsd, epsd = grad eps . qdot, f_d = sum sigma_d_i grad eps_i
+  double sigD[6] = {0, 0, 0, 0, 0, 0};
+  const bool damped = in.qdot && beta_ > 0.0;
+  if (damped) {
+    double epsd[6];
+    for (int i = 0; i < 6; ++i) {
+      epsd[i] = 0.0;
+      for (int a = 0; a < kDofs; ++a) epsd[i] += k.ge[i][a] * in.qdot[a];
+    }
+    for (int i = 0; i < 6; ++i) {
+      for (int j = 0; j < 6; ++j) sigD[i] += beta_ * S_[6 * i + j] * epsd[j];
+      if (sigD[i] != 0.0)
+        for (int a = 0; a < kDofs; ++a) f[a] += sigD[i] * k.ge[i][a];
+    }
+  }
+  if (!needs.tangent && !needs.damping) return;
+  if (damped && needs.damping) {  // D = d f_d / d qdot = beta sum_ij S_ij grad eps_i grad eps_j^T
+    out.D.assign(static_cast<size_t>(kDofs) * kDofs, 0.0);
+    for (int i = 0; i < 6; ++i) {
+      double SG[kDofs] = {};
+      for (int j = 0; j < 6; ++j)
+        if (S_[6 * i + j] != 0.0)
+          for (int a = 0; a < kDofs; ++a) SG[a] += S_[6 * i + j] * k.ge[j][a];
+      addOuter(out.D.data(), kDofs, k.ge[i], SG, beta_);
+    }
+  }
   if (!needs.tangent) return;
 
   out.K.assign(static_cast<size_t>(n) * n, 0.0);
@@ -246,6 +272,32 @@ void BeamCorotational::evaluate(const KernelInput& in, const KernelNeeds& needs,
   if (in.sigmaMixed)
     for (int i = 0; i < 6; ++i)
       if (modes_[i] == BeamMode::Flexible) sig[i] = in.sigmaMixed[i];
+  for (int i = 0; i < 6; ++i) sig[i] += sigD[i];  // the damping stresses' part
+  addStressTangent(k, sig, G, n);
+  // strain-rate damping at fixed qdot: beta sum_ij S_ij grad eps_i (qdot . d grad eps_j / dq)^T
+  if (damped) {
+    std::vector<double> H(static_cast<size_t>(n) * n);
+    double r[6][kDofs] = {};
+    for (int j = 0; j < 6; ++j) {
+      if (modes_[j] != BeamMode::Flexible) continue;
+      double unit[6] = {0, 0, 0, 0, 0, 0};
+      unit[j] = 1.0;
+      std::fill(H.begin(), H.end(), 0.0);
+      addStressTangent(k, unit, H.data(), n);
+      for (int a = 0; a < kDofs; ++a)
+        for (int c = 0; c < kDofs; ++c) r[j][c] += in.qdot[a] * H[static_cast<size_t>(a) * n + c];
+    }
+    for (int i = 0; i < 6; ++i) {
+      double SR[kDofs] = {};
+      for (int j = 0; j < 6; ++j)
+        if (S_[6 * i + j] != 0.0)
+          for (int c = 0; c < kDofs; ++c) SR[c] += S_[6 * i + j] * r[j][c];
+      addOuter(K, n, k.ge[i], SR, beta_);
+    }
+  }
+}
+
+void BeamCorotational::addStressTangent(const Kinematics& k, const double* sig, double* G, int n) const {
   // Stress part: sum_i we_i Hess e_i + sigma_1/(30 l0) sum Qh_ij grad e_i grad e_j^T,
   // we_1 = sigma_1, we_2 = sigma_2, we_i = sigma_i + sigma_1 Qe_i / (30 l0) (chain rule through eps1).
   const double l0 = l0_, inv30 = 1.0 / (30.0 * l0);

@@ -54,6 +54,16 @@ class BeamCorotational : public ElementKernel {
   int numMixedStresses() const override { return 6; }
   void linearizedStresses(const double* q0, const double* q1, double* sigma) const override;
 
+  /// Stiffness-proportional damping on the strain rates (Kelvin-Voigt, docs/dynamics.md "Damping"):
+  /// sigma_d = beta S epsd with epsd = grad eps . qdot, f_d = grad eps^T sigma_d; zero for every rigid
+  /// velocity field at the current state (the strains are invariant under rigid motion).
+  bool setStrainRateDamping(double beta) override {
+    beta_ = beta;
+    return true;
+  }
+  bool strainRateDamped() const override { return beta_ > 0.0; }
+  bool hasDamping() const override { return beta_ > 0.0; }
+
   /// eps_1..eps_6 at state q.
   std::array<double, 6> generalizedStrains(const double* q) const;
   /// sigma_i = dU/d eps_i for flexible modes, constraintScale * lambda_k for rigid ones, 0 for released.
@@ -95,6 +105,8 @@ class BeamCorotational : public ElementKernel {
   /// disp (optional, 6 values): node translations x - X0, for a cancellation-free elongation.
   void kinematics(const double* q, Kinematics& k, const double* disp = nullptr) const;
   void stresses(const Kinematics& k, const double* lambda, double* sig) const;
+  /// G += sum_i sig_i d(grad eps_i)/dq (the stress part of the tangent; n: leading dimension).
+  void addStressTangent(const Kinematics& k, const double* sig, double* G, int n) const;
   /// Sensor field at s: the section's offset from the chord point and its rotation (sensor file).
   void sectionField(const double* q, double s, Vec3& offset, Mat3& R) const;
 
@@ -105,6 +117,7 @@ class BeamCorotational : public ElementKernel {
   bool hasInertia_ = false;
   bool lumped_ = false;
   double scale_ = 1.0;
+  double beta_ = 0.0;  ///< strain-rate damping (s)
   int nRigid_ = 0;
   std::array<int, 6> rigidIndex_{};  ///< mode index of constraint k
   std::array<double, 36> S_{};       ///< sigma = S eps on flexible modes

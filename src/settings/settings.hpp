@@ -18,9 +18,10 @@ enum class OperatorChoice { Auto, Elementwise, Assembled };  ///< auto, elementw
 enum class AutoSwitch { Auto, On, Off };                     ///< auto, true, false
 enum class DynamicsScheme { ArnoldBruls, TSAlpha2, Midpoint };  ///< arnold_bruls, tsalpha2, midpoint
 enum class ChainLU { Auto, Cut, Redundant };                 ///< auto, cut, redundant
-enum class DynamicsPredictor { Auto, Acceleration, State };  ///< auto, acceleration, state
+enum class DynamicsPredictor { Auto, Acceleration, State, Rotation };  ///< auto, acceleration, state, rotation
 enum class TimeStepControl { None, Newton, Error };          ///< none, newton, error
 enum class BeamMass { Consistent, Lumped };                  ///< consistent, lumped
+enum class StiffnessDamping { Corotated, Initial };          ///< corotated, initial
 enum class ComplianceMethod { SelectedInverse, SparseRhs, DenseRhs };  ///< selinv, sparse, dense
 
 /// The result file and checkpoints.
@@ -110,6 +111,7 @@ struct DynamicsSettings {
   std::optional<int> adaptIts;                            ///< -dynamics_adapt_its
   std::optional<double> adaptTol;                         ///< -dynamics_adapt_tol
   BeamMass beamMass = BeamMass::Consistent;               ///< -beam_mass (the kernel factory)
+  StiffnessDamping stiffnessDamping = StiffnessDamping::Corotated;  ///< -stiffness_damping (Damping)
   bool energy = false;                                    ///< -dynamics_energy
   bool operator==(const DynamicsSettings&) const = default;
 };

@@ -152,4 +152,5 @@ TEST(Settings, BuiltInCodeWithChosenValues) {
   EXPECT_EQ(s.continuation, ContinuationSettings{});  // the others keep their defaults
   EXPECT_EQ(s.dynamics.dtMax, std::nullopt);
   EXPECT_EQ(s.dynamics.beamMass, BeamMass::Consistent);
+  EXPECT_EQ(s.dynamics.stiffnessDamping, StiffnessDamping::Corotated);
 }

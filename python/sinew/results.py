@@ -52,14 +52,24 @@ class OneBased:
 class Step:
     """SPACAR Light's out.step(k): node results of one step (node[i].p has shape (3,))."""
 
-    def __init__(self, out, k):
+    def __init__(self, out, k, ns):
         self.number = k
-        self.node = OneBased([Node({n: getattr(nd, n)[k - 1] for n in vars(nd) if n != "number"}, nd.number)
+        rows = out.data.get("step_analysis_rows")
+        analysed = None if rows is None else np.flatnonzero(np.asarray(rows).astype(int) == k - 1)
+
+        def row(table):
+            """Step k's row of a table: every step has one, or (step analyses run at some steps only,
+            /step_analysis_rows) the analysed steps have one; None at a step without one."""
+            if len(table) == ns:
+                return table[k - 1]
+            return table[analysed[0]] if analysed is not None and analysed.size else None
+
+        self.node = OneBased([Node({n: row(getattr(nd, n)) for n in vars(nd) if n != "number"}, nd.number)
                               for nd in out.node], "node")
         for name in ("freq", "buck", "stressmax", "load_factor", "time"):
             table = getattr(out, name, None)
             if table is not None:
-                setattr(self, name, table[k - 1])
+                setattr(self, name, row(table))
 
 
 class Results:
@@ -80,7 +90,7 @@ class Results:
         self.node = OneBased([Node({f: data[f"node/{f}"][:, i] for f in NODE_FIELDS if f"node/{f}" in data}, i + 1)
                               for i in range(nn)], "node")
         ns = data["node/p"].shape[0] if "node/p" in data else 0
-        self.step = OneBased([Step(self, k) for k in range(1, ns + 1)], "step")
+        self.step = OneBased([Step(self, k, ns) for k in range(1, ns + 1)], "step")
         self.statespace = {k[len("statespace/"):]: v for k, v in data.items() if k.startswith("statespace/")} or None
         self.sensors = {k[len("sensors/"):]: v for k, v in data.items() if k.startswith("sensors/")} or None
 

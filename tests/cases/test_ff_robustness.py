@@ -70,7 +70,7 @@ sc = {"nodes": nodes, "elements": tris,
                   "prestress": [1, 1, 0]}],
       "formfinding": {"formfinding_step": 60, "equilibrium_accuracy": 1e-10}, "opt": {"loadsteps": 1}}
 out, log = run("ff_unsupported", to_yaml(sc), expect_exit=3)
-check("membrane set 1" in log and ("collapsed" in log or "no equilibrium" in log or "shape changed" in log),
+check("eprops(1) (membrane set)" in log and ("collapsed" in log or "no equilibrium" in log or "shape changed" in log),
       "unsupported membrane: error naming the membrane set")
 print("  unsupported membrane message:", [l for l in log.splitlines() if l.startswith("error")])
 
@@ -92,7 +92,7 @@ check(abs(cat_err[8]) < 0.02 and abs(cat_err[16]) < 0.006, "catenoid neck radius
 check(3.0 < cat_err[8] / cat_err[16] < 5.0, f"catenoid neck radius error ratio {cat_err[8] / cat_err[16]:.2f} (h^2: 4)")
 out, log = run("ff_catenoid_unstable", to_yaml(catenoid_scene(halfh=0.7, nt=16, nz=8, steps=300, tol=1e-8)),
                expect_exit=3)
-check("membrane set 1" in log, "catenoid beyond the stability limit: error naming the membrane set")
+check("eprops(1) (membrane set)" in log, "catenoid beyond the stability limit: error naming the membrane set")
 print("  catenoid halfh/R 0.7:", [l for l in log.splitlines() if l.startswith("error")])
 
 # --- slack cables in a load analysis: node 2 held only by two cables that go slack

@@ -46,7 +46,7 @@ def test_scene_error_names_the_field():
     sim.data["eprops"][0]["dim"] = [0.05]
     with pytest.raises(sinew.SinewError) as e:
         sim.run(process=False)
-    assert e.value.exit_code == 2 and "eprops[0].dim" in e.value.message
+    assert e.value.exit_code == 2 and "eprops(1).dim" in e.value.message
     assert hinge(loadsteps=1).run().converged  # the interpreter goes on
 
 

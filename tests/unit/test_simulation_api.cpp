@@ -137,7 +137,7 @@ TEST(SimulationApi, SceneErrorNamesTheField) {
     ADD_FAILURE() << "no RunError";
   } catch (const sinew::RunError& e) {
     EXPECT_EQ(e.exitCode(), 2);
-    EXPECT_NE(std::string(e.what()).find("eprops[0].emod"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("eprops(1).emod"), std::string::npos) << e.what();
   }
 }
 

@@ -11,6 +11,7 @@
 
 #include "app/command_line.hpp"
 #include "app/scene_run.hpp"
+#include "output/collective_agreement.hpp"
 #include "parallel/collective_error.hpp"
 #include "settings/read_settings.hpp"
 #include "solvers/ancf/cable_coarse_space.hpp"
@@ -84,14 +85,6 @@ class OutputCapture {
   static inline PetscErrorCode (*previous_)(FILE*, const char[], va_list) = nullptr;
 };
 
-std::string broadcast(MPI_Comm comm, std::string s) {
-  long n = static_cast<long>(s.size());
-  MPI_Bcast(&n, 1, MPI_LONG, 0, comm);
-  s.resize(static_cast<std::size_t>(n));
-  MPI_Bcast(s.data(), static_cast<int>(n), MPI_CHAR, 0, comm);
-  return s;
-}
-
 /// Sinew's message of a failed run: its "error" lines, else its last line.
 std::string errorLines(const std::string& output) {
   std::istringstream in(output);
@@ -157,7 +150,7 @@ RunOutput run(MPI_Comm comm, const SceneSource& scene, const Settings& settings,
     }
     if (ierr) out.exitCode = reportRunFailure(comm, ierr);
   }
-  out.output = broadcast(comm, out.output);  // rank 0's text, on every rank
+  out.output = collective::broadcastString(comm, out.output);  // rank 0's text, on every rank
   if (out.exitCode != 0) out.message = errorLines(out.output);
   if (!ran && out.exitCode != 0) throw RunError(out.exitCode, out.message, out.output);
   return out;

@@ -12,6 +12,8 @@
 #endif
 #include "sinew/result_store.hpp"
 
+#include "output/collective_agreement.hpp"
+
 #include <algorithm>
 #include <array>
 #include <limits>
@@ -61,14 +63,6 @@ std::vector<T> allGather(MPI_Comm comm, const std::vector<T>& mine, std::vector<
   MPI_Allgatherv(mine.data(), local, mpiType<T>(), all.data(), n.data(), offsets.data(), mpiType<T>(), comm);
   if (counts) *counts = std::move(n);
   return all;
-}
-
-std::string broadcast(MPI_Comm comm, std::string s) {
-  long n = static_cast<long>(s.size());
-  MPI_Bcast(&n, 1, MPI_LONG, 0, comm);
-  s.resize(static_cast<std::size_t>(n));
-  MPI_Bcast(s.data(), static_cast<int>(n), MPI_CHAR, 0, comm);
-  return s;
 }
 
 template <class T>
@@ -314,7 +308,7 @@ ResultStore::ResultStore(MPI_Comm comm, const ResultLayout& layout) : impl_(std:
   m.out.numbers = {{"ndof", numbers[0]},      {"nranks", numbers[1]},       {"nunknowns", numbers[2]},
                    {"nnodedofs", numbers[3]}, {"nconstraints", numbers[4]}, {"converged", 0}};
   if (numbers[5]) m.out.numbers["showinputonly"] = 1;
-  m.out.texts = {{"version", broadcast(m.comm, layout.version)}, {"scene", broadcast(m.comm, layout.scene)}};
+  m.out.texts = {{"version", collective::broadcastString(m.comm, layout.version)}, {"scene", collective::broadcastString(m.comm, layout.scene)}};
 }
 
 ResultStore::~ResultStore() = default;
@@ -402,7 +396,7 @@ void ResultStore::writeStateArray(const std::string& name, std::span<const doubl
 }
 
 void ResultStore::writeStateAttribute(const std::string& group, const std::string& attr, const std::string& text) {
-  impl_->out.groupTexts[normalized(group)][attr] = broadcast(impl_->comm, text);
+  impl_->out.groupTexts[normalized(group)][attr] = collective::broadcastString(impl_->comm, text);
 }
 
 void ResultStore::commit() { impl_->noteAnalysisRows(); }

@@ -57,6 +57,46 @@ def run(name, scene, np_=2, args=(), expect_exit=0):
     return out, p.stdout
 
 
+def script(name, *args, cwd=None):
+    """Runs scripts/<name> with the arguments as `/usr/bin/python3 scripts/<name> args` would, but in
+    this process (the file run as __main__ with sys.argv set, stdout and stderr captured): the
+    interpreter start and the matplotlib import (about a second) are paid once per test, not per
+    call. Returns an object with returncode, stdout, stderr (exit code as the interpreter would give
+    it: SystemExit's code, 1 for an uncaught exception, whose traceback goes to stderr). Tests of
+    what the command line itself prints (one line, no traceback) start the script as a process."""
+    import contextlib
+    import io
+    import runpy
+    import traceback
+    import types
+    scripts = os.path.join(SOURCE, "scripts")
+    path = os.path.join(scripts, name)
+    out, err = io.StringIO(), io.StringIO()
+    argv, here, code = sys.argv, os.getcwd(), 0
+    sys.path.insert(0, scripts)
+    try:
+        sys.argv = [path] + [str(a) for a in args]
+        if cwd:
+            os.chdir(cwd)
+        with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
+            try:
+                runpy.run_path(path, run_name="__main__")
+            except SystemExit as e:
+                if isinstance(e.code, str):
+                    print(e.code, file=sys.stderr)
+                code = e.code if isinstance(e.code, int) else (0 if e.code is None else 1)
+            except Exception:  # noqa: BLE001 (an uncaught exception: the interpreter's exit 1)
+                traceback.print_exc()
+                code = 1
+    finally:
+        sys.argv = argv
+        os.chdir(here)
+        sys.path.remove(scripts)
+        if "matplotlib.pyplot" in sys.modules:
+            sys.modules["matplotlib.pyplot"].close("all")
+    return types.SimpleNamespace(returncode=code, stdout=out.getvalue(), stderr=err.getvalue())
+
+
 def h5(path):
     return h5py.File(path, "r")
 

@@ -6,7 +6,6 @@ segment drawn in red (red pixels in the image), axis labels with units; the load
 (-1 N) on a second axis (printed); two nodes at once work."""
 import math
 import os
-import subprocess
 
 from PIL import Image
 
@@ -26,8 +25,7 @@ png = os.path.join(st.WORK, "plot_loadpath_truss.png")
 if os.path.exists(png):
     os.remove(png)
 script = os.path.join(st.SOURCE, "scripts", "plot_loadpath.py")
-p = subprocess.run(["/usr/bin/python3", script, h5, "--node", "2", "--dir", "y", "-o", png], stdout=subprocess.PIPE,
-                   stderr=subprocess.STDOUT, text=True, timeout=120)
+p = st.script("plot_loadpath.py", h5, "--node", "2", "--dir", "y", "-o", png)
 print("  " + p.stdout.strip().replace("\n", "\n  "))
 st.check(p.returncode == 0, f"plot_loadpath.py exit {p.returncode}")
 st.check("segments: stable 2, unstable 1; limit points 2, bifurcation points 0" in p.stdout,
@@ -42,7 +40,6 @@ if st.check(os.path.exists(png) and os.path.getsize(png) > 5000, "PNG written (>
 src = open(script).read()
 st.check('f"{label} [m]"' in src and "load factor [-]" in src, "axis labels carry units ([m], [-])")
 png2 = os.path.join(st.WORK, "plot_loadpath_truss2.png")
-p = subprocess.run(["/usr/bin/python3", script, h5, "--node", "2", "1", "--dir", "abs", "-o", png2],
-                   stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, timeout=120)
+p = st.script("plot_loadpath.py", h5, "--node", "2", "1", "--dir", "abs", "-o", png2)
 st.check(p.returncode == 0 and os.path.exists(png2), "two nodes at once")
 st.done()

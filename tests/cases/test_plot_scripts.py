@@ -27,14 +27,21 @@ work = st.WORK
 os.makedirs(work, exist_ok=True)
 
 
-def script(name, *args, expect=0, cwd=None):
-    p = subprocess.run(["/usr/bin/python3", os.path.join(SCRIPTS, name)] + list(args), stdout=subprocess.PIPE,
-                       stderr=subprocess.STDOUT, text=True, timeout=300, cwd=cwd)
+def script(name, *args, expect=0, process=False):
+    """Runs scripts/<name>: in this process (sinewtest.script), or as `/usr/bin/python3 scripts/<name>`
+    where what the command line prints is checked (process=True). Returns stdout and stderr together."""
+    if process:
+        p = subprocess.run(["/usr/bin/python3", os.path.join(SCRIPTS, name)] + list(args), stdout=subprocess.PIPE,
+                           stderr=subprocess.STDOUT, text=True, timeout=300)
+        text = p.stdout
+    else:
+        p = st.script(name, *args)
+        text = p.stdout + p.stderr
     print(f"  $ {name} {' '.join(os.path.basename(x) for x in args)}  (exit {p.returncode})\n    "
-          + p.stdout.strip().replace("\n", "\n    "))
+          + text.strip().replace("\n", "\n    "))
     st.check(p.returncode == expect if expect is not None else p.returncode != 0,
              f"{name} {' '.join(args)}: exit {p.returncode}, expected {expect if expect is not None else 'non-zero'}")
-    return p.stdout
+    return text
 
 
 def near(png, rgbs, tol):
@@ -119,17 +126,17 @@ st.check("input check:" in out and os.path.exists(png) and os.path.getsize(png) 
 text = os.path.join(work, "plot_scripts_text.txt")
 with open(text, "w") as f:
     f.write("not a scene, not a result\n")
-out = script("plot_input.py", text, expect=2)
+out = script("plot_input.py", text, expect=2, process=True)
 st.check(len(out.strip().splitlines()) == 1 and "neither" in out, "a text file: one line, exit 2")
 bad = st.scene_file("plot_scripts_bad_scene", "nodes: [[0, 0, 0]]\nelements: [[1, 5]]\n")
-out = script("plot_input.py", bad, expect=2)
+out = script("plot_input.py", bad, expect=2, process=True)
 st.check(out.startswith("error: elements(1,2)") and "Traceback" not in out, "a scene error is Sinew's line, exit 2")
 
 # ---- every plot script: a missing file and a text file are one line, non-zero, no traceback
 for name, extra in (("plot_results.py", []), ("plot_input.py", []), ("plot_loadpath.py", ["--node", "1"]),
                     ("plot_sensors.py", []), ("bode.py", []), ("h5check.py", [])):
     for path in (os.path.join(work, "plot_scripts_missing.h5"), text):
-        out = script(name, path, *extra, expect=None)
+        out = script(name, path, *extra, expect=None, process=True)
         st.check(len(out.strip().splitlines()) == 1 and "Traceback" not in out,
                  f"{name} {os.path.basename(path)}: one line, no traceback")
 st.done()

@@ -10,7 +10,6 @@ components and units (a 2D ANCF cantilever with a Displacement and a ForceLocal 
 <result>_sensors.png beside the result file; plot_loadpath.py adds the load axis F_z = load factor x
 (-20 N) of the cantilever's one ramped force."""
 import os
-import subprocess
 
 import h5py
 import numpy as np
@@ -34,11 +33,11 @@ h5, _ = st.run("plots_cantilever", scene, np_=2)
 
 
 def plot(*args, expect=0):
-    p = subprocess.run(["/usr/bin/python3", SCRIPT, h5] + list(args), stdout=subprocess.PIPE,
-                       stderr=subprocess.STDOUT, text=True, timeout=300)
-    print("  $ plot_results.py " + " ".join(args) + "\n    " + p.stdout.strip().replace("\n", "\n    "))
+    p = st.script("plot_results.py", h5, *args)
+    text = p.stdout + p.stderr
+    print("  $ plot_results.py " + " ".join(args) + "\n    " + text.strip().replace("\n", "\n    "))
     st.check(p.returncode == expect, f"plot_results.py {' '.join(args)}: exit {p.returncode}, expected {expect}")
-    return p.stdout
+    return text
 
 
 def title_of(out):
@@ -103,8 +102,7 @@ st.check("step 9" in out, "a step outside 1..4 is named in the error")
 
 
 # plot_loadpath.py: the second axis is the one ramped force, F_z = load factor x (-20) N
-p = subprocess.run(["/usr/bin/python3", os.path.join(st.SOURCE, "scripts", "plot_loadpath.py"), h5, "--node", "2",
-                    "--dir", "z", "-o", os.path.join(work, "plots_loadpath.png")], capture_output=True, text=True, timeout=300)
+p = st.script("plot_loadpath.py", h5, "--node", "2", "--dir", "z", "-o", os.path.join(work, "plots_loadpath.png"))
 print("  plot_loadpath.py: " + p.stdout.strip().replace("\n", " | "))
 st.check(p.returncode == 0 and "load axis: load F_z [N] = load factor x -20 (nprops(2).force = [0, 0, -20])" in p.stdout,
          "load-stepped result: the load axis is the tip force F_z = load factor x -20 N")
@@ -131,13 +129,10 @@ t = title_of(out)
 st.check("Helix" in t and "load factor 1" in t, f"synthetic title {t!r}")
 
 # plot_input.py --step: 1-based
-PLOT_INPUT = os.path.join(st.SOURCE, "scripts", "plot_input.py")
-p = subprocess.run(["/usr/bin/python3", PLOT_INPUT, h5_cantilever, "--step", "1", "-o", os.path.join(work, "plots_in1.png")],
-                   capture_output=True, text=True, timeout=300)
+p = st.script("plot_input.py", h5_cantilever, "--step", "1", "-o", os.path.join(work, "plots_in1.png"))
 print("  plot_input.py --step 1: " + p.stdout.strip().replace("\n", " | "))
 st.check(p.returncode == 0 and f"step 1 of 4, load factor {lam[0]:.6g}" in p.stdout, "plot_input --step 1 is the first row")
-p = subprocess.run(["/usr/bin/python3", PLOT_INPUT, h5_cantilever, "--step", "5", "-o", os.path.join(work, "plots_in5.png")],
-                   capture_output=True, text=True, timeout=300)
+p = st.script("plot_input.py", h5_cantilever, "--step", "5", "-o", os.path.join(work, "plots_in5.png"))
 st.check(p.returncode != 0 and "outside 1..4" in p.stderr, f"plot_input --step 5 of 4 is an error: {p.stderr.strip()}")
 
 # plot_sensors.py: components and units
@@ -162,8 +157,7 @@ os.makedirs(elsewhere, exist_ok=True)
 for stale in (png, os.path.join(elsewhere, "sensors.png")):
     if os.path.exists(stale):
         os.remove(stale)
-p = subprocess.run(["/usr/bin/python3", os.path.join(st.SOURCE, "scripts", "plot_sensors.py"), h5s],
-                   capture_output=True, text=True, timeout=300, cwd=elsewhere)
+p = st.script("plot_sensors.py", h5s, cwd=elsewhere)
 st.check(not os.listdir(elsewhere), "plot_sensors.py writes nothing in the working directory")
 print("  plot_sensors.py: " + p.stdout.strip().replace("\n", " | "))
 st.check(p.returncode == 0, f"plot_sensors exit {p.returncode} {p.stderr}")
@@ -171,7 +165,6 @@ st.check("panel: tip: Displacement [m]; components: tip: ux [m], tip: uy [m]" in
 st.check("panel: root: ForceLocal [N]; components: root: axial force [N]" in p.stdout, "root sensor: axial force in N")
 st.check("x axis: load factor [-]" in p.stdout, "x axis named")
 image_ok(png)
-p = subprocess.run(["/usr/bin/python3", SCRIPT, h5s, "-o", os.path.join(work, "plots_ancf.png")], capture_output=True,
-                   text=True, timeout=300)
+p = st.script("plot_results.py", h5s, "-o", os.path.join(work, "plots_ancf.png"))
 st.check(p.returncode == 0 and "axes: x [m], y [m]" in p.stdout, "2D ANCF model drawn in the xy plane")
 st.done()

@@ -9,7 +9,6 @@ blue, and leave the hidden red element out (pixels of the PNGs). Without look fi
 there are no look datasets and the pictures are drawn in the default blue. Both scripts draw the rigid
 element 3 (in no eprops set) in the seed's grey 198/255, with and without look fields (issue 24 item 14)."""
 import os
-import subprocess
 
 import matplotlib.image as mpimg
 import numpy as np
@@ -60,10 +59,10 @@ def rigid_grey(png):
 
 
 def script(name, *args):
-    p = subprocess.run(["/usr/bin/python3", os.path.join(st.SOURCE, "scripts", name)] + list(args),
-                       stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, timeout=300)
-    st.check(p.returncode == 0, f"{name} exit {p.returncode}: {p.stdout[-500:]}")
-    return p.stdout
+    p = st.script(name, *args)
+    text = p.stdout + p.stderr
+    st.check(p.returncode == 0, f"{name} exit {p.returncode}: {text[-500:]}")
+    return text
 
 
 half_green = tuple(0.5 * c + 0.5 for c in DARKGREEN)  # 50 % opacity over the white background

@@ -15,12 +15,14 @@ their closed form or published value:
 The older scenes carry their reference values in their comments (Exudyn's tip of A1 and A5, the C1
 and C2 form-finding values; test_ancf_* and test_ff_reference check those models); here they are run. Long scenes get reduced flags
 (FLAGS) that keep what is checked.
+Then every example runs in-process on 2 ranks (sinew._core) against its command-line file.
 Not in the smoke tier: 160 s on 2 ranks on the shared 2-core machine at load average 8 (2026-11-26;
 the six new examples 93 s of it; on 1 rank each new example runs in 1 to 4 s)."""
 import glob
 import math
 import os
 import re
+import sys
 import time
 
 import numpy as np
@@ -74,6 +76,21 @@ for path in sorted(glob.glob(os.path.join(RUNS, "*.yaml"))):
         # the summary's step table gives each path point's residual (it printed 0 for every point)
         rows = [ln.split() for ln in out.splitlines() if re.match(r"^\s+\d+\s+[-\d.e+]+\s+\d+\s+\d+\s+[\d.e+-]+$", ln)]
         st.check(rows and all(float(r[4]) > 0 for r in rows), f"{name}: |residual| of every path point in the summary > 0")
+
+# The same scenes run in-process (sinew._core through Scene.run, issue 25) on 2 ranks: every dataset
+# of these command-line files in every rank's results (tests/python/inprocess_compare.py: 1e-12, the
+# 2-rank exceptions named there); the 1-rank comparison is python_inprocess_*_1ranks.
+sys.path.insert(0, os.path.join(st.SOURCE, "tests", "python"))
+sys.dont_write_bytecode = True  # no __pycache__ in the source tree
+import inprocess_compare  # noqa: E402
+
+work = os.path.join(st.WORK, "examples_inprocess")
+os.makedirs(work, exist_ok=True)
+for old in glob.glob(os.path.join(work, "*")):
+    os.remove(old)
+st.check(not inprocess_compare.compare_in_process(results, 2, work, st.MPIEXEC, flags=FLAGS,
+                                                   env=dict(st.ENV, PYTHONDONTWRITEBYTECODE="1")),
+         "every example in-process on 2 ranks equals its command-line result file")
 
 E, G, RHO = 210e9, 80e9, 7800.0
 

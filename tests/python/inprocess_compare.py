@@ -8,7 +8,8 @@ shape, NaN pattern and values to 1e-12 relative (2-norm of the difference over t
 RTOL_SCENE for the one scene that the command line itself does not reproduce run to run), the root
 attributes equal (the scene text aside: the in-process run reads the scene's dict).
 
-    inprocess_compare.py --np 2 crosshinge lee_frame      (ctest: python_inprocess_*)
+    inprocess_compare.py --np 1 crosshinge lee_frame      (ctest: python_inprocess_*_1rank)
+On 2 ranks test_examples compares its own command-line runs of every runs/ scene (compare_in_process).
 """
 import argparse
 import glob
@@ -41,12 +42,14 @@ UNDEFINED = {("membrane_drum", 2, "mesh/mode_freq_2"), ("membrane_drum", 2, "mes
 ROUNDOFF_FIGURES = ("freq_error_estimate", "freq_backward_error", "buck_error_estimate", "buck_backward_error")
 
 
-def run_in_process(scenes, work):
+def run_in_process(scenes, work, flags=None):
+    """(Under mpirun) runs each runs/ scene in this process with its flags (flags[scene], a list of
+    words) and saves every rank's out.data (npz) and root attributes (json) in work."""
     import sinew
     from mpi4py import MPI
     rank = MPI.COMM_WORLD.Get_rank()
     for s in scenes:
-        out = sinew.Scene.from_yaml(os.path.join(SOURCE, "runs", s + ".yaml")).run()
+        out = sinew.Scene.from_yaml(os.path.join(SOURCE, "runs", s + ".yaml")).run(flags=(flags or {}).get(s, []))
         np.savez(os.path.join(work, f"{s}_mem_r{rank}.npz"), **{k.replace("/", "|"): v for k, v in out.data.items()})
         with open(os.path.join(work, f"{s}_mem_r{rank}.json"), "w") as f:
             json.dump({k: v for k, v in out.attrs.items() if k != "scene"}, f)
@@ -102,12 +105,13 @@ def main():
     ap.add_argument("--np", type=int, default=1)
     ap.add_argument("--run", action="store_true", help="(under mpirun) the in-process runs")
     ap.add_argument("--work", default=None)
+    ap.add_argument("--flags-json", default="{}", help="(with --run) {scene: [flag words]}")
     ap.add_argument("scenes", nargs="+")
     a = ap.parse_args()
     work = a.work or os.path.join(os.environ.get("SINEW_WORK_DIR", "/tmp"),
                                   f"inprocess_np{a.np}_{'_'.join(a.scenes)}"[:120])
     if a.run:
-        run_in_process(a.scenes, work)
+        run_in_process(a.scenes, work, json.loads(a.flags_json))
         return 0
     os.makedirs(work, exist_ok=True)
     for old in glob.glob(os.path.join(work, "*")):
@@ -123,23 +127,33 @@ def main():
             print(f"{s}: the command line ended with exit {r.returncode}\n{r.stdout}{r.stderr}")
             return 1
     t_cli = time.time() - t
+    failed = compare_in_process({s: os.path.join(work, s + "_cli.h5") for s in a.scenes}, a.np, work, mpiexec)
+    print(f"command line {t_cli:.1f} s")
+    return 1 if failed else 0
+
+
+def compare_in_process(cli_files, nranks, work, mpiexec, flags=None, env=None):
+    """Runs the scenes of cli_files ({scene: the command line's result file, made on nranks ranks with
+    the same flags}) in-process on nranks ranks (mpiexec -n nranks python3 this --run) and compares
+    every rank's results with the file. Prints a line per scene and rank; returns True on a problem."""
+    scenes = list(cli_files)
     t = time.time()
-    r = subprocess.run([mpiexec, "-n", str(a.np), sys.executable, os.path.abspath(__file__), "--run", "--work", work] +
-                       a.scenes, capture_output=True, text=True)
+    r = subprocess.run([mpiexec, "-n", str(nranks), sys.executable, os.path.abspath(__file__), "--run", "--work", work,
+                        "--flags-json", json.dumps(flags or {})] + scenes, capture_output=True, text=True, env=env)
     t_mem = time.time() - t
     if r.returncode != 0:
         print(f"in-process runs ended with exit {r.returncode}\n{r.stdout}{r.stderr}")
-        return 1
+        return True
     failed = False
-    for s in a.scenes:
-        for rank in range(a.np):
-            problems, worst, n = compare(s, os.path.join(work, s + "_cli.h5"), os.path.join(work, f"{s}_mem_r{rank}.npz"),
-                                         os.path.join(work, f"{s}_mem_r{rank}.json"), a.np)
-            print(f"{s} np{a.np} rank {rank}: {n} datasets, worst relative difference {worst:.2e}"
+    for s in scenes:
+        for rank in range(nranks):
+            problems, worst, n = compare(s, cli_files[s], os.path.join(work, f"{s}_mem_r{rank}.npz"),
+                                         os.path.join(work, f"{s}_mem_r{rank}.json"), nranks)
+            print(f"{s} np{nranks} rank {rank}: {n} datasets, worst relative difference {worst:.2e}"
                   + ("".join(f"\n  {p}" for p in problems)))
             failed |= bool(problems)
-    print(f"command line {t_cli:.1f} s, in-process {t_mem:.1f} s (including the interpreter and MPI start)")
-    return 1 if failed else 0
+    print(f"in-process {t_mem:.1f} s on {nranks} ranks (including the interpreter and MPI start)")
+    return failed
 
 
 if __name__ == "__main__":

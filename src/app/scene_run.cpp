@@ -280,7 +280,6 @@ PetscErrorCode SceneRun::createResults(const ResultLayout& layout) {
   checkpointWriter_ = std::make_unique<CheckpointWriter>(*assembler_, fingerprint_);
   // -checkpoint false: no /checkpoint (the run cannot be continued); none in memory
   if (settings_.output.checkpoint && toFile_) ctx.checkpoint = checkpointWriter_.get();
-  ctx.stopAfterRows = settings_.output.stopAfterStep;
   ctx.restart = restart_.get();
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -289,7 +288,7 @@ PetscErrorCode SceneRun::createResults(const ResultLayout& layout) {
 PetscErrorCode SceneRun::restoreRestart(const ResultLayout& layout) {
   PetscFunctionBeginUser;
   RunContext& ctx = *ctx_;
-  if (!restart_ || !ctx.ioError.empty()) PetscFunctionReturn(PETSC_SUCCESS);
+  if (!restart_ || !ctx.status.writeOk()) PetscFunctionReturn(PETSC_SUCCESS);
   PetscErrorCode ierr = PETSC_SUCCESS;
   std::vector<Vec> work;
   CheckpointData restored;
@@ -312,7 +311,7 @@ PetscErrorCode SceneRun::restoreRestart(const ResultLayout& layout) {
   });
   PetscCall(ierr);
   for (Vec& w : work) PetscCall(VecDestroy(&w));
-  if (ctx.ioError.empty() && !model_.opt.silent)
+  if (ctx.status.writeOk() && !model_.opt.silent)
     PetscCall(PetscPrintf(comm_, "  restart: %d step rows copied from %s, continuing the %s\n", ctx.nextStep,
                           restart_->source().c_str(), phaseName(restart_->phase())));
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -327,14 +326,14 @@ PetscErrorCode SceneRun::runAnalyses() {
   // nothing to do after a file error (reported by finish()) or for SPACAR Light's input check: the
   // file holds the input geometry (/node/p0, /mesh/p0, the cells, the element look), no step rows;
   // converged = 0 and showinputonly = 1 (nothing was solved)
-  if (!ctx.ioError.empty() || model_.opt.showinputonly) PetscFunctionReturn(PETSC_SUCCESS);
+  if (!ctx.status.writeOk() || model_.opt.showinputonly) PetscFunctionReturn(PETSC_SUCCESS);
   if (runFF) {
     PhaseScope phase("form finding");
     PetscCall(runFormFinding(ctx));
     PhaseScope checkAfter("the constraint check after form finding");
-    if (!ctx.stop) PetscCall(checkLoadedModelAfterFormFinding(ctx, check_, &modelError_));
+    if (!ctx.status.stopping()) PetscCall(checkLoadedModelAfterFormFinding(ctx, check_, &modelError_));
   }
-  const bool go = ctx.converged && !ctx.stop;  // not after an interrupted form finding
+  const bool go = ctx.status.converged() && !ctx.status.stopping();  // not after an interrupted form finding
   // opt.dynamics start: static runs the load steps first (a restart from a dynamics checkpoint
   // continues the time loop), then the dynamics from their end (after this if-chain)
   const bool resumeDynamics = restart_ && restart_->phase() == CheckpointPhase::Dynamics;
@@ -348,7 +347,7 @@ PetscErrorCode SceneRun::runAnalyses() {
     PhaseScope phase("statics");
     PetscCall(runStatics(ctx, resumeStatics, check_, &modelError_));
   }
-  if (plan_.preload && go && ctx.converged && !ctx.stop) {  // from the last load step's equilibrium, at rest
+  if (plan_.preload && go && ctx.status.converged() && !ctx.status.stopping()) {  // from the last load step's equilibrium, at rest
     PhaseScope phase("dynamics");
     PetscCall(runDynamics(ctx));
   }
@@ -359,8 +358,10 @@ PetscErrorCode SceneRun::finish() {
   PetscFunctionBeginUser;
   RunContext& ctx = *ctx_;
   const double tClose = MPI_Wtime();
-  const bool completed = ctx.converged && ctx.interruptSignal == 0 && ctx.ioError.empty() && !model_.opt.showinputonly;
-  if (ctx.ioError.empty()) ctx.guardedWrite([&] { file_->close(completed); });
+  const RunStatus& status = ctx.status;
+  const bool completed =
+      status.converged() && status.interruptSignal() == 0 && status.writeOk() && !model_.opt.showinputonly;
+  if (status.writeOk()) ctx.guardedWrite([&] { file_->close(completed); });
   else {
     try {
       file_->close(false);  // cleans up; the published file keeps the steps committed before the failure
@@ -370,20 +371,20 @@ PetscErrorCode SceneRun::finish() {
   }
   ctx.times.output += MPI_Wtime() - tClose;
   const std::string where = hdf5_ ? hdf5_->path() : std::string("in memory");
-  if (!ctx.ioError.empty() || ctx.interruptSignal) {
+  if (!status.writeOk() || status.interruptSignal()) {
     const int kept = file_->failed() ? -1 : file_->stepsWritten();
     std::string msg;
-    if (!ctx.ioError.empty()) msg = "error: writing the results failed: " + ctx.ioError + "\n";
+    if (!status.writeOk()) msg = "error: writing the results failed: " + status.ioError() + "\n";
     else
-      msg = std::string(ctx.interruptSignal == RunContext::kStopAfterStep ? "stopped by -stop_after_step"
-                                                                          : std::string("interrupted by ") + signalName(ctx.interruptSignal)) +
-            " after " +
-            (ctx.lastStepName.empty() ? std::string("set-up") : ctx.lastStepName + " " + std::to_string(ctx.lastStepIndex)) + "\n";
+      msg = std::string(status.interruptSignal() == RunStatus::kStopAfterStep
+                            ? "stopped by -stop_after_step"
+                            : std::string("interrupted by ") + signalName(status.interruptSignal())) +
+            " after " + status.position() + "\n";
     msg += "  results: " + where +
            (kept >= 0 ? " (" + std::to_string(kept) + " steps, converged = 0)"
                       : " holds the steps written before the failure (converged = 0)") + "\n";
     PetscCall(PetscPrintf(comm_, "%s", msg.c_str()));
-    exitCode_ = ctx.ioError.empty() ? 5 : 1;
+    exitCode_ = status.writeOk() ? 5 : 1;
     PetscFunctionReturn(PETSC_SUCCESS);
   }
   if (model_.opt.showinputonly) {
@@ -398,7 +399,7 @@ PetscErrorCode SceneRun::finish() {
     PetscFunctionReturn(PETSC_SUCCESS);
   }
   PetscCall(printSummary());
-  exitCode_ = ctx.converged ? 0 : (modelError_ ? 2 : 3);
+  exitCode_ = status.converged() ? 0 : (modelError_ ? 2 : 3);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -446,8 +447,8 @@ PetscErrorCode SceneRun::printSummary() {
     body.h5 = hdf5_->path();
     body.xdmf = hdf5_->xdmfPath();
   }
-  body.converged = ctx.converged;
-  body.failure = ctx.failure;
+  body.converged = ctx.status.converged();
+  body.failure = ctx.status.failure();
   if (!model_.opt.silent) PetscCall(sinew::printSummary(comm_, body));
   else if (!body.converged) PetscCall(PetscPrintf(comm_, "error: %s\n", body.failure.c_str()));
   PetscFunctionReturn(PETSC_SUCCESS);

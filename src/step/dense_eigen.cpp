@@ -259,9 +259,7 @@ DenseEigenpairs ritzPairs(const std::vector<double>& X, const std::vector<double
     const size_t o = static_cast<size_t>(c) * n;
     const std::vector<double> ax(AXZ.begin() + o, AXZ.begin() + o + n), bx(BXZ.begin() + o, BXZ.begin() + o + n);
     out.estimate[c] = backwardError(ax, zero, bx, zero, &out.vectors[o], nullptr, out.re[c], 0.0, normA, nB);
-    if (out.vectors[o + std::max_element(&out.vectors[o], &out.vectors[o] + n, [](double a, double b) {
-          return std::abs(a) < std::abs(b); }) - &out.vectors[o]] < 0)
-      for (int i = 0; i < n; ++i) out.vectors[o + i] = -out.vectors[o + i];
+    fixSign(&out.vectors[o], n);
   }
   return out;
 }

@@ -178,11 +178,11 @@ PetscErrorCode checkModelBeforeRun(const Model& model, const Plan& plan, Assembl
 /// After form finding and the elastic restart, before a load analysis with loads: the loaded model's
 /// tangent at the restart state (elastic kernels, the found shape, load factor 0; e.g. a flat membrane
 /// without prestress after a DISPLACEMENT restart has no stiffness across its surface). A singular one
-/// sets ctx.failure and *modelError (exit 2; the result file keeps the form-finding steps). Without any
+/// fails ctx.status and sets *modelError (exit 2; the result file keeps the form-finding steps). Without any
 /// load the found shape is the equilibrium and the load analysis ends at once, mechanism or not.
 PetscErrorCode checkLoadedModelAfterFormFinding(RunContext& ctx, const ConstraintCheckSetting& setting, bool* modelError) {
   PetscFunctionBeginUser;
-  if (!setting.enabled || !ctx.plan.statics || !ctx.converged) PetscFunctionReturn(PETSC_SUCCESS);
+  if (!setting.enabled || !ctx.plan.statics || !ctx.status.converged()) PetscFunctionReturn(PETSC_SUCCESS);
   if (unloaded(ctx.model, ctx.assembler.mesh(), ctx.assembler)) PetscFunctionReturn(PETSC_SUCCESS);
   ConstraintReport check;
   const double tCheck = MPI_Wtime();
@@ -191,7 +191,7 @@ PetscErrorCode checkLoadedModelAfterFormFinding(RunContext& ctx, const Constrain
   PetscCall(PetscLogEventEnd(SinewEvents::get().constraintCheck, 0, 0, 0, 0));
   ctx.times.check += MPI_Wtime() - tCheck;
   if (!check.singular) PetscFunctionReturn(PETSC_SUCCESS);
-  ctx.fail("the load analysis after form finding cannot start (elastic_restart_method " +
+  ctx.status.fail("the load analysis after form finding cannot start (elastic_restart_method " +
            ctx.model.formfinding->elastic_restart_method + ", found shape):\n" + check.message +
            "  (a restart without prestress leaves flat or straight parts of the found shape without stiffness "
            "across them; elastic_restart_method FORCE keeps the prestress)\n");

@@ -45,7 +45,7 @@ PetscErrorCode checkModelBeforeRun(const Model& model, const Plan& plan, Assembl
                                    int* exitCode);
 
 /// After form finding and the elastic restart, before a load analysis with loads: the loaded model's
-/// tangent at the restart state. A singular one sets ctx.failure and *modelError (exit 2).
+/// tangent at the restart state. A singular one fails ctx.status and sets *modelError (exit 2).
 PetscErrorCode checkLoadedModelAfterFormFinding(RunContext& ctx, const ConstraintCheckSetting& setting, bool* modelError);
 
 }  // namespace sinew

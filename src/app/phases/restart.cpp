@@ -438,8 +438,7 @@ PetscErrorCode Restart::restoredState(RunContext& ctx, CheckpointData& d, std::v
                         (phase() == CheckpointPhase::Dynamics && std::string(v) != "dU");
     if (!wanted || !r.hasVector(v)) continue;
     Vec w;
-    PetscCall(VecDuplicate(ctx.U, &w));
-    PetscCall(r.loadVector(v, ctx.assembler, w));
+    PetscCall(loadedVector(ctx, v, &w));
     work->push_back(w);
     d.vectors.emplace_back(v, w);
   }
@@ -459,6 +458,13 @@ void Restart::resumeFormFinding(RunContext& ctx, FormFindingAnalysis& analysis) 
   analysis.resume(formfindingReports(reader_->formfinding()));
 }
 
+PetscErrorCode Restart::loadedVector(RunContext& ctx, const char* name, Vec* v) const {
+  PetscFunctionBeginUser;
+  PetscCall(VecDuplicate(ctx.U, v));
+  PetscCall(reader_->loadVector(name, ctx.assembler, *v));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode Restart::resumeStatics(RunContext& ctx, StaticAnalysis& statics) const {
   PetscFunctionBeginUser;
   const auto& sc = reader_->scalars();
@@ -469,8 +475,7 @@ PetscErrorCode Restart::resumeStatics(RunContext& ctx, StaticAnalysis& statics) 
   p.dlAdapt = sc[kCkDlAdapt];
   p.fintConverged = sc[kCkFintConverged];
   Vec dU;
-  PetscCall(VecDuplicate(ctx.U, &dU));
-  PetscCall(reader_->loadVector("dU", ctx.assembler, dU));
+  PetscCall(loadedVector(ctx, "dU", &dU));
   PetscCall(statics.resume(p, dU));
   PetscCall(VecDestroy(&dU));
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -479,8 +484,7 @@ PetscErrorCode Restart::resumeStatics(RunContext& ctx, StaticAnalysis& statics) 
 PetscErrorCode Restart::resumeContinuation(RunContext& ctx, ContinuationAnalysis& path) const {
   PetscFunctionBeginUser;
   Vec dU;
-  PetscCall(VecDuplicate(ctx.U, &dU));
-  PetscCall(reader_->loadVector("dU", ctx.assembler, dU));
+  PetscCall(loadedVector(ctx, "dU", &dU));
   PetscCall(path.resume(ContinuationAnalysis::currentCheckpointLayout(reader_->pathState(), ctx.model.opt.continuation->max_steps), dU));
   PetscCall(VecDestroy(&dU));
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -535,12 +539,9 @@ PetscErrorCode Restart::resumeDynamics(RunContext& ctx, DynamicAnalysis& dyn, do
   p.successes = static_cast<int>(sc[kCkSuccesses]);
   p.scale = sc[kCkAdaptScale];
   Vec V, A, Q;
-  PetscCall(VecDuplicate(ctx.U, &V));
-  PetscCall(VecDuplicate(ctx.U, &A));
-  PetscCall(VecDuplicate(ctx.U, &Q));
-  PetscCall(reader_->loadVector("V", ctx.assembler, V));
-  PetscCall(reader_->loadVector("A", ctx.assembler, A));
-  PetscCall(reader_->loadVector("Qdd", ctx.assembler, Q));
+  PetscCall(loadedVector(ctx, "V", &V));
+  PetscCall(loadedVector(ctx, "A", &A));
+  PetscCall(loadedVector(ctx, "Qdd", &Q));
   PetscCall(dyn.resume(p, ctx.U, V, A, Q));
   if (dyn.damped()) PetscCall(resumeDamping(ctx, dyn, V, A, Q));
   PetscCall(VecDestroy(&V));

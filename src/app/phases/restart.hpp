@@ -73,6 +73,8 @@ class Restart {
   void check(MPI_Comm comm, const std::string& src, const std::string& path, const std::string& fingerprint,
              const Model& model, const Plan& plan, DynamicsScheme scheme);
   void removeCopy();
+  /// A new vector in the unknowns layout holding the checkpoint's vector `name` (the caller destroys it).
+  PetscErrorCode loadedVector(RunContext& ctx, const char* name, Vec* v) const;
   MPI_Comm comm_;
   std::string copy_;  ///< temporary copy of the source (removed at the end), or ""
   std::unique_ptr<CheckpointReader> reader_;

@@ -32,6 +32,7 @@ std::string rowsText(const StepAnalysisRows& r) {
 
 void RunContext::startPhase(StepPhase phase, const char* stepName, int steps) {
   progress.startPhase(stepName, steps);
+  status.enterPhase(stepName);
   StepAnalysisRows byDefault;  // SPACAR Light: out.freq, out.CMglob per load step
   if (phase != StepPhase::Statics) byDefault.kind = StepAnalysisRows::Kind::Last;
   rows_ = model.opt.step_analyses.value_or(byDefault);
@@ -63,10 +64,7 @@ PetscErrorCode RunContext::runStepAnalyses(Vec Ustate, const LoadState& ls, bool
     PhaseScope analysisPhase(a->name());
     PetscCall(a->atStep(Ustate, ls, file, &ok));
     times.analyses += MPI_Wtime() - ta;
-    if (!ok && converged) {
-      converged = false;
-      failure = a->failure();
-    }
+    if (!ok) status.fail(a->failure());
   }
   if (open) file.endAnalysisRow();
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -90,7 +88,7 @@ PetscErrorCode RunContext::finishStepAnalyses(Vec Ustate) {
   const std::vector<long>& done = file.analysisRows();
   const bool wanted = rows_.kind == StepAnalysisRows::Kind::Last || rows_.kind == StepAnalysisRows::Kind::Every;
   const bool any = std::any_of(stepAnalyses.begin(), stepAnalyses.end(), [](const auto& a) { return !a->everyRow(); });
-  if (!wanted || !any || stop || !ioError.empty() || nextStep <= phaseFirstRow_) PetscFunctionReturn(PETSC_SUCCESS);
+  if (!wanted || !any || status.stopping() || nextStep <= phaseFirstRow_) PetscFunctionReturn(PETSC_SUCCESS);
   if (!done.empty() && done.back() == nextStep - 1) PetscFunctionReturn(PETSC_SUCCESS);  // the last row has them
   PetscErrorCode ierr = PETSC_SUCCESS;
   guardedWrite([&] {
@@ -154,13 +152,12 @@ PetscErrorCode RunContext::writeLoadFactorRow(const std::optional<double>& loadF
 }
 
 bool RunContext::guardedWrite(const std::function<void()>& write) {
-  if (!ioError.empty()) return false;
+  if (!status.writeOk()) return false;
   try {
     write();
     return true;
   } catch (const std::exception& e) {  // thrown on every rank together (ResultFile agrees on failures)
-    ioError = e.what();
-    stop = true;
+    status.writeFailed(e.what());
     return false;
   }
 }
@@ -168,17 +165,15 @@ bool RunContext::guardedWrite(const std::function<void()>& write) {
 PetscErrorCode RunContext::convergedStep(const Step& s, Vec Ustate, const LoadState& ls,
                                          const std::function<PetscErrorCode()>& afterWrite) {
   PetscFunctionBeginUser;
-  if (stop) PetscFunctionReturn(PETSC_SUCCESS);  // a step a solver finished after the stop: abandoned
-  if (const int sig = agreedInterrupt(comm)) {
-    interruptSignal = sig;
-    stop = true;
-  }
-  if (!stop && stopAfterRows > 0 && nextStep + 1 >= stopAfterRows) {  // equal on every rank
-    interruptSignal = kStopAfterStep;
-    stop = true;
-  }
-  lastStepIndex = s.index;
-  const bool write = !s.selectable || s.last || stop || model.opt.output_steps.selects(s.index, s.last);
+  if (status.stopping()) PetscFunctionReturn(PETSC_SUCCESS);  // a step a solver finished after the stop: abandoned
+  if (const int sig = agreedInterrupt(comm)) status.interrupt(sig);
+  // -stop_after_step k (a testing aid): stop as on SIGTERM once the file holds k step rows (equal on every rank)
+  const int stopAfterRows = settings.output.stopAfterStep;
+  if (!status.stopping() && stopAfterRows > 0 && nextStep + 1 >= stopAfterRows)
+    status.interrupt(RunStatus::kStopAfterStep);
+  status.reached(s.index);
+  const bool write =
+      !s.selectable || s.last || status.stopping() || model.opt.output_steps.selects(s.index, s.last);
   if (write) {
     PetscErrorCode ierr = PETSC_SUCCESS;
     guardedWrite([&] {
@@ -197,13 +192,13 @@ PetscErrorCode RunContext::convergedStep(const Step& s, Vec Ustate, const LoadSt
   } else {
     skipped_ = {true, s.value, ls, s.loadFactorRow};
   }
-  if (ioError.empty()) progress.step(s.index, s.detail);  // a step whose write failed is not reported as done
+  if (status.writeOk()) progress.step(s.index, s.detail);  // a step whose write failed is not reported as done
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 PetscErrorCode RunContext::writeSkippedLast(Vec Ustate) {
   PetscFunctionBeginUser;
-  if (!skipped_.any || !ioError.empty()) PetscFunctionReturn(PETSC_SUCCESS);
+  if (!skipped_.any || !status.writeOk()) PetscFunctionReturn(PETSC_SUCCESS);
   skipped_.any = false;
   PetscErrorCode ierr = PETSC_SUCCESS;
   guardedWrite([&] {

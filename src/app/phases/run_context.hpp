@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "analysis/static_analysis.hpp"
+#include "app/phases/run_status.hpp"
 #include "app/plan.hpp"
 #include "app/progress.hpp"
 #include "app/summary.hpp"
@@ -39,33 +40,16 @@ struct RunContext {
   int nextStep = 0;  ///< next row of the step-indexed datasets
   Timings times;
   std::vector<StepReport> reports;
-  bool converged = true;  ///< until a procedure fails (fail())
-  std::string failure;    ///< the first failure's message
-  /// A procedure failed: the run is not converged; the first failure's message is kept.
-  void fail(const std::string& message) {
-    if (!converged) return;
-    converged = false;
-    failure = message;
-  }
+  RunStatus status;  ///< converged / failed, stopping (signal, -stop_after_step, result-file error)
   std::string summaryLines;  ///< extra lines for the stdout summary (rank 0)
   Progress progress;
-  /// The step loops end after the current step (equal on every rank): a signal arrived
-  /// (interruptSignal) or the result file failed (ioError).
-  bool stop = false;
-  int interruptSignal = 0;
-  std::string ioError;
-  int lastStepIndex = 0;       ///< index of the last converged step (in its phase)
   std::string formfindingHint;  ///< formFindingCollapseCauses of the scene (set before form finding)
-  std::string lastStepName;    ///< "load step", "time step", "form-finding step"
   /// Checkpoints (src/restart/checkpoint.*, src/app/phases/restart.*): the writer, the running phase's
   /// state after its last converged step (set by the phase before its loop; none: no checkpoint),
   /// and the earlier run a -restart continues.
   CheckpointWriter* checkpoint = nullptr;
   std::function<PetscErrorCode(CheckpointData&)> checkpointState;
   const Restart* restart = nullptr;
-  /// -stop_after_step k (a testing aid): the run stops as on SIGTERM once the file holds k step rows.
-  int stopAfterRows = 0;
-  static constexpr int kStopAfterStep = -1;  ///< interruptSignal of a -stop_after_step stop
 
   RunContext(Model& m, const Plan& p, const Settings& s, Assembler& a, StepResults& r, ResultFile& f)
       : model(m), plan(p), settings(s), assembler(a), results(r), file(f), progress(MPI_COMM_WORLD, m.opt.silent) {}
@@ -90,12 +74,13 @@ struct RunContext {
   /// Writes the last converged step from Ustate when output_steps skipped it and the phase ended
   /// early (a failed step): the file always ends with the last converged state.
   PetscErrorCode writeSkippedLast(Vec Ustate);
-  /// Runs `write` (result file calls); a ResultFileError or other exception sets ioError and stop.
+  /// Runs `write` (result file calls); a ResultFileError or other exception stops the run
+  /// (status.writeFailed).
   bool guardedWrite(const std::function<void()>& write);
 
   /// Writes one step row: beginStep(stepValue), node/element/mesh results of U, the step analyses
   /// (frequencies, buckling, ...) in a step-analysis row when `analyses`, and the every-row ones
-  /// (sensors). A failing step analysis sets converged = false.
+  /// (sensors). A failing step analysis fails the run (status).
   PetscErrorCode writeStep(double stepValue, Vec Ustate, const LoadState& ls, bool analyses);
   /// Starts a procedure's rows: its progress lines (`stepName`, `steps`) and the rows its step
   /// analyses run at (opt.step_analyses, or the procedure's default: every load step of statics,
@@ -140,8 +125,8 @@ PetscErrorCode runFormFinding(RunContext& ctx);
 /// releases the scene's elements, src/app/phases/run_formfinding.cpp).
 std::string formFindingCollapseCauses(const Model& m);
 struct ConstraintCheckSetting;
-/// Load-stepped statics (SPACAR Light's steps): writes every converged load step; a failed step sets
-/// ctx.converged and ctx.failure, and *modelError when the constraint check finds a mechanism.
+/// Load-stepped statics (SPACAR Light's steps): writes every converged load step; a failed step fails
+/// ctx.status, and sets *modelError when the constraint check finds a mechanism.
 /// resumeStatics: continue the load steps of ctx.restart's checkpoint.
 PetscErrorCode runStatics(RunContext& ctx, bool resumeStatics, const ConstraintCheckSetting& check, bool* modelError);
 /// Time integration (opt.dynamics) instead of statics.

@@ -16,7 +16,7 @@ PetscErrorCode runContinuation(RunContext& ctx) {
   ContinuationAnalysis path(ctx.assembler, *ctx.model.opt.continuation, ctx.settings.continuation,
                             ctx.settings.statics.maxCuts);
   std::vector<double> negative;
-  path.setStopFlag(&ctx.stop);
+  path.setStopFlag(ctx.status.stopFlag());
   path.setStartCarriesInitialLoads(ctx.model.formfinding.has_value());  // runs after form finding
   if (ctx.restart && ctx.restart->phase() == CheckpointPhase::Continuation) PetscCall(ctx.restart->resumeContinuation(ctx, path));
   const long ckSize = ContinuationAnalysis::checkpointSize(ctx.model.opt.continuation->max_steps);
@@ -65,19 +65,18 @@ PetscErrorCode runContinuation(RunContext& ctx) {
   std::vector<double> rows;
   for (const CriticalPoint& c : path.criticalPoints())
     rows.insert(rows.end(), {static_cast<double>(c.kind), static_cast<double>(c.afterStep), c.loadFactor, c.controlValue});
-  ctx.lastStepName = "path point";
   ctx.guardedWrite([&]() { ctx.file.writeArray("path/critical_points", rows, {static_cast<long>(path.criticalPoints().size()), 4}); });
   ctx.summaryLines += path.summary();
-  if (!ok) ctx.fail(path.failureMessage());
+  if (!ok) ctx.status.fail(path.failureMessage());
   // why the path ended (/path attribute stop_reason); max_steps before the scene's stop criterion is short of it
   const std::vector<PathPoint>& pts = path.points();
   const ContinuationOptions& opts = *ctx.model.opt.continuation;
   const PathEnd end = pathEnd(opts, static_cast<int>(pts.size()), pts.empty() ? 0.0 : pts.back().loadFactor,
-                              pts.empty() ? 0.0 : pts.back().controlValue, !ok, ctx.stop);
+                              pts.empty() ? 0.0 : pts.back().controlValue, !ok, ctx.status.stopping());
   ctx.guardedWrite([&]() { ctx.file.writeStateAttribute("path", "stop_reason", end.reason); });
   ctx.summaryLines += "  path ended: " + end.reason + "\n";
   if (end.endedShort)
-    ctx.fail("path following ended short: " + end.reason + "; give a larger opt.continuation.max_steps (or ds_max, the largest step)");
+    ctx.status.fail("path following ended short: " + end.reason + "; give a larger opt.continuation.max_steps (or ds_max, the largest step)");
   std::vector<double> lambdas, controls;
   for (const PathPoint& p : pts) {
     lambdas.push_back(p.loadFactor);

@@ -34,7 +34,7 @@ PetscErrorCode runDynamics(RunContext& ctx) {
   if (energy) em = std::make_unique<EnergyMomentum>(ctx.assembler);
 
   DynamicAnalysis dyn(ctx.assembler, opts, ctx.settings);
-  dyn.setStopFlag(&ctx.stop);
+  dyn.setStopFlag(ctx.status.stopFlag());
   dyn.setResultFile(&ctx.file);
   if (ctx.restart && ctx.restart->phase() == CheckpointPhase::Dynamics) {
     PetscCall(ctx.restart->resumeDynamics(ctx, dyn, &energy0, &maxDrift, &work, &power));
@@ -139,11 +139,10 @@ PetscErrorCode runDynamics(RunContext& ctx) {
     });
   bool ok = false;
   PetscCall(dyn.run(ctx.U, onStep, &ok));
-  ctx.lastStepName = "time step";
   ctx.checkpointState = nullptr;
-  if (!ok && !ctx.stop) PetscCall(ctx.writeSkippedLast(ctx.U));
+  if (!ok && !ctx.status.stopping()) PetscCall(ctx.writeSkippedLast(ctx.U));
   if (ok) PetscCall(ctx.finishStepAnalyses(ctx.U));
-  if (!ok && !ctx.stop) ctx.fail(dyn.failureMessage());
+  if (!ok && !ctx.status.stopping()) ctx.status.fail(dyn.failureMessage());
   const DynamicsReport& r = dyn.report();
   std::ostringstream s;
   s << "  dynamics: " << r.steps << " of " << nsteps << " steps of dt = " << opts.dt << " to t = " << r.time;

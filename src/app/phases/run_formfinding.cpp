@@ -81,7 +81,7 @@ PetscErrorCode runFormFinding(RunContext& ctx) {
   const double outBefore = ctx.times.output, anaBefore = ctx.times.analyses;
   const FormFinding& ff = *ctx.model.formfinding;
   FormFindingAnalysis analysis(ctx.assembler, ff, ctx.model.eprops, ctx.settings.formfinding);
-  analysis.setStopFlag(&ctx.stop);
+  analysis.setStopFlag(ctx.status.stopFlag());
   analysis.setFailureHint(ctx.formfindingHint);
   if (ctx.restart && ctx.restart->phase() == CheckpointPhase::FormFinding)
     ctx.restart->resumeFormFinding(ctx, analysis);  // -restart: continue after its steps
@@ -113,7 +113,6 @@ PetscErrorCode runFormFinding(RunContext& ctx) {
   bool ok = false;
   PetscCall(analysis.run(ctx.U, onStep, &ok));
   if (ok) PetscCall(ctx.finishStepAnalyses(ctx.U));  // the found shape (form finding may end before formfinding_step)
-  ctx.lastStepName = "form-finding step";
   const auto& reps = analysis.reports();
   std::vector<double> res, change, normal;
   for (const auto& r : reps) {
@@ -127,7 +126,7 @@ PetscErrorCode runFormFinding(RunContext& ctx) {
     ctx.file.writeArray("formfinding/shape_change", change, {static_cast<long>(change.size())});
     ctx.file.writeArray("formfinding/shape_change_normal", normal, {static_cast<long>(normal.size())});
     // the found shape before the elastic restart, kept for a restart with other loads (app/phases/restart.hpp)
-    if (ok && !ctx.stop) ierr = ctx.writeCheckpoint("checkpoint_formfinding");
+    if (ok && !ctx.status.stopping()) ierr = ctx.writeCheckpoint("checkpoint_formfinding");
     if (!ierr) ctx.file.commit();
   });
   PetscCall(ierr);
@@ -160,9 +159,9 @@ PetscErrorCode runFormFinding(RunContext& ctx) {
   ctx.times.formfinding = MPI_Wtime() - t0 - (ctx.times.output - outBefore) - (ctx.times.analyses - anaBefore);
   ctx.times.formfindingIts = 0;
   for (const auto& r : reps) ctx.times.formfindingIts += r.newtonIterations;
-  if (!ok && !ctx.stop) {
-    ctx.fail(analysis.failureMessage());
-  } else if (ok && !ctx.stop) {
+  if (!ok && !ctx.status.stopping()) {
+    ctx.status.fail(analysis.failureMessage());
+  } else if (ok && !ctx.status.stopping()) {
     PetscCall(analysis.restart(ctx.U));
   }
   PetscCall(PetscLogEventEnd(SinewEvents::get().formfinding, 0, 0, 0, 0));

@@ -35,7 +35,7 @@ PetscErrorCode runStatics(RunContext& ctx, bool resumeStatics, const ConstraintC
   StaticAnalysis statics(assembler, ramp, settings.statics, settings.ancf);
   statics.setLastStep(lastStep);
   statics.setUnloaded(unloaded(model, dmesh, assembler));
-  statics.setStopFlag(&ctx.stop);
+  statics.setStopFlag(ctx.status.stopFlag());
   statics.setUniformRamp(model.opt.load_ramp == "uniform");
   statics.setStartIsInitialState(!initiallyLoaded(model, dmesh));
   statics.setTimeZero(plan.preload);  // the time loop starts at t = 0 from the last load step
@@ -75,7 +75,6 @@ PetscErrorCode runStatics(RunContext& ctx, bool resumeStatics, const ConstraintC
   };
   bool ok = false;
   PetscCall(statics.run(ctx.U, onStep, &ok));
-  ctx.lastStepName = "load step";
   if (!ok) PetscCall(ctx.writeSkippedLast(ctx.U));  // ctx.U holds the last converged state
   else PetscCall(ctx.finishStepAnalyses(ctx.U));
   ctx.checkpointState = nullptr;
@@ -85,8 +84,8 @@ PetscErrorCode runStatics(RunContext& ctx, bool resumeStatics, const ConstraintC
                         std::to_string(cs->setups()) + " set-ups, " + std::to_string(cs->applications()) +
                         " applications; coarse predictor " + std::to_string(cs->predictorIterations()) +
                         " Newton iterations\n";
-  if (!ok && ctx.converged) {
-    ctx.fail(statics.failureMessage());
+  if (!ok && ctx.status.converged()) {
+    ctx.status.fail(statics.failureMessage());
     if (statics.linearSolveFailed() && check.enabled) {  // name the mechanism / redundancy if there is one
       LoadState ls;
       ls.loadFactor = ls.time = ctx.reports.empty() ? 0.0 : ctx.reports.back().loadFactor;
@@ -94,7 +93,7 @@ PetscErrorCode runStatics(RunContext& ctx, bool resumeStatics, const ConstraintC
       PhaseScope checkAfter("the constraint check after the failed step");
       PetscCall(checkConstraints(assembler, model, ctx.U, ls, settings.check, &report));
       if (report.singular) {
-        ctx.failure += "\n" + report.message;
+        ctx.status.explainFailure(report.message);
         *modelError = true;
       }
     }

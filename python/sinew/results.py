@@ -11,6 +11,8 @@ Every dataset of the file is also reachable as out.data["node/p"] (a numpy array
 
 The datasets come from one of two sources, giving the same object: a result file (load) or the
 in-memory results of a run in this process (from_memory, what Scene.run returns by default)."""
+import functools
+
 import h5py
 import numpy as np
 
@@ -86,18 +88,26 @@ class Results:
         self.time = data.get("time")
         for name in ("freq", "buck", "stressmax"):
             setattr(self, name, data.get(name))
-        nn = data["node/p"].shape[1] if "node/p" in data else 0
-        self.node = OneBased([Node({f: data[f"node/{f}"][:, i] for f in NODE_FIELDS if f"node/{f}" in data}, i + 1)
-                              for i in range(nn)], "node")
-        ns = data["node/p"].shape[0] if "node/p" in data else 0
-        self.step = OneBased([Step(self, k, ns) for k in range(1, ns + 1)], "step")
         self.statespace = {k[len("statespace/"):]: v for k, v in data.items() if k.startswith("statespace/")} or None
         self.sensors = {k[len("sensors/"):]: v for k, v in data.items() if k.startswith("sensors/")} or None
+
+    # node and step are made at their first use (a loop of runs that reads out.freq makes neither)
+    @functools.cached_property
+    def node(self):
+        """The nodes' results, 1-based: node[i].p (ns, 3), ..."""
+        nn = self.data["node/p"].shape[1] if "node/p" in self.data else 0
+        return OneBased([Node({f: self.data[f"node/{f}"][:, i] for f in NODE_FIELDS if f"node/{f}" in self.data}, i + 1)
+                         for i in range(nn)], "node")
+
+    @functools.cached_property
+    def step(self):
+        """SPACAR Light's per-step view, 1-based: step[k].node[i].p (3,), step[k].freq, ..."""
+        return OneBased([Step(self, k, self.ns) for k in range(1, self.ns + 1)], "step")
 
     @property
     def ns(self):
         """Number of written steps (rows)."""
-        return len(self.step)
+        return self.data["node/p"].shape[0] if "node/p" in self.data else 0
 
     def __repr__(self):
         have = [n for n in ("freq", "buck", "stressmax", "statespace", "sensors") if getattr(self, n) is not None]

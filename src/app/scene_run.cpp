@@ -124,7 +124,8 @@ void SceneRun::readModel() {
                                       " unknowns): give the number of frequencies wanted");
   if (plan_.dynamics) DynamicAnalysis::checkScheme(*dmesh_, settings_.dynamics.scheme);
   if (plan_.dynamics && model_.opt.dynamics) DynamicAnalysis::checkStepControl(*dmesh_, *model_.opt.dynamics, settings_.dynamics);
-  fingerprint_ = sceneFingerprint(model_, static_cast<long>(fe.X.size()), static_cast<long>(fe.elements.size()));
+  // the checkpoints' and -restart's check that a file belongs to this scene: runs to a file only
+  if (toFile_) fingerprint_ = sceneFingerprint(model_, static_cast<long>(fe.X.size()), static_cast<long>(fe.elements.size()));
 }
 
 void SceneRun::fillLayout(ResultLayout& layout) {
@@ -277,9 +278,11 @@ PetscErrorCode SceneRun::createResults(const ResultLayout& layout) {
     PhaseScope phase("the set-up of the analyses");
     PetscCall(addStepAnalyses(ctx));
   }
-  checkpointWriter_ = std::make_unique<CheckpointWriter>(*assembler_, fingerprint_);
   // -checkpoint false: no /checkpoint (the run cannot be continued); none in memory
-  if (settings_.output.checkpoint && toFile_) ctx.checkpoint = checkpointWriter_.get();
+  if (settings_.output.checkpoint && toFile_) {
+    checkpointWriter_ = std::make_unique<CheckpointWriter>(*assembler_, fingerprint_);
+    ctx.checkpoint = checkpointWriter_.get();
+  }
   ctx.restart = restart_.get();
   PetscFunctionReturn(PETSC_SUCCESS);
 }

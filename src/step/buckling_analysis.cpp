@@ -107,8 +107,9 @@ PetscErrorCode BucklingAnalysis::solveDense(DenseEigenpairs& pairs) {
 
 // Rayleigh quotient mu = x^T K_m x / x^T (-K_g) x with the operator used (element-wise: accurate for
 // the smooth modes of fine meshes; error quadratic in the mode's), and the backward error of
-// K_m x - mu (-K_g) x, rotations scaled by the model size (scaledBackwardError). Kg_ holds -K_g.
-PetscErrorCode BucklingAnalysis::refine(Vec x, PetscScalar* mu, double* backward) {
+// K_m x - mu (-K_g) x, rotations scaled by the model size (scaledBackwardError; `scaled`: the scales of
+// the step's pencil, the same for all its pairs). Kg_ holds -K_g.
+PetscErrorCode BucklingAnalysis::refine(const UnitFreeNorms& scaled, Vec x, PetscScalar* mu, double* backward) {
   PetscFunctionBeginUser;
   if (!std::isfinite(*mu)) PetscFunctionReturn(PETSC_SUCCESS);
   Vec a, b;
@@ -121,10 +122,7 @@ PetscErrorCode BucklingAnalysis::refine(Vec x, PetscScalar* mu, double* backward
   PetscCall(VecDot(x, b, &xb));
   if (elementwise_ && xb != 0.0) *mu = xa / xb;
   PetscCall(VecAXPY(a, -*mu, b));
-  UnitFreeNorms scaled;
-  PetscCall(unitFreeNorms(asm_.mesh(), Km_, Kg_, &scaled));
   PetscCall(scaledBackwardError(scaled, x, a, *mu, backward));
-  PetscCall(destroyUnitFreeNorms(&scaled));
   PetscCall(VecDestroy(&a));
   PetscCall(VecDestroy(&b));
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -146,6 +144,8 @@ PetscErrorCode BucklingAnalysis::atStep(Vec U, const LoadState& ls, ResultFile& 
   std::vector<Vec> shapes;
   if (ng > 1e-13 * nm) {  // a stress-free state has no buckling load: every multiplier +inf
     PetscCall(MatScale(Kg_, -1.0));  // K_m phi = mu (-K_g) phi
+    UnitFreeNorms scaled;  // scales of the backward errors: the pencil's, once for all its pairs
+    PetscCall(unitFreeNorms(mesh, Km_, Kg_, &scaled));
     PetscInt N;
     PetscCall(MatGetSize(Km_, &N, nullptr));
     struct Pair {
@@ -170,7 +170,15 @@ PetscErrorCode BucklingAnalysis::atStep(Vec U, const LoadState& ls, ResultFile& 
         PetscCall(solve(std::min<int>(nev, static_cast<int>(N)), &nconv));
         PetscCall(EPSGetConvergedReason(eps_, &reason));
       }
+      // mu ||K_g|| > 1e4 ||K_m||: a null direction of K_g (infinite multiplier) computed at round-off level;
+      // a real buckling load has mu ||K_g|| / ||K_m|| of the order of (thickness / length)^2
+      auto kept = [&](PetscScalar kr, PetscScalar ki) {
+        const bool finite = std::isfinite(kr) && kr * ng < 1e4 * nm;
+        return finite && kr > 0 && std::abs(ki) <= 1e-6 * std::abs(kr);
+      };
       for (int i = 0; i < nconv; ++i) {
+        // the assembled operator's multiplier is the solver's: a dense pair that is not kept needs no vector
+        if (dense_ && !elementwise_ && !kept(dense.re[i], dense.im[i])) continue;
         PetscScalar kr, ki;
         Vec x;
         PetscReal est = 0;
@@ -185,11 +193,9 @@ PetscErrorCode BucklingAnalysis::atStep(Vec U, const LoadState& ls, ResultFile& 
           PetscCall(EPSGetErrorEstimate(eps_, i, &est));
         }
         double back = 0;
-        PetscCall(refine(x, &kr, &back));
-        // mu ||K_g|| > 1e4 ||K_m||: a null direction of K_g (infinite multiplier) computed at round-off level;
-        // a real buckling load has mu ||K_g|| / ||K_m|| of the order of (thickness / length)^2
-        const bool finite = std::isfinite(kr) && kr * ng < 1e4 * nm;
-        if (finite && kr > 0 && std::abs(ki) <= 1e-6 * std::abs(kr)) positive.push_back({kr, x, est, back});
+        // the element-wise operator's Rayleigh quotient is the multiplier, before the selection
+        if (elementwise_) PetscCall(refine(scaled, x, &kr, &back));
+        if (kept(kr, ki)) positive.push_back({kr, x, est, back});
         else PetscCall(VecDestroy(&x));
       }
       // enough positive multipliers, or the nearest ones are all negative and the spectrum is exhausted
@@ -197,6 +203,11 @@ PetscErrorCode BucklingAnalysis::atStep(Vec U, const LoadState& ls, ResultFile& 
       nev *= 4;
     }
     std::sort(positive.begin(), positive.end(), [](const Pair& a, const Pair& b) { return a.mu < b.mu; });
+    // the assembled operator: the backward errors of the pairs written (refine leaves their multiplier)
+    if (!elementwise_)
+      for (int j = 0; j < nbuck_ && j < static_cast<int>(positive.size()); ++j)
+        PetscCall(refine(scaled, positive[j].x, &positive[j].mu, &positive[j].backward));
+    PetscCall(destroyUnitFreeNorms(&scaled));
     PetscReal tol;
     PetscInt maxit;
     PetscCall(EPSGetTolerances(eps_, &tol, &maxit));

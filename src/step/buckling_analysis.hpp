@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "assembly/assembler.hpp"
+#include "step/backward_error.hpp"
 #include "settings/settings.hpp"
 #include "step/dense_eigen.hpp"
 #include "step/step_analysis.hpp"
@@ -39,7 +40,7 @@ class BucklingAnalysis : public StepAnalysis {
   PetscErrorCode solve(int nev, int* nconv);
   PetscErrorCode solveDense(DenseEigenpairs& pairs);
   static PetscErrorCode materialMult(Mat A, Vec x, Vec y);
-  PetscErrorCode refine(Vec x, PetscScalar* mu, double* backward);
+  PetscErrorCode refine(const UnitFreeNorms& scaled, Vec x, PetscScalar* mu, double* backward);
   bool dense_ = false;        // -eigen_dense_max_unknowns: LAPACK on rank 0 instead of SLEPc
   bool elementwise_ = false;  // -eigen_operator: K_m x = (element-wise K) x - K_g x
   Mat Kop_ = nullptr;

@@ -82,21 +82,6 @@ ContinuationAnalysis::~ContinuationAnalysis() {
   for (Vec* v : {&R_, &q_, &duR_, &duq_, &dU_, &e_, &work_, &dUprev_}) VecDestroy(v);
 }
 
-// q = -dR/dlambda by a central difference: exact (to round-off) for loads, gravity and pressure that
-// scale with the load factor, second order for prescribed motions.
-PetscErrorCode ContinuationAnalysis::loadDerivative(Vec U, double lambda, Vec q) {
-  PetscFunctionBeginUser;
-  const double h = 1e-4 * std::max(1.0, std::abs(lambda));
-  LoadState ls;
-  ls.loadFactor = ls.time = lambda + h;
-  PetscCall(asm_.residual(U, ls, work_));
-  ls.loadFactor = ls.time = lambda - h;
-  PetscCall(asm_.residual(U, ls, q));
-  PetscCall(VecAXPY(q, -1.0, work_));
-  PetscCall(VecScale(q, 0.5 / h));  // q = (R(-h) - R(+h)) / 2h = -dR/dlambda
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
 // Initial loads (force_initial, moment_initial, displ_initial, rot_initial) act at every load factor,
 // so the path starts from their equilibrium: Newton at load factor 0 with the initial loads ramped in
 // equal increments (a cut increment is halved), rotations absorbed after each. A start state that already

@@ -103,13 +103,15 @@ PetscErrorCode SceneRun::fail(int exitCode, const std::string& message) {
 // Scene -> model -> distributed mesh -> plan, and the checks that need the distributed mesh
 // (SceneError: exit 2).
 void SceneRun::readModel() {
+  // a restart's listed output steps are checked against its plan once the checkpoint is read (setUp)
+  const bool restart = toFile_ && !settings_.output.restart.empty();
   if (scene_.model) {
     model_ = std::move(*scene_.model);
     scene_.model.reset();
   } else if (!scene_.path.empty()) {
-    model_ = readScene(scene_.path, sceneOverrides(settings_));
+    model_ = readScene(scene_.path, sceneOverrides(settings_), restart);
   } else {
-    model_ = parseScene(scene_.text, scene_.baseDir, sceneOverrides(settings_));
+    model_ = parseScene(scene_.text, scene_.baseDir, sceneOverrides(settings_), restart);
   }
   plan_ = makePlan(model_);
   const FeMesh fe = discretize(model_);
@@ -187,6 +189,17 @@ PetscErrorCode SceneRun::setUp() {
     if (toFile_) {
       try {
         restart_ = std::make_unique<Restart>(comm_, from, h5_, fingerprint_, model_, plan_, settings_.dynamics.scheme);
+        // listed output steps: those of the plan the restart runs (it may go on past opt.loadsteps)
+        const Options& o = model_.opt;
+        if (o.output_steps.kind == OutputSteps::Kind::List && !o.continuation) {
+          try {
+            checkOutputSteps(o, restart_->lastLoadStep(o.loadsteps, settings_.sceneOpt.count("loadsteps") > 0));
+          } catch (const SceneError& ex) {
+            const auto flag = settings_.sceneOpt.find("output_steps");
+            if (flag == settings_.sceneOpt.end()) throw;
+            throw SceneError("", std::string(ex.what()) + " (from the command line: -output_steps " + flag->second + ")");
+          }
+        }
       } catch (const std::exception& ex) {
         error = std::string("error: ") + ex.what();
       }

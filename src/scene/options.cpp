@@ -294,30 +294,6 @@ StepAnalysisRows parseStepAnalyses(const YAML::Node& v, const std::string& p) {
   fail(p, expected + describe(v));
 }
 
-/// The step numbers of a list must be steps the run has: load steps 1..loadsteps (statics, also
-/// before a time loop with start: static) or written time steps 0..tend/dt (multiples of
-/// output_every); a step the run never reaches wrote nothing but the last step before (issue 24).
-void checkOutputSteps(const Options& o, const std::string& p) {
-  const bool statics = !o.dynamics || o.dynamics->start_static;
-  long nsteps = 0, every = 1;
-  if (o.dynamics) {
-    nsteps = std::max(1L, static_cast<long>(std::ceil(o.dynamics->tend / o.dynamics->dt - 1e-9)));
-    every = o.dynamics->output_every;
-  }
-  std::string range;
-  if (statics) range = "load steps 1.." + std::to_string(o.loadsteps);
-  if (o.dynamics)
-    range += (range.empty() ? "" : " or ") + std::string("time steps 0..") + std::to_string(nsteps) +
-             (every > 1 ? " that are multiples of output_every " + std::to_string(every) : "");
-  for (const int k : o.output_steps.steps) {
-    const bool loadStep = statics && k >= 1 && k <= o.loadsteps;
-    const bool timeStep = o.dynamics && k >= 0 && k <= nsteps && k % every == 0;
-    if (!loadStep && !timeStep)
-      fail(p, "step " + std::to_string(k) + " is not a step of this run: expected " + range +
-                  " (the last step is always written)");
-  }
-}
-
 }  // namespace
 
 void parseOptions(const YAML::Node& opt, SceneContext& ctx) {
@@ -374,7 +350,8 @@ void parseOptions(const YAML::Node& opt, SceneContext& ctx) {
     else if (k == "step_analyses") o.step_analyses = parseStepAnalyses(v, p);
   }
   // path following writes every path point (output_steps does not thin a path)
-  if (o.output_steps.kind == OutputSteps::Kind::List && !o.continuation) checkOutputSteps(o, childPath("opt", "output_steps"));
+  // (a restart's list is checked against the restart's plan, once its checkpoint is read)
+  if (o.output_steps.kind == OutputSteps::Kind::List && !o.continuation && !ctx.restart) checkOutputSteps(o, o.loadsteps);
   if (opt["loadsteps"].IsDefined() && o.dynamics && !o.dynamics->start_static)
     m.warnings.push_back("opt.loadsteps is not used: opt.dynamics starts at rest from the unloaded (or form-found) state; "
                          "give opt.dynamics.start: static to run the load steps first and start the time loop from their end");
@@ -504,4 +481,30 @@ void parseSensors(const YAML::Node& sensors, SceneContext& ctx) {
 }
 
 }  // namespace scene
+
+// The step numbers of a list must be steps the run has: load steps 1..lastLoadStep (statics, also
+// before a time loop with start: static) or written time steps 0..tend/dt (multiples of
+// output_every); a step the run never reaches wrote nothing but the last step before (issue 24).
+void checkOutputSteps(const Options& o, int lastLoadStep) {
+  const std::string p = "opt.output_steps";
+  const bool statics = !o.dynamics || o.dynamics->start_static;
+  long nsteps = 0, every = 1;
+  if (o.dynamics) {
+    nsteps = std::max(1L, static_cast<long>(std::ceil(o.dynamics->tend / o.dynamics->dt - 1e-9)));
+    every = o.dynamics->output_every;
+  }
+  std::string range;
+  if (statics) range = "load steps 1.." + std::to_string(lastLoadStep);
+  if (o.dynamics)
+    range += (range.empty() ? "" : " or ") + std::string("time steps 0..") + std::to_string(nsteps) +
+             (every > 1 ? " that are multiples of output_every " + std::to_string(every) : "");
+  for (const int k : o.output_steps.steps) {
+    const bool loadStep = statics && k >= 1 && k <= lastLoadStep;
+    const bool timeStep = o.dynamics && k >= 0 && k <= nsteps && k % every == 0;
+    if (!loadStep && !timeStep)
+      throw SceneError(p, "step " + std::to_string(k) + " is not a step of this run: expected " + range +
+                              " (the last step is always written)");
+  }
+}
+
 }  // namespace sinew

@@ -22,6 +22,7 @@ struct SceneContext {
   std::vector<int> meshElementToModel;  ///< Gmsh element index -> 0-based model element, -1 = not added
   std::vector<int> modelElementToMesh;  ///< model element - sceneElements -> Gmsh element index
   std::vector<std::vector<std::string>> setPhysical;  ///< per eprops set: its `physical:` names
+  bool restart = false;  ///< the run continues a checkpoint: opt.output_steps is checked against its plan later
 
   /// "elements[i]" for scene elements, "mesh" for elements from the Gmsh file.
   std::string elementPath(int e) const;

@@ -321,11 +321,12 @@ void checkDynamicsMass(const Model& m) {
                        "physicsMassPerLength for ancf_cable2d, or nprops mass)");
 }
 
-void parseRoot(const YAML::Node& root, const std::string& baseDir, Model& m) {
+void parseRoot(const YAML::Node& root, const std::string& baseDir, Model& m, bool restart) {
   if (!root.IsDefined() || root.IsNull()) fail("", "the scene is empty: expected a map with at least nodes and elements");
   if (!root.IsMap()) fail("", "expected a map of top-level keys (title, nodes, elements, ...), got " + describe(root));
   checkKeys(root, "", kTopKeys);
   SceneContext ctx{m};
+  ctx.restart = restart;
 
   const YAML::Node title = root["title"];
   if (title.IsDefined() && !title.IsNull()) m.title = getString(title, "title");
@@ -557,7 +558,7 @@ YAML::Node loadOneDocument(const std::string& text, const std::string& prefix) {
 }
 
 Model parseSceneImpl(const std::string& text, const std::string& baseDir, const OptionOverride& overrides,
-                     const std::string& fileLabel) {
+                     const std::string& fileLabel, bool restart) {
   Model m;
   m.sceneText = text;
   const std::string prefix = fileLabel.empty() ? std::string() : fileLabel + ": ";
@@ -568,7 +569,7 @@ Model parseSceneImpl(const std::string& text, const std::string& baseDir, const 
   std::vector<std::pair<std::string, std::string>> overridden;
   try {
     applyOverrides(root, overrides, overridden);
-    parseRoot(root, baseDir, m);
+    parseRoot(root, baseDir, m, restart);
   } catch (const SceneError& e) {
     throw locate(e, root, overridden, fileLabel);
   } catch (const YAML::Exception& e) {
@@ -580,11 +581,11 @@ Model parseSceneImpl(const std::string& text, const std::string& baseDir, const 
 }  // namespace
 }  // namespace scene
 
-Model parseScene(const std::string& text, const std::string& baseDir, const OptionOverride& overrides) {
-  return scene::parseSceneImpl(text, baseDir, overrides, "");
+Model parseScene(const std::string& text, const std::string& baseDir, const OptionOverride& overrides, bool restart) {
+  return scene::parseSceneImpl(text, baseDir, overrides, "", restart);
 }
 
-Model readScene(const std::string& path, const OptionOverride& overrides) {
+Model readScene(const std::string& path, const OptionOverride& overrides, bool restart) {
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec)) throw SceneError("", "'" + path + "' is a directory, not a scene file");
   std::ifstream in(path, std::ios::binary);
@@ -594,7 +595,7 @@ Model readScene(const std::string& path, const OptionOverride& overrides) {
   if (in.bad()) throw SceneError("", "cannot read scene file '" + path + "'");
   if (ss.str().empty()) throw SceneError("", "scene file '" + path + "' is empty: expected a map with at least nodes and elements");
   const std::filesystem::path p(path);
-  Model m = scene::parseSceneImpl(ss.str(), p.parent_path().string(), overrides, p.filename().string());
+  Model m = scene::parseSceneImpl(ss.str(), p.parent_path().string(), overrides, p.filename().string(), restart);
   if (m.opt.filename.empty()) m.opt.filename = p.stem().string();
   return m;
 }

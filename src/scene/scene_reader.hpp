@@ -18,10 +18,18 @@ namespace sinew {
 /// comma list "0,0,-9.81" means [0,0,-9.81]; an empty value means true (a flag given alone).
 using OptionOverride = std::function<std::optional<std::string>(const std::string& optName)>;
 
-/// Parse scene text. baseDir resolves `mesh:`. Model.sceneText = text.
-Model parseScene(const std::string& text, const std::string& baseDir, const OptionOverride& overrides = {});
+/// Parse scene text. baseDir resolves `mesh:`. Model.sceneText = text. `restart`: the run continues
+/// a checkpoint (-restart), whose plan may end later than opt.loadsteps: a list in opt.output_steps
+/// is then checked by the caller (checkOutputSteps with the restart's last load step).
+Model parseScene(const std::string& text, const std::string& baseDir, const OptionOverride& overrides = {},
+                 bool restart = false);
 /// Read a scene file; messages name the file. opt.filename defaults to the file's stem.
-Model readScene(const std::string& path, const OptionOverride& overrides = {});
+Model readScene(const std::string& path, const OptionOverride& overrides = {}, bool restart = false);
+
+/// A list in opt.output_steps holds only steps the run has: load steps 1..lastLoadStep (statics,
+/// also before a time loop with start: static), time steps 0..tend/dt that are multiples of
+/// output_every; else SceneError("opt.output_steps", ...).
+void checkOutputSteps(const Options& o, int lastLoadStep);
 
 /// Every opt field with its type and default, for -help.
 struct OptionDoc {

@@ -15,6 +15,7 @@
 // (copied rows included): that step and its checkpoint are written, the file is closed with
 // converged = 0 and the exit code is 5.
 #pragma once
+#include <algorithm>
 #include <memory>
 #include <string>
 
@@ -68,6 +69,12 @@ class Restart {
   PetscErrorCode resumeContinuation(RunContext& ctx, ContinuationAnalysis& path) const;
   /// loadsteps of the earlier run's ramp (statics checkpoints).
   int rampLoadsteps() const { return static_cast<int>(reader_->scalars()[kCkLoadsteps]); }
+  /// The last load step of the restarted run: one that continues load stepping goes on to the end
+  /// of the earlier run's ramp, or to the scene's later opt.loadsteps, unless -loadsteps is given
+  /// (loadstepsGiven: then opt.loadsteps is the last step, before or after the ramp's end).
+  int lastLoadStep(int sceneLoadsteps, bool loadstepsGiven) const {
+    return phase() == CheckpointPhase::Statics && !loadstepsGiven ? std::max(rampLoadsteps(), sceneLoadsteps) : sceneLoadsteps;
+  }
 
  private:
   void check(MPI_Comm comm, const std::string& src, const std::string& path, const std::string& fingerprint,

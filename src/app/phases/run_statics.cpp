@@ -31,7 +31,7 @@ PetscErrorCode runStatics(RunContext& ctx, bool resumeStatics, const ConstraintC
   // scene's own opt.loadsteps is what the earlier run's -loadsteps overrode), or to a later step of
   // the scene; -loadsteps N on the restart is the last step, before or after the ramp's end
   const bool lastGiven = settings.sceneOpt.count("loadsteps") > 0;
-  const int lastStep = resumeStatics && !lastGiven ? std::max(ramp, model.opt.loadsteps) : model.opt.loadsteps;
+  const int lastStep = resumeStatics ? restart->lastLoadStep(model.opt.loadsteps, lastGiven) : model.opt.loadsteps;
   StaticAnalysis statics(assembler, ramp, settings.statics, settings.ancf);
   statics.setLastStep(lastStep);
   statics.setUnloaded(unloaded(model, dmesh, assembler));

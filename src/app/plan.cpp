@@ -127,7 +127,7 @@ Plan makePlan(const Model& model) {
   return p;
 }
 
-std::string Plan::describe(const Model& model) const {
+std::string Plan::describe(const Model& model, int lastLoadStep) const {
   std::ostringstream s;
   const char* sep = "";
   auto add = [&](const std::string& what) {
@@ -138,7 +138,7 @@ std::string Plan::describe(const Model& model) const {
   if (continuation)
     add("statics, path following (" + model.opt.continuation->method + ", up to " +
         std::to_string(model.opt.continuation->max_steps) + " points)");
-  else if (statics) add("statics (" + std::to_string(model.opt.loadsteps) + " load steps)");
+  else if (statics) add("statics (" + std::to_string(lastLoadStep) + " load steps)");
   if (dynamics) add(preload ? "dynamics from the end of the load steps" : "dynamics");
   if (frequencies) add("natural frequencies");
   if (buckling) add("buckling");

@@ -19,7 +19,8 @@ struct Plan {
   bool transfer = false;      ///< state-space
   bool stress = false;        ///< some element has a stress measure
   bool stressPerElement = false;
-  std::string describe(const Model& model) const;
+  /// One line of what runs; lastLoadStep: the load steps the statics runs (a restart may go on past opt.loadsteps).
+  std::string describe(const Model& model, int lastLoadStep) const;
 };
 
 Plan makePlan(const Model& model);

@@ -193,7 +193,7 @@ PetscErrorCode SceneRun::setUp() {
         const Options& o = model_.opt;
         if (o.output_steps.kind == OutputSteps::Kind::List && !o.continuation) {
           try {
-            checkOutputSteps(o, restart_->lastLoadStep(o.loadsteps, settings_.sceneOpt.count("loadsteps") > 0));
+            checkOutputSteps(o, lastLoadStepOf(restart_.get(), model_, settings_));
           } catch (const SceneError& ex) {
             const auto flag = settings_.sceneOpt.find("output_steps");
             if (flag == settings_.sceneOpt.end()) throw;
@@ -230,7 +230,8 @@ PetscErrorCode SceneRun::setUp() {
   model_.elementSet.shrink_to_fit();
   times_.setup = MPI_Wtime() - t0_;
 
-  SummaryHeader header{model_.title, sceneName(scene_), nranks, dmesh_->numGlobalUnknowns, plan_.describe(model_),
+  const std::string planLine = plan_.describe(model_, lastLoadStepOf(restart_.get(), model_, settings_));
+  SummaryHeader header{model_.title, sceneName(scene_), nranks, dmesh_->numGlobalUnknowns, planLine,
                        model_.opt.showinputonly};
   if (!model_.opt.silent) PetscCall(printHeader(comm_, header));
   if (!model_.opt.silent && nranks > 1 && !model_.opt.showinputonly) {  // partition balance: elements, owned unknowns, ghosts per rank

@@ -18,13 +18,15 @@ QUICK = ["-calcbuck", "false", "-calccompl", "false", "-calcfreq", "false"]
 
 full, _ = st.run("plan_end_full", CROSSHINGE, np_=2, args=QUICK + ["-loadsteps", "12"])
 first, _ = st.run("plan_end_first", CROSSHINGE, np_=1, args=QUICK + ["-loadsteps", "12", "-stop_after_step", "4"], expect_exit=5)
-cont, _ = st.run("plan_end_restart", CROSSHINGE, np_=2, args=QUICK + ["-restart", first])
+cont, contlog = st.run("plan_end_restart", CROSSHINGE, np_=2, args=QUICK + ["-restart", first])
+st.check("statics (12 load steps)" in contlog, "the restart's header names the 12 load steps it runs (said 10, the scene's)")
 with st.h5(cont) as f, st.h5(full) as g:
     lf = f["load_factor"][:]
     st.check(len(lf) == 12 and lf[-1] == 1.0 and f.attrs["converged"] == 1,
              f"restart without -loadsteps: {len(lf)} steps to load factor {lf[-1]} (converged {f.attrs['converged']}), expected 12 to 1")
     st.close(f["node/p"][-1], g["node/p"][-1], rtol=1e-12, what="last step's positions vs the uninterrupted run")
 short, log = st.run("plan_end_asked", CROSSHINGE, np_=2, args=QUICK + ["-restart", first, "-loadsteps", "8"])
+st.check("statics (8 load steps)" in log, "-loadsteps 8 on the restart: the header names 8 load steps")
 with st.h5(short) as f:
     st.check(len(f["load_factor"]) == 8 and abs(f["load_factor"][-1] - 7 / 11) < 1e-15,
              f"-loadsteps 8 on the restart: {len(f['load_factor'])} steps to load factor {f['load_factor'][-1]}")

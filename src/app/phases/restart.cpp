@@ -135,6 +135,11 @@ std::string sceneFingerprint(const Model& model, long feNodes, long feElements) 
   return s.str();
 }
 
+int lastLoadStepOf(const Restart* restart, const Model& model, const Settings& settings) {
+  return restart ? restart->lastLoadStep(model.opt.loadsteps, settings.sceneOpt.count("loadsteps") > 0)
+                 : model.opt.loadsteps;
+}
+
 std::vector<double> formfindingRows(const std::vector<FormFindingStepReport>& reports) {
   std::vector<double> rows;
   for (const auto& r : reports) {

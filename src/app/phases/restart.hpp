@@ -87,6 +87,10 @@ class Restart {
   std::unique_ptr<CheckpointReader> reader_;
 };
 
+/// The last load step the run executes: opt.loadsteps, or on a restart that continues load stepping
+/// restart->lastLoadStep (to the end of the earlier ramp unless -loadsteps is given).
+int lastLoadStepOf(const Restart* restart, const Model& model, const Settings& settings);
+
 /// Form-finding reports as rows of /checkpoint/formfinding and back.
 std::vector<double> formfindingRows(const std::vector<FormFindingStepReport>& reports);
 std::vector<FormFindingStepReport> formfindingReports(const std::vector<double>& rows);

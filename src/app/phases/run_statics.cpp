@@ -30,8 +30,7 @@ PetscErrorCode runStatics(RunContext& ctx, bool resumeStatics, const ConstraintC
   // a restart continues the interrupted plan to its end (load factor 1 at step `ramp`, also when the
   // scene's own opt.loadsteps is what the earlier run's -loadsteps overrode), or to a later step of
   // the scene; -loadsteps N on the restart is the last step, before or after the ramp's end
-  const bool lastGiven = settings.sceneOpt.count("loadsteps") > 0;
-  const int lastStep = resumeStatics ? restart->lastLoadStep(model.opt.loadsteps, lastGiven) : model.opt.loadsteps;
+  const int lastStep = lastLoadStepOf(resumeStatics ? restart : nullptr, model, settings);
   StaticAnalysis statics(assembler, ramp, settings.statics, settings.ancf);
   statics.setLastStep(lastStep);
   statics.setUnloaded(unloaded(model, dmesh, assembler));

@@ -10,6 +10,9 @@ namespace {
 
 using Kind = QuantityDef::Kind;
 
+/// Fraction of its scale below which a quantity of the coarsest level is not watched.
+constexpr double kSignificant = 1e-6;
+
 /// The last row of a step-indexed dataset, as a flat array of its values ([] when missing or empty).
 std::vector<double> lastRow(const RunResults& r, const std::string& name) {
   const ResultArray* a = r.find(name);
@@ -68,8 +71,22 @@ double largestOverNodes(const RunResults& r, Kind kind) {
   return best;
 }
 
-bool isZero(const std::vector<double>& v) {
-  return v.empty() || std::all_of(v.begin(), v.end(), [](double x) { return x == 0 || !std::isfinite(x); });
+/// Diagonal of the scene nodes' bounding box (1 for a single point).
+double modelSize(const RunResults& r) {
+  const ResultArray* p0 = r.find("node/p0");
+  if (!p0 || p0->values.size() < 3) return 1.0;
+  Vec3 lo{p0->values[0], p0->values[1], p0->values[2]}, hi = lo;
+  for (std::size_t i = 0; i + 2 < p0->values.size(); i += 3)
+    for (std::size_t k = 0; k < 3; ++k) lo[k] = std::min(lo[k], p0->values[i + k]), hi[k] = std::max(hi[k], p0->values[i + k]);
+  const double d = std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) + (hi[2] - lo[2]) * (hi[2] - lo[2]));
+  return d > 0 ? d : 1.0;
+}
+
+/// A quantity worth watching: finite and above 1e-6 of its scale on the coarsest level (a node that
+/// does not move, a reaction at round-off are not).
+bool significant(const QuantityDef& q, const RunResults& coarsest) {
+  const std::vector<double> v = readQuantity(q, coarsest);
+  return !v.empty() && std::isfinite(norm(v)) && norm(v) > kSignificant * quantityScale(q, coarsest);
 }
 
 std::string nodeName(long node, const char* field) { return "node " + std::to_string(node + 1) + " " + field; }
@@ -152,9 +169,11 @@ double quantityScale(const QuantityDef& q, const RunResults& r) {
       break;
     }
     case Kind::Displacement:
-    case Kind::Rotation:
-    case Kind::Force:
-    case Kind::Moment: s = largestOverNodes(r, q.kind); break;
+    case Kind::Rotation: s = largestOverNodes(r, q.kind); break;
+    // reactions relative to the loads the supports carry: the larger of the force and the moment
+    // over the model size (a reaction that is zero in theory stays at round-off against that)
+    case Kind::Force: s = std::max(largestOverNodes(r, Kind::Force), largestOverNodes(r, Kind::Moment) / modelSize(r)); break;
+    case Kind::Moment: s = std::max(largestOverNodes(r, Kind::Moment), largestOverNodes(r, Kind::Force) * modelSize(r)); break;
   }
   return s > 0 ? s : 1.0;
 }
@@ -212,15 +231,15 @@ std::vector<QuantityDef> selectQuantities(const Model& model, const RunResults& 
     if (compliance)
       for (const QuantityDef& q : nodeQuantities(n, "CMglob")) qs.push_back(q);
     for (const QuantityDef& q : qs)
-      if (!isZero(readQuantity(q, coarsest))) out.push_back(q);
+      if (significant(q, coarsest)) out.push_back(q);
   }
   for (const auto& [node, props] : model.nprops) {
     if (!supported(props)) continue;
     for (const char* field : {"Freac", "Mreac"})
       for (const QuantityDef& q : nodeQuantities(node, field))
-        if (!isZero(readQuantity(q, coarsest))) out.push_back(q);
+        if (significant(q, coarsest)) out.push_back(q);
   }
-  if (coarsest.find("stressmax") && !isZero(lastRow(coarsest, "stressmax"))) out.push_back({Kind::StressMax, "stressmax", -1, 0});
+  if (const QuantityDef stress{Kind::StressMax, "stressmax", -1, 0}; significant(stress, coarsest)) out.push_back(stress);
   addColumns(out, coarsest, "freq", Kind::Frequency);
   addColumns(out, coarsest, "buck", Kind::Buckling);
   return out;

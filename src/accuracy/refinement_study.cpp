@@ -10,6 +10,8 @@ namespace {
 
 /// Levels at most: nbeams x 2^15 is beyond any -accuracy_max_unknowns a model reaches first.
 constexpr int kMaxLevels = 16;
+/// The exit code of a run whose analysis did not converge (sinew/simulation.hpp).
+constexpr int kAnalysisFailed = 3;
 
 std::string sci(double v) {
   char b[32];
@@ -100,9 +102,10 @@ StudyResult runRefinementStudy(const Model& base, const StudyOptions& options, c
   s.target = target;
   bool mayBeLast = false;  // the next level's predicted estimate meets the target
   bool failed = false;
+  int first = 0;  // the coarsest level of the sequence
   LevelRun last;
   for (int level = 0; level < kMaxLevels; ++level) {
-    if (level > 0) {  // unknowns grow linearly with the elements: U(L+1) - U(L) = 2 (U(L) - U(L-1))
+    if (level > first) {  // unknowns grow linearly with the elements: U(L+1) - U(L) = 2 (U(L) - U(L-1))
       const std::size_t n = s.levels.size();
       const long next = n == 1 ? 2 * s.levels[0].unknowns : 3 * s.levels[n - 1].unknowns - 2 * s.levels[n - 2].unknowns;
       if (next > maxUnknowns) {
@@ -114,6 +117,16 @@ StudyResult runRefinementStudy(const Model& base, const StudyOptions& options, c
     const bool toFile = mayBeLast;
     LevelRun r = run(refinedModel(base, level), level, toFile, datasetsUsed(s.quantities));
     s.totalSeconds += r.seconds;
+    // a coarse level whose analysis does not converge (one element cannot roll up a cantilever) is
+    // dropped while there is no estimate yet: the sequence starts again from the next level
+    if (r.exitCode == kAnalysisFailed && s.levels.size() < 2) {
+      print("  accuracy level " + std::to_string(level) + ": nbeams x" + std::to_string(1L << level) +
+            ", the analysis did not converge; the levels start again from level " + std::to_string(level + 1));
+      s.levels.clear();
+      s.quantities.clear();
+      first = level + 1;
+      continue;
+    }
     if (r.exitCode != 0) {
       s.stopReason = "level " + std::to_string(level) + " (nbeams x" + std::to_string(1L << level) + ") failed (exit " +
                      std::to_string(r.exitCode) + ")";
@@ -121,7 +134,7 @@ StudyResult runRefinementStudy(const Model& base, const StudyOptions& options, c
       failed = true;
       break;
     }
-    if (level == 0) s.quantities = selectQuantities(base, r.results, base.opt.accuracy_quantities);
+    if (level == first) s.quantities = selectQuantities(base, r.results, base.opt.accuracy_quantities);
     LevelRecord rec;
     rec.level = level;
     rec.factor = 1L << level;
@@ -129,7 +142,7 @@ StudyResult runRefinementStudy(const Model& base, const StudyOptions& options, c
     rec.seconds = r.seconds;
     rec.toFile = toFile;
     for (const QuantityDef& q : s.quantities) rec.values.push_back(readQuantity(q, r.results));
-    if (level >= 2) estimate(rec, s.levels[s.levels.size() - 2], s.levels.back(), s.quantities, r.results, options);
+    if (s.levels.size() >= 2) estimate(rec, s.levels[s.levels.size() - 2], s.levels.back(), s.quantities, r.results, options);
     print(levelLine(rec, s.quantities));
     s.levels.push_back(std::move(rec));
     last = std::move(r);
@@ -138,12 +151,12 @@ StudyResult runRefinementStudy(const Model& base, const StudyOptions& options, c
       s.stopReason = "no result quantity to estimate (nothing loaded moves, no frequencies, buckling or stress asked for)";
       break;
     }
-    if (level >= 2 && !now.erratic && now.worst <= target) {
+    if (now.worst >= 0 && !now.erratic && now.worst <= target) {
       s.met = true;
       s.stopReason = "target met";
       break;
     }
-    mayBeLast = level >= 2 && !now.erratic && predictedNext(now) <= target;
+    mayBeLast = now.worst >= 0 && !now.erratic && predictedNext(now) <= target;
   }
   if (s.levels.empty() || failed) return s;
   if (s.stopReason.empty()) s.stopReason = "the last level (" + std::to_string(kMaxLevels - 1) + ") was reached";

@@ -1,7 +1,7 @@
 // Accuracy on demand (opt.target_error, docs/accuracy.md): the scene solved on levels of refinement,
 // level L with every line element set's nbeams times 2^L (beams, 3D cables, ANCF cables), until the
-// Richardson estimate (accuracy/richardson.hpp) of every watched quantity is trusted and at most the
-// target. The levels run through a LevelRunner (the app's sinew::run): in memory, except a level that
+// Richardson estimate (accuracy/richardson.hpp) of every watched quantity is trusted and, times a
+// safety factor 1.25, at most the target. The levels run through a LevelRunner (the app's sinew::run): in memory, except a level that
 // may be the last (the estimates of the level before, divided by 2^order, meet the target), which
 // writes the run's result file; a reported level that ran in memory is run again into the file.
 #pragma once

@@ -1,6 +1,7 @@
 """-target_error's limits (docs/accuracy.md): a target that needs more than -accuracy_max_unknowns
 stops with the best level reached in the result file, its estimate in /accuracy (met = 0) and
-exit 3; a scene -target_error cannot refine yet (a membrane) is refused with exit 2 before any run;
+exit 3; a scene -target_error cannot refine yet (a membrane) is refused with exit 2 before any run,
+and so is a quantity of opt.accuracy_quantities that names no scene node;
 without target_error there is no /accuracy; scripts/plot_accuracy.py draws the estimates."""
 import os
 import subprocess
@@ -43,4 +44,10 @@ membrane = ("nodes: [[0, 0, 0], [1, 0, 0], [0, 1, 0]]\nelements: [[1, 2, 3]]\n"
             "opt: {target_error: 1e-3}\n")
 path, out = st.run("accuracy_membrane", membrane, expect_exit=2)
 st.check("error: opt.target_error: membranes are not refined" in out, "the refusal names the membranes")
+
+# opt.accuracy_quantities names scene nodes: another number is a scene error with the field's path
+path, out = st.run("accuracy_bad_quantity", ac.cantilever(1, {"target_error": 1e-3, "accuracy_quantities": ["node 7 p"]}),
+                   expect_exit=2)
+st.check("error: opt.accuracy_quantities(1): expected a node number 1..2 after 'node', got 'node 7 p'" in out,
+         "the bad quantity is named with its path")
 st.done()

@@ -186,6 +186,12 @@ struct Options {
   int nbuck = 3;   ///< Sinew: number of buckling multipliers
   OutputSteps output_steps;
   std::optional<StepAnalysisRows> step_analyses;  ///< Sinew: nullopt = the default of each procedure
+  /// Sinew: solve on refinements until every result quantity's estimated relative discretization
+  /// error is at most this (0: off, the scene's mesh as given; docs/accuracy.md)
+  double target_error = 0;
+  /// Sinew: the quantities target_error watches ("freq", "buck", "stressmax", "node 3 p", ...);
+  /// empty: those the scene asks for (docs/accuracy.md)
+  std::vector<std::string> accuracy_quantities;
 };
 
 struct FormFinding {

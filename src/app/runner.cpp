@@ -1,6 +1,7 @@
 #include "app/runner.hpp"
 
 #include "app/command_line.hpp"
+#include "app/phases/run_accuracy.hpp"
 #include "app/scene_run.hpp"
 #include "parallel/collective_error.hpp"
 #include "settings/read_settings.hpp"
@@ -40,6 +41,10 @@ PetscErrorCode runScene(int argc, char** argv, int* exitCode) {
 
 PetscErrorCode runFromCommandLine(int argc, char** argv, int* exitCode) {
   PetscFunctionBeginUser;
+  // opt.target_error: levels of refinement, each a library run with its own error handler
+  bool handled = false;
+  PetscCall(runWithTargetError(argc, argv, &handled, exitCode));
+  if (handled) PetscFunctionReturn(PETSC_SUCCESS);
   // PETSc/SLEPc errors: recorded with the phase, returned on every rank together, reported once
   // (exit 4; exit 3 for a non-finite element force law). 10 s: how long a failing rank waits for the
   // others before it ends the job alone (they wait in a collective it will never join).

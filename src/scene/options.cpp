@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <set>
+#include <sstream>
 
 #include "elements/element_kinds.hpp"
 #include "scene/nearest_name.hpp"
@@ -54,6 +55,12 @@ const std::vector<OptionDoc>& sceneOptionDocs() {
        "written rows at which the step analyses (frequencies, buckling, compliance, state space) run: every row, the last "
        "row of each procedure, a row every k rows (the first and the last too), or none; calcfreq/calcbuck/calccompl/"
        "transfer choose which analyses. Their datasets hold one row per analysed row, /step_analysis_rows says which"},
+      {"target_error", "number in (0, 0.1]", "none",
+       "refine until the estimated relative error is at most this; the discretization error of every watched result "
+       "quantity, estimated by Richardson extrapolation over levels of nbeams x 2 (beams, cables, ANCF cables); the "
+       "finest level's results are written, /accuracy holds the levels and estimates (docs/accuracy.md)"},
+      {"accuracy_quantities", "[freq | buck | stressmax | node <n> p|r|Freac|Mreac|CMglob]", "auto",
+       "quantities -target_error watches; e.g. [freq, node 2 p]; auto: those the scene asks for (docs/accuracy.md)"},
   };
   return docs;
 }
@@ -294,6 +301,33 @@ StepAnalysisRows parseStepAnalyses(const YAML::Node& v, const std::string& p) {
   fail(p, expected + describe(v));
 }
 
+/// opt.accuracy_quantities: "freq", "buck", "stressmax", "node <n> <p|r|Freac|Mreac|CMglob>".
+std::vector<std::string> parseAccuracyQuantities(const YAML::Node& v, const std::string& path, std::size_t numNodes) {
+  if (!v.IsSequence() && !v.IsScalar()) fail(path, "expected a list of quantities ([freq, node 2 p]), got " + describe(v));
+  static const std::vector<std::string> kWhole = {"freq", "buck", "stressmax"};
+  static const std::vector<std::string> kNodeFields = {"p", "r", "Freac", "Mreac", "CMglob"};
+  std::vector<std::string> out;
+  for (std::size_t i = 0; i < (v.IsSequence() ? v.size() : 1); ++i) {
+    const std::string pi = v.IsSequence() ? indexPath(path, i) : path;
+    const std::string q = getString(v.IsSequence() ? v[i] : v, pi);
+    std::istringstream words(q);
+    std::string first, node, field, extra;
+    words >> first >> node >> field >> extra;
+    if (first == "node") {
+      char* end = nullptr;
+      const long n = std::strtol(node.c_str(), &end, 10);
+      if (node.empty() || *end != '\0' || n < 1 || static_cast<std::size_t>(n) > numNodes)
+        fail(pi, "expected a node number 1.." + std::to_string(numNodes) + " after 'node', got '" + q + "'");
+      if (std::find(kNodeFields.begin(), kNodeFields.end(), field) == kNodeFields.end() || !extra.empty())
+        fail(pi, "expected 'node " + node + " <p|r|Freac|Mreac|CMglob>', got '" + q + "'");
+    } else if (std::find(kWhole.begin(), kWhole.end(), q) == kWhole.end()) {
+      fail(pi, "expected freq, buck, stressmax or 'node <n> <p|r|Freac|Mreac|CMglob>', got '" + q + "'");
+    }
+    out.push_back(q);
+  }
+  return out;
+}
+
 }  // namespace
 
 void parseOptions(const YAML::Node& opt, SceneContext& ctx) {
@@ -348,6 +382,10 @@ void parseOptions(const YAML::Node& opt, SceneContext& ctx) {
     else if (k == "nbuck") o.nbuck = getIntAtLeast(v, p, 1);
     else if (k == "output_steps") o.output_steps = parseOutputSteps(v, p);
     else if (k == "step_analyses") o.step_analyses = parseStepAnalyses(v, p);
+    else if (k == "target_error") {
+      o.target_error = getInRange(v, p, 0.0, 0.1);
+      if (o.target_error <= 0) fail(p, "expected a relative error in (0, 0.1], got " + describe(v));
+    } else if (k == "accuracy_quantities") o.accuracy_quantities = parseAccuracyQuantities(v, p, m.nodes.size());
   }
   // path following writes every path point (output_steps does not thin a path)
   // (a restart's list is checked against the restart's plan, once its checkpoint is read)

@@ -115,4 +115,11 @@ const std::vector<Field<FormFindingSettings>>& formFindingFields() {
   return fields;
 }
 
+const std::vector<Field<AccuracySettings>>& accuracyFields() {
+  static const std::vector<Field<AccuracySettings>> fields = {
+      {"accuracy_max_unknowns", integerAtLeast(1), &flag_groups::accuracy, "1000000", "largest level of -target_error, in unknowns; a target that needs a finer level stops at the best level reached with its estimate (exit 3; docs/accuracy.md)", &AccuracySettings::maxUnknowns},
+  };
+  return fields;
+}
+
 }  // namespace sinew

@@ -67,6 +67,7 @@ const std::vector<Field<EigenSettings>>& eigenFields();
 const std::vector<Field<ComplianceSettings>>& complianceFields();
 const std::vector<Field<DynamicsSettings>>& dynamicsFields();
 const std::vector<Field<FormFindingSettings>>& formFindingFields();
+const std::vector<Field<AccuracySettings>>& accuracyFields();
 
 /// Calls f(table, &Settings::component) for every component, in the registry's order.
 template <class F>
@@ -80,6 +81,7 @@ void forEachFieldTable(F&& f) {
   f(complianceFields(), &Settings::compliance);
   f(dynamicsFields(), &Settings::dynamics);
   f(formFindingFields(), &Settings::formfinding);
+  f(accuracyFields(), &Settings::accuracy);
 }
 
 }  // namespace sinew

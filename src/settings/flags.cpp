@@ -24,12 +24,13 @@ const FlagGroup modal{"Frequencies and buckling (SLEPc)", "docs/modal.md"};
 const FlagGroup compliance{"Compliance matrices", "docs/compliance.md"};
 const FlagGroup dynamics{"Dynamics", "docs/dynamics.md"};
 const FlagGroup formfinding{"Form finding", "docs/formfinding.md"};
+const FlagGroup accuracy{"Accuracy on demand (opt.target_error)", "docs/accuracy.md"};
 }  // namespace flag_groups
 
 const std::vector<const FlagGroup*>& flagGroups() {
   using namespace flag_groups;
   static const std::vector<const FlagGroup*> all = {&scene, &output, &statics, &ancf, &check,
-                                                    &modal, &compliance, &dynamics, &formfinding};
+                                                    &modal, &compliance, &dynamics, &formfinding, &accuracy};
   return all;
 }
 

@@ -38,7 +38,7 @@ struct FlagGroup {
 
 /// The -help blocks (flagGroups() gives their order).
 namespace flag_groups {
-extern const FlagGroup output, scene, statics, ancf, check, modal, compliance, dynamics, formfinding;
+extern const FlagGroup output, scene, statics, ancf, check, modal, compliance, dynamics, formfinding, accuracy;
 }  // namespace flag_groups
 
 struct Flag {

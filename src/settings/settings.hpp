@@ -122,6 +122,12 @@ struct FormFindingSettings {
   bool operator==(const FormFindingSettings&) const = default;
 };
 
+/// Accuracy on demand (opt.target_error, docs/accuracy.md).
+struct AccuracySettings {
+  int maxUnknowns = 1000000;  ///< -accuracy_max_unknowns: no level of refinement above this many unknowns
+  bool operator==(const AccuracySettings&) const = default;
+};
+
 /// Every setting of a run.
 struct Settings {
   OutputSettings output;
@@ -133,6 +139,7 @@ struct Settings {
   ComplianceSettings compliance;
   DynamicsSettings dynamics;
   FormFindingSettings formfinding;
+  AccuracySettings accuracy;
   /// Scene opt fields given as flags (-loadsteps 40): field name -> value as given (the scene
   /// reader checks it and overrides the scene's opt block, sceneOverrides()).
   std::map<std::string, std::string> sceneOpt;

@@ -15,7 +15,7 @@ import sinewtest as st
 SRC = os.path.join(st.SOURCE, "src")
 # lowest first; a room may include itself and the rooms before it
 ROOMS = ["sinew", "math", "elements", "scene", "settings", "parallel", "mesh", "assembly", "solvers",
-         "solvers/ancf", "output", "restart", "analysis", "step", "dynamics", "app", "app/phases", "python"]
+         "solvers/ancf", "output", "restart", "analysis", "step", "dynamics", "accuracy", "app", "app/phases", "python"]
 SAME_ROOM = {"app/phases": "app"}  # the phases are part of the app room: they include its plan and summary
 
 

@@ -80,7 +80,7 @@ TEST(Settings, DefaultsAreTheRegistryDefaults) {
       EXPECT_EQ(defaultMismatch(f, defaults.*component), "") << "-" << f.flag;
     }
   });
-  EXPECT_EQ(fields, 55);
+  EXPECT_EQ(fields, 56);
 }
 
 TEST(Settings, RegistryIsTheFieldTablesThenTheSceneOptFields) {

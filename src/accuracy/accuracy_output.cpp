@@ -1,0 +1,186 @@
+#include "accuracy/accuracy_output.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <stdexcept>
+
+#include "output/hdf5_util.hpp"
+
+namespace sinew::accuracy {
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+/// A float64 dataset `name` of `dims` under `group` from row-major `values`.
+void writeDataset(hid_t group, const std::string& name, const std::vector<hsize_t>& dims, const std::vector<double>& values) {
+  const std::string what = "/accuracy/" + name;
+  h5::Handle space = h5::dataspace(dims, what + ": dataspace");
+  h5::Handle d(H5Dcreate2(group, name.c_str(), H5T_IEEE_F64LE, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Dclose,
+               what + ": create");
+  if (!values.empty()) h5::check(H5Dwrite(d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()), what + ": write");
+}
+
+void writeDoubleAttribute(hid_t obj, const std::string& name, double value) {
+  h5::Handle space(H5Screate(H5S_SCALAR), H5Sclose, "attribute " + name + ": dataspace");
+  h5::Handle a(H5Acreate2(obj, name.c_str(), H5T_IEEE_F64LE, space, H5P_DEFAULT, H5P_DEFAULT), H5Aclose,
+               "attribute " + name + ": create");
+  h5::check(H5Awrite(a, H5T_NATIVE_DOUBLE, &value), "attribute " + name + ": write");
+}
+
+int statusCode(const Estimate& e) {
+  switch (e.status) {
+    case EstimateStatus::Converging: return 0;
+    case EstimateStatus::Resolved: return 1;
+    case EstimateStatus::Erratic: return 2;
+  }
+  return 2;
+}
+
+std::string sci(double v) {
+  if (!std::isfinite(v)) return "-";
+  char b[32];
+  std::snprintf(b, sizeof b, "%.2e", v);
+  return b;
+}
+
+std::string number(double v) {
+  if (!std::isfinite(v)) return "-";
+  char b[32];
+  std::snprintf(b, sizeof b, "%.10g", v);
+  return b;
+}
+
+/// A quantity's value as printed: the number, or [a, b, c] for a vector.
+std::string valueText(const std::vector<double>& v) {
+  if (v.empty()) return "-";
+  if (v.size() == 1) return number(v[0]);
+  std::string s = "[";
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    char b[32];
+    std::snprintf(b, sizeof b, "%.6g", v[i]);
+    s += (i ? ", " : "") + std::string(b);
+  }
+  return s + "]";
+}
+
+}  // namespace
+
+RunResults readResultDatasets(const std::string& path, const std::set<std::string>& names) {
+  RunResults r;
+  h5::Handle file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose, path + ": open");
+  for (const std::string& name : names) {
+    htri_t exists = 0;
+    H5E_BEGIN_TRY { exists = H5Lexists(file, name.c_str(), H5P_DEFAULT); }
+    H5E_END_TRY;
+    if (exists <= 0) continue;  // a dataset the level did not write (fewer analyses): the quantity is missing
+    const std::string what = path + ": /" + name;
+    h5::Handle d(H5Dopen2(file, name.c_str(), H5P_DEFAULT), H5Dclose, what + ": open");
+    h5::Handle space(H5Dget_space(d), H5Sclose, what + ": dataspace");
+    const int rank = h5::check(H5Sget_simple_extent_ndims(space), what + ": rank");
+    std::vector<hsize_t> dims(static_cast<std::size_t>(rank));
+    h5::check(H5Sget_simple_extent_dims(space, dims.data(), nullptr), what + ": dims");
+    ResultArray a;
+    for (hsize_t n : dims) a.shape.push_back(static_cast<long>(n));
+    a.values.resize(static_cast<std::size_t>(a.size()));
+    if (!a.values.empty())
+      h5::check(H5Dread(d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, a.values.data()), what + ": read");
+    r.datasets[name] = std::move(a);
+  }
+  h5::Handle attr(H5Aopen(file, "nunknowns", H5P_DEFAULT), H5Aclose, path + ": attribute nunknowns");
+  long long n = 0;
+  h5::check(H5Aread(attr, H5T_NATIVE_LLONG, &n), path + ": attribute nunknowns");
+  r.numbers["nunknowns"] = static_cast<long>(n);
+  return r;
+}
+
+void writeAccuracyGroup(const std::string& path, const StudyResult& study) {
+  h5::Handle file(H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT), H5Fclose, path + ": open for /accuracy");
+  H5E_BEGIN_TRY { H5Ldelete(file, "accuracy", H5P_DEFAULT); }  // a group of an earlier run of the same file
+  H5E_END_TRY;
+  h5::Handle g(H5Gcreate2(file, "accuracy", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose, "/accuracy: create");
+  const std::size_t nl = study.levels.size(), nq = study.quantities.size();
+  std::size_t m = 1;
+  for (const LevelRecord& l : study.levels)
+    for (const auto& v : l.values) m = std::max(m, v.size());
+  std::vector<double> level, factor, unknowns, seconds, worst, limiting, error, order, status, value;
+  for (const LevelRecord& l : study.levels) {
+    level.push_back(l.level);
+    factor.push_back(static_cast<double>(l.factor));
+    unknowns.push_back(static_cast<double>(l.unknowns));
+    seconds.push_back(l.seconds);
+    worst.push_back(l.worst >= 0 ? l.worst : kNaN);
+    limiting.push_back(l.limiting);
+    for (std::size_t q = 0; q < nq; ++q) {
+      const bool has = q < l.estimates.size();
+      error.push_back(has ? l.estimates[q].error : kNaN);
+      order.push_back(has ? l.estimates[q].order : kNaN);
+      status.push_back(has ? statusCode(l.estimates[q]) : -1);
+      for (std::size_t k = 0; k < m; ++k) value.push_back(k < l.values[q].size() ? l.values[q][k] : kNaN);
+    }
+  }
+  std::vector<double> extrapolated(nq * m, kNaN);
+  if (!study.levels.empty())
+    for (std::size_t q = 0; q < nq && q < study.levels.back().estimates.size(); ++q) {
+      const std::vector<double>& x = study.levels.back().estimates[q].extrapolated;
+      for (std::size_t k = 0; k < x.size() && k < m; ++k) extrapolated[q * m + k] = x[k];
+    }
+  const hsize_t L = nl, Q = nq, M = m;
+  writeDataset(g, "level", {L}, level);
+  writeDataset(g, "nbeams_factor", {L}, factor);
+  writeDataset(g, "unknowns", {L}, unknowns);
+  writeDataset(g, "wall_time", {L}, seconds);
+  writeDataset(g, "worst_error", {L}, worst);
+  writeDataset(g, "limiting", {L}, limiting);
+  writeDataset(g, "error", {L, Q}, error);
+  writeDataset(g, "order", {L, Q}, order);
+  writeDataset(g, "status", {L, Q}, status);
+  writeDataset(g, "value", {L, Q, M}, value);
+  writeDataset(g, "extrapolated", {Q, M}, extrapolated);
+  std::string names;
+  for (const QuantityDef& q : study.quantities) names += q.name + "\n";
+  h5::writeAttribute(g, "quantities", names);
+  writeDoubleAttribute(g, "target", study.target);
+  h5::writeAttribute(g, "met", study.met ? 1 : 0);
+  h5::writeAttribute(g, "level", nl ? study.levels.back().level : -1);
+  h5::writeAttribute(g, "stop_reason", study.stopReason);
+}
+
+std::string accuracyTable(const StudyResult& study) {
+  std::string s = "accuracy (-target_error " + sci(study.target) + ", relative): ";
+  if (study.levels.empty()) return s + study.stopReason + "\n";
+  const LevelRecord& last = study.levels.back();
+  s += study.met ? "met at level " + std::to_string(last.level) + " (nbeams x" + std::to_string(last.factor) + ")"
+                 : "not met; " + study.stopReason;
+  char b[256];
+  std::snprintf(b, sizeof b, "; %.3g s for all levels\n  %5s %10s %10s %15s  %s\n", study.totalSeconds, "level",
+                "unknowns", "time [s]", "worst estimate", "limiting quantity");
+  s += b;
+  for (const LevelRecord& l : study.levels) {
+    std::string limit = "-";
+    if (l.limiting >= 0) {
+      const Estimate& e = l.estimates[static_cast<std::size_t>(l.limiting)];
+      char o[64];
+      std::snprintf(o, sizeof o, " (%s, order %.2f)", statusName(e.status), e.order);
+      limit = study.quantities[static_cast<std::size_t>(l.limiting)].name + o;
+    }
+    std::snprintf(b, sizeof b, "  %5d %10ld %10.3g %15s  %s\n", l.level, l.unknowns, l.seconds,
+                  l.worst >= 0 ? sci(l.worst).c_str() : "-", limit.c_str());
+    s += b;
+  }
+  s += "  quantity: value at level " + std::to_string(last.level) + ", estimated relative error, observed order, status"
+       ", extrapolated value\n";
+  for (std::size_t q = 0; q < study.quantities.size(); ++q) {
+    const bool has = q < last.estimates.size();
+    const Estimate* e = has ? &last.estimates[q] : nullptr;
+    char o[32] = "-";
+    if (e && std::isfinite(e->order)) std::snprintf(o, sizeof o, "%.2f", e->order);
+    s += "    " + study.quantities[q].name + ": " + valueText(last.values[q]) + ", " + (e ? sci(e->error) : "-") + ", " +
+         o + ", " + (e ? statusName(e->status) : "-") + ", " + (e ? valueText(e->extrapolated) : "-") + "\n";
+  }
+  return s;
+}
+
+}  // namespace sinew::accuracy

@@ -1,0 +1,180 @@
+#include "accuracy/refinement_study.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+namespace sinew::accuracy {
+
+namespace {
+
+/// Levels at most: nbeams x 2^15 is beyond any -accuracy_max_unknowns a model reaches first.
+constexpr int kMaxLevels = 16;
+/// A level meets the target when safety x its worst estimate does (the factor of Roache's grid
+/// convergence index for three levels): Richardson's estimate leaves out the higher-order terms,
+/// measured 0.4 % of the error in the roll-up at 1e-4 (docs/accuracy.md).
+constexpr double kSafety = 1.25;
+/// The exit code of a run whose analysis did not converge (sinew/simulation.hpp).
+constexpr int kAnalysisFailed = 3;
+
+std::string sci(double v) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.2e", v);
+  return b;
+}
+
+/// The estimates of level `fine` from the two levels before it; worst and limiting quantity.
+void estimate(LevelRecord& fine, const LevelRecord& coarse, const LevelRecord& middle, const std::vector<QuantityDef>& qs,
+              const RunResults& fineResults, const StudyOptions& options) {
+  fine.worst = 0;
+  double worstTrusted = -1, worstErratic = -1;
+  for (std::size_t i = 0; i < qs.size(); ++i) {
+    const std::vector<double>& q0 = coarse.values[i];
+    const std::vector<double>& q1 = middle.values[i];
+    const std::vector<double>& q2 = fine.values[i];
+    Estimate e;
+    if (q0.empty() || q0.size() != q1.size() || q1.size() != q2.size()) {  // missing on a level (fewer modes found)
+      e.order = e.error = std::numeric_limits<double>::quiet_NaN();
+    } else {
+      e = richardson(q0, q1, q2, quantityScale(qs[i], fineResults), theoreticalOrder(qs[i], options.lumpedMass),
+                     options.target);
+    }
+    const double err = std::isfinite(e.error) ? e.error : std::numeric_limits<double>::infinity();
+    fine.worst = std::max(fine.worst, err);
+    if (!e.trusted()) {
+      fine.erratic = true;
+      if (err > worstErratic) worstErratic = err, fine.limiting = static_cast<int>(i);
+    } else if (!fine.erratic && err > worstTrusted) {
+      worstTrusted = err, fine.limiting = static_cast<int>(i);
+    }
+    fine.estimates.push_back(std::move(e));
+  }
+}
+
+/// The worst estimate one more level would have if every quantity kept its observed order.
+double predictedNext(const LevelRecord& r) {
+  double worst = 0;
+  for (const Estimate& e : r.estimates)
+    worst = std::max(worst, e.status == EstimateStatus::Converging ? e.error / std::pow(2.0, e.order) : e.error);
+  return worst;
+}
+
+std::string levelLine(const LevelRecord& r, const std::vector<QuantityDef>& qs) {
+  std::string s = "  accuracy level " + std::to_string(r.level) + ": nbeams x" + std::to_string(r.factor) + ", " +
+                  std::to_string(r.unknowns) + " unknowns, ";
+  char t[32];
+  std::snprintf(t, sizeof t, "%.3g s", r.seconds);
+  s += t;
+  if (r.worst < 0) return s + (qs.empty() ? "" : " (an estimate needs 3 levels)");
+  if (r.limiting < 0) return s + ", nothing to estimate";
+  const Estimate& e = r.estimates[static_cast<std::size_t>(r.limiting)];
+  const std::string& name = qs[static_cast<std::size_t>(r.limiting)].name;
+  char o[32];
+  std::snprintf(o, sizeof o, "%.2f", e.order);
+  s += ", worst estimate " + sci(r.worst) + " (" + name;
+  if (r.erratic) return s + ": observed order " + (std::isfinite(e.order) ? std::string(o) : "undefined") +
+                        " erratic, refining further)";
+  return s + (e.status == EstimateStatus::Resolved ? ", resolved)" : ", order " + std::string(o) + ")");
+}
+
+long numberOr(const RunResults& r, const char* name, long fallback) {
+  const auto it = r.numbers.find(name);
+  return it == r.numbers.end() ? fallback : it->second;
+}
+
+}  // namespace
+
+Model refinedModel(const Model& base, int level) {
+  Model m = base;
+  m.opt.target_error = 0;
+  m.opt.accuracy_quantities.clear();
+  std::vector<char> line(m.eprops.size(), 0);  // sets of 2-node elements: nbeams splits them
+  for (std::size_t e = 0; e < m.elements.size(); ++e) {
+    const int set = m.elementSet[e];
+    if (set >= 0 && m.elements[e].size() == 2) line[static_cast<std::size_t>(set)] = 1;
+  }
+  for (std::size_t s = 0; s < m.eprops.size(); ++s)
+    if (line[s]) m.eprops[s].nbeams <<= level;
+  return m;
+}
+
+StudyResult runRefinementStudy(const Model& base, const StudyOptions& options, const LevelRunner& run,
+                               const std::function<void(const std::string&)>& print) {
+  const double target = options.target;
+  const long maxUnknowns = options.maxUnknowns;
+  StudyResult s;
+  s.target = target;
+  bool mayBeLast = false;  // the next level's predicted estimate meets the target
+  bool failed = false;
+  int first = 0;  // the coarsest level of the sequence
+  LevelRun last;
+  for (int level = 0; level < kMaxLevels; ++level) {
+    if (level > first) {  // unknowns grow linearly with the elements: U(L+1) - U(L) = 2 (U(L) - U(L-1))
+      const std::size_t n = s.levels.size();
+      const long next = n == 1 ? 2 * s.levels[0].unknowns : 3 * s.levels[n - 1].unknowns - 2 * s.levels[n - 2].unknowns;
+      if (next > maxUnknowns) {
+        s.stopReason = "level " + std::to_string(level) + " (nbeams x" + std::to_string(1L << level) + ") would have about " +
+                       std::to_string(next) + " unknowns, more than -accuracy_max_unknowns " + std::to_string(maxUnknowns);
+        break;
+      }
+    }
+    const bool toFile = mayBeLast;
+    LevelRun r = run(refinedModel(base, level), level, toFile, datasetsUsed(s.quantities));
+    s.totalSeconds += r.seconds;
+    // a coarse level whose analysis does not converge (one element cannot roll up a cantilever) is
+    // dropped while there is no estimate yet: the sequence starts again from the next level
+    if (r.exitCode == kAnalysisFailed && s.levels.size() < 2) {
+      print("  accuracy level " + std::to_string(level) + ": nbeams x" + std::to_string(1L << level) +
+            ", the analysis did not converge; the levels start again from level " + std::to_string(level + 1));
+      s.levels.clear();
+      s.quantities.clear();
+      first = level + 1;
+      continue;
+    }
+    if (r.exitCode != 0) {
+      s.stopReason = "level " + std::to_string(level) + " (nbeams x" + std::to_string(1L << level) + ") failed (exit " +
+                     std::to_string(r.exitCode) + ")";
+      s.finalRun = std::move(r);
+      failed = true;
+      break;
+    }
+    if (level == first) s.quantities = selectQuantities(base, r.results, base.opt.accuracy_quantities);
+    LevelRecord rec;
+    rec.level = level;
+    rec.factor = 1L << level;
+    rec.unknowns = numberOr(r.results, "nunknowns", r.unknowns);
+    rec.seconds = r.seconds;
+    rec.toFile = toFile;
+    for (const QuantityDef& q : s.quantities) rec.values.push_back(readQuantity(q, r.results));
+    if (s.levels.size() >= 2) estimate(rec, s.levels[s.levels.size() - 2], s.levels.back(), s.quantities, r.results, options);
+    print(levelLine(rec, s.quantities));
+    s.levels.push_back(std::move(rec));
+    last = std::move(r);
+    const LevelRecord& now = s.levels.back();
+    if (s.quantities.empty()) {
+      s.stopReason = "no result quantity to estimate (nothing loaded moves, no frequencies, buckling or stress asked for)";
+      break;
+    }
+    if (now.worst >= 0 && !now.erratic && kSafety * now.worst <= target) {
+      s.met = true;
+      s.stopReason = "target met";
+      break;
+    }
+    mayBeLast = now.worst >= 0 && !now.erratic && kSafety * predictedNext(now) <= target;
+  }
+  if (s.levels.empty() || failed) return s;
+  if (s.stopReason.empty()) s.stopReason = "the last level (" + std::to_string(kMaxLevels - 1) + ") was reached";
+  if (s.levels.back().toFile) {
+    s.finalRun = std::move(last);
+  } else {  // the reported level ran in memory: once more, into the result file
+    LevelRecord& rec = s.levels.back();
+    s.finalRun = run(refinedModel(base, rec.level), rec.level, true, datasetsUsed(s.quantities));
+    s.totalSeconds += s.finalRun.seconds;
+    char t[32];
+    std::snprintf(t, sizeof t, "%.3g s", s.finalRun.seconds);
+    print("  accuracy level " + std::to_string(rec.level) + " again, into the result file (" + t + ")");
+  }
+  return s;
+}
+
+}  // namespace sinew::accuracy

@@ -1,0 +1,70 @@
+// Accuracy on demand (opt.target_error, docs/accuracy.md): the scene solved on levels of refinement,
+// level L with every line element set's nbeams times 2^L (beams, 3D cables, ANCF cables), until the
+// Richardson estimate (accuracy/richardson.hpp) of every watched quantity is trusted and, times a
+// safety factor 1.25, at most the target. The levels run through a LevelRunner (the app's sinew::run): in memory, except a level that
+// may be the last (the estimates of the level before, divided by 2^order, meet the target), which
+// writes the run's result file; a reported level that ran in memory is run again into the file.
+#pragma once
+#include <functional>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "accuracy/quantities.hpp"
+#include "accuracy/richardson.hpp"
+#include "sinew/model.hpp"
+#include "sinew/result_store.hpp"
+
+namespace sinew::accuracy {
+
+/// One level's run, as the runner returns it.
+struct LevelRun {
+  int exitCode = 0;
+  std::string message;  ///< Sinew's error lines when exitCode != 0
+  std::string output;   ///< what the run printed (header, progress, summary)
+  RunResults results;   ///< the datasets the quantities read (also for a run to the file)
+  long unknowns = 0;
+  double seconds = 0;   ///< wall time of the level's run
+};
+/// Runs `model` (level `level`); toFile: into the run's result file, else in memory. `datasets`: what
+/// the quantities read, which a run to the file reads back from it.
+using LevelRunner =
+    std::function<LevelRun(const Model& model, int level, bool toFile, const std::set<std::string>& datasets)>;
+
+struct LevelRecord {
+  int level = 0;
+  long factor = 1;     ///< nbeams multiplier 2^level
+  long unknowns = 0;
+  double seconds = 0;
+  bool toFile = false;
+  std::vector<std::vector<double>> values;  ///< per quantity
+  std::vector<Estimate> estimates;          ///< per quantity, from this level and the two before (level >= 2)
+  double worst = -1;                        ///< largest estimated error (-1: no estimate yet)
+  int limiting = -1;                        ///< quantity of the worst estimate (an erratic one first)
+  bool erratic = false;                     ///< some quantity's observed order is not trusted
+};
+
+struct StudyResult {
+  double target = 0;
+  std::vector<QuantityDef> quantities;
+  std::vector<LevelRecord> levels;
+  bool met = false;         ///< the reported (last) level's estimates are trusted and within the target
+  std::string stopReason;   ///< why the levels ended ("target met", "next level ... unknowns > ...", a failure)
+  LevelRun finalRun;        ///< the reported level's run to the result file (its output and exit code)
+  double totalSeconds = 0;  ///< every level's run, the repeated one included
+};
+
+/// The model of level `level`: nbeams x 2^level for the sets of 2-node elements, target_error off.
+Model refinedModel(const Model& base, int level);
+
+struct StudyOptions {
+  double target = 0;        ///< opt.target_error
+  long maxUnknowns = 0;     ///< -accuracy_max_unknowns
+  bool lumpedMass = false;  ///< -beam_mass lumped (frequencies converge as h^2)
+};
+
+/// Runs the levels. print: one progress line per level (rank 0's text, printed by the caller).
+StudyResult runRefinementStudy(const Model& base, const StudyOptions& options, const LevelRunner& run,
+                               const std::function<void(const std::string&)>& print);
+
+}  // namespace sinew::accuracy

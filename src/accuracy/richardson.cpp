@@ -1,0 +1,49 @@
+#include "accuracy/richardson.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace sinew::accuracy {
+
+const char* statusName(EstimateStatus s) {
+  switch (s) {
+    case EstimateStatus::Converging: return "converging";
+    case EstimateStatus::Resolved: return "resolved";
+    case EstimateStatus::Erratic: return "erratic";
+  }
+  return "erratic";
+}
+
+namespace {
+
+double distance(const std::vector<double>& a, const std::vector<double>& b) {
+  double s = 0;
+  for (std::size_t i = 0; i < a.size() && i < b.size(); ++i) s += (a[i] - b[i]) * (a[i] - b[i]);
+  return std::sqrt(s);
+}
+
+}  // namespace
+
+Estimate richardson(const std::vector<double>& q0, const std::vector<double>& q1, const std::vector<double>& q2,
+                    double scale, double theoreticalOrder, double target) {
+  Estimate e;
+  const double d1 = distance(q1, q0), d2 = distance(q2, q1);
+  e.order = (d1 > 0 && d2 > 0) ? std::log2(d1 / d2) : std::numeric_limits<double>::quiet_NaN();
+  const bool sane = std::isfinite(e.order) && e.order >= theoreticalOrder - kOrderBelow &&
+                    e.order <= theoreticalOrder + kOrderAbove;
+  if (sane) {
+    const double f = 1.0 / (std::pow(2.0, e.order) - 1.0);  // q* - q2 = f (q2 - q1)
+    e.status = EstimateStatus::Converging;
+    e.error = f * d2 / scale;
+    e.extrapolated = q2;
+    for (std::size_t i = 0; i < q2.size() && i < q1.size(); ++i) e.extrapolated[i] += f * (q2[i] - q1[i]);
+    return e;
+  }
+  const double largest = std::max(d1, d2);
+  e.status = largest <= kResolvedFraction * target * scale ? EstimateStatus::Resolved : EstimateStatus::Erratic;
+  e.error = (e.status == EstimateStatus::Resolved ? largest : d2) / scale;
+  return e;
+}
+
+}  // namespace sinew::accuracy

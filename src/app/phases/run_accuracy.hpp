@@ -1,0 +1,17 @@
+// -target_error on the command line: the scene solved on levels of refinement through the library
+// entry (sinew::run), in memory, the reported level into the result file, then /accuracy and the
+// accuracy table (src/accuracy/refinement_study.hpp, docs/accuracy.md).
+#pragma once
+#include <petscsys.h>
+
+namespace sinew {
+
+/// Runs `sinew scene.yaml` with opt.target_error (from the scene or -target_error); *handled =
+/// false when the scene does not ask for it (the caller runs it as usual). exitCode: 0 when the
+/// target was met and the reported level converged; 3 when the target was not reached within
+/// -accuracy_max_unknowns (the file holds the best level); 2 for a scene error or a scene whose
+/// refinement -target_error cannot do yet; else the failing level's exit code. Collective. Installs
+/// no error handler of its own: every level is a library run with its own.
+PetscErrorCode runWithTargetError(int argc, char** argv, bool* handled, int* exitCode);
+
+}  // namespace sinew

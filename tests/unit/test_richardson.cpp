@@ -1,0 +1,48 @@
+// The Richardson estimate of -target_error (src/accuracy/richardson.hpp) on sequences with a known
+// error: q(h) = q* + C h^p.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "accuracy/richardson.hpp"
+
+using sinew::accuracy::EstimateStatus;
+using sinew::accuracy::richardson;
+
+namespace {
+
+std::vector<double> level(double exact, double c, double p, int l) { return {exact + c * std::pow(0.5, p * l)}; }
+
+}  // namespace
+
+TEST(Richardson, AsymptoticSequenceGivesTheTrueErrorAndTheLimit) {
+  // q = 2 + 0.1 h^4, h = 1, 1/2, 1/4: the estimate of the finest is its true error, q* the limit
+  const auto q0 = level(2, 0.1, 4, 0), q1 = level(2, 0.1, 4, 1), q2 = level(2, 0.1, 4, 2);
+  const auto e = richardson(q0, q1, q2, 2.0, 4.0, 1e-3);
+  EXPECT_EQ(e.status, EstimateStatus::Converging);
+  EXPECT_NEAR(e.order, 4.0, 1e-12);
+  EXPECT_NEAR(e.error, (q2[0] - 2) / 2, 1e-15);
+  ASSERT_EQ(e.extrapolated.size(), 1u);
+  EXPECT_NEAR(e.extrapolated[0], 2.0, 1e-14);
+}
+
+TEST(Richardson, OrderFarFromTheElementsIsErratic) {
+  // h^2 convergence where the element promises h^4 (below 4 - 0.6), and a change that grows
+  auto e = richardson(level(1, 1, 2, 0), level(1, 1, 2, 1), level(1, 1, 2, 2), 1.0, 4.0, 1e-3);
+  EXPECT_EQ(e.status, EstimateStatus::Erratic);
+  EXPECT_NEAR(e.order, 2.0, 1e-12);
+  EXPECT_TRUE(e.extrapolated.empty());
+  e = richardson({1.0}, {1.1}, {1.5}, 1.0, 2.0, 1e-3);
+  EXPECT_EQ(e.status, EstimateStatus::Erratic);
+  EXPECT_NEAR(e.error, 0.4, 1e-14);
+}
+
+TEST(Richardson, ChangesFarBelowTheTargetAreResolved) {
+  // round-off changes of a mesh-independent quantity: no order, resolved, estimate the larger change
+  const auto e = richardson({1.0, 0.0}, {1.0 + 3e-12, 0.0}, {1.0 - 1e-12, 0.0}, 1.0, 2.0, 1e-5);
+  EXPECT_EQ(e.status, EstimateStatus::Resolved);
+  EXPECT_NEAR(e.error, 4e-12, 1e-15);  // 1 + 3e-12 is not exact in binary
+  const auto same = richardson({3.0}, {3.0}, {3.0}, 3.0, 2.0, 1e-5);
+  EXPECT_EQ(same.status, EstimateStatus::Resolved);
+  EXPECT_EQ(same.error, 0.0);
+}

@@ -1,3 +1,4 @@
+# ctest-labels: smoke
 """-target_error on a cantilever's bending frequencies (docs/accuracy.md), from nbeams 1, 2 ranks,
 the target as the scene key opt.target_error: for 1e-3 and 1e-5 the reported level's true error
 (against Euler-Bernoulli, reference B3) is within the target and the estimate within a factor 3 of

@@ -108,6 +108,7 @@ void SceneRun::readModel() {
   if (scene_.model) {
     model_ = std::move(*scene_.model);
     scene_.model.reset();
+    checkBuiltModel(model_);
   } else if (!scene_.path.empty()) {
     model_ = readScene(scene_.path, sceneOverrides(settings_), restart);
   } else {

@@ -225,6 +225,8 @@ void checkZeroModulusMembranes(const Model& m) {
   }
 }
 
+void checkElementGeometry(SceneContext& ctx);
+
 /// Element rows: node numbers in range, no node twice, no two nodes at the same place.
 void checkElementNodes(const std::vector<std::vector<YAML::Node>>& rows, SceneContext& ctx) {
   Model& m = ctx.model;
@@ -238,6 +240,12 @@ void checkElementNodes(const std::vector<std::vector<YAML::Node>>& rows, SceneCo
     }
     m.elements[i] = std::move(el);
   }
+  checkElementGeometry(ctx);
+}
+
+/// Element rows with node numbers in range: no node twice, no zero or tiny length.
+void checkElementGeometry(SceneContext& ctx) {
+  Model& m = ctx.model;
   Vec3 lo = m.nodes[0], hi = m.nodes[0];
   for (const auto& x : m.nodes)
     for (std::size_t k = 0; k < 3; ++k) {
@@ -578,8 +586,71 @@ Model parseSceneImpl(const std::string& text, const std::string& baseDir, const 
   return m;
 }
 
+/// 0-based index `i` of a model built in code in 0..count-1, else a SceneError at `path` naming the
+/// 1-based number and the range.
+void checkIndex(long i, std::size_t count, const std::string& path, const std::string& what) {
+  if (i < 0 || static_cast<std::size_t>(i) >= count)
+    fail(path, "expected a " + what + " number 1.." + std::to_string(count) + " (0-based " + std::to_string(i) +
+                   " in the Model built in code), got " + std::to_string(i + 1));
+}
+
+void checkBuiltModelImpl(Model& m) {
+  if (m.nodes.empty()) fail("nodes", "the model has no nodes");
+  if (m.elements.empty()) fail("elements", "the model has no elements");
+  for (std::size_t i = 0; i < m.nodes.size(); ++i)
+    for (double c : m.nodes[i]) checkMagnitude(c, indexPath("nodes", i), kCoordinate);
+  for (std::size_t e = 0; e < m.elements.size(); ++e) {
+    const auto& el = m.elements[e];
+    if (el.size() < 2 || el.size() > 4)
+      fail(indexPath("elements", e), "expected 2 node numbers (beam, cable) or 3 to 4 (membrane) for element " +
+                                         std::to_string(e + 1) + ", got " + std::to_string(el.size()));
+    for (std::size_t j = 0; j < el.size(); ++j) checkIndex(el[j], m.nodes.size(), indexPath(indexPath("elements", e), j), "node");
+  }
+  // each element's set (derived from the sets' elems when not given; -1: a rigid element)
+  std::vector<int> sets(m.elements.size(), -1);
+  for (std::size_t i = 0; i < m.eprops.size(); ++i)
+    for (std::size_t j = 0; j < m.eprops[i].elems.size(); ++j) {
+      const int e = m.eprops[i].elems[j];
+      const std::string path = indexPath(childPath(indexPath("eprops", i), "elems"), j);
+      checkIndex(e, m.elements.size(), path, "element");
+      if (sets[static_cast<std::size_t>(e)] >= 0)
+        fail(path, "element " + std::to_string(e + 1) + " is already in eprops(" + std::to_string(sets[static_cast<std::size_t>(e)] + 1) + ")");
+      sets[static_cast<std::size_t>(e)] = static_cast<int>(i);
+    }
+  if (m.elementSet.empty()) m.elementSet = sets;
+  if (m.elementSet != sets)
+    fail("elementSet", "the Model's elementSet does not match the eprops sets' elems (leave it empty to derive it)");
+  for (const auto& [node, np] : m.nprops) checkIndex(node, m.nodes.size(), indexPath("nprops", static_cast<std::size_t>(std::max(node, 0))), "node");
+  for (const auto& [e, modes] : m.opt.rls) checkIndex(e, m.elements.size(), "opt.rls", "element");
+  for (std::size_t i = 0; i < m.opt.compliance_nodes.size(); ++i)
+    checkIndex(m.opt.compliance_nodes[i], m.nodes.size(), indexPath("opt.compliance_nodes", i), "node");
+  if (m.opt.continuation && m.opt.continuation->node >= 0)
+    checkIndex(m.opt.continuation->node, m.nodes.size(), "opt.continuation.node", "node");
+  for (std::size_t i = 0; i < m.sensors.size(); ++i) {
+    const Sensor& s = m.sensors[i];
+    if (s.node >= 0) checkIndex(s.node, m.nodes.size(), childPath(indexPath("sensors", i), "node"), "node");
+    else checkIndex(s.element, m.elements.size(), childPath(indexPath("sensors", i), "element"), "element");
+  }
+  if (m.formfinding) {
+    for (std::size_t i = 0; i < m.formfinding->formfinding_elements.size(); ++i)
+      checkIndex(m.formfinding->formfinding_elements[i], m.eprops.size(), indexPath("formfinding.formfinding_elements", i), "eprops set");
+    for (std::size_t i = 0; i < m.formfinding->stress_adaption.size(); ++i)
+      checkIndex(m.formfinding->stress_adaption[i], m.eprops.size(), indexPath("formfinding.stress_adaption", i), "eprops set");
+  }
+  SceneContext ctx{m};
+  ctx.sceneNodes = m.nodes.size();
+  ctx.sceneElements = m.elements.size();
+  checkElementGeometry(ctx);
+  checkElementTypes(ctx);
+  checkZeroModulusMembranes(m);
+  checkDynamicsMass(m);
+  checkConnectivity(ctx);  // also the trailing unconnected nodes (m.connectedNodes)
+}
+
 }  // namespace
 }  // namespace scene
+
+void checkBuiltModel(Model& m) { scene::checkBuiltModelImpl(m); }
 
 Model parseScene(const std::string& text, const std::string& baseDir, const OptionOverride& overrides, bool restart) {
   return scene::parseSceneImpl(text, baseDir, overrides, "", restart);

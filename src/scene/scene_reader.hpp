@@ -26,6 +26,13 @@ Model parseScene(const std::string& text, const std::string& baseDir, const Opti
 /// Read a scene file; messages name the file. opt.filename defaults to the file's stem.
 Model readScene(const std::string& path, const OptionOverride& overrides = {}, bool restart = false);
 
+/// A Model built in code (sinew::run's SceneSource::fromModel) gets the reader's checks that work on
+/// the model itself: numbers in range (node, element and set indices of elements, eprops elems,
+/// nprops, opt, sensors, formfinding), element lengths and kinds, trailing nodes (sets
+/// connectedNodes), membranes without modulus, dynamics without mass; elementSet is derived from the
+/// sets' elems when empty. SceneError with SPACAR Light's 1-based numbers in the field paths.
+void checkBuiltModel(Model& m);
+
 /// A list in opt.output_steps holds only steps the run has: load steps 1..lastLoadStep (statics,
 /// also before a time loop with start: static), time steps 0..tend/dt that are multiples of
 /// output_every; else SceneError("opt.output_steps", ...).

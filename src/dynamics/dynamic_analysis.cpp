@@ -497,6 +497,9 @@ PetscErrorCode DynamicAnalysis::motionTangent(double t, Vec q, Vec qd, double sh
   ls.time = t;
   PetscCall(asm_.dynamicJacobian(q, qd, ls, shiftV, shiftA, P));
   PetscCall(damping_.addJacobian(shiftV, P));
+  // the Newton test's round-off floor (roundoffFloor) scales with the Newton matrix, as formJacobian's
+  // (without it the floor was 0 and Newton stalled at the round-off of the residual, 4e-11 on an ANCF cable)
+  PetscCall(MatNorm(P, NORM_INFINITY, &jacobianNorm_));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

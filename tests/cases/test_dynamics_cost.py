@@ -51,9 +51,20 @@ st.check(c0 >= 11 and s0 == c0, "-output_fsync_interval 0: every commit synced")
 st.check(cl >= 11 and sl == 0, "-output_fsync_interval 1e6 on 1 rank: no commit synced")
 st.check(c2 >= 11 and s2 == c2, "2 ranks: every commit synced")
 
-# tsalpha2 failing on a step load at 512 elements: Sinew's message and exit 3, no PETSc trace
+# tsalpha2 on a step load at 512 elements runs (it stalled at the residual's round-off, 4e-11, and
+# ended with exit 3: the Newton test's floor had no Jacobian norm on the TS path) and follows the
+# Arnold-Bruls loop; forced to fail (one Newton iteration per step, no cuts): Sinew's message and
+# exit 3, no PETSc trace
 a3_512 = cantilever(512, force=F, dynamics={"tend": 1e-3, "dt": 1e-4, "spectral_radius": 0.6})
-_, out = st.run("dyncost_tsalpha2", text(a3_512), args=["-dynamics_scheme", "tsalpha2", "-max_cuts", "3"], expect_exit=3)
+h5ts, _ = st.run("dyncost_tsalpha2", text(a3_512), args=["-dynamics_scheme", "tsalpha2", "-max_cuts", "3"])
+h5ab, _ = st.run("dyncost_arnold_bruls", text(a3_512))
+with st.h5(h5ts) as f, st.h5(h5ab) as g:
+    # measured 1.8e-2; against dt = 1e-6 (Arnold-Bruls, -0.0457267 m) tsalpha2's tip y is off by 1.6e-2,
+    # the Arnold-Bruls loop's by 2.2e-3 at this dt = 1e-4 (TSALPHA2 starts from its own accelerations)
+    st.close(tip_displacement(f), tip_displacement(g), rtol=3e-2,
+             what="tsalpha2 tip at t = 1 ms vs the Arnold-Bruls loop (measured 1.8e-2)")
+_, out = st.run("dyncost_tsalpha2_fail", text(a3_512), args=["-dynamics_scheme", "tsalpha2", "-max_cuts", "0", "-snes_max_it", "1"],
+                expect_exit=3)
 st.check("PETSC ERROR" not in out, "tsalpha2 failure: raw PETSc error trace printed")
 st.check("TSALPHA2 stopped" in out and "error:" in out, "tsalpha2 failure: Sinew's message expected")
 

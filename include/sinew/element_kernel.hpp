@@ -47,6 +47,19 @@ struct KernelOutput {
   std::vector<double> D;   ///< [numDofs^2]: damping, only when damping requested and hasDamping()
 };
 
+/// One step q0 -> q1 of the energy-momentum scheme (-dynamics_scheme energy_momentum; docs/dynamics.md,
+/// "Energy-momentum scheme"): the states at the step's start and end (state layout), their node
+/// translations x - X0 (3 per Point3/Frame6 node, for accurate elongations), the multipliers of q1.
+struct StepForceInput {
+  const double* q0 = nullptr;
+  const double* q1 = nullptr;
+  const double* disp0 = nullptr;
+  const double* disp1 = nullptr;
+  const double* lambda = nullptr;
+  double h = 0.0;      ///< the step size (strain-rate damping: stresses beta S (eps1 - eps0) / h)
+  double decay = 0.0;  ///< energy decay xi >= 0: stresses S (eps0 + eps1) / 2 + xi / 2 S (eps1 - eps0)
+};
+
 /// Thrown by ElementKernel::evaluate when a force law gives a value that is not finite (a user
 /// function dividing by zero, sqrt(-1), log(0), exp(1000)). law(): the law ("bendingMomentUserFunction
 /// \"1/0*curvature\""); returned(): "inf", "-inf", "nan" or "a non-finite derivative ..."; where(): its
@@ -150,6 +163,13 @@ class ElementKernel {
   virtual bool setStrainRateDamping(double /*beta*/) { return false; }
   /// True while the kernel damps its strain rates (beta > 0).
   virtual bool strainRateDamped() const { return false; }
+  /// Energy-momentum step force (StepForceInput): true for the kinds that have it. stepForce() writes
+  /// the internal force of the step, whose work on the step's increments (translations x1 - x0, the
+  /// Cayley rotation vectors of R1 R0^T) is the change of the strain energy, with zero resultant force
+  /// and moment about the mid positions (x0 + x1) / 2, and the constraint values at q1; with tangent,
+  /// K = its derivative by q1 (translations, spatial spins of R1) and the multipliers.
+  virtual bool hasStepForce() const { return false; }
+  virtual void stepForce(const StepForceInput& /*in*/, bool /*tangent*/, KernelOutput& /*out*/) const {}
   /// Element force output (cable axial force, membrane resultants n11 n22 n12); empty when none.
   virtual void elementForce(const double* /*q*/, std::vector<double>& out) const { out.clear(); }
 

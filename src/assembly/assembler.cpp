@@ -306,6 +306,25 @@ void Assembler::rotationColumns(const LocalElement& el, int n, double* K) const 
 
 void Assembler::evaluateElement(const LocalElement& el, const KernelInput& in, const KernelNeeds& needs) {
   try {
+    if (stepForces_.h > 0 && el.kernel->hasStepForce()) {  // energy-momentum: the step's force from the kept start
+      std::array<double, 48> q0;
+      std::array<double, 12> disp0{};
+      gatherStates(el, startState_.data(), q0.data());
+      const auto kinds = el.kernel->nodeKinds();
+      for (size_t i = 0; i < kinds.size() && i < 4; ++i)
+        if (kinds[i] != NodeKind::Ancf2D)
+          for (int k = 0; k < 3; ++k) disp0[3 * i + k] = startDisp_[3 * static_cast<size_t>(el.node[i]) + k];
+      StepForceInput s;
+      s.q0 = q0.data();
+      s.q1 = in.q;
+      s.disp0 = disp0.data();
+      s.disp1 = in.disp;
+      s.lambda = in.lambda;
+      s.h = stepForces_.h;
+      s.decay = stepForces_.decay;
+      el.kernel->stepForce(s, needs.tangent, out_);
+      return;
+    }
     el.kernel->evaluate(in, needs, out_);
   } catch (const ElementValueError& ex) {
     if (elementValueError_.empty()) {

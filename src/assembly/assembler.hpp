@@ -114,11 +114,27 @@ class Assembler {
   /// dynamicResidual is the momentum change ((J_s w)_{n+1} - (J_s w)_n) / h, R_n = the reference
   /// rotations, R_{n+1} = exp(theta(u1)) R_n (elements/rotary_momentum.hpp), and dynamicJacobian's
   /// rotary block twice its exact derivative; u1, w0: owned arrays of U_{n+1} and V_n.
+  /// cayley (energy-momentum scheme): w_{n+1} = 2 theta_c / h - exp(theta) w_n with the Cayley vector
+  /// theta_c of theta (rotaryCayleyStep), and the rotary block its exact derivative (not doubled).
   struct RotaryMomentum {
     const double *u1 = nullptr, *w0 = nullptr;
     double h = 0;
+    bool cayley = false;
   };
   void setRotaryMomentum(const RotaryMomentum& m) { momentum_ = m; }
+  /// Energy-momentum scheme (DynamicAnalysis): keeps the node states of U_n under ls (rotations
+  /// absorbed) as the start of the step whose end the next assemblies evaluate.
+  PetscErrorCode setStepStart(Vec Un, const LoadState& ls);
+  /// While set (h > 0), the element loops of dynamicResidual and dynamicJacobian take the kernels'
+  /// step force (ElementKernel::stepForce) from the kept start states to the current ones, with the
+  /// energy decay xi, instead of evaluate().
+  struct StepForces {
+    double h = 0, decay = 0;
+  };
+  void setStepForces(const StepForces& s) { stepForces_ = s; }
+  /// W <- U with the rotation increment theta of every free Frame6 node (owned entries) replaced by its
+  /// Cayley vector 2 tan(|theta| / 2) theta / |theta| (elements/rotary_momentum.hpp).
+  PetscErrorCode cayleyIncrements(Vec U, Vec W) const;
   /// While on, dynamicJacobian leaves out the kernels that damp their strain rates (the damping's
   /// beta K0 of the other kinds).
   void setSkipStrainRateDamped(bool on) { skipStrainRateDamped_ = on; }
@@ -321,6 +337,8 @@ class Assembler {
   bool nonFiniteLawsFatal_ = true;
   std::string nonFiniteLaw_;
   RotaryMomentum momentum_;
+  StepForces stepForces_;
+  std::vector<double> startState_, startDisp_;  // setStepStart: node states and translations of U_n
   bool skipStrainRateDamped_ = false;
   /// rotaryMomentumStep of free Frame6 node i under momentum_ (its mominertia, R_n = Rref_, theta from u1).
   RotaryMomentumStep midpointMomentum(int i) const;

@@ -139,7 +139,8 @@ RotaryMomentumStep Assembler::midpointMomentum(int i) const {
   const Mat3 J0{I[0], I[1], I[2], I[1], I[3], I[4], I[2], I[4], I[5]};
   const Vec3 theta{momentum_.u1[n.dof[3]], momentum_.u1[n.dof[4]], momentum_.u1[n.dof[5]]};
   const Vec3 w0{momentum_.w0[n.dof[3]], momentum_.w0[n.dof[4]], momentum_.w0[n.dof[5]]};
-  return rotaryMomentumStep(J0, Rref_[i], theta, w0, momentum_.h);
+  return momentum_.cayley ? rotaryCayleyStep(J0, Rref_[i], theta, w0, momentum_.h)
+                          : rotaryMomentumStep(J0, Rref_[i], theta, w0, momentum_.h);
 }
 
 PetscErrorCode Assembler::rotateSpins(Vec U, Vec W) const {
@@ -157,6 +158,30 @@ PetscErrorCode Assembler::rotateSpins(Vec U, Vec W) const {
   }
   PetscCall(VecRestoreArray(W, &w));
   PetscCall(VecRestoreArrayRead(U, &u));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode Assembler::cayleyIncrements(Vec U, Vec W) const {
+  PetscFunctionBeginUser;
+  PetscCall(VecCopy(U, W));
+  if (!mesh_.anyRotations) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscScalar* w;
+  PetscCall(VecGetArray(W, &w));
+  for (int i = 0; i < mesh_.numOwnedNodes; ++i) {
+    const LocalNode& n = mesh_.nodes[i];
+    if (n.kind != NodeKind::Frame6 || n.rotationPrescribed) continue;
+    const Vec3 c = cayleyVector(Vec3{w[n.dof[3]], w[n.dof[4]], w[n.dof[5]]});
+    for (int k = 0; k < 3; ++k) w[n.dof[3 + k]] = c[k];
+  }
+  PetscCall(VecRestoreArray(W, &w));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode Assembler::setStepStart(Vec Un, const LoadState& ls) {
+  PetscFunctionBeginUser;
+  PetscCall(updateStates(Un, ls));
+  startState_ = state_;
+  startDisp_ = disp_;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -238,7 +263,7 @@ PetscErrorCode Assembler::dynamicJacobian(Vec U, Vec V, const LoadState& ls, dou
     gatherElement(el, q.data(), u, idx.data(), nullptr);
     KernelNeeds needs;
     needs.tangent = true;
-    needs.damping = shiftV != 0.0 && el.kernel->hasDamping();
+    needs.damping = shiftV != 0.0 && el.kernel->hasDamping() && !(stepForces_.h > 0);  // step forces: inside them
     counters_.dampingMatrices += needs.damping;
     KernelInput in{q.data(), gatherVelocity(el, idx.data(), qdot.data()),
                    el.firstMultiplier >= 0 ? u + el.firstMultiplier : nullptr, ls.time};
@@ -283,7 +308,8 @@ PetscErrorCode Assembler::dynamicJacobian(Vec U, Vec V, const LoadState& ls, dou
     for (int k = 0; k < 9; ++k) B[k] = shiftA * Js[k] + shiftV * G[k];
     if (momentum_.h > 0) {  // midpoint rule: the exact derivative of its momentum change (times 2: the caller halves J)
       const Mat3 dr = midpointMomentum(i).dr;
-      for (int k = 0; k < 9; ++k) B[k] = 2.0 * dr[k];
+      const double factor = momentum_.cayley ? 1.0 : 2.0;  // energy-momentum: J is not halved
+      for (int k = 0; k < 9; ++k) B[k] = factor * dr[k];
     }
     const PetscInt rows[3] = {n.dof[3], n.dof[4], n.dof[5]};
     PetscCall(MatSetValuesLocal(J, 3, rows, 3, rows, B.data(), ADD_VALUES));

@@ -22,6 +22,15 @@ DynamicAnalysis::Scheme DynamicAnalysis::checkScheme(const DistributedMesh& mesh
   if (scheme == Scheme::TSAlpha2 && mesh.anyRotations)
     throw SceneError("-dynamics_scheme", "tsalpha2 integrates the unknowns as a vector space; beam rotations need the "
                                          "Lie-group form of the default scheme (arnold_bruls)");
+  if (scheme == Scheme::EnergyMomentum) {
+    int bad = 0;
+    for (const LocalElement& e : mesh.elements) bad |= !e.kernel->hasStepForce() || e.kernel->hasInertia();
+    MPI_Allreduce(MPI_IN_PLACE, &bad, 1, MPI_INT, MPI_LOR, mesh.comm);
+    if (bad)
+      throw SceneError("-dynamics_scheme", "energy_momentum integrates beams with lumped mass (-beam_mass lumped), rigid "
+                                           "elements and nodal masses; this model has other elements or element mass "
+                                           "matrices (use midpoint or arnold_bruls)");
+  }
   return scheme;
 }
 
@@ -127,6 +136,10 @@ DynamicAnalysis::DynamicAnalysis(Assembler& assembler, const DynamicsOptions& op
     auto ts = std::make_unique<TSAlpha2Scheme>(static_cast<MotionEquations&>(*this));
     tsScheme_ = ts.get();
     scheme_ = std::move(ts);
+  } else if (scheme == Scheme::EnergyMomentum) {
+    auto em = std::make_unique<EnergyMomentumScheme>(settings.energyDecay, F_, keep_, &asm_);
+    stepScheme_ = emScheme_ = em.get();
+    scheme_ = std::move(em);
   } else if (scheme == Scheme::Midpoint) {
     auto mid = std::make_unique<MidpointScheme>(F_, keep_, &asm_);
     stepScheme_ = midpointScheme_ = mid.get();
@@ -240,6 +253,11 @@ PetscErrorCode DynamicAnalysis::step(double t1, bool* ok, int* its, double* fnor
     LoadState lsn = ls_;
     lsn.time = t1 - h;
     PetscCall(asm_.setMixedReference(stepScheme_->state().q, lsn));
+  }
+  if (emScheme_) {  // the step forces start from q_n
+    LoadState lsn = ls_;
+    lsn.time = t1 - h;
+    PetscCall(asm_.setStepStart(stepScheme_->state().q, lsn));
   }
   ls_.time = t1;
   PetscCall(stepScheme_->beginStep(h));
@@ -427,15 +445,17 @@ PetscErrorCode DynamicAnalysis::runArnoldBruls(Vec U, const StepCallback& onStep
 // J_s w of rotary inertia (set here: Assembler::setRotaryMomentum). Internal forces of any
 // configuration have zero resultant force and moment, so p and H = sum x x p + J_s w change only by
 // the external impulse: exactly, for a converged step.
-PetscErrorCode DynamicAnalysis::withRotaryMomentum(Vec U, const std::function<PetscErrorCode()>& evaluate) {
+PetscErrorCode DynamicAnalysis::withRotaryMomentum(Vec U, const std::function<PetscErrorCode()>& evaluate, bool cayley) {
   PetscFunctionBeginUser;
   const PetscScalar *u, *w0;
   Vec Vn = stepScheme_->state().qd;
   PetscCall(VecGetArrayRead(U, &u));
   PetscCall(VecGetArrayRead(Vn, &w0));
-  asm_.setRotaryMomentum({u, w0, h_});
+  asm_.setRotaryMomentum({u, w0, h_, cayley});
+  if (cayley) asm_.setStepForces({h_, emScheme_->decay()});
   const PetscErrorCode ierr = evaluate();
   asm_.setRotaryMomentum({});
+  asm_.setStepForces({});
   PetscCall(VecRestoreArrayRead(Vn, &w0));
   PetscCall(VecRestoreArrayRead(U, &u));
   PetscCall(ierr);
@@ -446,7 +466,8 @@ PetscErrorCode DynamicAnalysis::stepResidual(Vec U, const EvaluationPoint& e, Ve
   PetscFunctionBeginUser;
   LoadState ls = ls_;
   ls.time += e.timeShift;
-  if (e.midStep) PetscCall(withRotaryMomentum(U, [&] { return asm_.dynamicResidual(e.q, e.qd, e.qdd, ls, F); }));
+  if (e.midStep || e.stepForces)
+    PetscCall(withRotaryMomentum(U, [&] { return asm_.dynamicResidual(e.q, e.qd, e.qdd, ls, F); }, e.stepForces));
   else PetscCall(asm_.dynamicResidual(e.q, e.qd, e.qdd, ls, F));
   PetscCall(damping_.addForce(e.qd, F));
   if (e.midStep && Fend_) {
@@ -468,7 +489,9 @@ PetscErrorCode DynamicAnalysis::stepJacobian(Vec U, const EvaluationPoint& e, Ma
   ls.time += e.timeShift;
   // midpoint: the rotary inertia's block exact (rotaryMomentumStep; the elements' rotation columns are
   // those of the mid state)
-  if (e.midStep) PetscCall(withRotaryMomentum(U, [&] { return asm_.dynamicJacobian(e.q, e.qd, ls, e.shiftV, e.shiftA, P); }));
+  if (e.midStep || e.stepForces)
+    PetscCall(withRotaryMomentum(U, [&] { return asm_.dynamicJacobian(e.q, e.qd, ls, e.shiftV, e.shiftA, P); },
+                                 e.stepForces));
   else PetscCall(asm_.dynamicJacobian(e.q, e.qd, ls, e.shiftV, e.shiftA, P));
   PetscCall(damping_.addJacobian(e.shiftV, P));
   if (e.jacobianScale != 1.0) PetscCall(MatScale(P, e.jacobianScale));

@@ -2,6 +2,7 @@
 // time_scheme.hpp (-dynamics_scheme), which own their parameters and state:
 //   arnold_bruls: generalized alpha as Exudyn uses it (GeneralizedAlphaScheme, the default)
 //   midpoint: the implicit midpoint rule, keeps linear and angular momentum exactly (MidpointScheme)
+//   energy_momentum: keeps energy and momenta exactly, or lets the energy decay (EnergyMomentumScheme)
 //   tsalpha2: PETSc's TSALPHA2, the Chung-Hulbert variant (TSAlpha2Scheme; docs/ancf_cable2d.md
 //   compares it with the default)
 // DynamicAnalysis orchestrates: the start (a_0 = qdd_0 from M qdd_0 = f_ext(0) - f_int(q_0, qd_0, 0)),
@@ -22,6 +23,7 @@
 
 #include "assembly/assembler.hpp"
 #include "dynamics/damping.hpp"
+#include "dynamics/energy_momentum_scheme.hpp"
 #include "dynamics/generalized_alpha_scheme.hpp"
 #include "dynamics/midpoint_scheme.hpp"
 #include "dynamics/time_scheme.hpp"
@@ -84,7 +86,8 @@ class DynamicAnalysis : private MotionEquations {
   static LoadState loadsAt(double t);
   using Scheme = DynamicsScheme;
   /// Checks -dynamics_scheme against the model (SceneError; called at setup, where scene errors exit 2):
-  /// tsalpha2 (a vector space) cannot integrate rotation unknowns.
+  /// tsalpha2 (a vector space) cannot integrate rotation unknowns; energy_momentum needs a step force
+  /// of every element and no element mass matrix (beams with -beam_mass lumped, rigid elements). Collective.
   static Scheme checkScheme(const DistributedMesh& mesh, Scheme scheme);
   /// Checks opt.dynamics.adaptive with its flags (-dynamics_adapt, -dynamics_dt_min/max, ...): SceneError
   /// (exit 2) for dt_min > dt_max or adaptive steps with tsalpha2 or midpoint. Called at setup, after checkScheme.
@@ -123,6 +126,8 @@ class DynamicAnalysis : private MotionEquations {
   bool usesPetscTS() const { return tsScheme_ != nullptr; }
   const std::string& failureMessage() const { return failure_; }
   bool midpoint() const { return midpointScheme_ != nullptr; }
+  bool energyMomentum() const { return emScheme_ != nullptr; }
+  double energyDecay() const { return emScheme_ ? emScheme_->decay() : 0.0; }
   /// alpha_m and alpha_f of the Arnold-Brüls scheme at opt.dynamics.spectral_radius (the summary line).
   double alphaM() const { return GeneralizedAlphaParameters::fromSpectralRadius(opts_.spectral_radius).alphaM; }
   double alphaF() const { return GeneralizedAlphaParameters::fromSpectralRadius(opts_.spectral_radius).alphaF; }
@@ -142,8 +147,9 @@ class DynamicAnalysis : private MotionEquations {
   /// Its derivative by U: e.jacobianScale (K + e.shiftV C + e.shiftA M) at e (midpoint: constraint rows
   /// and multiplier columns scaled by 2).
   PetscErrorCode stepJacobian(Vec U, const EvaluationPoint& e, Mat P);
-  /// Runs `evaluate` with the midpoint rule's rotary momentum of the iterate U set in the assembler.
-  PetscErrorCode withRotaryMomentum(Vec U, const std::function<PetscErrorCode()>& evaluate);
+  /// Runs `evaluate` with the midpoint rule's rotary momentum of the iterate U set in the assembler
+  /// (cayley and the step forces: the energy-momentum scheme).
+  PetscErrorCode withRotaryMomentum(Vec U, const std::function<PetscErrorCode()>& evaluate, bool cayley = false);
   PetscErrorCode useDynamicsSolver(KSP ksp);
   PetscErrorCode initialAccelerations(Vec U, Vec V, Vec Qdd, bool* ok);
   /// Solves the step to t1 (size h_); with commit, a converged step becomes the new step start.
@@ -169,6 +175,7 @@ class DynamicAnalysis : private MotionEquations {
   StepScheme* stepScheme_ = nullptr;    ///< arnold_bruls or midpoint (Sinew's Newton per step)
   GeneralizedAlphaScheme* alphaScheme_ = nullptr;
   MidpointScheme* midpointScheme_ = nullptr;
+  EnergyMomentumScheme* emScheme_ = nullptr;
   TSAlpha2Scheme* tsScheme_ = nullptr;
   double h_ = 0;
   LoadState ls_;

@@ -211,7 +211,7 @@ NewtonRules DynamicAnalysis::newtonRules() const {
     r.updateRtol = kUpdateRtol;
   }
   r.atRest = true;
-  if (midpointScheme_) r.finalUpdateRtol = kMidpointUpdateRtol;
+  if (midpointScheme_ || emScheme_) r.finalUpdateRtol = kMidpointUpdateRtol;
   return r;
 }
 

@@ -34,6 +34,9 @@ DynamicAnalysis::StepControlSettings DynamicAnalysis::stepControl(const Dynamics
   if (r.control != StepControl::None && scheme == Scheme::Midpoint)
     throw SceneError("-dynamics_adapt", "adaptive steps are Sinew's Arnold-Brüls loop (its error estimate and step "
                                         "restart); -dynamics_scheme midpoint takes a fixed dt");
+  if (r.control != StepControl::None && scheme == Scheme::EnergyMomentum)
+    throw SceneError("-dynamics_adapt", "adaptive steps are Sinew's Arnold-Brüls loop (its error estimate and step "
+                                        "restart); -dynamics_scheme energy_momentum takes a fixed dt");
   return r;
 }
 

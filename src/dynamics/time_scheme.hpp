@@ -2,8 +2,9 @@
 // (as MFEM's SecondOrderODESolver subclasses do): what a checkpoint stores and a restart puts back.
 //   GeneralizedAlphaScheme (generalized_alpha_scheme.hpp): Arnold & Brüls (2007), Exudyn's loop
 //   MidpointScheme (midpoint_scheme.hpp): the implicit midpoint rule, spins by Simo & Wong (1991)
+//   EnergyMomentumScheme (energy_momentum_scheme.hpp): energy and momenta exact (Simo & Tarnow 1992)
 //   TSAlpha2Scheme (tsalpha2_scheme.hpp): PETSc's TSALPHA2 (Chung-Hulbert), its state inside TS
-// The first two are StepSchemes: DynamicAnalysis solves their step equation for q_{n+1} with its own
+// The first three are StepSchemes: DynamicAnalysis solves their step equation for q_{n+1} with its own
 // Newton loop, asking the scheme for the rates of an iterate and where to evaluate the equations of
 // motion M qdd + f_int(q, qd, t) = f_ext(t).
 #pragma once
@@ -34,6 +35,9 @@ struct EvaluationPoint {
   /// midpoint rule: the rotary inertia is the momentum change over the step (Assembler::setRotaryMomentum),
   /// and the constraints of the multipliers hold at the step's end
   bool midStep = false;
+  /// energy-momentum scheme: the elements' step forces from q_n to q (Assembler::setStepForces) and the
+  /// rotary inertia as the momentum change with Cayley spins
+  bool stepForces = false;
 };
 
 /// The equations of motion the schemes discretize, r(q, qd, qdd, t) = M qdd + f_int(q, qd, t) - f_ext(t)

@@ -5,6 +5,7 @@
 // for lhat: J = +-P/L (P = I - lhat lhat^T), H[c] = -(1/L^2)((lhat.c) P + lhat (Pc)^T + (Pc) lhat^T).
 // d(a.b) = J_a^T b + J_b^T a;  Hess(a.b) = J_a^T J_b + J_b^T J_a + H_a[b] + H_b[a].
 #include "elements/beam_corotational.hpp"
+#include "elements/beam_kinematics.hpp"
 
 #include "sinew/rotation.hpp"
 
@@ -46,18 +47,6 @@ inline void addOuter(double* K, int ld, const double* a, const double* b, double
 }
 
 }  // namespace
-
-struct BeamCorotational::Kinematics {
-  Vec3 lhat{};
-  double L = 0;
-  Mat3 P{};
-  Vec3 nyp{}, nzp{}, nyq{}, nzq{};
-  double e[6]{};
-  double g[6][kDofs]{};   // grad e_i
-  double Qe[6]{};         // d(arc - chord quadratic)/d e_i (i = 2..5)
-  double eps[6]{};
-  double ge[6][kDofs]{};  // grad eps_i
-};
 
 std::span<const NodeKind> BeamCorotational::nodeKinds() const { return {kNodeKinds, 2}; }
 

@@ -64,6 +64,13 @@ class BeamCorotational : public ElementKernel {
   bool strainRateDamped() const override { return beta_ > 0.0; }
   bool hasDamping() const override { return beta_ > 0.0; }
 
+  /// Energy-momentum step force (beam_step_force.cpp): f = B^T sigma with B (x1 - x0, theta_c) =
+  /// eps(q1) - eps(q0) exactly (products of averaged vectors; theta_c the Cayley rotation vector) and
+  /// sigma = S (eps0 + eps1) / 2 + (xi / 2 + beta / h) S (eps1 - eps0) on flexible modes, the
+  /// multipliers on rigid ones; exact tangent by dual numbers.
+  bool hasStepForce() const override { return true; }
+  void stepForce(const StepForceInput& in, bool tangent, KernelOutput& out) const override;
+
   /// eps_1..eps_6 at state q.
   std::array<double, 6> generalizedStrains(const double* q) const;
   /// sigma_i = dU/d eps_i for flexible modes, constraintScale * lambda_k for rigid ones, 0 for released.
@@ -105,6 +112,11 @@ class BeamCorotational : public ElementKernel {
   /// disp (optional, 6 values): node translations x - X0, for a cancellation-free elongation.
   void kinematics(const double* q, Kinematics& k, const double* disp = nullptr) const;
   void stresses(const Kinematics& k, const double* lambda, double* sig) const;
+  /// The step force's B rows and stresses for scalar type T (double or Dual<12>; beam_step_force.cpp).
+  template <class T>
+  void stepForceT(const Kinematics& k0, const Kinematics& k1, const double* q1, const StepForceInput& in, T* f,
+                  T (*B)[12]) const;
+
   /// G += sum_i sig_i d(grad eps_i)/dq (the stress part of the tangent; n: leading dimension).
   void addStressTangent(const Kinematics& k, const double* sig, double* G, int n) const;
   /// Sensor field at s: the section's offset from the chord point and its rotation (sensor file).

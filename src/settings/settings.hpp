@@ -16,7 +16,7 @@ namespace sinew {
 /// Word lists of the choice flags. Each enum's values follow its flag's words in order (fields.cpp).
 enum class OperatorChoice { Auto, Elementwise, Assembled };  ///< auto, elementwise, assembled
 enum class AutoSwitch { Auto, On, Off };                     ///< auto, true, false
-enum class DynamicsScheme { ArnoldBruls, TSAlpha2, Midpoint };  ///< arnold_bruls, tsalpha2, midpoint
+enum class DynamicsScheme { ArnoldBruls, TSAlpha2, Midpoint, EnergyMomentum };  ///< arnold_bruls, tsalpha2, midpoint, energy_momentum
 enum class ChainLU { Auto, Cut, Redundant };                 ///< auto, cut, redundant
 enum class DynamicsPredictor { Auto, Acceleration, State, Rotation };  ///< auto, acceleration, state, rotation
 enum class TimeStepControl { None, Newton, Error };          ///< none, newton, error
@@ -113,6 +113,7 @@ struct DynamicsSettings {
   BeamMass beamMass = BeamMass::Consistent;               ///< -beam_mass (the kernel factory)
   StiffnessDamping stiffnessDamping = StiffnessDamping::Corotated;  ///< -stiffness_damping (Damping)
   bool energy = false;                                    ///< -dynamics_energy
+  double energyDecay = 0.0;                               ///< -dynamics_energy_decay
   bool operator==(const DynamicsSettings&) const = default;
 };
 

@@ -86,7 +86,7 @@ ERRORS = [
     ("compliance_method", ["-compliance_method", "Sparse"],
      ["error: -compliance_method: expected one of selinv, sparse, dense, got Sparse"], True),
     ("dynamics_scheme", ["-dynamics_scheme", "rk4"],
-     ["error: -dynamics_scheme: expected one of arnold_bruls, tsalpha2, midpoint, got rk4"], True),
+     ["error: -dynamics_scheme: expected one of arnold_bruls, tsalpha2, midpoint, energy_momentum, got rk4"], True),
     ("dt_grow_after", ["-dt_grow_after", "-1"], ["error: -dt_grow_after: expected an integer >= 0, got -1"], True),
     ("predictor_word", ["-predictor", "maybe"],
      ["error: -predictor: expected true or false (also yes/no, on/off, 1/0; the flag alone means true), got maybe"], True),

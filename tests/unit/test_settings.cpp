@@ -80,7 +80,7 @@ TEST(Settings, DefaultsAreTheRegistryDefaults) {
       EXPECT_EQ(defaultMismatch(f, defaults.*component), "") << "-" << f.flag;
     }
   });
-  EXPECT_EQ(fields, 56);
+  EXPECT_EQ(fields, 57);
 }
 
 TEST(Settings, RegistryIsTheFieldTablesThenTheSceneOptFields) {
@@ -110,7 +110,9 @@ TEST(Settings, ChoiceWordsMapToTheEnumsInOrder) {
   for (const auto& f : dyn) {
     if (std::string(f.flag) != "dynamics_scheme") continue;
     const auto& c = std::get<ChoiceRef<DynamicsSettings>>(f.ref);
-    ASSERT_EQ(f.value.choices, (std::vector<std::string>{"arnold_bruls", "tsalpha2", "midpoint"}));
+    ASSERT_EQ(f.value.choices, (std::vector<std::string>{"arnold_bruls", "tsalpha2", "midpoint", "energy_momentum"}));
+    c.set(s.dynamics, 3);
+    EXPECT_EQ(s.dynamics.scheme, DynamicsScheme::EnergyMomentum);
     c.set(s.dynamics, 2);
     EXPECT_EQ(s.dynamics.scheme, DynamicsScheme::Midpoint);
     c.set(s.dynamics, 1);

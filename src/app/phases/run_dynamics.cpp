@@ -147,6 +147,7 @@ PetscErrorCode runDynamics(RunContext& ctx) {
   std::ostringstream s;
   s << "  dynamics: " << r.steps << " of " << nsteps << " steps of dt = " << opts.dt << " to t = " << r.time;
   if (dyn.midpoint()) s << ", implicit midpoint rule";
+  else if (dyn.energyMomentum()) s << ", energy-momentum scheme" << (dyn.energyDecay() > 0 ? " with energy decay" : "");
   else s << ", generalized-alpha rho = " << opts.spectral_radius << " (alpha_m = " << dyn.alphaM() << ", alpha_f = " << dyn.alphaF() << ")";
   s << ", " << r.newtonIterations << " Newton iterations on " << r.jacobians << " Jacobians";
   if (r.corotatedJacobians > 0) s << " (" << r.corotatedJacobians << " rebuilt from rotated element blocks)";

@@ -1,3 +1,4 @@
+# ctest-processors: 1
 """Energy-momentum scheme (-dynamics_scheme energy_momentum; docs/dynamics.md, "Energy-momentum scheme";
 issue 27): a stiff steel beam in free flight keeps its total energy and momenta over 10,000 steps; with
 -dynamics_energy_decay its energy decreases monotonically.
@@ -14,46 +15,14 @@ varies by 4.7e-2 within 1000 steps (feature off: the check must exceed 1e-3); 8 
 (omega h ~ 400) it grew 8800-fold before Newton failed at t = 0.76 s (docs/dynamics.md). Energy decay
 xi = 0.1: T + S lower at every written row (2000 steps, every 10th written; 9.2e-5 lost), H constant to
 8.6e-12 (the decay acts on strain changes only, never on rigid motion). 2 ranks (50 steps, torsion rigid:
-index-3 multipliers, constraints at the step ends): T + S to 2.7e-15, H to 1.0e-14, 1 vs 2 ranks 1.1e-15 m.
-The long runs are on one rank: on 2 ranks 200 steps took 47 s of wall time on the shared machine (MUMPS
-per solve, polling ranks) against 0.3 s on one. The whole case: 37 s wall, 12 s CPU (shared 2 cores)."""
+index-3 multipliers, constraints at the step ends): T + S to 2.7e-15, H to 1.0e-14, 1 vs 2 ranks 1.1e-15 m,
+in test_dynamics_energy_momentum_ranks.py. The runs here are on one rank (one ctest slot): on 2 ranks 200
+steps took 47 s of wall time on the shared machine (MUMPS per solve, polling ranks) against 0.3 s on one.
+The whole case: 37 s wall, 12 s CPU (shared 2 cores)."""
 import numpy as np
 
-import beamtools as bt
 import sinewtest as st
-
-tp = 0.1
-pulse = f"(t < {tp} ? sin(pi*t/{tp})^2 : 0)"
-F0, M0 = [0, 4, 1], [0.2, -0.4, 1.2]
-
-
-def scene(n, tend, every, flex=(1, 2, 3, 4, 5, 6)):
-    nodes, elems = bt.chain([0, 0, 0], [1, 0, 0], n)
-    return bt.yaml_text({
-        "title": "stiff steel free beam", "nodes": nodes, "elements": elems,
-        "nprops": {1: {"force": [f"{f}*{pulse}" for f in F0], "moment": [f"{m}*{pulse}" for m in M0]}},
-        "eprops": [bt.beam_set(list(range(1, n + 1)), 0.02, 0.01, flex=flex, dens=7800)],
-        "opt": {"calcfreq": False, "calccompl": False,
-                "dynamics": {"tend": tend, "dt": 0.01, "spectral_radius": 1.0, "output_every": every}}})
-
-
-args = ["-dynamics_energy", "-beam_mass", "lumped"]
-em = ["-dynamics_scheme", "energy_momentum"]
-
-
-def load(name, text, extra, np_=1):
-    h5, out = st.run(name, text, np_=np_, args=args + extra)
-    with st.h5(h5) as f:
-        r = {k: f[k][:] for k in ("time", "node/p", "energy/kinetic", "energy/strain", "momentum/linear",
-                                  "momentum/angular")}
-    a = r["time"] >= tp - 1e-12  # free flight after the pulse
-    r["E"] = (r["energy/kinetic"] + r["energy/strain"])[a]
-    H, p = r["momentum/angular"][a], r["momentum/linear"][a]
-    r["dE"] = np.abs(r["E"] - r["E"][0]).max() / r["E"][0]
-    r["dH"] = np.abs(H - H[0]).max() / np.linalg.norm(H[0])
-    r["dp"] = np.abs(p - p[0]).max() / np.linalg.norm(p[0])
-    return r, out
-
+from energy_momentum_scenes import em, load, scene
 
 long, out = load("em_free_flight", scene(4, 100.0, 100), em)
 st.check("energy-momentum scheme" in out, "energy_momentum: the summary names the scheme")
@@ -77,15 +46,7 @@ print(f"  energy decay 0.1, 2000 steps: T + S lost {1 - dec['E'][-1] / dec['E'][
 st.check((steps < 0).all(), "energy decay: T + S lower at every written row after the pulse")
 st.check(dec["dH"] < 1e-9, "energy decay: angular momentum constant to 1e-9")
 
-# 2 ranks with rigid torsion (multipliers): energy and momenta exact, 1 vs 2 ranks
-rigid = scene(4, 0.5, 5, flex=(1, 3, 4, 5, 6))
-r2, _ = load("em_rigid_2", rigid, em, np_=2)
-r1, _ = load("em_rigid_1", rigid, em, np_=1)
-print(f"  energy_momentum, torsion rigid, 2 ranks: T + S drift {r2['dE']:.2e}, H {r2['dH']:.2e}")
-st.check(r2["dE"] < 1e-11 and r2["dH"] < 1e-11, "energy_momentum with rigid modes on 2 ranks: energy and momentum exact")
-st.close(r1["node/p"], r2["node/p"], atol=1e-9, what="energy_momentum: 1 vs 2 ranks, positions")
-
 # element mass matrices (the default consistent beam mass) are refused at setup
-_, out = st.run("em_consistent_refused", scene(4, 0.1, 1), args=em, expect_exit=2)
+_, out = st.run("em_consistent_refused", scene(4, 0.1, 1), np_=1, args=em, expect_exit=2)
 st.check("-beam_mass lumped" in out, "energy_momentum with the consistent beam mass: refused, naming -beam_mass lumped")
 st.done()

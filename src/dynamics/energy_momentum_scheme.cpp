@@ -30,18 +30,9 @@ PetscErrorCode EnergyMomentumScheme::rates(Vec q) {
   PetscFunctionBeginUser;
   // qd_{n+1} = 2 (q_c - q_n) / h - exp(theta) qd_n: q_c the iterate with the Cayley vectors theta_c in
   // place of the rotation increments theta (q_n = 0 there), exp(theta) turning only the spins
-  PetscCall(VecCopy(vn_, work_));
-  if (rotations_) {
-    PetscCall(rotations_->rotateSpins(q, work_));
-    PetscCall(rotations_->cayleyIncrements(q, qc_));
-  } else {
-    PetscCall(VecCopy(q, qc_));
-  }
-  PetscCall(VecWAXPY(v1_, -1.0, qn_, qc_));
-  PetscCall(VecAXPBY(v1_, -1.0, 2.0 / h_, work_));
-  PetscCall(VecWAXPY(a1_, -1.0, vn_, v1_));
-  PetscCall(VecScale(a1_, 1.0 / h_));
-  PetscCall(VecCopy(a1_, qdd1_));
+  if (rotations_) PetscCall(rotations_->cayleyIncrements(q, qc_));
+  else PetscCall(VecCopy(q, qc_));
+  PetscCall(midpointRates(q, qc_));
   PetscCall(VecAXPBYPCZ(vm_, 0.5, 0.5, 0.0, vn_, v1_));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -37,14 +37,8 @@ PetscErrorCode MidpointScheme::rates(Vec q) {
   PetscFunctionBeginUser;
   // qd_{n+1} = 2 (q_{n+1} - q_n) / h - qd_n; spins (spatial form): w_{n+1} = 2 theta / h - exp(theta) w_n
   // (q_n = 0 on the rotation unknowns: theta is their value in q_{n+1})
-  PetscCall(VecCopy(vn_, work_));
-  if (rotations_) PetscCall(rotations_->rotateSpins(q, work_));
-  PetscCall(VecWAXPY(v1_, -1.0, qn_, q));
-  PetscCall(VecAXPBY(v1_, -1.0, 2.0 / h_, work_));
   // (qd_{n+1} - qd_n) / h: the inertia of the translations (and output accelerations)
-  PetscCall(VecWAXPY(a1_, -1.0, vn_, v1_));
-  PetscCall(VecScale(a1_, 1.0 / h_));
-  PetscCall(VecCopy(a1_, qdd1_));
+  PetscCall(midpointRates(q, q));
   // mid configuration and velocity: q_n + (q_{n+1} - q_n) / 2 (rotations exp(theta / 2) R_n)
   PetscCall(VecAXPBYPCZ(qm_, 0.5, 0.5, 0.0, qn_, q));
   PetscCall(VecAXPBYPCZ(vm_, 0.5, 0.5, 0.0, vn_, v1_));

@@ -31,6 +31,18 @@ PetscErrorCode StepScheme::copyState(const SchemeState& to) const {
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+PetscErrorCode StepScheme::midpointRates(Vec q, Vec qEnd) {
+  PetscFunctionBeginUser;
+  PetscCall(VecCopy(vn_, work_));
+  if (rotations_) PetscCall(rotations_->rotateSpins(q, work_));
+  PetscCall(VecWAXPY(v1_, -1.0, qn_, qEnd));
+  PetscCall(VecAXPBY(v1_, -1.0, 2.0 / h_, work_));
+  PetscCall(VecWAXPY(a1_, -1.0, vn_, v1_));
+  PetscCall(VecScale(a1_, 1.0 / h_));
+  PetscCall(VecCopy(a1_, qdd1_));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode StepScheme::commit(Vec q) {
   PetscFunctionBeginUser;
   PetscCall(VecCopy(q, qn_));

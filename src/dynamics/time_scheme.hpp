@@ -94,6 +94,10 @@ class StepScheme : public TimeScheme {
   double stepSize() const { return h_; }
 
  protected:
+  /// The midpoint-type rates of the iterate q: qd_{n+1} = 2 (qEnd - q_n) / h - exp(theta) qd_n (the
+  /// spins of qd_n turned by q's rotation increments theta; qEnd = q, or q with Cayley vectors in place
+  /// of theta), a_{n+1} = qdd_{n+1} = (qd_{n+1} - qd_n) / h. Uses work_.
+  PetscErrorCode midpointRates(Vec q, Vec qEnd);
   Vec keep_ = nullptr;           ///< multipliers (not owned)
   Assembler* rotations_ = nullptr;
   double h_ = 0.0;               ///< the step size of beginStep

@@ -123,7 +123,8 @@ bool supported(const NodeProps& p) {
 
 }  // namespace
 
-double theoreticalOrder(const QuantityDef& q, bool lumpedMass) {
+double theoreticalOrder(const QuantityDef& q, bool lumpedMass, bool membranes) {
+  if (membranes) return 2.0;
   if (q.kind == Kind::Buckling || (q.kind == Kind::Frequency && !lumpedMass)) return 4.0;
   return 2.0;
 }
@@ -224,7 +225,11 @@ std::vector<QuantityDef> selectQuantities(const Model& model, const RunResults& 
   }
   if (most >= 0 && std::find(watched.begin(), watched.end(), most) == watched.end()) watched.push_back(most);
   std::sort(watched.begin(), watched.end());
-  const bool compliance = coarsest.find("node/CMglob") != nullptr;
+  // membranes: a nodal reaction is the traction over the node's share of the edge, which halves with
+  // h, and a point load's compliance grows as log(1/h): neither converges, neither is watched
+  bool membranes = false;
+  for (std::size_t e = 0; e < model.elements.size(); ++e) membranes |= model.elementSet[e] >= 0 && model.elements[e].size() > 2;
+  const bool compliance = coarsest.find("node/CMglob") != nullptr && !membranes;
   for (long n : watched) {
     std::vector<QuantityDef> qs = nodeQuantities(n, "p");
     qs.push_back(nodeQuantities(n, "r")[0]);
@@ -234,7 +239,7 @@ std::vector<QuantityDef> selectQuantities(const Model& model, const RunResults& 
       if (significant(q, coarsest)) out.push_back(q);
   }
   for (const auto& [node, props] : model.nprops) {
-    if (!supported(props)) continue;
+    if (!supported(props) || membranes) continue;
     for (const char* field : {"Freac", "Mreac"})
       for (const QuantityDef& q : nodeQuantities(node, field))
         if (significant(q, coarsest)) out.push_back(q);

@@ -33,14 +33,16 @@ struct QuantityDef {
 /// The elements' theoretical order of convergence of a quantity (docs/accuracy.md): h^4 for
 /// frequencies (consistent mass) and buckling multipliers of the cubic beam and ANCF interpolation,
 /// h^2 for frequencies with lumped beam mass and for every static result (the corotational beam's
-/// nodal displacements, rotations, reactions and stresses under large displacements).
-double theoreticalOrder(const QuantityDef& q, bool lumpedMass);
+/// nodal displacements, rotations, reactions and stresses under large displacements); h^2 for every
+/// quantity of a scene with membranes (linear triangles: displacements, stresses and frequencies).
+double theoreticalOrder(const QuantityDef& q, bool lumpedMass, bool membranes);
 
 /// The quantities watched: `names` as in opt.accuracy_quantities ("freq", "buck", "stressmax",
 /// "node <n> <p|r|Freac|Mreac|CMglob>"), or when empty those the scene asks for: positions and
 /// rotations of loaded nodes and of the node that moves most (on the coarsest level), reactions of
 /// supported nodes, the max stress, every frequency and finite buckling multiplier, the compliance
-/// blocks of the loaded and most-moving nodes. Quantities that are zero on the coarsest level
+/// blocks of the loaded and most-moving nodes (in a scene with membranes neither reactions nor
+/// compliance blocks: they do not converge under refinement). Quantities that are zero on the coarsest level
 /// (a node that does not move, no reaction) are left out.
 std::vector<QuantityDef> selectQuantities(const Model& model, const RunResults& coarsest,
                                           const std::vector<std::string>& names);

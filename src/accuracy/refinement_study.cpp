@@ -4,6 +4,8 @@
 #include <cstdio>
 #include <limits>
 
+#include "accuracy/membrane_refinement.hpp"
+
 namespace sinew::accuracy {
 
 namespace {
@@ -36,7 +38,7 @@ void estimate(LevelRecord& fine, const LevelRecord& coarse, const LevelRecord& m
     if (q0.empty() || q0.size() != q1.size() || q1.size() != q2.size()) {  // missing on a level (fewer modes found)
       e.order = e.error = std::numeric_limits<double>::quiet_NaN();
     } else {
-      e = richardson(q0, q1, q2, quantityScale(qs[i], fineResults), theoreticalOrder(qs[i], options.lumpedMass),
+      e = richardson(q0, q1, q2, quantityScale(qs[i], fineResults), theoreticalOrder(qs[i], options.lumpedMass, options.membranes),
                      options.target);
     }
     const double err = std::isfinite(e.error) ? e.error : std::numeric_limits<double>::infinity();
@@ -88,6 +90,7 @@ Model refinedModel(const Model& base, int level) {
   Model m = base;
   m.opt.target_error = 0;
   m.opt.accuracy_quantities.clear();
+  if (hasMembranes(m)) return splitMembraneModel(m, level);  // h / 2^level by splitting every element
   std::vector<char> line(m.eprops.size(), 0);  // sets of 2-node elements: nbeams splits them
   for (std::size_t e = 0; e < m.elements.size(); ++e) {
     const int set = m.elementSet[e];
@@ -109,9 +112,11 @@ StudyResult runRefinementStudy(const Model& base, const StudyOptions& options, c
   int first = 0;  // the coarsest level of the sequence
   LevelRun last;
   for (int level = 0; level < kMaxLevels; ++level) {
-    if (level > first) {  // unknowns grow linearly with the elements: U(L+1) - U(L) = 2 (U(L) - U(L-1))
+    if (level > first) {  // unknowns grow with the elements, g = 2 per level (lines) or 4 (membranes):
+      // U(L+1) - U(L) = g (U(L) - U(L-1))
       const std::size_t n = s.levels.size();
-      const long next = n == 1 ? 2 * s.levels[0].unknowns : 3 * s.levels[n - 1].unknowns - 2 * s.levels[n - 2].unknowns;
+      const long g = options.membranes ? 4 : 2;
+      const long next = n == 1 ? g * s.levels[0].unknowns : (g + 1) * s.levels[n - 1].unknowns - g * s.levels[n - 2].unknowns;
       if (next > maxUnknowns) {
         s.stopReason = "level " + std::to_string(level) + " (nbeams x" + std::to_string(1L << level) + ") would have about " +
                        std::to_string(next) + " unknowns, more than -accuracy_max_unknowns " + std::to_string(maxUnknowns);

@@ -54,13 +54,15 @@ struct StudyResult {
   double totalSeconds = 0;  ///< every level's run, the repeated one included
 };
 
-/// The model of level `level`: nbeams x 2^level for the sets of 2-node elements, target_error off.
+/// The model of level `level`, target_error off: nbeams x 2^level for the sets of 2-node elements, or
+/// with membranes every element split `level` times (accuracy/membrane_refinement.hpp).
 Model refinedModel(const Model& base, int level);
 
 struct StudyOptions {
   double target = 0;        ///< opt.target_error
   long maxUnknowns = 0;     ///< -accuracy_max_unknowns
   bool lumpedMass = false;  ///< -beam_mass lumped (frequencies converge as h^2)
+  bool membranes = false;   ///< the scene has membranes: levels split every element, unknowns grow 4x, orders h^2
 };
 
 /// Runs the levels. print: one progress line per level (rank 0's text, printed by the caller).

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "accuracy/accuracy_output.hpp"
+#include "accuracy/membrane_refinement.hpp"
 #include "accuracy/refinement_study.hpp"
 #include "parallel/collective_error.hpp"
 #include "scene/scene_reader.hpp"
@@ -25,9 +26,8 @@ bool mentionsTargetError(const std::string& path) {
 
 /// What -target_error cannot refine yet: "" or the reason (a scene error, exit 2).
 std::string unsupported(const Model& m, const Settings& settings) {
-  for (std::size_t e = 0; e < m.elements.size(); ++e)
-    if (m.elementSet[e] >= 0 && m.elements[e].size() > 2)
-      return "membranes are not refined by -target_error yet (beams, 3D cables and ANCF cables are: nbeams x 2 per level)";
+  if (accuracy::hasMembranes(m))
+    if (const std::string why = accuracy::membraneRefinementLimit(m); !why.empty()) return why;
   if (m.opt.dynamics) return "opt.dynamics: time steps are not refined by -target_error yet (statics and its step analyses are)";
   if (m.opt.continuation) return "opt.continuation: path following is not refined by -target_error yet";
   if (m.formfinding) return "form finding is not refined by -target_error yet";
@@ -110,10 +110,12 @@ PetscErrorCode runWithTargetError(int argc, char** argv, bool* handled, int* exi
   const std::string h5 = settings.output.file ? *settings.output.file : model.opt.filename + ".h5";
   const bool silent = model.opt.silent;
   const double target = model.opt.target_error;
+  const bool membranes = accuracy::hasMembranes(model);
   if (!silent)
-    PetscCall(PetscPrintf(comm, "accuracy on demand: -target_error %g, levels of nbeams x 2 up to -accuracy_max_unknowns %d\n",
-                          target, settings.accuracy.maxUnknowns));
-  const accuracy::StudyOptions options{target, settings.accuracy.maxUnknowns, settings.dynamics.beamMass == BeamMass::Lumped};
+    PetscCall(PetscPrintf(comm, "accuracy on demand: -target_error %g, levels of %s up to -accuracy_max_unknowns %d\n", target,
+                          membranes ? "every element split (membranes in four)" : "nbeams x 2", settings.accuracy.maxUnknowns));
+  const accuracy::StudyOptions options{target, settings.accuracy.maxUnknowns, settings.dynamics.beamMass == BeamMass::Lumped,
+                                       membranes};
   const accuracy::StudyResult study = accuracy::runRefinementStudy(
       model, options,
       [&](const Model& m, int, bool toFile, const std::set<std::string>& datasets) {

@@ -7,6 +7,7 @@
 
 #include "elements/beam_corotational.hpp"
 #include "sinew/rotation.hpp"
+#include "beam_test_support.hpp"
 
 using namespace sinew;
 
@@ -15,17 +16,6 @@ namespace {
 using Modes = std::array<BeamMode, 6>;
 constexpr BeamMode F = BeamMode::Flexible, Rg = BeamMode::Rigid, Rl = BeamMode::Released;
 
-// Stiffnesses of comparable size so that every term shows in the relative error.
-BeamSection testSection() {
-  BeamSection s;
-  s.shape = CrossSection::Rect;
-  s.w = 0.3; s.t = 0.2;
-  s.A = 0.06; s.Iy = 2e-4; s.Iz = 4.5e-4; s.Ip = 6.5e-4; s.It = 5e-4;
-  s.EA = 3.0; s.GIt = 0.7; s.EIy = 1.3; s.EIz = 0.9; s.kGAy = 40.0; s.kGAz = 25.0;
-  s.rhoA = 2.0; s.rhoIp = 0.1; s.rho = 2.0 / 0.06;
-  s.ymax = 0.15; s.zmax = 0.1; s.torsionStressFactor = 0.2 / 5e-4;
-  return s;
-}
 
 struct State {
   std::array<double, 24> q{};
@@ -135,7 +125,7 @@ const Vec3 kXp{0.1, -0.2, 0.3}, kXq{1.0, 0.4, 0.1};
 }  // namespace
 
 TEST(BeamCorotational, InitialTriad) {
-  const BeamSection s = testSection();
+  const BeamSection s = test::comparableSection();
   const Modes all{F, F, F, F, F, F};
   BeamCorotational b({0, 0, 0}, {2, 0, 0}, std::nullopt, s, all, false, 1.0);
   EXPECT_NEAR(b.ey0()[2], 1.0, 1e-15);  // default orien = global z
@@ -155,14 +145,14 @@ TEST(BeamCorotational, InitialTriad) {
 }
 
 TEST(BeamCorotational, ReferenceStateIsStressFree) {
-  const BeamCorotational b(kXp, kXq, Vec3{0, 0, 1}, testSection(), {F, F, F, F, F, F}, false, 1.0);
+  const BeamCorotational b(kXp, kXq, Vec3{0, 0, 1}, test::comparableSection(), {F, F, F, F, F, F}, false, 1.0);
   const State s = referenceState(kXp, kXq);
   for (double e : b.generalizedStrains(s.q.data())) EXPECT_NEAR(e, 0.0, 1e-15);
 }
 
 TEST(BeamCorotational, TangentMatchesFiniteDifferencesAllFlexible) {
   std::mt19937 g(11);
-  const BeamCorotational b(kXp, kXq, Vec3{0, 0, 1}, testSection(), {F, F, F, F, F, F}, false, 1.0);
+  const BeamCorotational b(kXp, kXq, Vec3{0, 0, 1}, test::comparableSection(), {F, F, F, F, F, F}, false, 1.0);
   double worst = 0;
   for (int r = 0; r < 6; ++r) worst = std::max(worst, tangentError(b, randomState(g, kXp, kXq), {}, false));
   std::printf("  all flexible: max relative tangent error %.2e\n", worst);
@@ -171,7 +161,7 @@ TEST(BeamCorotational, TangentMatchesFiniteDifferencesAllFlexible) {
 
 TEST(BeamCorotational, TangentMatchesFiniteDifferencesRigidModes) {
   std::mt19937 g(12);
-  const BeamCorotational b(kXp, kXq, Vec3{0.3, 0.2, 1}, testSection(), {Rg, F, Rg, F, F, Rg}, false, 2.5);
+  const BeamCorotational b(kXp, kXq, Vec3{0.3, 0.2, 1}, test::comparableSection(), {Rg, F, Rg, F, F, Rg}, false, 2.5);
   ASSERT_EQ(b.numConstraints(), 3);
   double worst = 0;
   for (int r = 0; r < 6; ++r) {
@@ -184,8 +174,8 @@ TEST(BeamCorotational, TangentMatchesFiniteDifferencesRigidModes) {
 
 TEST(BeamCorotational, TangentMatchesFiniteDifferencesReleasedModes) {
   std::mt19937 g(13);
-  const BeamCorotational b(kXp, kXq, Vec3{0, 1, 0}, testSection(), {F, Rl, Rl, F, Rl, Rl}, false, 1.0);
-  const BeamCorotational b2(kXp, kXq, Vec3{0, 1, 0}, testSection(), {F, F, F, Rl, Rg, Rl}, false, 1.0);
+  const BeamCorotational b(kXp, kXq, Vec3{0, 1, 0}, test::comparableSection(), {F, Rl, Rl, F, Rl, Rl}, false, 1.0);
+  const BeamCorotational b2(kXp, kXq, Vec3{0, 1, 0}, test::comparableSection(), {F, F, F, Rl, Rg, Rl}, false, 1.0);
   double worst = 0;
   for (int r = 0; r < 4; ++r) {
     worst = std::max(worst, tangentError(b, randomState(g, kXp, kXq), {}, false));
@@ -197,7 +187,7 @@ TEST(BeamCorotational, TangentMatchesFiniteDifferencesReleasedModes) {
 
 TEST(BeamCorotational, SplitTangentSumsToFullTangent) {
   std::mt19937 g(14);
-  const BeamCorotational b(kXp, kXq, Vec3{0, 0, 1}, testSection(), {F, Rg, F, F, Rg, F}, false, 3.0);
+  const BeamCorotational b(kXp, kXq, Vec3{0, 0, 1}, test::comparableSection(), {F, Rg, F, F, Rg, F}, false, 3.0);
   const State s = randomState(g, kXp, kXq);
   const std::vector<double> lambda{0.5, -0.8};
   KernelInput in;
@@ -225,7 +215,7 @@ TEST(BeamCorotational, SplitTangentSumsToFullTangent) {
 
 TEST(BeamCorotational, RigidBodyInvariance) {
   std::mt19937 g(15);
-  const BeamCorotational b(kXp, kXq, Vec3{0, 0, 1}, testSection(), {F, F, F, F, F, F}, false, 1.0);
+  const BeamCorotational b(kXp, kXq, Vec3{0, 0, 1}, test::comparableSection(), {F, F, F, F, F, F}, false, 1.0);
   const State s = randomState(g, kXp, kXq);
   const Mat3 Q = expSO3({0.9, -2.0, 0.4});
   const Vec3 c{3.0, -1.0, 7.0};
@@ -265,7 +255,7 @@ TEST(BeamCorotational, RigidBodyInvariance) {
 
 TEST(BeamCorotational, SmallDisplacementStiffnessIsTimoshenko) {
   // beam along global x with local y = global y: dofs [u v w thx thy thz] per node (Przemieniecki).
-  const BeamSection s = testSection();
+  const BeamSection s = test::comparableSection();
   const double L = 1.7;
   const BeamCorotational b({0, 0, 0}, {L, 0, 0}, Vec3{0, 1, 0}, s, {F, F, F, F, F, F}, false, 1.0);
   const State st = referenceState({0, 0, 0}, {L, 0, 0});
@@ -302,7 +292,7 @@ TEST(BeamCorotational, SmallDisplacementStiffnessIsTimoshenko) {
 TEST(BeamCorotational, PureBendingCircularArc) {
   // Ends rotated by -+theta/2 about local y on a circular arc of radius l0/theta (arc length l0):
   // the exact moment is EIy theta / l0 and the arc length is unchanged (eps1 = 0).
-  BeamSection s = testSection();
+  BeamSection s = test::comparableSection();
   const double l0 = 2.0;
   const BeamCorotational b({0, 0, 0}, {l0, 0, 0}, Vec3{0, 1, 0}, s, {F, F, F, F, F, F}, false, 1.0);
   double prevErr = 0;
@@ -337,7 +327,7 @@ TEST(BeamCorotational, PureBendingCircularArc) {
 
 TEST(BeamCorotational, ReleasedEndGivesHingeStiffness) {
   // e3 released (hinge about y at p): rotation stiffness at q becomes 3 EIy / l0 (Euler-Bernoulli).
-  BeamSection s = testSection();
+  BeamSection s = test::comparableSection();
   s.kGAy = s.kGAz = 0.0;  // no shear flexibility
   const double L = 1.0;
   const BeamCorotational b({0, 0, 0}, {L, 0, 0}, Vec3{0, 1, 0}, s, {F, F, Rl, F, F, F}, false, 1.0);
@@ -354,7 +344,7 @@ TEST(BeamCorotational, ReleasedEndGivesHingeStiffness) {
 
 TEST(BeamCorotational, MassMatrix) {
   std::mt19937 g(16);
-  const BeamSection s = testSection();
+  const BeamSection s = test::comparableSection();
   const BeamCorotational b(kXp, kXq, Vec3{0, 0, 1}, s, {F, F, F, F, F, F}, true, 1.0);
   ASSERT_TRUE(b.hasInertia());
   const State st = randomState(g, kXp, kXq);
@@ -390,7 +380,7 @@ TEST(BeamCorotational, MassMatrix) {
 // -beam_mass lumped: no mass matrix; each node rhoA l0 / 2 and l0 / 2 (rho Ip, rho Iy, rho Iz) about
 // the reference axes (ex0, ey0, ez0)
 TEST(BeamCorotational, LumpedInertia) {
-  const BeamSection s = testSection();
+  const BeamSection s = test::comparableSection();
   BeamCorotational b(kXp, kXq, Vec3{0, 0, 1}, s, {F, F, F, F, F, F}, true, 1.0);
   double mJ[14];
   EXPECT_FALSE(b.lumpedInertia(mJ));  // consistent mass by default
@@ -445,7 +435,7 @@ TEST(BeamCorotational, VonMisesPureBendingAndTorsion) {
 TEST(BeamCorotational, LinearizedStressesAreSecondOrderAccurate) {
   std::mt19937 g(7);
   const Vec3 Xp{0.1, -0.2, 0.3}, Xq{1.2, 0.4, -0.1};
-  BeamCorotational b(Xp, Xq, Vec3{0, 0, 1}, testSection(), Modes{F, F, F, F, F, F}, false, 1.0);
+  BeamCorotational b(Xp, Xq, Vec3{0, 0, 1}, test::comparableSection(), Modes{F, F, F, F, F, F}, false, 1.0);
   const State s0 = randomState(g, Xp, Xq);
   std::array<double, 12> dir{};
   for (double& v : dir) v = std::uniform_real_distribution<double>(-1, 1)(g);
@@ -495,8 +485,8 @@ TEST(BeamCorotational, LinearizedStressesAreSecondOrderAccurate) {
 // the reference it is the quadratic form 1/2 u^T K0 u of the reference tangent.
 TEST(BeamCorotational, StrainEnergyGradientAndQuadraticForm) {
   std::mt19937 g(21);
-  const BeamCorotational b(kXp, kXq, Vec3{0, 0, 1}, testSection(), {F, F, F, F, F, F}, false, 1.0);
-  const BeamCorotational br(kXp, kXq, Vec3{0, 1, 0}, testSection(), {F, Rl, Rl, F, Rl, Rl}, false, 1.0);
+  const BeamCorotational b(kXp, kXq, Vec3{0, 0, 1}, test::comparableSection(), {F, F, F, F, F, F}, false, 1.0);
+  const BeamCorotational br(kXp, kXq, Vec3{0, 1, 0}, test::comparableSection(), {F, Rl, Rl, F, Rl, Rl}, false, 1.0);
   double worst = 0;
   for (const BeamCorotational* k : {&b, &br})
     for (int r = 0; r < 4; ++r) {

@@ -9,6 +9,7 @@
 #include "elements/beam_corotational.hpp"
 #include "elements/rotary_momentum.hpp"
 #include "sinew/rotation.hpp"
+#include "beam_test_support.hpp"
 
 using namespace sinew;
 
@@ -17,45 +18,15 @@ namespace {
 using Modes = std::array<BeamMode, 6>;
 constexpr BeamMode F = BeamMode::Flexible, Rg = BeamMode::Rigid, Rl = BeamMode::Released;
 
-BeamSection testSection() {  // stiffnesses of comparable size (as test_beam_corotational.cpp)
-  BeamSection s;
-  s.shape = CrossSection::Rect;
-  s.w = 0.3; s.t = 0.2;
-  s.A = 0.06; s.Iy = 2e-4; s.Iz = 4.5e-4; s.Ip = 6.5e-4; s.It = 5e-4;
-  s.EA = 3.0; s.GIt = 0.7; s.EIy = 1.3; s.EIz = 0.9; s.kGAy = 40.0; s.kGAz = 25.0;
-  s.rhoA = 2.0; s.rhoIp = 0.1; s.rho = 2.0 / 0.06;
-  s.ymax = 0.15; s.zmax = 0.1; s.torsionStressFactor = 0.2 / 5e-4;
-  return s;
-}
 
 const Vec3 kXp{0.1, -0.2, 0.3}, kXq{1.3, 0.4, 0.1};
 
-using State = std::array<double, 24>;
+using State = test::BeamState;
 State makeState(const Vec3& xp, const Mat3& Rp, const Vec3& xq, const Mat3& Rq) {
   State q{};
   for (int i = 0; i < 3; ++i) q[i] = xp[i], q[12 + i] = xq[i];
   for (int i = 0; i < 9; ++i) q[3 + i] = Rp[i], q[15 + i] = Rq[i];
   return q;
-}
-Vec3 pos(const State& q, int n) { return {q[12 * n], q[12 * n + 1], q[12 * n + 2]}; }
-Mat3 rot(const State& q, int n) {
-  Mat3 R;
-  for (int i = 0; i < 9; ++i) R[i] = q[12 * n + 3 + i];
-  return R;
-}
-// dof k of [x_p, w_p, x_q, w_q]: translations additive, rotations R -> exp(skew(h e)) R
-State perturbed(const State& q, int k, double h) {
-  State s = q;
-  const int node = k / 6, c = k % 6;
-  if (c < 3) {
-    s[12 * node + c] += h;
-  } else {
-    Vec3 w{};
-    w[c - 3] = h;
-    const Mat3 R = expSO3(w) * rot(q, node);
-    for (int i = 0; i < 9; ++i) s[12 * node + 3 + i] = R[i];
-  }
-  return s;
 }
 
 // A deformed, turned state: both ends moved by a rigid motion (turn Q about c, shift t) and deformed.
@@ -87,8 +58,8 @@ Step runStep(const BeamCorotational& b, const State& q0, const State& q1, double
   b.strainEnergy(q1.data(), &U1);
   s.dU = U1 - U0;
   for (int n = 0; n < 2; ++n) {
-    const Vec3 dx = pos(q1, n) - pos(q0, n), xm = 0.5 * (pos(q0, n) + pos(q1, n));
-    const Vec3 tc = cayleyVector(logSO3(rot(q1, n) * transpose(rot(q0, n))));
+    const Vec3 dx = test::nodePosition(q1, n) - test::nodePosition(q0, n), xm = 0.5 * (test::nodePosition(q0, n) + test::nodePosition(q1, n));
+    const Vec3 tc = cayleyVector(logSO3(test::nodeRotation(q1, n) * transpose(test::nodeRotation(q0, n))));
     const Vec3 fx{s.out.f[6 * n], s.out.f[6 * n + 1], s.out.f[6 * n + 2]};
     const Vec3 m{s.out.f[6 * n + 3], s.out.f[6 * n + 4], s.out.f[6 * n + 5]};
     s.work += dot(fx, dx) + dot(m, tc);
@@ -108,7 +79,7 @@ double fnorm(const KernelOutput& o) {
 
 TEST(BeamStepForce, WorkIsTheStrainEnergyChangeAndResultantsVanish) {
   std::mt19937 g(7);
-  const BeamCorotational b(kXp, kXq, Vec3{0, 0, 1}, testSection(), Modes{F, F, F, F, F, F}, false, 1.0);
+  const BeamCorotational b(kXp, kXq, Vec3{0, 0, 1}, test::comparableSection(), Modes{F, F, F, F, F, F}, false, 1.0);
   for (int trial = 0; trial < 20; ++trial) {
     const State q0 = randomState(g, 0.05), q1 = randomState(g, 0.05);  // large turns between the ends of the step
     const Step s = runStep(b, q0, q1, 0.0, {});
@@ -121,7 +92,7 @@ TEST(BeamStepForce, WorkIsTheStrainEnergyChangeAndResultantsVanish) {
 
 TEST(BeamStepForce, ReleasedAndRigidModes) {
   std::mt19937 g(11);
-  const BeamCorotational b(kXp, kXq, Vec3{0, 0, 1}, testSection(), Modes{F, Rg, F, Rl, F, F}, false, 1.0);
+  const BeamCorotational b(kXp, kXq, Vec3{0, 0, 1}, test::comparableSection(), Modes{F, Rg, F, Rl, F, F}, false, 1.0);
   const std::vector<double> lambda{0.37};
   for (int trial = 0; trial < 10; ++trial) {
     const State q0 = randomState(g, 0.05), q1 = randomState(g, 0.05);
@@ -136,7 +107,7 @@ TEST(BeamStepForce, ReleasedAndRigidModes) {
 
 TEST(BeamStepForce, EnergyDecayDissipates) {
   std::mt19937 g(3);
-  const BeamCorotational b(kXp, kXq, Vec3{0, 0, 1}, testSection(), Modes{F, F, F, F, F, F}, false, 1.0);
+  const BeamCorotational b(kXp, kXq, Vec3{0, 0, 1}, test::comparableSection(), Modes{F, F, F, F, F, F}, false, 1.0);
   const double xi = 0.3;
   for (int trial = 0; trial < 10; ++trial) {
     const State q0 = randomState(g, 0.05), q1 = randomState(g, 0.05);
@@ -156,7 +127,7 @@ TEST(BeamStepForce, TangentMatchesCentralDifferences) {
   for (int variant = 0; variant < 2; ++variant) {
     const Modes modes = variant == 0 ? Modes{F, F, F, F, F, F} : Modes{F, Rg, F, Rl, F, F};
     const std::vector<double> lambda = variant == 0 ? std::vector<double>{} : std::vector<double>{0.37};
-    const BeamCorotational b(kXp, kXq, Vec3{0, 0, 1}, testSection(), modes, false, 1.0);
+    const BeamCorotational b(kXp, kXq, Vec3{0, 0, 1}, test::comparableSection(), modes, false, 1.0);
     const State q0 = randomState(g, 0.05), q1 = randomState(g, 0.05);
     const Step s = runStep(b, q0, q1, 0.2, lambda, true);
     const int n = 12 + b.numConstraints();
@@ -166,8 +137,8 @@ TEST(BeamStepForce, TangentMatchesCentralDifferences) {
     for (int c = 0; c < n; ++c) {
       KernelOutput op, om;
       if (c < 12) {
-        op = runStep(b, q0, perturbed(q1, c, d), 0.2, lambda).out;
-        om = runStep(b, q0, perturbed(q1, c, -d), 0.2, lambda).out;
+        op = runStep(b, q0, test::perturbed(q1, c, d), 0.2, lambda).out;
+        om = runStep(b, q0, test::perturbed(q1, c, -d), 0.2, lambda).out;
       } else {
         std::vector<double> lp = lambda, lm = lambda;
         lp[c - 12] += d;
@@ -189,10 +160,10 @@ TEST(BeamStepForce, TangentMatchesCentralDifferences) {
 TEST(BeamStepForce, SmallStepApproachesTheForce) {
   // q1 -> q0: the step force becomes the internal force of q0 (consistency of the scheme)
   std::mt19937 g(9);
-  const BeamCorotational b(kXp, kXq, Vec3{0, 0, 1}, testSection(), Modes{F, F, F, F, F, F}, false, 1.0);
+  const BeamCorotational b(kXp, kXq, Vec3{0, 0, 1}, test::comparableSection(), Modes{F, F, F, F, F, F}, false, 1.0);
   const State q0 = randomState(g, 0.05);
   State q1 = q0;
-  for (int k = 0; k < 12; ++k) q1 = perturbed(q1, k, 1e-7 * (k % 3 - 1));
+  for (int k = 0; k < 12; ++k) q1 = test::perturbed(q1, k, 1e-7 * (k % 3 - 1));
   KernelInput in;
   in.q = q0.data();
   KernelOutput o;

@@ -11,6 +11,7 @@
 
 #include "elements/beam_corotational.hpp"
 #include "sinew/rotation.hpp"
+#include "beam_test_support.hpp"
 
 using namespace sinew;
 
@@ -28,31 +29,10 @@ BeamSection section() {
   return s;
 }
 
-using Q24 = std::array<double, 24>;
+using Q24 = test::BeamState;
+using test::perturbed;
+using test::setNode;
 
-void setNode(Q24& q, int node, const Vec3& x, const Mat3& R) {
-  for (int i = 0; i < 3; ++i) q[12 * node + i] = x[i];
-  for (int i = 0; i < 9; ++i) q[12 * node + 3 + i] = R[i];
-}
-Vec3 xOf(const Q24& q, int node) { return {q[12 * node], q[12 * node + 1], q[12 * node + 2]}; }
-Mat3 ROf(const Q24& q, int node) {
-  Mat3 r;
-  for (int i = 0; i < 9; ++i) r[i] = q[12 * node + 3 + i];
-  return r;
-}
-// dof k of [x_p, w_p, x_q, w_q]: translations additive, rotations R -> exp(skew(h e)) R
-Q24 perturbed(const Q24& q, int k, double h) {
-  Q24 s = q;
-  const int node = k / 6, c = k % 6;
-  if (c < 3) {
-    s[12 * node + c] += h;
-  } else {
-    Vec3 w{};
-    w[c - 3] = h;
-    setNode(s, node, xOf(q, node), expSO3(w) * ROf(q, node));
-  }
-  return s;
-}
 Vec3 rnd(std::mt19937& g, double s) {
   std::uniform_real_distribution<double> u(-s, s);
   return {u(g), u(g), u(g)};
@@ -152,7 +132,7 @@ TEST(BeamStrainRateDamping, RigidMotionIsNotDamped) {
   const Vec3 w{0.7, -1.1, 2.3}, v0{-0.4, 0.2, 0.9};
   std::array<double, 12> qd{};
   for (int node = 0; node < 2; ++node) {
-    const Vec3 vx = v0 + cross(w, xOf(s, node));
+    const Vec3 vx = v0 + cross(w, test::nodePosition(s, node));
     for (int k = 0; k < 3; ++k) {
       qd[6 * node + k] = vx[k];
       qd[6 * node + 3 + k] = w[k];

@@ -2,7 +2,10 @@
 // term shows in a relative error), and the kernel state of a 2-node beam, [x_p, R_p, x_q, R_q] with
 // the rotations as 3x3 matrices, with its perturbation for central differences.
 #pragma once
+#include <algorithm>
 #include <array>
+#include <cmath>
+#include <vector>
 
 #include "elements/beam_section.hpp"
 #include "sinew/linalg3.hpp"
@@ -46,6 +49,13 @@ inline BeamState perturbed(const BeamState& q, int k, double h) {
     setNode(s, node, nodePosition(q, node), expSO3(w) * nodeRotation(q, node));
   }
   return s;
+}
+
+/// Largest absolute entry.
+inline double maxAbs(const std::vector<double>& a) {
+  double m = 0;
+  for (double v : a) m = std::max(m, std::abs(v));
+  return m;
 }
 
 }  // namespace sinew::test

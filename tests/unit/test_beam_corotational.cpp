@@ -10,6 +10,7 @@
 #include "beam_test_support.hpp"
 
 using namespace sinew;
+using test::maxAbs;
 
 namespace {
 
@@ -112,11 +113,6 @@ State referenceState(const Vec3& Xp, const Vec3& Xq) {
 double maxAbsDiff(const std::vector<double>& a, const std::vector<double>& b) {
   double m = 0;
   for (size_t i = 0; i < a.size(); ++i) m = std::max(m, std::abs(a[i] - b[i]));
-  return m;
-}
-double maxAbs(const std::vector<double>& a) {
-  double m = 0;
-  for (double v : a) m = std::max(m, std::abs(v));
   return m;
 }
 

@@ -14,6 +14,7 @@
 #include "beam_test_support.hpp"
 
 using namespace sinew;
+using test::maxAbs;
 
 namespace {
 
@@ -42,11 +43,6 @@ Q24 randomState(std::mt19937& g, const Vec3& Xp, const Vec3& Xq) {
   setNode(q, 0, Xp + rnd(g, 0.3), expSO3(rnd(g, 1.5)));
   setNode(q, 1, Xq + rnd(g, 0.3), expSO3(rnd(g, 1.5)));
   return q;
-}
-double maxAbs(const std::vector<double>& a) {
-  double m = 0;
-  for (double v : a) m = std::max(m, std::abs(v));
-  return m;
 }
 const Vec3 kXp{0.1, -0.2, 0.3}, kXq{1.0, 0.4, 0.1};
 

@@ -50,11 +50,79 @@ def run(name, scene, np_=2, args=(), expect_exit=0):
         if os.path.exists(stale):
             os.remove(stale)
     cmd = launcher(np_) + [path, "-o", out] + list(args)
-    p = subprocess.run(cmd, env=ENV, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, timeout=900)
-    if p.returncode != expect_exit:
-        print(p.stdout)
-        fail(f"{name}: exit code {p.returncode}, expected {expect_exit} ({' '.join(cmd)})")
-    return out, p.stdout
+    if in_process_eligible(path, np_, args, expect_exit):
+        words = ["-o", out] + [str(a) for a in args]
+        code, text = _worker(np_).run(path, words) if np_ > 1 else _run_here(path, words)
+        cmd = ["(in process)"] + cmd
+    else:
+        p = subprocess.run(cmd, env=ENV, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, timeout=900)
+        code, text = p.returncode, p.stdout
+    if code != expect_exit:
+        print(text)
+        fail(f"{name}: exit code {code}, expected {expect_exit} ({' '.join(cmd)})")
+    return out, text
+
+
+# In-process runs (DEVELOPERS.md, "Build and test"): a test's runs that are expected to succeed go
+# through sinew._core (the same SceneRun and result file as the command line): on 2 ranks in one
+# worker process per rank (inprocess_worker.py) instead of one mpirun each, which costs 0.25 s before
+# any work; on 1 rank in this process (an MPI singleton once, instead of once per run). Runs expected
+# to fail (their exit codes, messages and no-hang guarantees are the command line's) and runs with
+# the flags below stay processes. A test sets IN_PROCESS = False to run everything as processes;
+# SINEW_TEST_IN_PROCESS=0 does it for the whole suite.
+IN_PROCESS = os.environ.get("SINEW_TEST_IN_PROCESS", "1") != "0"
+# handled by the command line before a scene runs (help, version, options files, PETSc's log at
+# exit) or by its refinement driver (-target_error)
+PROCESS_FLAGS = ("-help", "-help_dev", "-help_petsc", "-version", "-options_file", "-log_view", "-target_error")
+_workers = {}
+
+
+def _core_built():
+    d = os.path.join(os.path.dirname(os.path.abspath(BIN)), "python", "sinew")
+    return os.path.isdir(d) and any(f.startswith("_core") for f in os.listdir(d))
+
+
+def in_process_eligible(path, np_, args, expect_exit):
+    if not IN_PROCESS or expect_exit != 0 or not _core_built():
+        return False
+    if any(str(a).split("=")[0] in PROCESS_FLAGS for a in args):
+        return False
+    with open(path) as f:
+        return "target_error" not in f.read()
+
+
+_core = None
+
+
+def _run_here(path, words):
+    """A one-rank run in this process (sinew._core on MPI_COMM_WORLD of this singleton)."""
+    global _core
+    if _core is None:
+        import atexit
+        import glob
+        import importlib.util
+        core = sys.modules.get("sinew._core")
+        if core is None:  # the compiled module alone, as sinew._core (the package, if imported later, uses it)
+            so = glob.glob(os.path.join(os.path.dirname(os.path.abspath(BIN)), "python", "sinew", "_core*"))[0]
+            spec = importlib.util.spec_from_file_location("sinew._core", so)
+            core = importlib.util.module_from_spec(spec)
+            spec.loader.exec_module(core)
+            sys.modules["sinew._core"] = core
+        core.initialize([])
+        atexit.register(core.finalize)
+        _core = core
+    run = _core.run(path, flags=words, echo=False)
+    text = run["output"] or ""
+    if run["exit_code"] != 0 and run["message"] and run["message"] not in text:
+        text += run["message"] + "\n"
+    return run["exit_code"], text
+
+
+def _worker(np_):
+    if np_ not in _workers:
+        from inprocess_client import InProcessWorker
+        _workers[np_] = InProcessWorker(MPIEXEC, np_, ENV, WORK)
+    return _workers[np_]
 
 
 def script(name, *args, cwd=None):

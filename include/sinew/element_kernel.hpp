@@ -138,6 +138,9 @@ class ElementKernel {
   /// The mass matrix when it does not depend on the state ([numDofs^2], row-major, owned by the
   /// kernel, equal to what mass() writes), read by the assemblies without a copy; nullptr: call mass().
   virtual const double* constantMass() const { return nullptr; }
+  /// Whether mass() changes with the state (the beams' consistent mass in the element frame); kinds whose
+  /// mass is that of the reference configuration return false (the energy-momentum scheme takes them).
+  virtual bool massDependsOnState() const { return constantMass() == nullptr; }
   /// Equivalent nodal load [numDofs] of the body force density rho * a (gravity). Only when hasInertia().
   virtual void bodyForce(const double* q, const Vec3& a, std::vector<double>& f) const;
   /// Lumped inertia of the nodes instead of a mass matrix (then hasInertia() is false): per node 7

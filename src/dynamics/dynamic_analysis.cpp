@@ -24,12 +24,13 @@ DynamicAnalysis::Scheme DynamicAnalysis::checkScheme(const DistributedMesh& mesh
                                          "Lie-group form of the default scheme (arnold_bruls)");
   if (scheme == Scheme::EnergyMomentum) {
     int bad = 0;
-    for (const LocalElement& e : mesh.elements) bad |= !e.kernel->hasStepForce() || e.kernel->hasInertia();
+    for (const LocalElement& e : mesh.elements)
+      bad |= !e.kernel->hasStepForce() || (e.kernel->hasInertia() && e.kernel->massDependsOnState());
     MPI_Allreduce(MPI_IN_PLACE, &bad, 1, MPI_INT, MPI_LOR, mesh.comm);
     if (bad)
       throw SceneError("-dynamics_scheme", "energy_momentum integrates beams with lumped mass (-beam_mass lumped), rigid "
-                                           "elements and nodal masses; this model has other elements or element mass "
-                                           "matrices (use midpoint or arnold_bruls)");
+                                           "elements, nodal masses, 3D cables and membranes; this model has ANCF cables "
+                                           "or the consistent beam mass (use midpoint or arnold_bruls)");
   }
   return scheme;
 }

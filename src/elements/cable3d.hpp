@@ -34,6 +34,14 @@ class Cable3D final : public ElementKernel, public FormFindingKernel {
   /// rho A L/2 a at each node.
   void bodyForce(const double* q, const Vec3& a, std::vector<double>& f) const override;
   double vonMisesMax(const double* q, const double* lambda) const override;
+  /// The mass of the reference length: no state dependence (the energy-momentum scheme takes it).
+  bool massDependsOnState() const override { return false; }
+  /// U(l) = EA/(2L) (l - l_s)^2 above the slack length l_s = L (1 - N0/EA), 0 below (N0 l when EA = 0).
+  bool strainEnergy(const double* q, double* energy) const override;
+  /// Energy-momentum step force (cable3d_step_force.cpp): +-N_bar (d0 + d1)/(l0 + l1) with the
+  /// discrete-gradient force N_bar = (U(l1) - U(l0))/(l1 - l0), exact through going slack.
+  bool hasStepForce() const override { return true; }
+  void stepForce(const StepForceInput& in, bool tangent, KernelOutput& out) const override;
   /// {N}: elastic axial force, or the URS force lambda N0 + (1 - lambda) N0 l/L in form finding.
   void elementForce(const double* q, std::vector<double>& out) const override;
   /// Reference length and active prestress force.

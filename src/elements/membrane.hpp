@@ -147,6 +147,15 @@ class Membrane final : public ElementKernel, public FormFindingKernel {
   Vec3 shapeAxis(const double* q) const override;
   void clearPrestress() override { setPrestress({0.0, 0.0, 0.0}); }
 
+  /// The mass of the reference configuration: no state dependence (the energy-momentum scheme takes it).
+  bool massDependsOnState() const override { return false; }
+  /// U = t int (S0 . E + 1/2 E . C E) dA over the reference (elastic; false in form finding).
+  bool strainEnergy(const double* q, double* energy) const override;
+  /// Energy-momentum step force (membrane_step_force.cpp): the St. Venant-Kirchhoff force with the mean
+  /// stress S0 + C (E0 + E1)/2 on the mid deformation gradient (exact for the quadratic strains).
+  bool hasStepForce() const override { return true; }
+  void stepForce(const StepForceInput& in, bool tangent, KernelOutput& out) const override;
+
   /// Internal force of the form-finding weak form (T = double or an AD scalar).
   template <class T> void ffForce(const T* x, T* f) const;
 

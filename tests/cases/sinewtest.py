@@ -85,6 +85,8 @@ def _core_built():
 def in_process_eligible(path, np_, args, expect_exit):
     if not IN_PROCESS or expect_exit != 0 or not _core_built():
         return False
+    if ENV.get("PETSC_OPTIONS") or ENV.get("PETSC_OPTIONS_YAML"):  # read by each process's PetscInitialize
+        return False
     if any(str(a).split("=")[0] in PROCESS_FLAGS for a in args):
         return False
     with open(path) as f:

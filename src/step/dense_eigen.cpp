@@ -19,6 +19,10 @@ void dggev_(const char* jobvl, const char* jobvr, const int* n, double* a, const
             double* work, const int* lwork, int* info);
 void dsygvd_(const int* itype, const char* jobz, const char* uplo, const int* n, double* a, const int* lda, double* b,
              const int* ldb, double* w, double* work, const int* lwork, int* iwork, const int* liwork, int* info);
+void dgeqrf_(const int* m, const int* n, double* a, const int* lda, double* tau, double* work, const int* lwork,
+             int* info);
+void dorgqr_(const int* m, const int* n, const int* k, double* a, const int* lda, const double* tau, double* work,
+             const int* lwork, int* info);
 void dgemm_(const char* ta, const char* tb, const int* m, const int* n, const int* k, const double* alpha,
             const double* a, const int* lda, const double* b, const int* ldb, const double* beta, double* c,
             const int* ldc);
@@ -337,6 +341,240 @@ DenseEigenpairs generalPencil(const std::vector<double>& A0, const std::vector<d
     double* x = &out.vectors[static_cast<size_t>(c) * n];
     for (int i = 0; i < n; ++i) x[i] = nr > 0 ? xr[i] / nr : 0.0;
     fixSign(x, n);
+  }
+  return out;
+}
+
+
+namespace {
+
+// Householder QR of the nu x m matrix a (column-major, overwritten by the factors); Q (nu x nu) formed.
+bool fullQR(std::vector<double>& a, int nu, int m, std::vector<double>& Q) {
+  std::vector<double> tau(std::max(m, 1));
+  int info = 0, lwork = -1;
+  double wq = 0;
+  Q.assign(static_cast<size_t>(nu) * nu, 0.0);
+  if (m > 0) {
+    dgeqrf_(&nu, &m, a.data(), &nu, tau.data(), &wq, &lwork, &info);
+    lwork = std::max(static_cast<int>(wq), nu);
+    std::vector<double> work(lwork);
+    dgeqrf_(&nu, &m, a.data(), &nu, tau.data(), work.data(), &lwork, &info);
+    if (info != 0) return false;
+    std::copy(a.begin(), a.end(), Q.begin());
+  }
+  if (nu == 0) return true;
+  lwork = -1;
+  dorgqr_(&nu, &nu, &m, Q.data(), &nu, tau.data(), &wq, &lwork, &info);
+  lwork = std::max(static_cast<int>(wq), nu);
+  std::vector<double> work(lwork);
+  dorgqr_(&nu, &nu, &m, Q.data(), &nu, tau.data(), work.data(), &lwork, &info);
+  return info == 0;
+}
+
+// Symmetric to round-off: max |A_ij - A_ji| <= tol max |A_ij|.
+bool symmetricMatrix(const std::vector<double>& A, int n, double tol) {
+  double amax = 0, asym = 0;
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const double a = A[static_cast<size_t>(j) * n + i];
+      amax = std::max(amax, std::abs(a));
+      asym = std::max(asym, std::abs(a - A[static_cast<size_t>(i) * n + j]));
+    }
+  return asym <= tol * amax;
+}
+
+// The k x k block M(rows, cols) as a column-major array.
+std::vector<double> block(const std::vector<double>& M, int n, const std::vector<int>& rows, const std::vector<int>& cols) {
+  std::vector<double> b(rows.size() * cols.size());
+  for (size_t c = 0; c < cols.size(); ++c)
+    for (size_t r = 0; r < rows.size(); ++r) b[c * rows.size() + r] = M[static_cast<size_t>(cols[c]) * n + rows[r]];
+  return b;
+}
+
+// Z^T M Z (r x r, symmetrized) of the nu x nu M and the nu x r Z.
+std::vector<double> project(const std::vector<double>& M, const double* Z, int nu, int r) {
+  std::vector<double> MZ(static_cast<size_t>(nu) * r), P(static_cast<size_t>(r) * r);
+  gemm('N', 'N', nu, r, nu, M.data(), nu, Z, nu, MZ.data());
+  gemm('T', 'N', r, r, nu, Z, nu, MZ.data(), nu, P.data());
+  for (int i = 0; i < r; ++i)
+    for (int j = 0; j < i; ++j) {
+      const size_t ij = static_cast<size_t>(j) * r + i, ji = static_cast<size_t>(i) * r + j;
+      P[ij] = P[ji] = 0.5 * (P[ij] + P[ji]);
+    }
+  return P;
+}
+
+}  // namespace
+
+bool symmetricDefinitePencil(const std::vector<double>& A0, const std::vector<double>& B0, int n, double sigma,
+                             int want, DenseEigenpairs& result) {
+  if (n == 0 || !symmetricMatrix(A0, n, 1e-13) || !symmetricMatrix(B0, n, 1e-13)) return false;
+  std::vector<double> A(A0), B(B0);
+  const std::vector<double> D = equilibrate(A, B, n);
+  // constraint rows c (A_ii = 0, B's row zero; A(c, c) = 0) and the others u
+  std::vector<int> c, u;
+  for (int i = 0; i < n; ++i) {
+    bool constraint = A[static_cast<size_t>(i) * n + i] == 0.0;
+    for (int j = 0; j < n && constraint; ++j) constraint = B[static_cast<size_t>(j) * n + i] == 0.0;
+    (constraint ? c : u).push_back(i);
+  }
+  for (int i : c)
+    for (int j : c)
+      if (A[static_cast<size_t>(j) * n + i] != 0.0) return false;
+  const int m = static_cast<int>(c.size()), nu = static_cast<int>(u.size()), r = nu - m;
+  if (r <= 0) return false;
+  // C^T = Q R (nu x m), Z = the last r columns of Q: an orthonormal basis of null(C)
+  std::vector<double> CT = block(A, n, u, c), Q;
+  if (!fullQR(CT, nu, m, Q)) return false;
+  double rmax = 0, rmin = std::numeric_limits<double>::infinity();
+  for (int k = 0; k < m; ++k) {
+    rmax = std::max(rmax, std::abs(CT[static_cast<size_t>(k) * nu + k]));
+    rmin = std::min(rmin, std::abs(CT[static_cast<size_t>(k) * nu + k]));
+  }
+  if (m > 0 && rmin <= nu * kEps * rmax) return false;  // redundant constraints
+  const double* Z = &Q[static_cast<size_t>(m) * nu];
+  const std::vector<double> Auu = block(A, n, u, u), Buu = block(B, n, u, u);
+  std::vector<double> Kr = project(Auu, Z, nu, r), Gr = project(Buu, Z, nu, r), w;
+  // Gr v = w Kr v, w = 1/lambda; Kr not positive definite (dsygvd fails in its Cholesky): not this path
+  if (!symmetricDefiniteEigen(Gr, Kr, r, w)) return false;
+  DenseEigenpairs out;
+  out.n = n;
+  double wmax = 0;
+  for (double v : w) wmax = std::max(wmax, std::abs(v));
+  std::vector<int> order;
+  for (int j = 0; j < r; ++j)
+    if (std::abs(w[j]) > r * kEps * wmax) order.push_back(j);
+  auto dist = [&](int j) { return std::abs(1.0 / w[j] - sigma); };
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return dist(a) < dist(b); });
+  for (int j : order) out.re.push_back(1.0 / w[j]);
+  out.im.assign(out.re.size(), 0.0);
+  const int k = std::min<int>(want, out.count());
+  out.vectors.assign(static_cast<size_t>(n) * k, 0.0);
+  out.estimate.assign(k, 0.0);
+  const double nA = normInf(A0, n), nB = normInf(B0, n);
+  std::vector<double> xu(nu), rhs(nu), Ax(n), Bx(n), zero(n, 0.0);
+  for (int p = 0; p < k; ++p) {
+    const int j = order[p];
+    gemm('N', 'N', nu, 1, r, Z, nu, &Gr[static_cast<size_t>(j) * r], r, xu.data());
+    // multipliers: C^T l = lambda B_uu x_u - A_uu x_u (least squares: l = R^-1 Q_1^T rhs)
+    gemm('N', 'N', nu, 1, nu, Auu.data(), nu, xu.data(), nu, rhs.data());
+    std::vector<double> bu(nu);
+    gemm('N', 'N', nu, 1, nu, Buu.data(), nu, xu.data(), nu, bu.data());
+    for (int i = 0; i < nu; ++i) rhs[i] = out.re[p] * bu[i] - rhs[i];
+    std::vector<double> l(m);
+    gemm('T', 'N', m, 1, nu, Q.data(), nu, rhs.data(), nu, l.data());
+    for (int a = m - 1; a >= 0; --a) {
+      for (int b = a + 1; b < m; ++b) l[a] -= CT[static_cast<size_t>(b) * nu + a] * l[b];
+      l[a] /= CT[static_cast<size_t>(a) * nu + a];
+    }
+    double* x = &out.vectors[static_cast<size_t>(p) * n];
+    for (int i = 0; i < nu; ++i) x[u[i]] = D[u[i]] * xu[i];
+    for (int i = 0; i < m; ++i) x[c[i]] = D[c[i]] * l[i];
+    double nx = 0;
+    for (int i = 0; i < n; ++i) nx += x[i] * x[i];
+    nx = std::sqrt(nx);
+    for (int i = 0; i < n; ++i) x[i] = nx > 0 ? x[i] / nx : 0.0;
+    fixSign(x, n);
+    // Rayleigh quotient x^T A x / x^T B x (symmetric pencil: the two-sided quotient of the QZ path)
+    gemm('N', 'N', n, 1, n, A0.data(), n, x, n, Ax.data());
+    gemm('N', 'N', n, 1, n, B0.data(), n, x, n, Bx.data());
+    const double xax = std::inner_product(Ax.begin(), Ax.end(), x, 0.0);
+    const double xbx = std::inner_product(Bx.begin(), Bx.end(), x, 0.0);
+    if (xbx != 0.0 && std::isfinite(xax / xbx)) out.re[p] = xax / xbx;
+    out.estimate[p] = backwardError(Ax, zero, Bx, zero, x, nullptr, out.re[p], 0.0, nA, nB);
+  }
+  result = std::move(out);
+  return true;
+}
+
+
+namespace {
+
+// Inverse iteration for the right (transpose false) or left vector of the eigenvalue lambda of the
+// equilibrated pencil (A, B), from the LU of A - lambda B: two steps v <- (A - lambda B)^-1 B v.
+std::vector<double> inverseIteration(const std::vector<double>& lu, const std::vector<int>& piv,
+                                     const std::vector<double>& B, int n, bool transpose) {
+  std::vector<double> v(n), bv(n);
+  for (int i = 0; i < n; ++i) v[i] = 1.0 + 0.5 * std::sin(i + 1.0);  // fixed start, no special direction
+  for (int it = 0; it < 2; ++it) {
+    gemm(transpose ? 'T' : 'N', 'N', n, 1, n, B.data(), n, v.data(), n, bv.data());
+    int info = 0, one = 1;
+    dgetrs_(transpose ? "T" : "N", &n, &one, lu.data(), &n, piv.data(), bv.data(), &n, &info);
+    double m = 0;
+    for (double x : bv) m = std::max(m, std::abs(x));
+    for (int i = 0; i < n; ++i) v[i] = m > 0 && std::isfinite(m) ? bv[i] / m : 0.0;
+  }
+  return v;
+}
+
+}  // namespace
+
+DenseEigenpairs generalPencil(const std::vector<double>& A0, const std::vector<double>& B0, int n, double sigma,
+                              const WantedPairs& wanted) {
+  DenseEigenpairs out;
+  out.n = n;
+  std::vector<double> A(A0), B(B0);
+  const std::vector<double> D = equilibrate(A, B, n);
+  // QZ eigenvalues alone (no Schur vectors accumulated: about half of QZ with both vector sets)
+  std::vector<double> ar(n), ai(n), beta(n), Aq(A), Bq(B), dummy(1);
+  int info = 0, lwork = -1, one = 1;
+  double wq = 0;
+  if (n > 0) {
+    dggev_("N", "N", &n, Aq.data(), &n, Bq.data(), &n, ar.data(), ai.data(), beta.data(), dummy.data(), &one,
+           dummy.data(), &one, &wq, &lwork, &info);
+    lwork = std::max(static_cast<int>(wq), 8 * n);
+    std::vector<double> work(lwork);
+    dggev_("N", "N", &n, Aq.data(), &n, Bq.data(), &n, ar.data(), ai.data(), beta.data(), dummy.data(), &one,
+           dummy.data(), &one, work.data(), &lwork, &info);
+  }
+  if (info != 0) {
+    out.singular = true;
+    return out;
+  }
+  std::vector<int> order;
+  for (int j = 0; j < n; ++j)
+    if (std::abs(beta[j]) > n * kEps * std::hypot(ar[j], ai[j])) order.push_back(j);
+  auto dist = [&](int j) { return std::hypot(ar[j] / beta[j] - sigma, ai[j] / beta[j]); };
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return dist(a) < dist(b); });
+  for (int j : order) {
+    out.re.push_back(ar[j] / beta[j]);
+    out.im.push_back(ai[j] / beta[j]);
+  }
+  const int k = std::min(wanted(out.re, out.im), out.count());
+  for (int c = 0; c < k; ++c)
+    if (out.im[c] != 0.0) return generalPencil(A0, B0, n, sigma, k);  // complex pairs: QZ's own vectors
+  out.vectors.assign(static_cast<size_t>(n) * k, 0.0);
+  out.estimate.assign(k, 0.0);
+  const double nA = normInf(A0, n), nB = normInf(B0, n);
+  std::vector<double> lu(static_cast<size_t>(n) * n), Ax(n), Bx(n), zero(n, 0.0);
+  std::vector<int> piv(n);
+  for (int c = 0; c < k; ++c) {
+    // LU of A - lambda B; an exactly zero pivot: lambda moved by a few ulps
+    double shift = out.re[c];
+    for (int attempt = 0; attempt < 3; ++attempt) {
+      for (size_t i = 0; i < lu.size(); ++i) lu[i] = A[i] - shift * B[i];
+      dgetrf_(&n, &n, lu.data(), &n, piv.data(), &info);
+      if (info == 0) break;
+      shift += 8 * kEps * std::max(std::abs(shift), 1.0);
+    }
+    std::vector<double> x = inverseIteration(lu, piv, B, n, false), y = inverseIteration(lu, piv, B, n, true);
+    for (int i = 0; i < n; ++i) {
+      x[i] *= D[i];
+      y[i] *= D[i];
+    }
+    gemm('N', 'N', n, 1, n, A0.data(), n, x.data(), n, Ax.data());
+    gemm('N', 'N', n, 1, n, B0.data(), n, x.data(), n, Bx.data());
+    // two-sided Rayleigh quotient y^T A x / y^T B x: error quadratic in the vectors'
+    const double yax = std::inner_product(y.begin(), y.end(), Ax.begin(), 0.0);
+    const double ybx = std::inner_product(y.begin(), y.end(), Bx.begin(), 0.0);
+    if (ybx != 0.0 && std::isfinite(yax / ybx)) out.re[c] = yax / ybx;
+    out.estimate[c] = backwardError(Ax, zero, Bx, zero, x.data(), nullptr, out.re[c], 0.0, nA, nB);
+    double nr = 0;
+    for (double v : x) nr += v * v;
+    nr = std::sqrt(nr);
+    double* xo = &out.vectors[static_cast<size_t>(c) * n];
+    for (int i = 0; i < n; ++i) xo[i] = nr > 0 ? x[i] / nr : 0.0;
+    fixSign(xo, n);
   }
   return out;
 }

@@ -293,7 +293,7 @@ std::string BucklingAnalysis::summary() const {
   if (dense_)
     s << "   eigensolver: dense LAPACK for " << asm_.mesh().numGlobalUnknowns
       << " unknowns (up to -eigen_dense_max_unknowns; 0: SLEPc): " << symmetricSolves_
-      << " symmetric-definite reductions, " << qzSolves_ << " QZ (nonsymmetric pencils)\n";
+      << " symmetric pencils (dsygvd), " << qzSolves_ << " nonsymmetric\n";
   return s.str();
 }
 

@@ -42,7 +42,7 @@ class BucklingAnalysis : public StepAnalysis {
   static PetscErrorCode materialMult(Mat A, Vec x, Vec y);
   PetscErrorCode refine(const UnitFreeNorms& scaled, Vec x, PetscScalar* mu, double* backward);
   bool dense_ = false;        // -eigen_dense_max_unknowns: LAPACK on rank 0 instead of SLEPc
-  long symmetricSolves_ = 0, qzSolves_ = 0;  // dense solves by the symmetric-definite reduction / by QZ
+  long symmetricSolves_ = 0, qzSolves_ = 0;  // dense solves of symmetric (dsygvd) / nonsymmetric pencils
   bool elementwise_ = false;  // -eigen_operator: K_m x = (element-wise K) x - K_g x
   Mat Kop_ = nullptr;
   std::vector<double> estimate_, backward_;

@@ -23,6 +23,9 @@ void dgeqrf_(const int* m, const int* n, double* a, const int* lda, double* tau,
              int* info);
 void dorgqr_(const int* m, const int* n, const int* k, double* a, const int* lda, const double* tau, double* work,
              const int* lwork, int* info);
+void dpotrf_(const char* uplo, const int* n, double* a, const int* lda, int* info);
+void dtrsm_(const char* side, const char* uplo, const char* transa, const char* diag, const int* m, const int* n,
+            const double* alpha, const double* a, const int* lda, double* b, const int* ldb);
 void dgemm_(const char* ta, const char* tb, const int* m, const int* n, const int* k, const double* alpha,
             const double* a, const int* lda, const double* b, const int* ldb, const double* beta, double* c,
             const int* ldc);
@@ -391,12 +394,12 @@ std::vector<double> block(const std::vector<double>& M, int n, const std::vector
   return b;
 }
 
-// Z^T M Z (r x r, symmetrized) of the nu x nu M and the nu x r Z.
-std::vector<double> project(const std::vector<double>& M, const double* Z, int nu, int r) {
+// Z^T M Z (r x r, symmetrized if `symmetrize`) of the nu x nu M and the nu x r Z.
+std::vector<double> project(const std::vector<double>& M, const double* Z, int nu, int r, bool symmetrize) {
   std::vector<double> MZ(static_cast<size_t>(nu) * r), P(static_cast<size_t>(r) * r);
   gemm('N', 'N', nu, r, nu, M.data(), nu, Z, nu, MZ.data());
   gemm('T', 'N', r, r, nu, Z, nu, MZ.data(), nu, P.data());
-  for (int i = 0; i < r; ++i)
+  for (int i = 0; i < r && symmetrize; ++i)
     for (int j = 0; j < i; ++j) {
       const size_t ij = static_cast<size_t>(j) * r + i, ji = static_cast<size_t>(i) * r + j;
       P[ij] = P[ji] = 0.5 * (P[ij] + P[ji]);
@@ -406,13 +409,21 @@ std::vector<double> project(const std::vector<double>& M, const double* Z, int n
 
 }  // namespace
 
-bool symmetricDefinitePencil(const std::vector<double>& A0, const std::vector<double>& B0, int n, double sigma,
-                             int want, DenseEigenpairs& result) {
-  if (n == 0 || !symmetricMatrix(A0, n, 1e-13) || !symmetricMatrix(B0, n, 1e-13)) return false;
-  std::vector<double> A(A0), B(B0);
-  const std::vector<double> D = equilibrate(A, B, n);
-  // constraint rows c (A_ii = 0, B's row zero; A(c, c) = 0) and the others u
+namespace {
+
+// The pencil (A, B) (equilibrated, A symmetric) restricted to the null space of its constraint rows:
+// c (A_ii = 0, B's row zero, A(c, c) = 0), u the others, C = A(c, u), C^T = Q R, Z = the last r
+// columns of Q. False when there is no such reduction (no unknowns left, redundant constraints).
+struct NullSpaceReduction {
   std::vector<int> c, u;
+  std::vector<double> CT, Q, Auu, Buu;  // CT: the QR factors of C^T (R in its upper triangle)
+  int m = 0, nu = 0, r = 0;
+  const double* Z() const { return &Q[static_cast<size_t>(m) * nu]; }
+};
+
+bool reduceToNullSpace(const std::vector<double>& A, const std::vector<double>& B, int n, NullSpaceReduction& red) {
+  std::vector<int>& c = red.c;
+  std::vector<int>& u = red.u;
   for (int i = 0; i < n; ++i) {
     bool constraint = A[static_cast<size_t>(i) * n + i] == 0.0;
     for (int j = 0; j < n && constraint; ++j) constraint = B[static_cast<size_t>(j) * n + i] == 0.0;
@@ -422,19 +433,39 @@ bool symmetricDefinitePencil(const std::vector<double>& A0, const std::vector<do
     for (int j : c)
       if (A[static_cast<size_t>(j) * n + i] != 0.0) return false;
   const int m = static_cast<int>(c.size()), nu = static_cast<int>(u.size()), r = nu - m;
+  red.m = m;
+  red.nu = nu;
+  red.r = r;
   if (r <= 0) return false;
   // C^T = Q R (nu x m), Z = the last r columns of Q: an orthonormal basis of null(C)
-  std::vector<double> CT = block(A, n, u, c), Q;
-  if (!fullQR(CT, nu, m, Q)) return false;
+  std::vector<double>& CT = red.CT;
+  CT = block(A, n, u, c);
+  if (!fullQR(CT, nu, m, red.Q)) return false;
   double rmax = 0, rmin = std::numeric_limits<double>::infinity();
   for (int k = 0; k < m; ++k) {
     rmax = std::max(rmax, std::abs(CT[static_cast<size_t>(k) * nu + k]));
     rmin = std::min(rmin, std::abs(CT[static_cast<size_t>(k) * nu + k]));
   }
   if (m > 0 && rmin <= nu * kEps * rmax) return false;  // redundant constraints
-  const double* Z = &Q[static_cast<size_t>(m) * nu];
-  const std::vector<double> Auu = block(A, n, u, u), Buu = block(B, n, u, u);
-  std::vector<double> Kr = project(Auu, Z, nu, r), Gr = project(Buu, Z, nu, r), w;
+  red.Auu = block(A, n, u, u);
+  red.Buu = block(B, n, u, u);
+  return true;
+}
+
+}  // namespace
+
+bool symmetricDefinitePencil(const std::vector<double>& A0, const std::vector<double>& B0, int n, double sigma,
+                             int want, DenseEigenpairs& result) {
+  if (n == 0 || !symmetricMatrix(A0, n, 1e-13) || !symmetricMatrix(B0, n, 1e-13)) return false;
+  std::vector<double> A(A0), B(B0);
+  const std::vector<double> D = equilibrate(A, B, n);
+  NullSpaceReduction red;
+  if (!reduceToNullSpace(A, B, n, red)) return false;
+  const std::vector<int>&c = red.c, &u = red.u;
+  const std::vector<double>&CT = red.CT, &Q = red.Q, &Auu = red.Auu, &Buu = red.Buu;
+  const int m = red.m, nu = red.nu, r = red.r;
+  const double* Z = red.Z();
+  std::vector<double> Kr = project(Auu, Z, nu, r, true), Gr = project(Buu, Z, nu, r, true), w;
   // Gr v = w Kr v, w = 1/lambda; Kr not positive definite (dsygvd fails in its Cholesky): not this path
   if (!symmetricDefiniteEigen(Gr, Kr, r, w)) return false;
   DenseEigenpairs out;
@@ -509,17 +540,62 @@ std::vector<double> inverseIteration(const std::vector<double>& lu, const std::v
 
 }  // namespace
 
+namespace {
+
+// The finite eigenvalues lambda = ar / beta + i ai / beta of the equilibrated pencil (A, B) with A
+// symmetric and positive definite on the null space Z of its constraint rows: Z^T A Z = L L^T, the
+// eigenvalues w = 1/lambda of the standard nonsymmetric L^-1 Z^T B Z L^-T (LAPACK dgeev, eigenvalues
+// alone: a third of QZ's); the rest (constraints, w = 0) get beta = 0. False: no such reduction.
+bool reducedEigenvalues(const std::vector<double>& A, const std::vector<double>& B, int n, std::vector<double>& ar,
+                        std::vector<double>& ai, std::vector<double>& beta) {
+  if (n == 0 || !symmetricMatrix(A, n, 1e-13)) return false;
+  NullSpaceReduction red;
+  if (!reduceToNullSpace(A, B, n, red)) return false;
+  const int r = red.r;
+  std::vector<double> L = project(red.Auu, red.Z(), red.nu, r, true), M = project(red.Buu, red.Z(), red.nu, r, false);
+  int info = 0;
+  dpotrf_("L", &r, L.data(), &r, &info);
+  if (info != 0) return false;
+  const double one = 1.0;
+  dtrsm_("L", "L", "N", "N", &r, &r, &one, L.data(), &r, M.data(), &r);  // L^-1 M
+  dtrsm_("R", "L", "T", "N", &r, &r, &one, L.data(), &r, M.data(), &r);  // (L^-1 M) L^-T
+  std::vector<double> wr(r), wi(r), dummy(1);
+  int lwork = -1, ld = 1;
+  double wq = 0;
+  dgeev_("N", "N", &r, M.data(), &r, wr.data(), wi.data(), dummy.data(), &ld, dummy.data(), &ld, &wq, &lwork, &info);
+  lwork = std::max(static_cast<int>(wq), 4 * r);
+  std::vector<double> work(lwork);
+  dgeev_("N", "N", &r, M.data(), &r, wr.data(), wi.data(), dummy.data(), &ld, dummy.data(), &ld, work.data(), &lwork,
+         &info);
+  if (info != 0) return false;
+  // lambda = 1/w = conj(w) / |w|^2: alpha = conj(w), beta = |w|^2
+  std::fill(ar.begin(), ar.end(), 1.0);
+  std::fill(ai.begin(), ai.end(), 0.0);
+  std::fill(beta.begin(), beta.end(), 0.0);
+  for (int j = 0; j < r; ++j) {
+    ar[j] = wr[j];
+    ai[j] = -wi[j];
+    beta[j] = wr[j] * wr[j] + wi[j] * wi[j];
+  }
+  return true;
+}
+
+}  // namespace
+
 DenseEigenpairs generalPencil(const std::vector<double>& A0, const std::vector<double>& B0, int n, double sigma,
                               const WantedPairs& wanted) {
   DenseEigenpairs out;
   out.n = n;
   std::vector<double> A(A0), B(B0);
   const std::vector<double> D = equilibrate(A, B, n);
-  // QZ eigenvalues alone (no Schur vectors accumulated: about half of QZ with both vector sets)
+  // the eigenvalues: by the reduction to a standard problem where A is symmetric and definite on the
+  // constraints' null space, else QZ alone (no Schur vectors accumulated: about half of QZ with both sets)
   std::vector<double> ar(n), ai(n), beta(n), Aq(A), Bq(B), dummy(1);
   int info = 0, lwork = -1, one = 1;
   double wq = 0;
-  if (n > 0) {
+  if (reducedEigenvalues(A, B, n, ar, ai, beta)) {
+    info = 0;  // the vectors below are those of the whole pencil
+  } else if (n > 0) {
     dggev_("N", "N", &n, Aq.data(), &n, Bq.data(), &n, ar.data(), ai.data(), beta.data(), dummy.data(), &one,
            dummy.data(), &one, &wq, &lwork, &info);
     lwork = std::max(static_cast<int>(wq), 8 * n);

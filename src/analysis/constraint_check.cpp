@@ -207,7 +207,7 @@ PetscErrorCode nullDirections(Mat J, Vec D, const std::vector<Vec>& X, PetscReal
 
 PetscErrorCode checkConstraints(
 Assembler& assembler, const Model& model, Vec U, const LoadState& ls,
-                                const ModelCheckSettings& settings, ConstraintReport* report) {
+                                const ModelCheckSettings& settings, int denseMaxUnknowns, ConstraintReport* report) {
   PetscFunctionBeginUser;
   *report = ConstraintReport{};
   DistributedMesh& m = assembler.mesh();
@@ -261,7 +261,7 @@ Assembler& assembler, const Model& model, Vec U, const LoadState& ls,
     }
     PetscCall(VecRestoreArray(D, &d));
   }
-  // (J + sigma D) factored once with MUMPS; sigma is relative since D carries the scale.
+  // (J + sigma D) factored once (MUMPS, or dense LU for a small one-process model); sigma is relative since D carries the scale.
   const double sigma = 1e-8;
   PetscCall(MatDuplicate(J, MAT_COPY_VALUES, &As));
   {
@@ -277,7 +277,7 @@ Assembler& assembler, const Model& model, Vec U, const LoadState& ls,
   PetscCall(KSPCreate(comm, &ksp));
   PetscCall(KSPSetOptionsPrefix(ksp, "constraint_check_"));
   PetscCall(KSPSetOperators(ksp, As, As));
-  PetscCall(useDirectSolver(ksp, m));
+  PetscCall(useDirectSolver(ksp, m, denseMaxUnknowns));
   PetscCall(KSPSetFromOptions(ksp));
   PetscCall(KSPSetUp(ksp));
   PetscCall(KSPGetPC(ksp, &pc));

@@ -28,8 +28,8 @@ struct ConstraintReport {
 };
 
 /// Collective. Checks the tangent at state U (load state ls). settings: -constraint_check_tol,
-/// -constraint_check_vectors (subspace size).
+/// -constraint_check_vectors (subspace size); denseMaxUnknowns: -dense_max_unknowns (useDirectSolver).
 PetscErrorCode checkConstraints(Assembler& assembler, const Model& model, Vec U, const LoadState& ls,
-                                const ModelCheckSettings& settings, ConstraintReport* report);
+                                const ModelCheckSettings& settings, int denseMaxUnknowns, ConstraintReport* report);
 
 }  // namespace sinew

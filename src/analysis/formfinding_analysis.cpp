@@ -40,6 +40,7 @@ void setFormFindingMode(DistributedMesh& m, const std::vector<int>& sets, bool o
 }  // namespace
 
 PetscErrorCode checkFormFindingConstraints(Assembler& assembler, const Model& model, const ModelCheckSettings& settings,
+                                           int denseMaxUnknowns,
                                            ConstraintReport* report) {
   PetscFunctionBeginUser;
   DistributedMesh& m = assembler.mesh();
@@ -49,7 +50,7 @@ PetscErrorCode checkFormFindingConstraints(Assembler& assembler, const Model& mo
   Vec U0;
   PetscCall(assembler.createVector(&U0));
   PetscCall(VecSet(U0, 0.0));
-  PetscCall(checkConstraints(assembler, model, U0, LoadState{}, settings, report));
+  PetscCall(checkConstraints(assembler, model, U0, LoadState{}, settings, denseMaxUnknowns, report));
   PetscCall(VecDestroy(&U0));
   setFormFindingMode(m, sets, false, 0.0, false);
   PetscFunctionReturn(PETSC_SUCCESS);

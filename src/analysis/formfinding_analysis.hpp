@@ -153,8 +153,9 @@ class FormFindingAnalysis {
 /// acts as its force density N0/L in every direction and a membrane as sigma grad u . grad v),
 /// elastic stiffness of every other element. A node no element holds in some direction, a net
 /// without supports (rigid translation), a mast free to swing about the corner it carries, are
-/// null directions of this tangent. The kernels are elastic again afterwards.
+/// null directions of this tangent. The kernels are elastic again afterwards. denseMaxUnknowns:
+/// -dense_max_unknowns (checkConstraints).
 PetscErrorCode checkFormFindingConstraints(Assembler& assembler, const Model& model, const ModelCheckSettings& settings,
-                                           ConstraintReport* report);
+                                           int denseMaxUnknowns, ConstraintReport* report);
 
 }  // namespace sinew

@@ -33,7 +33,7 @@ StaticAnalysis::StaticAnalysis(Assembler& assembler, int loadsteps, const Static
   SinewCallThrow(comm, SNESSetConvergenceTest(snes_, convergenceTest, this, nullptr));
   KSP ksp;
   SinewCallThrow(comm, SNESGetKSP(snes_, &ksp));
-  SinewCallThrow(comm, useDirectSolver(ksp, asm_.mesh()));
+  SinewCallThrow(comm, useDirectSolver(ksp, asm_.mesh(), settings.denseMaxUnknowns));
   SinewCallThrow(comm, setUpElementwiseOperator(settings.tangentOperator, ancf));
   SinewCallThrow(comm, SNESSetFromOptions(snes_));
   forceRtol_ = settings.forceRtol.value_or(forceRtol_);

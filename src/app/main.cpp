@@ -9,6 +9,7 @@
 #include "solvers/ancf/cable_coarse_space.hpp"
 #include "solvers/ancf/node_rotated_pc.hpp"
 #include "solvers/cut_corrected_lu.hpp"
+#include "solvers/dense_lu.hpp"
 
 int main(int argc, char** argv) {
   sinew::quickSingletonStart();
@@ -16,10 +17,11 @@ int main(int argc, char** argv) {
   // -help, -help_dev, -version are Sinew's: taken out before PETSc would print its banners for them
   const sinew::StartRequest request = sinew::takeStartRequest(&argc, argv);
   PetscCall(SlepcInitialize(&argc, &argv, nullptr, sinew::usageText()));
-  // Sinew's preconditioners are PETSc PC types: -pc_type cutlu / noderotated name them like PETSc's own
+  // Sinew's preconditioners are PETSc PC types: -pc_type cutlu / noderotated / denselu name them like PETSc's own
   PetscCall(sinew::registerCutCorrectedLU());
   PetscCall(sinew::registerNodeRotatedPC());
   PetscCall(sinew::registerCableCoarsePC());
+  PetscCall(sinew::registerDenseLU());
   sinew::installInterruptHandlers();  // after PETSc's, which would abort on SIGTERM/SIGUSR1
   int code = 0;
   bool stop = false;

@@ -248,7 +248,7 @@ PetscErrorCode SceneRun::setUp() {
   // Mechanisms and redundant constraints are model errors (exit 2), found before any file exists.
   {
     PhaseScope checkPhase("the constraint check");
-    PetscCall(checkModelBeforeRun(model_, plan_, *assembler_, h5_, settings_.check, &check_, &times_, &exitCode_));
+    PetscCall(checkModelBeforeRun(model_, plan_, *assembler_, h5_, settings_.check, settings_.statics.denseMaxUnknowns, &check_, &times_, &exitCode_));
   }
   if (exitCode_) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCall(createResults(layout));

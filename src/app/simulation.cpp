@@ -17,6 +17,7 @@
 #include "solvers/ancf/cable_coarse_space.hpp"
 #include "solvers/ancf/node_rotated_pc.hpp"
 #include "solvers/cut_corrected_lu.hpp"
+#include "solvers/dense_lu.hpp"
 
 namespace sinew {
 
@@ -107,7 +108,7 @@ void initialize(int* argc, char*** argv) {
   if (SlepcInitialize(argc, argv, nullptr, nullptr)) throw RunError(4, "error: PETSc/SLEPc could not be initialised");
   gStartedSlepc = true;
   // Sinew's preconditioners are PETSc PC types, as in main()
-  if (registerCutCorrectedLU() || registerNodeRotatedPC() || registerCableCoarsePC())
+  if (registerCutCorrectedLU() || registerNodeRotatedPC() || registerCableCoarsePC() || registerDenseLU())
     throw RunError(4, "error: Sinew's preconditioners could not be registered");
 }
 

@@ -46,6 +46,7 @@ struct StaticsSettings {
   int incrementGrowIts = 5;          ///< -increment_grow_its
   OperatorChoice tangentOperator = OperatorChoice::Auto;  ///< -tangent_operator
   bool assemblyCoo = true;           ///< -assembly_coo (the assembler's Jacobian assembly)
+  int denseMaxUnknowns = 200;        ///< -dense_max_unknowns: one process up to this many unknowns: dense LU of the tangent
   bool operator==(const StaticsSettings&) const = default;
 };
 

@@ -7,6 +7,7 @@
 
 #include "assembly/assembler.hpp"
 #include "mesh/distributed_mesh.hpp"
+#include "solvers/dense_lu.hpp"
 #include "settings/settings.hpp"
 #include "sinew/petsc_compat.hpp"
 
@@ -71,6 +72,11 @@ inline PetscErrorCode useChainLU(KSP ksp, MPI_Comm comm) {
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/// Whether the small-model dense LU applies: one process and at most denseMaxUnknowns unknowns.
+inline bool useDenseTangentLU(const DistributedMesh& mesh, int denseMaxUnknowns) {
+  return mesh.size == 1 && mesh.numGlobalUnknowns <= static_cast<long>(denseMaxUnknowns);
+}
+
 /// The default direct solver for a model's tangent. An ANCF-only model on one process (chains of
 /// cable elements, no multipliers, symmetric positive tangents in statics) is factored with PETSc's
 /// own LU in nested-dissection order: the chain's elimination tree has thousands of tiny fronts,
@@ -88,6 +94,18 @@ inline PetscErrorCode useDirectSolver(KSP ksp, const DistributedMesh& mesh) {
   MPI_Comm_size(mesh.comm, &size);
   if (size == 1) PetscCall(usePetscLU(ksp));
   else PetscCall(useChainLU(ksp, mesh.comm));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/// The direct solver of a tangent solved many times in small designs (statics Newton, compliance,
+/// constraint check): a model on one process with at most `denseMaxUnknowns` unknowns
+/// (-dense_max_unknowns) is factored dense with LAPACK (useDenseLU: getrf with partial pivoting,
+/// PC type denselu), where MUMPS's fixed cost per call dominates (66 unknowns: docs/performance.md,
+/// "Designs from Python"); otherwise useDirectSolver(ksp, mesh). Collective.
+inline PetscErrorCode useDirectSolver(KSP ksp, const DistributedMesh& mesh, int denseMaxUnknowns) {
+  PetscFunctionBeginUser;
+  if (useDenseTangentLU(mesh, denseMaxUnknowns)) PetscCall(useDenseLU(ksp));
+  else PetscCall(useDirectSolver(ksp, mesh));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -87,8 +87,8 @@ PetscErrorCode BucklingAnalysis::solve(int nev, int* nconv) {
 }
 
 // Every pair of the pencil SLEPc solves (K_m or its element-wise operator, and -K_g), dense on rank 0
-// about the target, nearest first; to every rank.
-PetscErrorCode BucklingAnalysis::solveDense(DenseEigenpairs& pairs) {
+// about the target, nearest first, with the vectors of the first wanted(re, im); to every rank.
+PetscErrorCode BucklingAnalysis::solveDense(DenseEigenpairs& pairs, const WantedPairs& wanted) {
   PetscFunctionBeginUser;
   const DistributedMesh& mesh = asm_.mesh();
   std::vector<double> A, B;
@@ -99,8 +99,16 @@ PetscErrorCode BucklingAnalysis::solveDense(DenseEigenpairs& pairs) {
   PetscCall(EPSGetTarget(eps_, &target));
   const int n = static_cast<int>(mesh.numGlobalUnknowns);
   PetscCall(PetscLogEventBegin(SinewEvents::get().eigen, 0, 0, 0, 0));
-  if (mesh.rank == 0) pairs = generalPencil(A, B, n, target, n);
+  // symmetric pencil with K_m positive definite on the constraints' null space: the symmetric-definite
+  // reduction (dsygvd); otherwise (or not definite) QZ
+  int symmetric = 0;
+  if (mesh.rank == 0) {
+    symmetric = symmetricDefinitePencil(A, B, n, target, n, pairs);
+    if (!symmetric) pairs = generalPencil(A, B, n, target, wanted);
+  }
   PetscCall(broadcastPairs(mesh.comm, pairs));
+  MPI_Bcast(&symmetric, 1, MPI_INT, 0, mesh.comm);
+  ++(symmetric ? symmetricSolves_ : qzSolves_);
   PetscCall(PetscLogEventEnd(SinewEvents::get().eigen, 0, 0, 0, 0));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -157,11 +165,26 @@ PetscErrorCode BucklingAnalysis::atStep(Vec U, const LoadState& ls, ResultFile& 
     int nev = 2 * nbuck_ + 2, nconv = 0;
     EPSConvergedReason reason = EPS_CONVERGED_ITERATING;
     DenseEigenpairs dense;
+    // mu ||K_g|| > 1e4 ||K_m||: a null direction of K_g (infinite multiplier) computed at round-off level;
+    // a real buckling load has mu ||K_g|| / ||K_m|| of the order of (thickness / length)^2
+    auto kept = [&](PetscScalar kr, PetscScalar ki) {
+      const bool finite = std::isfinite(kr) && kr * ng < 1e4 * nm;
+      return finite && kr > 0 && std::abs(ki) <= 1e-6 * std::abs(kr);
+    };
+    // the dense solve's vectors: the assembled operator needs those of the nbuck_ smallest positive
+    // multipliers, nearest to the target 0 first (the element-wise one refines every pair; -buck_eps_nev: all)
+    auto wanted = [&](const std::vector<double>& re, const std::vector<double>& im) {
+      if (elementwise_ || userNev_) return static_cast<int>(re.size());
+      int found = 0;
+      for (size_t i = 0; i < re.size(); ++i)
+        if (kept(re[i], im[i]) && ++found == nbuck_) return static_cast<int>(i) + 1;
+      return static_cast<int>(re.size());
+    };
     for (int attempt = 0; attempt < 3; ++attempt) {
       for (auto& p : positive) PetscCall(VecDestroy(&p.x));
       positive.clear();
       if (dense_) {  // every pair at once; -buck_eps_nev: SLEPc's count of the nearest
-        PetscCall(solveDense(dense));
+        PetscCall(solveDense(dense, wanted));
         PetscInt userNev, ncv, mpd;
         PetscCall(EPSGetDimensions(eps_, &userNev, &ncv, &mpd));
         nconv = userNev_ ? std::min<int>(dense.count(), static_cast<int>(userNev)) : dense.count();
@@ -170,15 +193,9 @@ PetscErrorCode BucklingAnalysis::atStep(Vec U, const LoadState& ls, ResultFile& 
         PetscCall(solve(std::min<int>(nev, static_cast<int>(N)), &nconv));
         PetscCall(EPSGetConvergedReason(eps_, &reason));
       }
-      // mu ||K_g|| > 1e4 ||K_m||: a null direction of K_g (infinite multiplier) computed at round-off level;
-      // a real buckling load has mu ||K_g|| / ||K_m|| of the order of (thickness / length)^2
-      auto kept = [&](PetscScalar kr, PetscScalar ki) {
-        const bool finite = std::isfinite(kr) && kr * ng < 1e4 * nm;
-        return finite && kr > 0 && std::abs(ki) <= 1e-6 * std::abs(kr);
-      };
       for (int i = 0; i < nconv; ++i) {
         // the assembled operator's multiplier is the solver's: a dense pair that is not kept needs no vector
-        if (dense_ && !elementwise_ && !kept(dense.re[i], dense.im[i])) continue;
+        if (dense_ && !elementwise_ && (i >= dense.wanted() || !kept(dense.re[i], dense.im[i]))) continue;
         PetscScalar kr, ki;
         Vec x;
         PetscReal est = 0;
@@ -275,7 +292,8 @@ std::string BucklingAnalysis::summary() const {
   if (anyInf) s << "   inf: no (further) positive multiplier: no compressive stress state that the current load can buckle\n";
   if (dense_)
     s << "   eigensolver: dense LAPACK for " << asm_.mesh().numGlobalUnknowns
-      << " unknowns (up to -eigen_dense_max_unknowns; 0: SLEPc)\n";
+      << " unknowns (up to -eigen_dense_max_unknowns; 0: SLEPc): " << symmetricSolves_
+      << " symmetric pencils (dsygvd), " << qzSolves_ << " nonsymmetric\n";
   return s.str();
 }
 

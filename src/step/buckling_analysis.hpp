@@ -38,10 +38,11 @@ class BucklingAnalysis : public StepAnalysis {
 
  private:
   PetscErrorCode solve(int nev, int* nconv);
-  PetscErrorCode solveDense(DenseEigenpairs& pairs);
+  PetscErrorCode solveDense(DenseEigenpairs& pairs, const WantedPairs& wanted);
   static PetscErrorCode materialMult(Mat A, Vec x, Vec y);
   PetscErrorCode refine(const UnitFreeNorms& scaled, Vec x, PetscScalar* mu, double* backward);
   bool dense_ = false;        // -eigen_dense_max_unknowns: LAPACK on rank 0 instead of SLEPc
+  long symmetricSolves_ = 0, qzSolves_ = 0;  // dense solves of symmetric (dsygvd) / nonsymmetric pencils
   bool elementwise_ = false;  // -eigen_operator: K_m x = (element-wise K) x - K_g x
   Mat Kop_ = nullptr;
   std::vector<double> estimate_, backward_;

@@ -1,11 +1,13 @@
 #include "step/compliance_analysis.hpp"
 #include "parallel/collective_error.hpp"
+#include "solvers/solver_defaults.hpp"
 
 #include <algorithm>
 #include <array>
 #include <cstdio>
 #include <numeric>
 #include <set>
+#include <string>
 
 namespace sinew {
 
@@ -20,8 +22,9 @@ const char* methodName(ComplianceAnalysis::Method m) {
 }
 }  // namespace
 
-ComplianceAnalysis::ComplianceAnalysis(Assembler& assembler, const std::vector<int>& nodes, const ComplianceSettings& settings)
-    : asm_(assembler) {
+ComplianceAnalysis::ComplianceAnalysis(Assembler& assembler, const std::vector<int>& nodes, const ComplianceSettings& settings,
+                                       int denseMaxUnknowns)
+    : asm_(assembler), dense_(useDenseTangentLU(assembler.mesh(), denseMaxUnknowns)) {
   DistributedMesh& m = asm_.mesh();
   const std::set<int> requested(nodes.begin(), nodes.end());
   long cols = 0;
@@ -42,12 +45,23 @@ ComplianceAnalysis::ComplianceAnalysis(Assembler& assembler, const std::vector<i
   SinewCallThrow(m.comm, asm_.createMatrix(&J_));
   SinewCallThrow(m.comm, KSPCreate(m.comm, &ksp_));
   SinewCallThrow(m.comm, KSPSetOptionsPrefix(ksp_, "compl_"));
-  SinewCallThrow(m.comm, KSPSetType(ksp_, KSPPREONLY));
-  PC pc;
-  SinewCallThrow(m.comm, KSPGetPC(ksp_, &pc));
-  SinewCallThrow(m.comm, PCSetType(pc, PCLU));
-  SinewCallThrow(m.comm, PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
+  if (dense_) {  // a small one-process model: LAPACK LU, every unit load in one getrs (KSPMatSolve)
+    SinewCallThrow(m.comm, useDenseLU(ksp_));
+  } else {
+    SinewCallThrow(m.comm, KSPSetType(ksp_, KSPPREONLY));
+    PC pc;
+    SinewCallThrow(m.comm, KSPGetPC(ksp_, &pc));
+    SinewCallThrow(m.comm, PCSetType(pc, PCLU));
+    SinewCallThrow(m.comm, PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
+  }
   SinewCallThrow(m.comm, KSPSetFromOptions(ksp_));
+  if (dense_) {  // -compl_pc_type given: the user's solver, through its factor as below
+    PC pc;
+    PCType type;
+    SinewCallThrow(m.comm, KSPGetPC(ksp_, &pc));
+    SinewCallThrow(m.comm, PCGetType(pc, &type));
+    dense_ = std::string(type) == PCDENSELU;
+  }
 }
 
 ComplianceAnalysis::~ComplianceAnalysis() {
@@ -137,7 +151,8 @@ PetscErrorCode ComplianceAnalysis::selectedInverse(Mat F, std::vector<double>& g
 
 // Unit loads in blocks of batch_ columns; column c of block j solves J x = e_(free DOF c), and the
 // owner of the node reads its rows of x. sparse: the block is a sparse matrix on the host
-// (MatMatTransposeSolve, MUMPS prunes the forward substitution); dense: a distributed dense block.
+// (MatMatTransposeSolve, MUMPS prunes the forward substitution); dense: a distributed dense block;
+// F null (the dense LU): a dense block solved by the KSP (KSPMatSolve, one getrs for the block).
 PetscErrorCode ComplianceAnalysis::rhsBlocks(Mat F, bool sparse, std::vector<double>& glob) {
   PetscFunctionBeginUser;
   DistributedMesh& m = asm_.mesh();
@@ -194,7 +209,8 @@ PetscErrorCode ComplianceAnalysis::rhsBlocks(Mat F, bool sparse, std::vector<dou
         PetscCall(MatSetValue(B, rStart + colRow[c - first], static_cast<PetscInt>(c - c0), 1.0, INSERT_VALUES));
       PetscCall(MatAssemblyBegin(B, MAT_FINAL_ASSEMBLY));
       PetscCall(MatAssemblyEnd(B, MAT_FINAL_ASSEMBLY));
-      PetscCall(MatMatSolve(F, B, X));
+      if (F) PetscCall(MatMatSolve(F, B, X));
+      else PetscCall(KSPMatSolve(ksp_, B, X));
     }
     ++batches_;
     if (lo < hi) {
@@ -243,10 +259,14 @@ PetscErrorCode ComplianceAnalysis::atStep(Vec U, const LoadState& ls, ResultFile
                "check supports, rigid modes and releases (opt.rls)";
   } else if (totalColumns_ > 0) {
     const double t1 = MPI_Wtime();
-    Mat F;
-    PetscCall(PCFactorGetMatrix(pc, &F));
-    if (method_ == Method::SelectedInverse) PetscCall(selectedInverse(F, glob));
-    else PetscCall(rhsBlocks(F, method_ == Method::SparseRhs, glob));
+    if (dense_) {
+      PetscCall(rhsBlocks(nullptr, false, glob));
+    } else {
+      Mat F;
+      PetscCall(PCFactorGetMatrix(pc, &F));
+      if (method_ == Method::SelectedInverse) PetscCall(selectedInverse(F, glob));
+      else PetscCall(rhsBlocks(F, method_ == Method::SparseRhs, glob));
+    }
     solveTime_ += MPI_Wtime() - t1;
   }
   // 2. Rows in StepResults' order (owned scene nodes); CMloc = Q^T CMglob Q.
@@ -287,7 +307,7 @@ std::string ComplianceAnalysis::summary() const {
                 "\n compliance: %ld unit loads per step, %ld factorization%s, %ld block solves; factor %.3f s, "
                 "solves %.3f s (%s)\n",
                 totalColumns_, factorizations_, factorizations_ == 1 ? "" : "s", batches_, factorTime_, solveTime_,
-                methodName(method_));
+                dense_ ? "dense LU, up to -dense_max_unknowns" : methodName(method_));
   return line;
 }
 

@@ -1,5 +1,6 @@
 // Compliance matrices of nodes (SPACAR Light `calccompl`): at every converged step the tangent
-// J = dF/dU (rigid modes as multipliers, supports eliminated) is factored once with MUMPS; only
+// J = dF/dU (rigid modes as multipliers, supports eliminated) is factored once with MUMPS (a small
+// one-process model: a dense LU, every unit load in one solve); only
 // the 6x6 diagonal blocks of J^-1 at the requested nodes are computed, never the inverse itself:
 //   selinv (default): MUMPS selected entries of the inverse (ICNTL(30), MatMumpsGetInverse), the
 //                     pattern of all wanted blocks in one sparse matrix on the MUMPS host;
@@ -28,7 +29,10 @@ class ComplianceAnalysis : public StepAnalysis {
   /// Options (prefix compl_): -compl_ksp_*/-compl_pc_* (factorization); settings: -compliance_method
   /// selinv|sparse|dense, -compliance_batch (right-hand-side columns per solve of the sparse and
   /// dense methods), -compl_mat_mumps_icntl_27 (columns per block of the selected inverse).
-  ComplianceAnalysis(Assembler& assembler, const std::vector<int>& nodes, const ComplianceSettings& settings);
+  /// denseMaxUnknowns (-dense_max_unknowns): a one-process model up to this size is factored by a
+  /// dense LU (LAPACK, PC type denselu) and solved for all unit loads at once, whatever the method.
+  ComplianceAnalysis(Assembler& assembler, const std::vector<int>& nodes, const ComplianceSettings& settings,
+                     int denseMaxUnknowns);
   ~ComplianceAnalysis() override;
   const char* name() const override { return "compliance"; }
   PetscErrorCode atStep(Vec U, const LoadState& ls, ResultFile& file, bool* ok) override;
@@ -54,6 +58,7 @@ class ComplianceAnalysis : public StepAnalysis {
   Mat J_ = nullptr;
   KSP ksp_ = nullptr;
   std::vector<Group> groups_;     ///< requested owned nodes with at least one free DOF
+  bool dense_ = false;            ///< dense LU (PC type denselu) instead of MUMPS
   Method method_ = Method::SelectedInverse;
   PetscInt batch_ = 96;
   int blockColumns_ = 2048;  ///< MUMPS ICNTL(27) of the selected inverse (-compl_mat_mumps_icntl_27)

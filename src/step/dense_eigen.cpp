@@ -19,6 +19,13 @@ void dggev_(const char* jobvl, const char* jobvr, const int* n, double* a, const
             double* work, const int* lwork, int* info);
 void dsygvd_(const int* itype, const char* jobz, const char* uplo, const int* n, double* a, const int* lda, double* b,
              const int* ldb, double* w, double* work, const int* lwork, int* iwork, const int* liwork, int* info);
+void dgeqrf_(const int* m, const int* n, double* a, const int* lda, double* tau, double* work, const int* lwork,
+             int* info);
+void dorgqr_(const int* m, const int* n, const int* k, double* a, const int* lda, const double* tau, double* work,
+             const int* lwork, int* info);
+void dpotrf_(const char* uplo, const int* n, double* a, const int* lda, int* info);
+void dtrsm_(const char* side, const char* uplo, const char* transa, const char* diag, const int* m, const int* n,
+            const double* alpha, const double* a, const int* lda, double* b, const int* ldb);
 void dgemm_(const char* ta, const char* tb, const int* m, const int* n, const int* k, const double* alpha,
             const double* a, const int* lda, const double* b, const int* ldb, const double* beta, double* c,
             const int* ldc);
@@ -337,6 +344,313 @@ DenseEigenpairs generalPencil(const std::vector<double>& A0, const std::vector<d
     double* x = &out.vectors[static_cast<size_t>(c) * n];
     for (int i = 0; i < n; ++i) x[i] = nr > 0 ? xr[i] / nr : 0.0;
     fixSign(x, n);
+  }
+  return out;
+}
+
+
+namespace {
+
+// Householder QR of the nu x m matrix a (column-major, overwritten by the factors); Q (nu x nu) formed.
+bool fullQR(std::vector<double>& a, int nu, int m, std::vector<double>& Q) {
+  std::vector<double> tau(std::max(m, 1));
+  int info = 0, lwork = -1;
+  double wq = 0;
+  Q.assign(static_cast<size_t>(nu) * nu, 0.0);
+  if (m > 0) {
+    dgeqrf_(&nu, &m, a.data(), &nu, tau.data(), &wq, &lwork, &info);
+    lwork = std::max(static_cast<int>(wq), nu);
+    std::vector<double> work(lwork);
+    dgeqrf_(&nu, &m, a.data(), &nu, tau.data(), work.data(), &lwork, &info);
+    if (info != 0) return false;
+    std::copy(a.begin(), a.end(), Q.begin());
+  }
+  if (nu == 0) return true;
+  lwork = -1;
+  dorgqr_(&nu, &nu, &m, Q.data(), &nu, tau.data(), &wq, &lwork, &info);
+  lwork = std::max(static_cast<int>(wq), nu);
+  std::vector<double> work(lwork);
+  dorgqr_(&nu, &nu, &m, Q.data(), &nu, tau.data(), work.data(), &lwork, &info);
+  return info == 0;
+}
+
+// Symmetric to round-off: max |A_ij - A_ji| <= tol max |A_ij|.
+bool symmetricMatrix(const std::vector<double>& A, int n, double tol) {
+  double amax = 0, asym = 0;
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const double a = A[static_cast<size_t>(j) * n + i];
+      amax = std::max(amax, std::abs(a));
+      asym = std::max(asym, std::abs(a - A[static_cast<size_t>(i) * n + j]));
+    }
+  return asym <= tol * amax;
+}
+
+// The k x k block M(rows, cols) as a column-major array.
+std::vector<double> block(const std::vector<double>& M, int n, const std::vector<int>& rows, const std::vector<int>& cols) {
+  std::vector<double> b(rows.size() * cols.size());
+  for (size_t c = 0; c < cols.size(); ++c)
+    for (size_t r = 0; r < rows.size(); ++r) b[c * rows.size() + r] = M[static_cast<size_t>(cols[c]) * n + rows[r]];
+  return b;
+}
+
+// Z^T M Z (r x r, symmetrized if `symmetrize`) of the nu x nu M and the nu x r Z.
+std::vector<double> project(const std::vector<double>& M, const double* Z, int nu, int r, bool symmetrize) {
+  std::vector<double> MZ(static_cast<size_t>(nu) * r), P(static_cast<size_t>(r) * r);
+  gemm('N', 'N', nu, r, nu, M.data(), nu, Z, nu, MZ.data());
+  gemm('T', 'N', r, r, nu, Z, nu, MZ.data(), nu, P.data());
+  for (int i = 0; i < r && symmetrize; ++i)
+    for (int j = 0; j < i; ++j) {
+      const size_t ij = static_cast<size_t>(j) * r + i, ji = static_cast<size_t>(i) * r + j;
+      P[ij] = P[ji] = 0.5 * (P[ij] + P[ji]);
+    }
+  return P;
+}
+
+}  // namespace
+
+namespace {
+
+// The pencil (A, B) (equilibrated, A symmetric) restricted to the null space of its constraint rows:
+// c (A_ii = 0, B's row zero, A(c, c) = 0), u the others, C = A(c, u), C^T = Q R, Z = the last r
+// columns of Q. False when there is no such reduction (no unknowns left, redundant constraints).
+struct NullSpaceReduction {
+  std::vector<int> c, u;
+  std::vector<double> CT, Q, Auu, Buu;  // CT: the QR factors of C^T (R in its upper triangle)
+  int m = 0, nu = 0, r = 0;
+  const double* Z() const { return &Q[static_cast<size_t>(m) * nu]; }
+};
+
+bool reduceToNullSpace(const std::vector<double>& A, const std::vector<double>& B, int n, NullSpaceReduction& red) {
+  std::vector<int>& c = red.c;
+  std::vector<int>& u = red.u;
+  for (int i = 0; i < n; ++i) {
+    bool constraint = A[static_cast<size_t>(i) * n + i] == 0.0;
+    for (int j = 0; j < n && constraint; ++j) constraint = B[static_cast<size_t>(j) * n + i] == 0.0;
+    (constraint ? c : u).push_back(i);
+  }
+  for (int i : c)
+    for (int j : c)
+      if (A[static_cast<size_t>(j) * n + i] != 0.0) return false;
+  const int m = static_cast<int>(c.size()), nu = static_cast<int>(u.size()), r = nu - m;
+  red.m = m;
+  red.nu = nu;
+  red.r = r;
+  if (r <= 0) return false;
+  // C^T = Q R (nu x m), Z = the last r columns of Q: an orthonormal basis of null(C)
+  std::vector<double>& CT = red.CT;
+  CT = block(A, n, u, c);
+  if (!fullQR(CT, nu, m, red.Q)) return false;
+  double rmax = 0, rmin = std::numeric_limits<double>::infinity();
+  for (int k = 0; k < m; ++k) {
+    rmax = std::max(rmax, std::abs(CT[static_cast<size_t>(k) * nu + k]));
+    rmin = std::min(rmin, std::abs(CT[static_cast<size_t>(k) * nu + k]));
+  }
+  if (m > 0 && rmin <= nu * kEps * rmax) return false;  // redundant constraints
+  red.Auu = block(A, n, u, u);
+  red.Buu = block(B, n, u, u);
+  return true;
+}
+
+}  // namespace
+
+bool symmetricDefinitePencil(const std::vector<double>& A0, const std::vector<double>& B0, int n, double sigma,
+                             int want, DenseEigenpairs& result) {
+  if (n == 0 || !symmetricMatrix(A0, n, 1e-13) || !symmetricMatrix(B0, n, 1e-13)) return false;
+  std::vector<double> A(A0), B(B0);
+  const std::vector<double> D = equilibrate(A, B, n);
+  NullSpaceReduction red;
+  if (!reduceToNullSpace(A, B, n, red)) return false;
+  const std::vector<int>&c = red.c, &u = red.u;
+  const std::vector<double>&CT = red.CT, &Q = red.Q, &Auu = red.Auu, &Buu = red.Buu;
+  const int m = red.m, nu = red.nu, r = red.r;
+  const double* Z = red.Z();
+  std::vector<double> Kr = project(Auu, Z, nu, r, true), Gr = project(Buu, Z, nu, r, true), w;
+  // Gr v = w Kr v, w = 1/lambda; Kr not positive definite (dsygvd fails in its Cholesky): not this path
+  if (!symmetricDefiniteEigen(Gr, Kr, r, w)) return false;
+  DenseEigenpairs out;
+  out.n = n;
+  double wmax = 0;
+  for (double v : w) wmax = std::max(wmax, std::abs(v));
+  std::vector<int> order;
+  for (int j = 0; j < r; ++j)
+    if (std::abs(w[j]) > r * kEps * wmax) order.push_back(j);
+  auto dist = [&](int j) { return std::abs(1.0 / w[j] - sigma); };
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return dist(a) < dist(b); });
+  for (int j : order) out.re.push_back(1.0 / w[j]);
+  out.im.assign(out.re.size(), 0.0);
+  const int k = std::min<int>(want, out.count());
+  out.vectors.assign(static_cast<size_t>(n) * k, 0.0);
+  out.estimate.assign(k, 0.0);
+  const double nA = normInf(A0, n), nB = normInf(B0, n);
+  std::vector<double> xu(nu), rhs(nu), Ax(n), Bx(n), zero(n, 0.0);
+  for (int p = 0; p < k; ++p) {
+    const int j = order[p];
+    gemm('N', 'N', nu, 1, r, Z, nu, &Gr[static_cast<size_t>(j) * r], r, xu.data());
+    // multipliers: C^T l = lambda B_uu x_u - A_uu x_u (least squares: l = R^-1 Q_1^T rhs)
+    gemm('N', 'N', nu, 1, nu, Auu.data(), nu, xu.data(), nu, rhs.data());
+    std::vector<double> bu(nu);
+    gemm('N', 'N', nu, 1, nu, Buu.data(), nu, xu.data(), nu, bu.data());
+    for (int i = 0; i < nu; ++i) rhs[i] = out.re[p] * bu[i] - rhs[i];
+    std::vector<double> l(m);
+    gemm('T', 'N', m, 1, nu, Q.data(), nu, rhs.data(), nu, l.data());
+    for (int a = m - 1; a >= 0; --a) {
+      for (int b = a + 1; b < m; ++b) l[a] -= CT[static_cast<size_t>(b) * nu + a] * l[b];
+      l[a] /= CT[static_cast<size_t>(a) * nu + a];
+    }
+    double* x = &out.vectors[static_cast<size_t>(p) * n];
+    for (int i = 0; i < nu; ++i) x[u[i]] = D[u[i]] * xu[i];
+    for (int i = 0; i < m; ++i) x[c[i]] = D[c[i]] * l[i];
+    double nx = 0;
+    for (int i = 0; i < n; ++i) nx += x[i] * x[i];
+    nx = std::sqrt(nx);
+    for (int i = 0; i < n; ++i) x[i] = nx > 0 ? x[i] / nx : 0.0;
+    fixSign(x, n);
+    // Rayleigh quotient x^T A x / x^T B x (symmetric pencil: the two-sided quotient of the QZ path)
+    gemm('N', 'N', n, 1, n, A0.data(), n, x, n, Ax.data());
+    gemm('N', 'N', n, 1, n, B0.data(), n, x, n, Bx.data());
+    const double xax = std::inner_product(Ax.begin(), Ax.end(), x, 0.0);
+    const double xbx = std::inner_product(Bx.begin(), Bx.end(), x, 0.0);
+    if (xbx != 0.0 && std::isfinite(xax / xbx)) out.re[p] = xax / xbx;
+    out.estimate[p] = backwardError(Ax, zero, Bx, zero, x, nullptr, out.re[p], 0.0, nA, nB);
+  }
+  result = std::move(out);
+  return true;
+}
+
+
+namespace {
+
+// Inverse iteration for the right (transpose false) or left vector of the eigenvalue lambda of the
+// equilibrated pencil (A, B), from the LU of A - lambda B: two steps v <- (A - lambda B)^-1 B v.
+std::vector<double> inverseIteration(const std::vector<double>& lu, const std::vector<int>& piv,
+                                     const std::vector<double>& B, int n, bool transpose) {
+  std::vector<double> v(n), bv(n);
+  for (int i = 0; i < n; ++i) v[i] = 1.0 + 0.5 * std::sin(i + 1.0);  // fixed start, no special direction
+  for (int it = 0; it < 2; ++it) {
+    gemm(transpose ? 'T' : 'N', 'N', n, 1, n, B.data(), n, v.data(), n, bv.data());
+    int info = 0, one = 1;
+    dgetrs_(transpose ? "T" : "N", &n, &one, lu.data(), &n, piv.data(), bv.data(), &n, &info);
+    double m = 0;
+    for (double x : bv) m = std::max(m, std::abs(x));
+    for (int i = 0; i < n; ++i) v[i] = m > 0 && std::isfinite(m) ? bv[i] / m : 0.0;
+  }
+  return v;
+}
+
+}  // namespace
+
+namespace {
+
+// The finite eigenvalues lambda = ar / beta + i ai / beta of the equilibrated pencil (A, B) with A
+// symmetric and positive definite on the null space Z of its constraint rows: Z^T A Z = L L^T, the
+// eigenvalues w = 1/lambda of the standard nonsymmetric L^-1 Z^T B Z L^-T (LAPACK dgeev, eigenvalues
+// alone: a third of QZ's); the rest (constraints, w = 0) get beta = 0. False: no such reduction.
+bool reducedEigenvalues(const std::vector<double>& A, const std::vector<double>& B, int n, std::vector<double>& ar,
+                        std::vector<double>& ai, std::vector<double>& beta) {
+  if (n == 0 || !symmetricMatrix(A, n, 1e-13)) return false;
+  NullSpaceReduction red;
+  if (!reduceToNullSpace(A, B, n, red)) return false;
+  const int r = red.r;
+  std::vector<double> L = project(red.Auu, red.Z(), red.nu, r, true), M = project(red.Buu, red.Z(), red.nu, r, false);
+  int info = 0;
+  dpotrf_("L", &r, L.data(), &r, &info);
+  if (info != 0) return false;
+  const double one = 1.0;
+  dtrsm_("L", "L", "N", "N", &r, &r, &one, L.data(), &r, M.data(), &r);  // L^-1 M
+  dtrsm_("R", "L", "T", "N", &r, &r, &one, L.data(), &r, M.data(), &r);  // (L^-1 M) L^-T
+  std::vector<double> wr(r), wi(r), dummy(1);
+  int lwork = -1, ld = 1;
+  double wq = 0;
+  dgeev_("N", "N", &r, M.data(), &r, wr.data(), wi.data(), dummy.data(), &ld, dummy.data(), &ld, &wq, &lwork, &info);
+  lwork = std::max(static_cast<int>(wq), 4 * r);
+  std::vector<double> work(lwork);
+  dgeev_("N", "N", &r, M.data(), &r, wr.data(), wi.data(), dummy.data(), &ld, dummy.data(), &ld, work.data(), &lwork,
+         &info);
+  if (info != 0) return false;
+  // lambda = 1/w = conj(w) / |w|^2: alpha = conj(w), beta = |w|^2
+  std::fill(ar.begin(), ar.end(), 1.0);
+  std::fill(ai.begin(), ai.end(), 0.0);
+  std::fill(beta.begin(), beta.end(), 0.0);
+  for (int j = 0; j < r; ++j) {
+    ar[j] = wr[j];
+    ai[j] = -wi[j];
+    beta[j] = wr[j] * wr[j] + wi[j] * wi[j];
+  }
+  return true;
+}
+
+}  // namespace
+
+DenseEigenpairs generalPencil(const std::vector<double>& A0, const std::vector<double>& B0, int n, double sigma,
+                              const WantedPairs& wanted) {
+  DenseEigenpairs out;
+  out.n = n;
+  std::vector<double> A(A0), B(B0);
+  const std::vector<double> D = equilibrate(A, B, n);
+  // the eigenvalues: by the reduction to a standard problem where A is symmetric and definite on the
+  // constraints' null space, else QZ alone (no Schur vectors accumulated: about half of QZ with both sets)
+  std::vector<double> ar(n), ai(n), beta(n), Aq(A), Bq(B), dummy(1);
+  int info = 0, lwork = -1, one = 1;
+  double wq = 0;
+  if (reducedEigenvalues(A, B, n, ar, ai, beta)) {
+    info = 0;  // the vectors below are those of the whole pencil
+  } else if (n > 0) {
+    dggev_("N", "N", &n, Aq.data(), &n, Bq.data(), &n, ar.data(), ai.data(), beta.data(), dummy.data(), &one,
+           dummy.data(), &one, &wq, &lwork, &info);
+    lwork = std::max(static_cast<int>(wq), 8 * n);
+    std::vector<double> work(lwork);
+    dggev_("N", "N", &n, Aq.data(), &n, Bq.data(), &n, ar.data(), ai.data(), beta.data(), dummy.data(), &one,
+           dummy.data(), &one, work.data(), &lwork, &info);
+  }
+  if (info != 0) {
+    out.singular = true;
+    return out;
+  }
+  std::vector<int> order;
+  for (int j = 0; j < n; ++j)
+    if (std::abs(beta[j]) > n * kEps * std::hypot(ar[j], ai[j])) order.push_back(j);
+  auto dist = [&](int j) { return std::hypot(ar[j] / beta[j] - sigma, ai[j] / beta[j]); };
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return dist(a) < dist(b); });
+  for (int j : order) {
+    out.re.push_back(ar[j] / beta[j]);
+    out.im.push_back(ai[j] / beta[j]);
+  }
+  const int k = std::min(wanted(out.re, out.im), out.count());
+  for (int c = 0; c < k; ++c)
+    if (out.im[c] != 0.0) return generalPencil(A0, B0, n, sigma, k);  // complex pairs: QZ's own vectors
+  out.vectors.assign(static_cast<size_t>(n) * k, 0.0);
+  out.estimate.assign(k, 0.0);
+  const double nA = normInf(A0, n), nB = normInf(B0, n);
+  std::vector<double> lu(static_cast<size_t>(n) * n), Ax(n), Bx(n), zero(n, 0.0);
+  std::vector<int> piv(n);
+  for (int c = 0; c < k; ++c) {
+    // LU of A - lambda B; an exactly zero pivot: lambda moved by a few ulps
+    double shift = out.re[c];
+    for (int attempt = 0; attempt < 3; ++attempt) {
+      for (size_t i = 0; i < lu.size(); ++i) lu[i] = A[i] - shift * B[i];
+      dgetrf_(&n, &n, lu.data(), &n, piv.data(), &info);
+      if (info == 0) break;
+      shift += 8 * kEps * std::max(std::abs(shift), 1.0);
+    }
+    std::vector<double> x = inverseIteration(lu, piv, B, n, false), y = inverseIteration(lu, piv, B, n, true);
+    for (int i = 0; i < n; ++i) {
+      x[i] *= D[i];
+      y[i] *= D[i];
+    }
+    gemm('N', 'N', n, 1, n, A0.data(), n, x.data(), n, Ax.data());
+    gemm('N', 'N', n, 1, n, B0.data(), n, x.data(), n, Bx.data());
+    // two-sided Rayleigh quotient y^T A x / y^T B x: error quadratic in the vectors'
+    const double yax = std::inner_product(y.begin(), y.end(), Ax.begin(), 0.0);
+    const double ybx = std::inner_product(y.begin(), y.end(), Bx.begin(), 0.0);
+    if (ybx != 0.0 && std::isfinite(yax / ybx)) out.re[c] = yax / ybx;
+    out.estimate[c] = backwardError(Ax, zero, Bx, zero, x.data(), nullptr, out.re[c], 0.0, nA, nB);
+    double nr = 0;
+    for (double v : x) nr += v * v;
+    nr = std::sqrt(nr);
+    double* xo = &out.vectors[static_cast<size_t>(c) * n];
+    for (int i = 0; i < n; ++i) xo[i] = nr > 0 ? x[i] / nr : 0.0;
+    fixSign(xo, n);
   }
   return out;
 }

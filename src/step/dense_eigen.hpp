@@ -4,6 +4,7 @@
 // (theta = 0: the zero-mass directions of constraint multipliers) are left out, as SLEPc's
 // purification does. Pure: no MPI, no PETSc objects; matrices are column-major n x n.
 #pragma once
+#include <functional>
 #include <vector>
 
 namespace sinew {
@@ -39,6 +40,27 @@ DenseEigenpairs ritzPairs(const std::vector<double>& X, const std::vector<double
 /// conjugate pairs; x of unit 2-norm, the real part of a complex pair's vector.
 DenseEigenpairs generalPencil(const std::vector<double>& A, const std::vector<double>& B, int n, double sigma,
                               int want);
+
+/// How many of the pairs (eigenvalues nearest to sigma first) need their vectors.
+using WantedPairs = std::function<int(const std::vector<double>& re, const std::vector<double>& im)>;
+
+/// generalPencil with vectors for the first wanted(re, im) pairs only: QZ for the eigenvalues alone,
+/// then each wanted real pair's right and left vectors by inverse iteration from the LU of
+/// A - lambda B, lambda their two-sided Rayleigh quotient (the same pairs to round-off, for a fraction
+/// of QZ with vectors when few are wanted); complex pairs among them: generalPencil's QZ vectors.
+DenseEigenpairs generalPencil(const std::vector<double>& A, const std::vector<double>& B, int n, double sigma,
+                              const WantedPairs& wanted);
+
+/// A, B symmetric (K_m and -K_g of the buckling analysis, to round-off), A positive definite on the
+/// null space of its constraint rows (rows i with A_ii = 0 and B's row zero: the multipliers of
+/// rigid elements and modes, coupling to the others through C = A(c, u)): every finite pair, as
+/// generalPencil gives, by the symmetric-definite reduction instead of QZ. With Z an orthonormal
+/// basis of null(C), x_u = Z v and Z^T B Z v = (1/lambda) Z^T A Z v (LAPACK dsygvd: Cholesky of
+/// Z^T A Z); the multipliers of x by least squares from the rows u, lambda the Rayleigh quotient
+/// x^T A x / x^T B x. False (out untouched) when the pencil is not symmetric to 1e-13 relative or
+/// Z^T A Z is not positive definite: then use generalPencil.
+bool symmetricDefinitePencil(const std::vector<double>& A, const std::vector<double>& B, int n, double sigma,
+                             int want, DenseEigenpairs& out);
 
 /// Flips x (length n) so that its largest component (the first among ties) is positive.
 void fixSign(double* x, int n);

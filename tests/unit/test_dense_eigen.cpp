@@ -93,3 +93,66 @@ TEST(DenseEigen, RitzPairsInExactBasis) {
   EXPECT_NEAR(p.re[0], 2.0, 1e-14);
   EXPECT_NEAR(p.re[1], 4.0, 1e-14);
 }
+
+namespace {
+// A buckling-like pencil with a multiplier: K (3 springs, SPD) on u = (u1, u2, u3), the constraint
+// u1 - u3 = 0 as a fourth row/column (A_44 = 0, B's row 4 zero), B = -K_g symmetric indefinite
+// (or, `skew` != 0, nonsymmetric as the geometric stiffness of applied moments).
+void constrainedPencil(double skew, std::vector<double>& A, std::vector<double>& B) {
+  A = mat(4, {4, -1, 0, 1, -1, 3, -1, 0, 0, -1, 2, -1, 1, 0, -1, 0});
+  B = mat(4, {1, 0.5 + skew, 0, 0, 0.5, -2, 0.25, 0, 0, 0.25, 1.5, 0, 0, 0, 0, 0});
+}
+
+void expectSamePairs(const DenseEigenpairs& p, const DenseEigenpairs& q, int vectors) {
+  ASSERT_EQ(p.count(), q.count());
+  for (int j = 0; j < p.count(); ++j) {
+    EXPECT_NEAR(p.re[j], q.re[j], 1e-13 * std::abs(q.re[j])) << "pair " << j;
+    EXPECT_NEAR(p.im[j], q.im[j], 1e-13 * std::abs(q.re[j])) << "pair " << j;
+  }
+  for (int j = 0; j < vectors; ++j)
+    for (int i = 0; i < p.n; ++i)
+      EXPECT_NEAR(p.vectors[static_cast<size_t>(j) * p.n + i], q.vectors[static_cast<size_t>(j) * q.n + i], 1e-12)
+          << "vector " << j << " entry " << i;
+}
+}  // namespace
+
+// The symmetric-definite reduction (null space of the multiplier row, dsygvd) gives QZ's pairs:
+// eigenvalues, unit vectors with the multiplier's component, nearest to 0 first.
+TEST(DenseEigen, SymmetricDefinitePencilIsQZ) {
+  std::vector<double> A, B;
+  constrainedPencil(0.0, A, B);
+  DenseEigenpairs sym;
+  ASSERT_TRUE(sinew::symmetricDefinitePencil(A, B, 4, 0.0, 4, sym));
+  const DenseEigenpairs qz = sinew::generalPencil(A, B, 4, 0.0, 4);
+  EXPECT_EQ(sym.count(), 2);  // 3 unknowns - 1 constraint
+  expectSamePairs(sym, qz, 2);
+  EXPECT_LT(sym.estimate[0], 1e-15);
+}
+
+// Not symmetric (B carries a skew part), or A not definite on the null space: not this path.
+TEST(DenseEigen, SymmetricDefinitePencilRefusesOtherPencils) {
+  std::vector<double> A, B;
+  constrainedPencil(0.1, A, B);
+  DenseEigenpairs out;
+  EXPECT_FALSE(sinew::symmetricDefinitePencil(A, B, 4, 0.0, 4, out));
+  constrainedPencil(0.0, A, B);
+  for (double& a : A) a = -a;  // negative definite on the null space
+  EXPECT_FALSE(sinew::symmetricDefinitePencil(A, B, 4, 0.0, 4, out));
+  EXPECT_EQ(out.count(), 0);
+}
+
+// Vectors of the wanted pairs only (eigenvalues by the reduced standard problem, vectors by inverse
+// iteration): QZ's pairs on a nonsymmetric pencil; the others get no vector.
+TEST(DenseEigen, GeneralPencilWantedIsQZ) {
+  std::vector<double> A, B;
+  constrainedPencil(0.1, A, B);
+  const DenseEigenpairs qz = sinew::generalPencil(A, B, 4, 0.0, 4);
+  int asked = -1;
+  const DenseEigenpairs p = sinew::generalPencil(A, B, 4, 0.0, [&](const std::vector<double>& re, const std::vector<double>&) {
+    asked = static_cast<int>(re.size());
+    return 1;
+  });
+  EXPECT_EQ(asked, qz.count());
+  EXPECT_EQ(p.wanted(), 1);
+  expectSamePairs(p, qz, 1);
+}

@@ -116,8 +116,8 @@ bool initiallyLoaded(const Model& model, const DistributedMesh& mesh) {
 /// stiffness of the form-found elements), otherwise the statics tangent at the reference state.
 /// A singular model prints its message and sets *exitCode = 2.
 PetscErrorCode checkModelBeforeRun(const Model& model, const Plan& plan, Assembler& assembler, const std::string& h5,
-                                   const ModelCheckSettings& settings, ConstraintCheckSetting* setting, Timings* times,
-                                   int* exitCode) {
+                                   const ModelCheckSettings& settings, int denseMaxUnknowns,
+                                   ConstraintCheckSetting* setting, Timings* times, int* exitCode) {
   PetscFunctionBeginUser;
   const DistributedMesh& dmesh = assembler.mesh();
   MPI_Comm comm = dmesh.comm;
@@ -150,7 +150,7 @@ PetscErrorCode checkModelBeforeRun(const Model& model, const Plan& plan, Assembl
   ConstraintReport check;
   PetscCall(PetscLogEventBegin(SinewEvents::get().constraintCheck, 0, 0, 0, 0));
   if (formfinding) {
-    PetscCall(checkFormFindingConstraints(assembler, model, settings, &check));
+    PetscCall(checkFormFindingConstraints(assembler, model, settings, denseMaxUnknowns, &check));
     if (check.singular)
       check.message += "  (found in the form-finding problem: the form-found cables and membranes carry their prestress "
                        "only, as geometric stiffness; every other element is elastic)\n";
@@ -158,7 +158,7 @@ PetscErrorCode checkModelBeforeRun(const Model& model, const Plan& plan, Assembl
     Vec U0;
     PetscCall(assembler.createVector(&U0));
     PetscCall(VecSet(U0, 0.0));
-    PetscCall(checkConstraints(assembler, model, U0, LoadState{}, settings, &check));
+    PetscCall(checkConstraints(assembler, model, U0, LoadState{}, settings, denseMaxUnknowns, &check));
     PetscCall(VecDestroy(&U0));
   }
   PetscCall(PetscLogEventEnd(SinewEvents::get().constraintCheck, 0, 0, 0, 0));
@@ -187,7 +187,8 @@ PetscErrorCode checkLoadedModelAfterFormFinding(RunContext& ctx, const Constrain
   ConstraintReport check;
   const double tCheck = MPI_Wtime();
   PetscCall(PetscLogEventBegin(SinewEvents::get().constraintCheck, 0, 0, 0, 0));
-  PetscCall(checkConstraints(ctx.assembler, ctx.model, ctx.U, LoadState{}, ctx.settings.check, &check));
+  PetscCall(checkConstraints(ctx.assembler, ctx.model, ctx.U, LoadState{}, ctx.settings.check,
+                             ctx.settings.statics.denseMaxUnknowns, &check));
   PetscCall(PetscLogEventEnd(SinewEvents::get().constraintCheck, 0, 0, 0, 0));
   ctx.times.check += MPI_Wtime() - tCheck;
   if (!check.singular) PetscFunctionReturn(PETSC_SUCCESS);

@@ -39,10 +39,10 @@ struct ConstraintCheckSetting {
 /// Mechanisms and redundant constraints before any analysis (and before the result file exists):
 /// with form finding the form-finding problem (its kernels in the mode of step 1, prestress-only
 /// stiffness of the form-found elements), otherwise the statics tangent at the reference state.
-/// A singular model prints its message and sets *exitCode = 2.
+/// A singular model prints its message and sets *exitCode = 2. denseMaxUnknowns: -dense_max_unknowns.
 PetscErrorCode checkModelBeforeRun(const Model& model, const Plan& plan, Assembler& assembler, const std::string& h5,
-                                   const ModelCheckSettings& settings, ConstraintCheckSetting* setting, Timings* times,
-                                   int* exitCode);
+                                   const ModelCheckSettings& settings, int denseMaxUnknowns,
+                                   ConstraintCheckSetting* setting, Timings* times, int* exitCode);
 
 /// After form finding and the elastic restart, before a load analysis with loads: the loaded model's
 /// tangent at the restart state. A singular one fails ctx.status and sets *modelError (exit 2).

@@ -90,7 +90,7 @@ PetscErrorCode runStatics(RunContext& ctx, bool resumeStatics, const ConstraintC
       ls.loadFactor = ls.time = ctx.reports.empty() ? 0.0 : ctx.reports.back().loadFactor;
       ConstraintReport report;
       PhaseScope checkAfter("the constraint check after the failed step");
-      PetscCall(checkConstraints(assembler, model, ctx.U, ls, settings.check, &report));
+      PetscCall(checkConstraints(assembler, model, ctx.U, ls, settings.check, settings.statics.denseMaxUnknowns, &report));
       if (report.singular) {
         ctx.status.explainFailure(report.message);
         *modelError = true;

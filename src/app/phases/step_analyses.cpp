@@ -22,7 +22,8 @@ PetscErrorCode addStepAnalyses(RunContext& ctx) {
     ctx.stepAnalyses.push_back(std::make_unique<BucklingAnalysis>(ctx.assembler, ctx.model.opt.nbuck, ctx.settings.eigen));
   if (ctx.plan.compliance)
     ctx.stepAnalyses.push_back(
-        std::make_unique<ComplianceAnalysis>(ctx.assembler, ctx.model.opt.compliance_nodes, ctx.settings.compliance));
+        std::make_unique<ComplianceAnalysis>(ctx.assembler, ctx.model.opt.compliance_nodes, ctx.settings.compliance,
+                                             ctx.settings.statics.denseMaxUnknowns));
   if (!ctx.model.sensors.empty())
     ctx.stepAnalyses.push_back(std::make_unique<SensorAnalysis>(ctx.assembler, ctx.model.sensors));
   PetscFunctionReturn(PETSC_SUCCESS);

@@ -1,0 +1,195 @@
+// PC type denselu: LAPACK LU with partial pivoting of a one-process matrix (dense_lu.hpp).
+#include "solvers/dense_lu.hpp"
+
+#include <petsc/private/pcimpl.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <vector>
+
+#include "sinew/petsc_compat.hpp"
+
+extern "C" {
+void dgetrf_(const int* m, const int* n, double* a, const int* lda, int* ipiv, int* info);
+void dgetrs_(const char* trans, const int* n, const int* nrhs, const double* a, const int* lda, const int* ipiv,
+             double* b, const int* ldb, int* info);
+}
+
+namespace sinew {
+
+namespace {
+
+std::atomic<long> gFactorizations{0};
+PetscLogEvent gFactorEvent = 0;  // SinewDenseLU: one per factorization (-log_view shows the path ran)
+
+struct DenseLU {
+  int n = 0;
+  std::vector<double> d;   // symmetric equilibration: the factors are those of D A D
+  std::vector<double> a;   // the matrix D A D (column-major), for the refinement step
+  std::vector<double> lu;  // column-major n x n factors
+  std::vector<int> piv;
+  bool failed = false;
+};
+
+/// A = P L U of the preconditioning matrix, its rows copied into the column-major array.
+PetscErrorCode denseSetUp(PC pc) {
+  PetscFunctionBeginUser;
+  auto* d = static_cast<DenseLU*>(pc->data);
+  PetscMPIInt size;
+  PetscCallMPI(MPI_Comm_size(PetscObjectComm(reinterpret_cast<PetscObject>(pc)), &size));
+  PetscCheck(size == 1, PetscObjectComm(reinterpret_cast<PetscObject>(pc)), PETSC_ERR_SUP,
+             "-pc_type denselu: one process only (the dense LU of a small one-process model)");
+  PetscCall(PetscLogEventBegin(gFactorEvent, pc, 0, 0, 0));
+  PetscInt m, ncol;
+  PetscCall(MatGetSize(pc->pmat, &m, &ncol));
+  PetscCheck(m == ncol, PETSC_COMM_SELF, PETSC_ERR_ARG_SIZ, "-pc_type denselu: the matrix is not square");
+  const int n = static_cast<int>(m);
+  d->n = n;
+  d->lu.assign(static_cast<size_t>(n) * n, 0.0);
+  d->piv.assign(n, 0);
+  for (PetscInt i = 0; i < m; ++i) {
+    PetscInt nc;
+    const PetscInt* cols;
+    const PetscScalar* vals;
+    PetscCall(MatGetRow(pc->pmat, i, &nc, &cols, &vals));
+    for (PetscInt k = 0; k < nc; ++k) d->lu[static_cast<size_t>(cols[k]) * n + i] = vals[k];
+    PetscCall(MatRestoreRow(pc->pmat, i, &nc, &cols, &vals));
+  }
+  // D A D with d_i = 1/sqrt(max_j |A_ij|): rows of translations, rotations and multipliers differ by
+  // orders of magnitude in their units; partial pivoting then compares like with like
+  d->d.assign(n, 0.0);
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) d->d[i] = std::max(d->d[i], std::abs(d->lu[static_cast<size_t>(j) * n + i]));
+  for (double& v : d->d) v = v > 0 ? 1.0 / std::sqrt(v) : 1.0;
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) d->lu[static_cast<size_t>(j) * n + i] *= d->d[i] * d->d[j];
+  d->a = d->lu;
+  int info = 0;
+  if (n > 0) dgetrf_(&n, &n, d->lu.data(), &n, d->piv.data(), &info);
+  d->failed = info != 0;
+  if (d->failed) {
+    PetscCall(PetscInfo(pc, "dense LU: zero pivot in column %d of %d\n", info, n));
+    PetscCall(PCSetFailedReason(pc, PC_FACTOR_NUMERIC_ZEROPIVOT));
+  } else {
+    PetscCall(PCSetFailedReason(pc, PC_NOERROR));
+  }
+  ++gFactorizations;
+  PetscCall(PetscLogEventEnd(gFactorEvent, pc, 0, 0, 0));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/// Solves with the factors: x = A^-1 b for the columns of b (nrhs of them, leading dimension ld).
+PetscErrorCode denseSolve(PC pc, int nrhs, PetscScalar* b, int ld) {
+  PetscFunctionBeginUser;
+  auto* d = static_cast<DenseLU*>(pc->data);
+  if (d->failed) {  // as a failed LU factor's solve: the KSP reports KSP_DIVERGED_PC_FAILED
+    for (int c = 0; c < nrhs; ++c)
+      for (int i = 0; i < d->n; ++i) b[static_cast<size_t>(c) * ld + i] = PETSC_INFINITY;
+    PetscCall(PCSetFailedReason(pc, PC_FACTOR_NUMERIC_ZEROPIVOT));
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  // x = D (D A D)^-1 D b, with one step of iterative refinement: x += (D A D)^-1 (D b - D A D x)
+  const int n = d->n;
+  for (int c = 0; c < nrhs; ++c)
+    for (int i = 0; i < n; ++i) b[static_cast<size_t>(c) * ld + i] *= d->d[i];
+  std::vector<double> rhs(static_cast<size_t>(n) * nrhs);
+  for (int c = 0; c < nrhs; ++c) std::copy_n(b + static_cast<size_t>(c) * ld, n, &rhs[static_cast<size_t>(c) * n]);
+  int info = 0;
+  if (n > 0 && nrhs > 0) dgetrs_("N", &d->n, &nrhs, d->lu.data(), &d->n, d->piv.data(), b, &ld, &info);
+  PetscCheck(info == 0, PETSC_COMM_SELF, PETSC_ERR_LIB, "LAPACK dgetrs: info %d", info);
+  for (int c = 0; c < nrhs; ++c) {
+    double* r = &rhs[static_cast<size_t>(c) * n];
+    const double* x = b + static_cast<size_t>(c) * ld;
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i) r[i] -= d->a[static_cast<size_t>(j) * n + i] * x[j];
+  }
+  if (n > 0 && nrhs > 0) dgetrs_("N", &d->n, &nrhs, d->lu.data(), &d->n, d->piv.data(), rhs.data(), &d->n, &info);
+  for (int c = 0; c < nrhs; ++c)
+    for (int i = 0; i < n; ++i) b[static_cast<size_t>(c) * ld + i] += rhs[static_cast<size_t>(c) * n + i];
+  for (int c = 0; c < nrhs; ++c)
+    for (int i = 0; i < d->n; ++i) b[static_cast<size_t>(c) * ld + i] *= d->d[i];
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode denseApply(PC pc, Vec x, Vec y) {
+  PetscFunctionBeginUser;
+  PetscCall(VecCopy(x, y));
+  PetscScalar* a;
+  PetscCall(VecGetArray(y, &a));
+  PetscCall(denseSolve(pc, 1, a, std::max(static_cast<DenseLU*>(pc->data)->n, 1)));
+  PetscCall(VecRestoreArray(y, &a));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/// Several right-hand sides at once (KSPMatSolve: the compliance's unit loads), one getrs.
+PetscErrorCode denseMatApply(PC pc, Mat B, Mat X) {
+  PetscFunctionBeginUser;
+  PetscCall(MatCopy(B, X, SAME_NONZERO_PATTERN));
+  PetscInt nrhs, lda;
+  PetscCall(MatGetSize(X, nullptr, &nrhs));
+  PetscCall(MatDenseGetLDA(X, &lda));
+  PetscScalar* a;
+  PetscCall(MatDenseGetArray(X, &a));
+  PetscCall(denseSolve(pc, static_cast<int>(nrhs), a, static_cast<int>(lda)));
+  PetscCall(MatDenseRestoreArray(X, &a));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode denseReset(PC pc) {
+  PetscFunctionBeginUser;
+  auto* d = static_cast<DenseLU*>(pc->data);
+  *d = DenseLU{};
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode denseDestroy(PC pc) {
+  PetscFunctionBeginUser;
+  delete static_cast<DenseLU*>(pc->data);
+  pc->data = nullptr;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode denseView(PC pc, PetscViewer viewer) {
+  PetscFunctionBeginUser;
+  PetscCall(PetscViewerASCIIPrintf(viewer, "  dense LU (LAPACK getrf/getrs) of %d unknowns\n",
+                                   static_cast<DenseLU*>(pc->data)->n));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/// PCCreate for PCDENSELU (PCRegister: -pc_type denselu).
+PetscErrorCode createDenseLU(PC pc) {
+  PetscFunctionBeginUser;
+  pc->data = new DenseLU;
+  pc->ops->setup = denseSetUp;
+  pc->ops->apply = denseApply;
+  pc->ops->applytranspose = nullptr;
+  pc->ops->matapply = denseMatApply;
+  pc->ops->reset = denseReset;
+  pc->ops->destroy = denseDestroy;
+  pc->ops->view = denseView;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+}  // namespace
+
+PetscErrorCode registerDenseLU() {
+  PetscFunctionBeginUser;
+  PetscCall(PCRegister(PCDENSELU, createDenseLU));
+  if (!gFactorEvent) PetscCall(PetscLogEventRegister("SinewDenseLU", PC_CLASSID, &gFactorEvent));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode useDenseLU(KSP ksp) {
+  PetscFunctionBeginUser;
+  PetscCall(registerDenseLU());
+  PC pc;
+  PetscCall(KSPSetType(ksp, KSPPREONLY));
+  PetscCall(KSPGetPC(ksp, &pc));
+  PetscCall(PCSetType(pc, PCDENSELU));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+long denseLUFactorizations() { return gFactorizations.load(); }
+
+}  // namespace sinew

@@ -15,9 +15,15 @@ const char* stopVariable(const ContinuationOptions& c) {
   return c.stop_displacement ? "path/control_displacement" : "load_factor";
 }
 
-/// Whether `a` is a step dataset of `rows` rows of reals (not one of the step-analysis rows).
-bool isStepDataset(const ResultArray& a, long rows) {
-  return !a.integer && !a.shape.empty() && a.shape[0] == rows && a.rows.empty() && !a.values.empty();
+/// The step datasets of the end state: the load factor, the control displacement and the node
+/// results and stress of every path point (step analyses, which run at chosen rows, are not among them).
+const char* const kEndState[] = {"load_factor", "path/control_displacement", "node/p", "node/r_quat",
+                                 "node/Freac", "node/Mreac", "stressmax"};
+
+/// Whether `a` is an end-state dataset of `rows` rows of reals.
+bool isEndStateDataset(const std::string& name, const ResultArray& a, long rows) {
+  return std::find(std::begin(kEndState), std::end(kEndState), name) != std::end(kEndState) && !a.integer &&
+         !a.shape.empty() && a.shape[0] == rows && a.rows.empty() && !a.values.empty();
 }
 
 double modelSizeOf(const RunResults& r) {
@@ -76,7 +82,7 @@ RunResults atPathStop(const Model& m, RunResults r) {
   const double t = (stop - a) / (b - a);  // in [0, 1] when the last step crossed the stop value
   if (t < 0 || t > 1) return r;
   for (auto& [name, d] : r.datasets) {
-    if (!isStepDataset(d, rows)) continue;
+    if (!isEndStateDataset(name, d, rows)) continue;
     const std::size_t row = d.values.size() / static_cast<std::size_t>(rows);
     double* last = d.values.data() + (rows - 1) * static_cast<long>(row);
     const double* prev = last - row;

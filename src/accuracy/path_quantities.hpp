@@ -6,7 +6,7 @@
 // (stop_displacement or stop_load_factor; max_steps x 2^level allows the finer levels' shorter steps
 // in the arc-length metric, whose norm grows with the unknowns). Watched: the load factor of the k-th
 // limit point and of the k-th bifurcation located on the coarsest level (/path/critical_points), and
-// the end state, every step dataset at the stop value exactly (interpolated linearly between the last
+// the end state, the node results and stress at the stop value exactly (interpolated linearly between the last
 // two path points, which straddle it), so the levels compare at the same point of the path.
 //
 // Form finding: watched is the found shape, the positions of the coarsest mesh's nodes (which every

@@ -31,7 +31,6 @@ std::string unsupported(const Model& m, const Settings& settings) {
     if (const std::string why = accuracy::membraneRefinementLimit(m); !why.empty()) return why;
   if (m.opt.dynamics) return "opt.dynamics: time steps are not refined by -target_error yet (statics and its step analyses are)";
   if (const std::string why = accuracy::pathRefinementLimit(m); !why.empty()) return why;
-  if (m.formfinding) return "form finding is not refined by -target_error yet";
   if (m.opt.showinputonly) return "opt.showinputonly solves nothing to estimate";
   if (!settings.output.restart.empty()) return "-restart continues one run; it does not combine with -target_error";
   return "";

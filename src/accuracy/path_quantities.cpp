@@ -77,16 +77,26 @@ RunResults atPathStop(const Model& m, RunResults r) {
   if (!var || var->values.size() < 2) return r;
   const long rows = static_cast<long>(var->values.size());
   const double stop = c.stop_displacement ? *c.stop_displacement : *c.stop_load_factor;
-  const double a = var->values[static_cast<std::size_t>(rows - 2)], b = var->values[static_cast<std::size_t>(rows - 1)];
-  if (!(std::isfinite(a) && std::isfinite(b)) || a == b) return r;
-  const double t = (stop - a) / (b - a);  // in [0, 1] when the last step crossed the stop value
-  if (t < 0 || t > 1) return r;
+  const auto at = [&](long i) { return var->values[static_cast<std::size_t>(i)]; };
+  const double a = at(rows - 2), b = at(rows - 1);
+  if (!(std::isfinite(a) && std::isfinite(b)) || a == b || (stop - a) * (stop - b) > 0) return r;  // the last step crossed it
+  // cubic Lagrange interpolation in the stop variable over the last points (up to 4) along which it
+  // runs one way: error O(ds^4), so the end state converges as fast as the levels' h^2 (ds shrinks as
+  // 2^(-L/2)); a linear one, O(ds^2), would converge only as 2^-L
+  long first = rows - 2;
+  while (first > 0 && rows - first < 4 && std::isfinite(at(first - 1)) && (at(first) - at(first - 1)) * (b - a) > 0) --first;
+  std::vector<double> w(static_cast<std::size_t>(rows - first), 1.0);
+  for (long j = first; j < rows; ++j)
+    for (long k = first; k < rows; ++k)
+      if (k != j) w[static_cast<std::size_t>(j - first)] *= (stop - at(k)) / (at(j) - at(k));
   for (auto& [name, d] : r.datasets) {
     if (!isEndStateDataset(name, d, rows)) continue;
     const std::size_t row = d.values.size() / static_cast<std::size_t>(rows);
+    std::vector<double> value(row, 0.0);
+    for (long j = first; j < rows; ++j)
+      for (std::size_t i = 0; i < row; ++i) value[i] += w[static_cast<std::size_t>(j - first)] * d.values[static_cast<std::size_t>(j) * row + i];
     double* last = d.values.data() + (rows - 1) * static_cast<long>(row);
-    const double* prev = last - row;
-    for (std::size_t i = 0; i < row; ++i) last[i] = prev[i] + t * (last[i] - prev[i]);
+    std::copy(value.begin(), value.end(), last);
     if (name == "node/r_quat")  // the interpolated quaternions back to unit length (same hemisphere: small steps)
       for (std::size_t i = 0; i + 3 < row; i += 4) {
         const double n = std::sqrt(last[i] * last[i] + last[i + 1] * last[i + 1] + last[i + 2] * last[i + 2] + last[i + 3] * last[i + 3]);

@@ -6,8 +6,8 @@
 // (stop_displacement or stop_load_factor; max_steps x 2^level allows the finer levels' shorter steps
 // in the arc-length metric, whose norm grows with the unknowns). Watched: the load factor of the k-th
 // limit point and of the k-th bifurcation located on the coarsest level (/path/critical_points), and
-// the end state, the node results and stress at the stop value exactly (interpolated linearly between the last
-// two path points, which straddle it), so the levels compare at the same point of the path.
+// the end state, the node results and stress at the stop value exactly (cubic interpolation over the last path
+// points, the last two straddling it), so the levels compare at the same point of the path.
 //
 // Form finding: watched is the found shape, the positions of the coarsest mesh's nodes (which every
 // level keeps) on the last form-finding row; its error is their root-mean-square change relative to
@@ -29,9 +29,10 @@ std::string pathRefinementLimit(const Model& m);
 /// The path options of level `level`: max_steps x 2^level (at most 100000); the stop criterion ends it.
 void adaptPathLevel(Model& m, int level);
 
-/// The results of a path whose last two rows straddle the scene's stop value, with every step
-/// dataset's last row replaced by its value at the stop value (linear in the stop variable; rotation
-/// quaternions renormalized). Results of a scene without continuation are returned unchanged.
+/// The results of a path whose last two rows straddle the scene's stop value, with the last row of
+/// the load factor, control displacement, node results (p, r_quat, Freac, Mreac) and stressmax replaced
+/// by their values at the stop value (cubic Lagrange interpolation in the stop variable over the last
+/// four points along which it runs one way; rotation quaternions renormalized). Results of a scene without continuation are returned unchanged.
 RunResults atPathStop(const Model& m, RunResults r);
 /// The datasets atPathStop reads besides those of the quantities.
 std::vector<std::string> pathStopDatasets(const Model& m);

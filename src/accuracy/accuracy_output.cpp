@@ -53,10 +53,16 @@ std::string number(double v) {
   return b;
 }
 
-/// A quantity's value as printed: the number, or [a, b, c] for a vector.
+/// A quantity's value as printed: the number, or [a, b, c] for a vector (a longer one, the found
+/// shape, by its size: /accuracy/value holds it).
 std::string valueText(const std::vector<double>& v) {
   if (v.empty()) return "-";
   if (v.size() == 1) return number(v[0]);
+  if (v.size() > 9) {
+    char b[64];
+    std::snprintf(b, sizeof b, "[%zu values in /accuracy/value]", v.size());
+    return b;
+  }
   std::string s = "[";
   for (std::size_t i = 0; i < v.size(); ++i) {
     char b[32];

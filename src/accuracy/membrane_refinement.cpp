@@ -3,6 +3,8 @@
 #include <map>
 #include <utility>
 
+#include "accuracy/supported_boundary.hpp"
+
 namespace sinew::accuracy {
 
 namespace {
@@ -47,6 +49,9 @@ std::optional<NodeProps> midpointProps(const std::map<int, NodeProps>& nprops, i
 Model splitOnce(const Model& base) {
   Model m = base;
   std::map<std::pair<int, int>, int> midpoints;  // sorted node pair -> midpoint node
+  // form finding: a supported boundary edge's midpoint goes on the boundary curve (supported_boundary.hpp)
+  const std::optional<SupportedBoundary> boundary =
+      base.formfinding ? std::optional<SupportedBoundary>(std::in_place, base) : std::nullopt;
   const auto newNode = [&m](const Vec3& x) {
     m.nodes.push_back(x);
     return static_cast<int>(m.nodes.size()) - 1;
@@ -57,7 +62,8 @@ Model splitOnce(const Model& base) {
     if (it != midpoints.end()) return it->second;
     const Vec3& xa = base.nodes[static_cast<std::size_t>(a)];
     const Vec3& xb = base.nodes[static_cast<std::size_t>(b)];
-    const int n = newNode(Vec3{0.5 * (xa[0] + xb[0]), 0.5 * (xa[1] + xb[1]), 0.5 * (xa[2] + xb[2])});
+    const std::optional<Vec3> curved = boundary ? boundary->midpoint(a, b) : std::nullopt;
+    const int n = newNode(curved ? *curved : Vec3{0.5 * (xa[0] + xb[0]), 0.5 * (xa[1] + xb[1]), 0.5 * (xa[2] + xb[2])});
     if (std::optional<NodeProps> p = midpointProps(base.nprops, a, b)) m.nprops[n] = *p;
     midpoints.emplace(key, n);
     return n;

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <sstream>
 
+#include "accuracy/path_quantities.hpp"
+
 namespace sinew::accuracy {
 
 namespace {
@@ -153,6 +155,9 @@ std::vector<double> readQuantity(const QuantityDef& q, const RunResults& r) {
     case Kind::Moment: return nodeValues(r, "node/Mreac", q.node, 3);
     case Kind::ComplianceTT: return complianceBlock(nodeValues(r, "node/CMglob", q.node, 36), 0);
     case Kind::ComplianceRR: return complianceBlock(nodeValues(r, "node/CMglob", q.node, 36), 3);
+    case Kind::LimitLoad: return criticalLoadFactor(r, 1, q.index);
+    case Kind::BifurcationLoad: return criticalLoadFactor(r, 2, q.index);
+    case Kind::Shape: return formFoundShape(r, q.index);
   }
   return {};
 }
@@ -164,7 +169,9 @@ double quantityScale(const QuantityDef& q, const RunResults& r) {
     case Kind::Buckling:
     case Kind::StressMax:
     case Kind::ComplianceTT:
-    case Kind::ComplianceRR: {
+    case Kind::ComplianceRR:
+    case Kind::LimitLoad:
+    case Kind::BifurcationLoad: {
       for (double v : readQuantity(q, r))
         if (std::isfinite(v)) s = std::max(s, std::abs(v));
       break;
@@ -175,6 +182,7 @@ double quantityScale(const QuantityDef& q, const RunResults& r) {
     // over the model size (a reaction that is zero in theory stays at round-off against that)
     case Kind::Force: s = std::max(largestOverNodes(r, Kind::Force), largestOverNodes(r, Kind::Moment) / modelSize(r)); break;
     case Kind::Moment: s = std::max(largestOverNodes(r, Kind::Moment), largestOverNodes(r, Kind::Force) * modelSize(r)); break;
+    case Kind::Shape: s = shapeScale(r, q.index); break;
   }
   return s > 0 ? s : 1.0;
 }
@@ -192,6 +200,9 @@ std::set<std::string> datasetsUsed(const std::vector<QuantityDef>& qs) {
       case Kind::Moment: names.insert({"node/Mreac", "node/p0"}); break;
       case Kind::ComplianceTT:
       case Kind::ComplianceRR: names.insert("node/CMglob"); break;
+      case Kind::LimitLoad:
+      case Kind::BifurcationLoad: names.insert("path/critical_points"); break;
+      case Kind::Shape: names.insert({"node/p", "node/p0", "formfinding/step"}); break;
     }
   }
   return names;
@@ -208,11 +219,19 @@ std::vector<QuantityDef> selectQuantities(const Model& model, const RunResults& 
       if (first == "freq") addColumns(out, coarsest, "freq", Kind::Frequency);
       else if (first == "buck") addColumns(out, coarsest, "buck", Kind::Buckling);
       else if (first == "stressmax" && coarsest.find("stressmax")) out.push_back({Kind::StressMax, "stressmax", -1, 0});
+      else if (first == "limit" || first == "bifurcation") {
+        std::vector<QuantityDef> path;
+        addCriticalPoints(path, coarsest);
+        for (const QuantityDef& q : path)
+          if ((q.kind == Kind::LimitLoad) == (first == "limit")) out.push_back(q);
+      } else if (first == "shape" && model.formfinding) out.push_back({Kind::Shape, "shape", -1, numNodes(coarsest)});
       else if (first == "node")
         for (const QuantityDef& q : nodeQuantities(std::stol(node) - 1, field)) out.push_back(q);
     }
     return out;
   }
+  addCriticalPoints(out, coarsest);  // a path's limit and bifurcation points (none without continuation)
+  if (model.formfinding) out.push_back({Kind::Shape, "shape", -1, numNodes(coarsest)});
   // the nodes the scene loads, and the one that moves most on the coarsest level
   std::vector<long> watched;
   for (const auto& [node, props] : model.nprops)

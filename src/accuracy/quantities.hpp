@@ -23,11 +23,14 @@ struct QuantityDef {
     Moment,        ///< node/Mreac (scale: the largest reaction moment)
     ComplianceTT,  ///< translational 3x3 block of node/CMglob (scale: its largest entry)
     ComplianceRR,  ///< rotational 3x3 block of node/CMglob (scale: its largest entry)
+    LimitLoad,        ///< load factor of limit point `index` in /path/critical_points (scale: itself)
+    BifurcationLoad,  ///< load factor of bifurcation `index` (scale: itself)
+    Shape,            ///< found shape: positions of scene nodes 0..index-1 (accuracy/path_quantities.hpp)
   };
   Kind kind = Kind::Frequency;
   std::string name;  ///< as printed and stored: "freq 1", "node 2 p", "node 1 Freac", "node 2 CMglob tt"
   long node = -1;    ///< 0-based scene node (node quantities)
-  long index = 0;    ///< 0-based column (freq, buck)
+  long index = 0;    ///< 0-based column (freq, buck), critical point (limit, bifurcation) or node count (shape)
 };
 
 /// The elements' theoretical order of convergence of a quantity (docs/accuracy.md): h^4 for
@@ -38,7 +41,8 @@ struct QuantityDef {
 double theoreticalOrder(const QuantityDef& q, bool lumpedMass, bool membranes);
 
 /// The quantities watched: `names` as in opt.accuracy_quantities ("freq", "buck", "stressmax",
-/// "node <n> <p|r|Freac|Mreac|CMglob>"), or when empty those the scene asks for: positions and
+/// "node <n> <p|r|Freac|Mreac|CMglob>", "limit", "bifurcation", "shape"), or when empty those the scene
+/// asks for: the limit and bifurcation load factors of a path, the found shape of form finding, positions and
 /// rotations of loaded nodes and of the node that moves most (on the coarsest level), reactions of
 /// supported nodes, the max stress, every frequency and finite buckling multiplier, the compliance
 /// blocks of the loaded and most-moving nodes (in a scene with membranes neither reactions nor

@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "accuracy/membrane_refinement.hpp"
+#include "accuracy/path_quantities.hpp"
 
 namespace sinew::accuracy {
 
@@ -90,6 +91,7 @@ Model refinedModel(const Model& base, int level) {
   Model m = base;
   m.opt.target_error = 0;
   m.opt.accuracy_quantities.clear();
+  adaptPathLevel(m, level);
   if (hasMembranes(m)) return splitMembraneModel(m, level);  // h / 2^level by splitting every element
   std::vector<char> line(m.eprops.size(), 0);  // sets of 2-node elements: nbeams splits them
   for (std::size_t e = 0; e < m.elements.size(); ++e) {

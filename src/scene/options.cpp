@@ -59,7 +59,7 @@ const std::vector<OptionDoc>& sceneOptionDocs() {
        "refine until the estimated relative error is at most this; the discretization error of every watched result "
        "quantity, estimated by Richardson extrapolation over levels of nbeams x 2 (beams, cables, ANCF cables); the "
        "finest level's results are written, /accuracy holds the levels and estimates (docs/accuracy.md)"},
-      {"accuracy_quantities", "[freq | buck | stressmax | node <n> p|r|Freac|Mreac|CMglob]", "auto",
+      {"accuracy_quantities", "[freq | buck | stressmax | limit | bifurcation | shape | node <n> p|r|Freac|Mreac|CMglob]", "auto",
        "quantities -target_error watches; e.g. [freq, node 2 p]; auto: those the scene asks for (docs/accuracy.md)"},
   };
   return docs;
@@ -301,10 +301,10 @@ StepAnalysisRows parseStepAnalyses(const YAML::Node& v, const std::string& p) {
   fail(p, expected + describe(v));
 }
 
-/// opt.accuracy_quantities: "freq", "buck", "stressmax", "node <n> <p|r|Freac|Mreac|CMglob>".
+/// opt.accuracy_quantities: "freq", "buck", "stressmax", "limit", "bifurcation", "shape", "node <n> <p|r|Freac|Mreac|CMglob>".
 std::vector<std::string> parseAccuracyQuantities(const YAML::Node& v, const std::string& path, std::size_t numNodes) {
   if (!v.IsSequence() && !v.IsScalar()) fail(path, "expected a list of quantities ([freq, node 2 p]), got " + describe(v));
-  static const std::vector<std::string> kWhole = {"freq", "buck", "stressmax"};
+  static const std::vector<std::string> kWhole = {"freq", "buck", "stressmax", "limit", "bifurcation", "shape"};
   static const std::vector<std::string> kNodeFields = {"p", "r", "Freac", "Mreac", "CMglob"};
   std::vector<std::string> out;
   for (std::size_t i = 0; i < (v.IsSequence() ? v.size() : 1); ++i) {
@@ -321,7 +321,7 @@ std::vector<std::string> parseAccuracyQuantities(const YAML::Node& v, const std:
       if (std::find(kNodeFields.begin(), kNodeFields.end(), field) == kNodeFields.end() || !extra.empty())
         fail(pi, "expected 'node " + node + " <p|r|Freac|Mreac|CMglob>', got '" + q + "'");
     } else if (std::find(kWhole.begin(), kWhole.end(), q) == kWhole.end()) {
-      fail(pi, "expected freq, buck, stressmax or 'node <n> <p|r|Freac|Mreac|CMglob>', got '" + q + "'");
+      fail(pi, "expected freq, buck, stressmax, limit, bifurcation, shape or 'node <n> <p|r|Freac|Mreac|CMglob>', got '" + q + "'");
     }
     out.push_back(q);
   }

@@ -6,6 +6,7 @@
 
 #include "accuracy/accuracy_output.hpp"
 #include "accuracy/membrane_refinement.hpp"
+#include "accuracy/path_quantities.hpp"
 #include "accuracy/refinement_study.hpp"
 #include "parallel/collective_error.hpp"
 #include "scene/scene_reader.hpp"
@@ -29,8 +30,7 @@ std::string unsupported(const Model& m, const Settings& settings) {
   if (accuracy::hasMembranes(m))
     if (const std::string why = accuracy::membraneRefinementLimit(m); !why.empty()) return why;
   if (m.opt.dynamics) return "opt.dynamics: time steps are not refined by -target_error yet (statics and its step analyses are)";
-  if (m.opt.continuation) return "opt.continuation: path following is not refined by -target_error yet";
-  if (m.formfinding) return "form finding is not refined by -target_error yet";
+  if (const std::string why = accuracy::pathRefinementLimit(m); !why.empty()) return why;
   if (m.opt.showinputonly) return "opt.showinputonly solves nothing to estimate";
   if (!settings.output.restart.empty()) return "-restart continues one run; it does not combine with -target_error";
   return "";
@@ -51,7 +51,7 @@ accuracy::LevelRun runLevel(MPI_Comm comm, const Settings& settings, const std::
     r.exitCode = out.exitCode;
     r.message = out.message;
     r.output = out.output;
-    r.results = std::move(out.results);
+    r.results = accuracy::atPathStop(model, std::move(out.results));  // a path's end state at its stop value
   } catch (const RunError& e) {
     r.exitCode = e.exitCode();
     r.message = e.what();
@@ -62,7 +62,9 @@ accuracy::LevelRun runLevel(MPI_Comm comm, const Settings& settings, const std::
     MPI_Barrier(comm);
     std::string error;
     try {
-      r.results = accuracy::readResultDatasets(h5, datasets);
+      std::set<std::string> read = datasets;
+      for (const std::string& d : accuracy::pathStopDatasets(model)) read.insert(d);
+      r.results = accuracy::atPathStop(model, accuracy::readResultDatasets(h5, read));
     } catch (const std::exception& e) {
       error = std::string("error: reading back the level's results: ") + e.what();
     }

@@ -6,6 +6,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "accuracy/time_refinement.hpp"
 #include "output/hdf5_util.hpp"
 
 namespace sinew::accuracy {
@@ -129,7 +130,7 @@ void writeAccuracyGroup(const std::string& path, const StudyResult& study) {
     }
   const hsize_t L = nl, Q = nq, M = m;
   writeDataset(g, "level", {L}, level);
-  writeDataset(g, "nbeams_factor", {L}, factor);
+  writeDataset(g, "nbeams_factor", {L}, factor);  // with time refinement: the divisor of dt
   writeDataset(g, "unknowns", {L}, unknowns);
   writeDataset(g, "wall_time", {L}, seconds);
   writeDataset(g, "worst_error", {L}, worst);
@@ -146,13 +147,14 @@ void writeAccuracyGroup(const std::string& path, const StudyResult& study) {
   h5::writeAttribute(g, "met", study.met ? 1 : 0);
   h5::writeAttribute(g, "level", nl ? study.levels.back().level : -1);
   h5::writeAttribute(g, "stop_reason", study.stopReason);
+  h5::writeAttribute(g, "refinement", std::string(study.time ? "dt / 2^level" : "elements / 2^level"));
 }
 
 std::string accuracyTable(const StudyResult& study) {
   std::string s = "accuracy (-target_error " + sci(study.target) + ", relative): ";
   if (study.levels.empty()) return s + study.stopReason + "\n";
   const LevelRecord& last = study.levels.back();
-  s += study.met ? "met at level " + std::to_string(last.level) + " (nbeams x" + std::to_string(last.factor) + ")"
+  s += study.met ? "met at level " + std::to_string(last.level) + " (" + levelName(last.level, study.time) + ")"
                  : "not met; " + study.stopReason;
   char b[256];
   std::snprintf(b, sizeof b, "; %.3g s for all levels\n  %5s %10s %10s %15s  %s\n", study.totalSeconds, "level",
@@ -177,8 +179,9 @@ std::string accuracyTable(const StudyResult& study) {
     const Estimate* e = has ? &last.estimates[q] : nullptr;
     char o[32] = "-";
     if (e && std::isfinite(e->order)) std::snprintf(o, sizeof o, "%.2f", e->order);
-    s += "    " + study.quantities[q].name + ": " + valueText(last.values[q]) + ", " + (e ? sci(e->error) : "-") + ", " +
-         o + ", " + (e ? statusName(e->status) : "-") + ", " + (e ? valueText(e->extrapolated) : "-") + "\n";
+    const auto text = study.quantities[q].kind == QuantityDef::Kind::DisplacementHistory ? historyText : valueText;
+    s += "    " + study.quantities[q].name + ": " + text(last.values[q]) + ", " + (e ? sci(e->error) : "-") + ", " + o + ", " +
+         (e ? statusName(e->status) : "-") + ", " + (e && !e->extrapolated.empty() ? text(e->extrapolated) : "-") + "\n";
   }
   return s;
 }

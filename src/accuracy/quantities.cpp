@@ -4,6 +4,8 @@
 #include <cmath>
 #include <sstream>
 
+#include "accuracy/time_refinement.hpp"
+
 namespace sinew::accuracy {
 
 namespace {
@@ -108,12 +110,16 @@ void addColumns(std::vector<QuantityDef>& out, const RunResults& r, const char* 
       out.push_back({kind, std::string(dataset) + " " + std::to_string(k + 1), -1, static_cast<long>(k)});
 }
 
-bool loaded(const NodeProps& p) {
+}  // namespace
+
+bool loadedNode(const NodeProps& p) {
   auto any = [](const Vec3& v) { return v[0] != 0 || v[1] != 0 || v[2] != 0; };
   bool displaced = p.rot.has_value() || p.rot_initial.has_value();
   for (int k = 0; k < 3; ++k) displaced |= (p.displ[k] && *p.displ[k] != 0) || (p.displ_initial[k] && *p.displ_initial[k] != 0);
   return any(p.force) || any(p.force_initial) || any(p.moment) || any(p.moment_initial) || displaced;
 }
+
+namespace {
 
 bool supported(const NodeProps& p) {
   bool held = p.fix || p.fix_pos || p.fix_orien || p.fix_x || p.fix_y || p.fix_z || p.fix_coords.has_value();
@@ -123,10 +129,12 @@ bool supported(const NodeProps& p) {
 
 }  // namespace
 
-double theoreticalOrder(const QuantityDef& q, bool lumpedMass, bool membranes) {
+double theoreticalOrder(const QuantityDef& q, bool lumpedMass, bool membranes, const ElementOrders& orders) {
+  if (q.kind == Kind::DisplacementHistory) return kTimeSchemeOrder;
   if (membranes) return 2.0;
-  if (q.kind == Kind::Buckling || (q.kind == Kind::Frequency && !lumpedMass)) return 4.0;
-  return 2.0;
+  if (q.kind == Kind::Buckling || (q.kind == Kind::Frequency && !lumpedMass)) return orders.modal;
+  if (q.kind == Kind::Frequency || q.kind == Kind::StressMax) return 2.0;
+  return orders.nodal;
 }
 
 std::vector<double> readQuantity(const QuantityDef& q, const RunResults& r) {
@@ -153,6 +161,7 @@ std::vector<double> readQuantity(const QuantityDef& q, const RunResults& r) {
     case Kind::Moment: return nodeValues(r, "node/Mreac", q.node, 3);
     case Kind::ComplianceTT: return complianceBlock(nodeValues(r, "node/CMglob", q.node, 36), 0);
     case Kind::ComplianceRR: return complianceBlock(nodeValues(r, "node/CMglob", q.node, 36), 3);
+    case Kind::DisplacementHistory: return displacementHistory(q.node, r);
   }
   return {};
 }
@@ -175,6 +184,7 @@ double quantityScale(const QuantityDef& q, const RunResults& r) {
     // over the model size (a reaction that is zero in theory stays at round-off against that)
     case Kind::Force: s = std::max(largestOverNodes(r, Kind::Force), largestOverNodes(r, Kind::Moment) / modelSize(r)); break;
     case Kind::Moment: s = std::max(largestOverNodes(r, Kind::Moment), largestOverNodes(r, Kind::Force) * modelSize(r)); break;
+    case Kind::DisplacementHistory: s = largestDisplacementOverRows(r); break;
   }
   return s > 0 ? s : 1.0;
 }
@@ -192,6 +202,7 @@ std::set<std::string> datasetsUsed(const std::vector<QuantityDef>& qs) {
       case Kind::Moment: names.insert({"node/Mreac", "node/p0"}); break;
       case Kind::ComplianceTT:
       case Kind::ComplianceRR: names.insert("node/CMglob"); break;
+      case Kind::DisplacementHistory: names.insert({"node/p", "node/p0"}); break;
     }
   }
   return names;
@@ -199,6 +210,7 @@ std::set<std::string> datasetsUsed(const std::vector<QuantityDef>& qs) {
 
 std::vector<QuantityDef> selectQuantities(const Model& model, const RunResults& coarsest,
                                           const std::vector<std::string>& names) {
+  if (model.opt.dynamics) return historyQuantities(model, coarsest, names);
   std::vector<QuantityDef> out;
   if (!names.empty()) {  // opt.accuracy_quantities (checked by the scene reader)
     for (const std::string& name : names) {
@@ -216,7 +228,7 @@ std::vector<QuantityDef> selectQuantities(const Model& model, const RunResults& 
   // the nodes the scene loads, and the one that moves most on the coarsest level
   std::vector<long> watched;
   for (const auto& [node, props] : model.nprops)
-    if (loaded(props)) watched.push_back(node);
+    if (loadedNode(props)) watched.push_back(node);
   long most = -1;
   double largest = 0;
   for (long n = 0; n < numNodes(coarsest); ++n) {

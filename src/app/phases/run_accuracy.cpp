@@ -165,4 +165,12 @@ PetscErrorCode runWithTargetError(int argc, char** argv, bool* handled, int* exi
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+std::string targetErrorLimit(const Model& model, const Settings& settings) { return unsupported(model, settings); }
+
+accuracy::LevelRun runAccuracyLevel(MPI_Comm comm, const Settings& settings, const std::string& scenePath,
+                                    const std::string& h5, const Model& model, bool toFile,
+                                    const std::set<std::string>& datasets) {
+  return runLevel(comm, settings, scenePath, h5, model, toFile, datasets);
+}
+
 }  // namespace sinew

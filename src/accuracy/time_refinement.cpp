@@ -22,7 +22,8 @@ long numNodes(const RunResults& r) {
 /// The largest norm of the rows (3 components each) of a history.
 double largestRow(const std::vector<double>& h) {
   double m = 0;
-  for (std::size_t i = 0; i + 2 < h.size(); i += 3) m = std::max(m, std::sqrt(h[i] * h[i] + h[i + 1] * h[i + 1] + h[i + 2] * h[i + 2]));
+  for (std::size_t i = 0; i + 2 < h.size(); i += 3)
+    m = std::max(m, std::sqrt(h[i] * h[i] + h[i + 1] * h[i + 1] + h[i + 2] * h[i + 2]));
   return m;
 }
 

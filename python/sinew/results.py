@@ -6,6 +6,7 @@
     out.freq               # (ns, k) natural frequencies in Hz; out.buck (ns, k) buckling multipliers
     out.step[2].node[5].p  # SPACAR Light's per-step view: (3,) position at load step 2
     out.ndof, out.converged, out.load_factor (or out.time)
+    out.accuracy           # -target_error's study (docs/accuracy.md): out.accuracy["error"], ["quantities"], ...
 
 Every dataset of the file is also reachable as out.data["node/p"] (a numpy array).
 
@@ -90,6 +91,22 @@ class Results:
             setattr(self, name, data.get(name))
         self.statespace = {k[len("statespace/"):]: v for k, v in data.items() if k.startswith("statespace/")} or None
         self.sensors = {k[len("sensors/"):]: v for k, v in data.items() if k.startswith("sensors/")} or None
+        self.accuracy = None
+
+    def _set_accuracy(self, texts):
+        """out.accuracy: -target_error's study (docs/accuracy.md, the /accuracy group): its datasets
+        (level, nbeams_factor, unknowns, wall_time, worst_error, limiting, error, order, status, value,
+        extrapolated) and attributes (quantities as a list of names, target, met, level, stop_reason,
+        refinement); None for a run without target_error."""
+        acc = {k[len("accuracy/"):]: v for k, v in self.data.items() if k.startswith("accuracy/")}
+        if not acc:
+            return self
+        for k, v in texts.items():
+            v = v.decode("utf-8", "replace") if isinstance(v, bytes) else v
+            acc[k] = (float(v) if k == "target" else int(v)) if k in ("target", "met", "level") else v
+        acc["quantities"] = [n for n in str(acc.get("quantities", "")).split("\n") if n]
+        self.accuracy = acc
+        return self
 
     # node and step are made at their first use (a loop of runs that reads out.freq makes neither)
     @functools.cached_property
@@ -137,9 +154,12 @@ def memory_datasets(run):
 
 def load(path):
     """Reads a Sinew result file (from the command line or Scene.run) into a Results object."""
-    return Results(*h5_datasets(path))
+    with h5py.File(path, "r") as f:
+        texts = {k: (v.item() if hasattr(v, "item") else v) for k, v in f["accuracy"].attrs.items()} \
+            if "accuracy" in f else {}
+    return Results(*h5_datasets(path))._set_accuracy(texts)
 
 
 def from_memory(run):
     """The Results object of an in-process run (sinew._core.run), the same as load() of its file."""
-    return Results(*memory_datasets(run))
+    return Results(*memory_datasets(run))._set_accuracy(run.get("group_attrs", {}).get("accuracy", {}))

@@ -4,8 +4,10 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <map>
 #include <stdexcept>
 
+#include "accuracy/time_refinement.hpp"
 #include "output/hdf5_util.hpp"
 
 namespace sinew::accuracy {
@@ -102,11 +104,8 @@ RunResults readResultDatasets(const std::string& path, const std::set<std::strin
   return r;
 }
 
-void writeAccuracyGroup(const std::string& path, const StudyResult& study) {
-  h5::Handle file(H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT), H5Fclose, path + ": open for /accuracy");
-  H5E_BEGIN_TRY { H5Ldelete(file, "accuracy", H5P_DEFAULT); }  // a group of an earlier run of the same file
-  H5E_END_TRY;
-  h5::Handle g(H5Gcreate2(file, "accuracy", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose, "/accuracy: create");
+RunResults accuracyResults(const StudyResult& study) {
+  RunResults r;
   const std::size_t nl = study.levels.size(), nq = study.quantities.size();
   std::size_t m = 1;
   for (const LevelRecord& l : study.levels)
@@ -128,37 +127,62 @@ void writeAccuracyGroup(const std::string& path, const StudyResult& study) {
     }
   }
   std::vector<double> extrapolated(nq * m, kNaN);
-  if (!study.levels.empty())
+  if (nl)
     for (std::size_t q = 0; q < nq && q < study.levels.back().estimates.size(); ++q) {
       const std::vector<double>& x = study.levels.back().estimates[q].extrapolated;
       for (std::size_t k = 0; k < x.size() && k < m; ++k) extrapolated[q * m + k] = x[k];
     }
-  const hsize_t L = nl, Q = nq, M = m;
-  writeDataset(g, "level", {L}, level);
-  writeDataset(g, "nbeams_factor", {L}, factor);
-  writeDataset(g, "unknowns", {L}, unknowns);
-  writeDataset(g, "wall_time", {L}, seconds);
-  writeDataset(g, "worst_error", {L}, worst);
-  writeDataset(g, "limiting", {L}, limiting);
-  writeDataset(g, "error", {L, Q}, error);
-  writeDataset(g, "order", {L, Q}, order);
-  writeDataset(g, "status", {L, Q}, status);
-  writeDataset(g, "value", {L, Q, M}, value);
-  writeDataset(g, "extrapolated", {Q, M}, extrapolated);
+  const long L = static_cast<long>(nl), Q = static_cast<long>(nq), M = static_cast<long>(m);
+  auto add = [&](const std::string& name, std::vector<long> shape, std::vector<double> values) {
+    ResultArray& a = r.datasets["accuracy/" + name];
+    a.shape = std::move(shape);
+    a.values = std::move(values);
+  };
+  add("level", {L}, level);
+  add("nbeams_factor", {L}, factor);  // with time refinement: the divisor of dt
+  add("unknowns", {L}, unknowns);
+  add("wall_time", {L}, seconds);
+  add("worst_error", {L}, worst);
+  add("limiting", {L}, limiting);
+  add("error", {L, Q}, error);
+  add("order", {L, Q}, order);
+  add("status", {L, Q}, status);
+  add("value", {L, Q, M}, value);
+  add("extrapolated", {Q, M}, extrapolated);
   std::string names;
   for (const QuantityDef& q : study.quantities) names += q.name + "\n";
-  h5::writeAttribute(g, "quantities", names);
+  std::map<std::string, std::string>& t = r.groupTexts["accuracy"];
+  t["quantities"] = names;
+  t["target"] = number(study.target);
+  t["met"] = study.met ? "1" : "0";
+  t["level"] = std::to_string(nl ? study.levels.back().level : -1);
+  t["stop_reason"] = study.stopReason;
+  t["refinement"] = study.time ? "dt / 2^level" : "elements / 2^level";
+  return r;
+}
+
+void writeAccuracyGroup(const std::string& path, const StudyResult& study) {
+  h5::Handle file(H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT), H5Fclose, path + ": open for /accuracy");
+  H5E_BEGIN_TRY { H5Ldelete(file, "accuracy", H5P_DEFAULT); }  // a group of an earlier run of the same file
+  H5E_END_TRY;
+  h5::Handle g(H5Gcreate2(file, "accuracy", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose, "/accuracy: create");
+  const RunResults r = accuracyResults(study);
+  for (const auto& [name, a] : r.datasets)
+    writeDataset(g, name.substr(std::string("accuracy/").size()), std::vector<hsize_t>(a.shape.begin(), a.shape.end()), a.values);
+  const std::map<std::string, std::string>& t = r.groupTexts.at("accuracy");
+  h5::writeAttribute(g, "quantities", t.at("quantities"));
   writeDoubleAttribute(g, "target", study.target);
   h5::writeAttribute(g, "met", study.met ? 1 : 0);
-  h5::writeAttribute(g, "level", nl ? study.levels.back().level : -1);
+  h5::writeAttribute(g, "level", study.levels.empty() ? -1 : study.levels.back().level);
   h5::writeAttribute(g, "stop_reason", study.stopReason);
+  h5::writeAttribute(g, "refinement", t.at("refinement"));
 }
 
 std::string accuracyTable(const StudyResult& study) {
   std::string s = "accuracy (-target_error " + sci(study.target) + ", relative): ";
   if (study.levels.empty()) return s + study.stopReason + "\n";
   const LevelRecord& last = study.levels.back();
-  s += study.met ? "met at level " + std::to_string(last.level) + " (nbeams x" + std::to_string(last.factor) + ")"
+  s += study.met ? "met at level " + std::to_string(last.level) + " (" + levelName(last.level, study.time) + ")"
                  : "not met; " + study.stopReason;
   char b[256];
   std::snprintf(b, sizeof b, "; %.3g s for all levels\n  %5s %10s %10s %15s  %s\n", study.totalSeconds, "level",
@@ -183,8 +207,9 @@ std::string accuracyTable(const StudyResult& study) {
     const Estimate* e = has ? &last.estimates[q] : nullptr;
     char o[32] = "-";
     if (e && std::isfinite(e->order)) std::snprintf(o, sizeof o, "%.2f", e->order);
-    s += "    " + study.quantities[q].name + ": " + valueText(last.values[q]) + ", " + (e ? sci(e->error) : "-") + ", " +
-         o + ", " + (e ? statusName(e->status) : "-") + ", " + (e ? valueText(e->extrapolated) : "-") + "\n";
+    const auto text = study.quantities[q].kind == QuantityDef::Kind::DisplacementHistory ? historyText : valueText;
+    s += "    " + study.quantities[q].name + ": " + text(last.values[q]) + ", " + (e ? sci(e->error) : "-") + ", " + o + ", " +
+         (e ? statusName(e->status) : "-") + ", " + (e && !e->extrapolated.empty() ? text(e->extrapolated) : "-") + "\n";
   }
   return s;
 }

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "accuracy/path_quantities.hpp"
+#include "accuracy/time_refinement.hpp"
 
 namespace sinew::accuracy {
 
@@ -110,12 +111,16 @@ void addColumns(std::vector<QuantityDef>& out, const RunResults& r, const char* 
       out.push_back({kind, std::string(dataset) + " " + std::to_string(k + 1), -1, static_cast<long>(k)});
 }
 
-bool loaded(const NodeProps& p) {
+}  // namespace
+
+bool loadedNode(const NodeProps& p) {
   auto any = [](const Vec3& v) { return v[0] != 0 || v[1] != 0 || v[2] != 0; };
   bool displaced = p.rot.has_value() || p.rot_initial.has_value();
   for (int k = 0; k < 3; ++k) displaced |= (p.displ[k] && *p.displ[k] != 0) || (p.displ_initial[k] && *p.displ_initial[k] != 0);
   return any(p.force) || any(p.force_initial) || any(p.moment) || any(p.moment_initial) || displaced;
 }
+
+namespace {
 
 bool supported(const NodeProps& p) {
   bool held = p.fix || p.fix_pos || p.fix_orien || p.fix_x || p.fix_y || p.fix_z || p.fix_coords.has_value();
@@ -125,10 +130,12 @@ bool supported(const NodeProps& p) {
 
 }  // namespace
 
-double theoreticalOrder(const QuantityDef& q, bool lumpedMass, bool membranes) {
+double theoreticalOrder(const QuantityDef& q, bool lumpedMass, bool membranes, const ElementOrders& orders) {
+  if (q.kind == Kind::DisplacementHistory) return kTimeSchemeOrder;
   if (membranes) return 2.0;
-  if (q.kind == Kind::Buckling || (q.kind == Kind::Frequency && !lumpedMass)) return 4.0;
-  return 2.0;
+  if (q.kind == Kind::Buckling || (q.kind == Kind::Frequency && !lumpedMass)) return orders.modal;
+  if (q.kind == Kind::Frequency || q.kind == Kind::StressMax) return 2.0;
+  return orders.nodal;
 }
 
 std::vector<double> readQuantity(const QuantityDef& q, const RunResults& r) {
@@ -158,6 +165,7 @@ std::vector<double> readQuantity(const QuantityDef& q, const RunResults& r) {
     case Kind::LimitLoad: return criticalLoadFactor(r, 1, q.index);
     case Kind::BifurcationLoad: return criticalLoadFactor(r, 2, q.index);
     case Kind::Shape: return formFoundShape(r, q.index);
+    case Kind::DisplacementHistory: return displacementHistory(q.node, r);
   }
   return {};
 }
@@ -183,6 +191,7 @@ double quantityScale(const QuantityDef& q, const RunResults& r) {
     case Kind::Force: s = std::max(largestOverNodes(r, Kind::Force), largestOverNodes(r, Kind::Moment) / modelSize(r)); break;
     case Kind::Moment: s = std::max(largestOverNodes(r, Kind::Moment), largestOverNodes(r, Kind::Force) * modelSize(r)); break;
     case Kind::Shape: s = shapeScale(r, q.index); break;
+    case Kind::DisplacementHistory: s = largestDisplacementOverRows(r); break;
   }
   return s > 0 ? s : 1.0;
 }
@@ -203,6 +212,7 @@ std::set<std::string> datasetsUsed(const std::vector<QuantityDef>& qs) {
       case Kind::LimitLoad:
       case Kind::BifurcationLoad: names.insert("path/critical_points"); break;
       case Kind::Shape: names.insert({"node/p", "node/p0", "formfinding/step"}); break;
+      case Kind::DisplacementHistory: names.insert({"node/p", "node/p0"}); break;
     }
   }
   return names;
@@ -210,6 +220,7 @@ std::set<std::string> datasetsUsed(const std::vector<QuantityDef>& qs) {
 
 std::vector<QuantityDef> selectQuantities(const Model& model, const RunResults& coarsest,
                                           const std::vector<std::string>& names) {
+  if (model.opt.dynamics) return historyQuantities(model, coarsest, names);
   std::vector<QuantityDef> out;
   if (!names.empty()) {  // opt.accuracy_quantities (checked by the scene reader)
     for (const std::string& name : names) {
@@ -235,7 +246,7 @@ std::vector<QuantityDef> selectQuantities(const Model& model, const RunResults& 
   // the nodes the scene loads, and the one that moves most on the coarsest level
   std::vector<long> watched;
   for (const auto& [node, props] : model.nprops)
-    if (loaded(props)) watched.push_back(node);
+    if (loadedNode(props)) watched.push_back(node);
   long most = -1;
   double largest = 0;
   for (long n = 0; n < numNodes(coarsest); ++n) {

@@ -26,6 +26,8 @@ struct QuantityDef {
     LimitLoad,        ///< load factor of limit point `index` in /path/critical_points (scale: itself)
     BifurcationLoad,  ///< load factor of bifurcation `index` (scale: itself)
     Shape,            ///< found shape: positions of scene nodes 0..index-1 (accuracy/path_quantities.hpp)
+    DisplacementHistory,  ///< node/p - node/p0 of `node` at every row, [rows x 3] (dynamics; scale: the largest
+                          ///< displacement of any node at any row; error: the worst row)
   };
   Kind kind = Kind::Frequency;
   std::string name;  ///< as printed and stored: "freq 1", "node 2 p", "node 1 Freac", "node 2 CMglob tt"
@@ -33,12 +35,25 @@ struct QuantityDef {
   long index = 0;    ///< 0-based column (freq, buck), critical point (limit, bifurcation) or node count (shape)
 };
 
-/// The elements' theoretical order of convergence of a quantity (docs/accuracy.md): h^4 for
-/// frequencies (consistent mass) and buckling multipliers of the cubic beam and ANCF interpolation,
-/// h^2 for frequencies with lumped beam mass and for every static result (the corotational beam's
-/// nodal displacements, rotations, reactions and stresses under large displacements); h^2 for every
-/// quantity of a scene with membranes (linear triangles: displacements, stresses and frequencies).
-double theoreticalOrder(const QuantityDef& q, bool lumpedMass, bool membranes);
+/// The elements' theoretical orders in h, the lowest over the model's element kinds (ElementKind::
+/// nodalOrder, modalOrder in src/elements/element_kinds.hpp): nodal results (positions, rotations,
+/// reactions, compliance) and eigenvalues (frequencies with consistent mass, buckling multipliers).
+struct ElementOrders {
+  double nodal = 2.0;
+  double modal = 4.0;
+};
+
+/// The theoretical order of convergence of a quantity (docs/accuracy.md): the elements' modal order
+/// for frequencies (consistent mass) and buckling multipliers (h^4 for the cubic beam and ANCF
+/// interpolation), h^2 for frequencies with lumped beam mass, the elements' nodal order for nodal
+/// results (h^2 for the corotational beam under large displacements, h^4 for the ANCF cable's cubic
+/// Hermite nodes), h^2 for the max stress (a derivative); h^2 for every quantity of a scene with
+/// membranes (linear triangles: displacements, stresses and frequencies); the time scheme's order (2)
+/// for time histories (accuracy/time_refinement.hpp).
+double theoreticalOrder(const QuantityDef& q, bool lumpedMass, bool membranes, const ElementOrders& orders);
+
+/// The scene loads the node (forces, moments, prescribed displacements or rotations).
+bool loadedNode(const NodeProps& p);
 
 /// The quantities watched: `names` as in opt.accuracy_quantities ("freq", "buck", "stressmax",
 /// "node <n> <p|r|Freac|Mreac|CMglob>", "limit", "bifurcation", "shape"), or when empty those the scene
@@ -47,7 +62,8 @@ double theoreticalOrder(const QuantityDef& q, bool lumpedMass, bool membranes);
 /// supported nodes, the max stress, every frequency and finite buckling multiplier, the compliance
 /// blocks of the loaded and most-moving nodes (in a scene with membranes neither reactions nor
 /// compliance blocks: they do not converge under refinement). Quantities that are zero on the coarsest level
-/// (a node that does not move, no reaction) are left out.
+/// (a node that does not move, no reaction) are left out. With opt.dynamics: time histories
+/// (accuracy/time_refinement.hpp).
 std::vector<QuantityDef> selectQuantities(const Model& model, const RunResults& coarsest,
                                           const std::vector<std::string>& names);
 

@@ -6,6 +6,8 @@
 
 #include "accuracy/membrane_refinement.hpp"
 #include "accuracy/path_quantities.hpp"
+#include "accuracy/time_refinement.hpp"
+#include "elements/element_kinds.hpp"
 
 namespace sinew::accuracy {
 
@@ -39,8 +41,9 @@ void estimate(LevelRecord& fine, const LevelRecord& coarse, const LevelRecord& m
     if (q0.empty() || q0.size() != q1.size() || q1.size() != q2.size()) {  // missing on a level (fewer modes found)
       e.order = e.error = std::numeric_limits<double>::quiet_NaN();
     } else {
-      e = richardson(q0, q1, q2, quantityScale(qs[i], fineResults), theoreticalOrder(qs[i], options.lumpedMass, options.membranes),
-                     options.target);
+      const std::size_t rowSize = qs[i].kind == QuantityDef::Kind::DisplacementHistory ? 3 : 0;  // the worst time row
+      e = richardson(q0, q1, q2, quantityScale(qs[i], fineResults),
+                     theoreticalOrder(qs[i], options.lumpedMass, options.membranes, options.orders), options.target, rowSize);
     }
     const double err = std::isfinite(e.error) ? e.error : std::numeric_limits<double>::infinity();
     fine.worst = std::max(fine.worst, err);
@@ -62,9 +65,9 @@ double predictedNext(const LevelRecord& r) {
   return worst;
 }
 
-std::string levelLine(const LevelRecord& r, const std::vector<QuantityDef>& qs) {
-  std::string s = "  accuracy level " + std::to_string(r.level) + ": nbeams x" + std::to_string(r.factor) + ", " +
-                  std::to_string(r.unknowns) + " unknowns, ";
+std::string levelLine(const LevelRecord& r, const std::vector<QuantityDef>& qs, bool time) {
+  std::string s = "  accuracy level " + std::to_string(r.level) + ": " + levelName(r.level, time) + ", " +
+                  std::to_string(r.unknowns) + (time ? " unknowns x time steps, " : " unknowns, ");
   char t[32];
   std::snprintf(t, sizeof t, "%.3g s", r.seconds);
   s += t;
@@ -87,7 +90,33 @@ long numberOr(const RunResults& r, const char* name, long fallback) {
 
 }  // namespace
 
+std::string levelName(int level, bool time) {
+  return (time ? "dt / " : "nbeams x") + std::to_string(1L << level);
+}
+
+ElementOrders elementOrders(const Model& m) {
+  ElementOrders o{1e9, 1e9};
+  bool any = false;
+  for (const ElementSet& set : m.eprops) {
+    const ElementKind& k = elementKind(set.type());
+    o.nodal = std::min(o.nodal, k.nodalOrder), o.modal = std::min(o.modal, k.modalOrder), any = true;
+  }
+  return any ? o : ElementOrders{};
+}
+
+StudyOptions studyOptions(const Model& m, double target, long maxUnknowns, bool lumpedMass) {
+  StudyOptions o;
+  o.target = target;
+  o.maxUnknowns = maxUnknowns;
+  o.lumpedMass = lumpedMass;
+  o.time = refinesTime(m);
+  o.membranes = hasMembranes(m) && !o.time;
+  o.orders = elementOrders(m);
+  return o;
+}
+
 Model refinedModel(const Model& base, int level) {
+  if (refinesTime(base)) return timeRefinedModel(base, level);  // dt / 2^level, the mesh as written
   Model m = base;
   m.opt.target_error = 0;
   m.opt.accuracy_quantities.clear();
@@ -109,6 +138,7 @@ StudyResult runRefinementStudy(const Model& base, const StudyOptions& options, c
   const long maxUnknowns = options.maxUnknowns;
   StudyResult s;
   s.target = target;
+  s.time = options.time;
   bool mayBeLast = false;  // the next level's predicted estimate meets the target
   bool failed = false;
   int first = 0;  // the coarsest level of the sequence
@@ -120,8 +150,9 @@ StudyResult runRefinementStudy(const Model& base, const StudyOptions& options, c
       const long g = options.membranes ? 4 : 2;
       const long next = n == 1 ? g * s.levels[0].unknowns : (g + 1) * s.levels[n - 1].unknowns - g * s.levels[n - 2].unknowns;
       if (next > maxUnknowns) {
-        s.stopReason = "level " + std::to_string(level) + " (nbeams x" + std::to_string(1L << level) + ") would have about " +
-                       std::to_string(next) + " unknowns, more than -accuracy_max_unknowns " + std::to_string(maxUnknowns);
+        s.stopReason = "level " + std::to_string(level) + " (" + levelName(level, options.time) + ") would have about " +
+                       std::to_string(next) + (options.time ? " unknowns x time steps" : " unknowns") +
+                       ", more than -accuracy_max_unknowns " + std::to_string(maxUnknowns);
         break;
       }
     }
@@ -131,7 +162,7 @@ StudyResult runRefinementStudy(const Model& base, const StudyOptions& options, c
     // a coarse level whose analysis does not converge (one element cannot roll up a cantilever) is
     // dropped while there is no estimate yet: the sequence starts again from the next level
     if (r.exitCode == kAnalysisFailed && s.levels.size() < 2) {
-      print("  accuracy level " + std::to_string(level) + ": nbeams x" + std::to_string(1L << level) +
+      print("  accuracy level " + std::to_string(level) + ": " + levelName(level, options.time) +
             ", the analysis did not converge; the levels start again from level " + std::to_string(level + 1));
       s.levels.clear();
       s.quantities.clear();
@@ -139,7 +170,7 @@ StudyResult runRefinementStudy(const Model& base, const StudyOptions& options, c
       continue;
     }
     if (r.exitCode != 0) {
-      s.stopReason = "level " + std::to_string(level) + " (nbeams x" + std::to_string(1L << level) + ") failed (exit " +
+      s.stopReason = "level " + std::to_string(level) + " (" + levelName(level, options.time) + ") failed (exit " +
                      std::to_string(r.exitCode) + ")";
       s.finalRun = std::move(r);
       failed = true;
@@ -150,11 +181,12 @@ StudyResult runRefinementStudy(const Model& base, const StudyOptions& options, c
     rec.level = level;
     rec.factor = 1L << level;
     rec.unknowns = numberOr(r.results, "nunknowns", r.unknowns);
+    if (options.time) rec.unknowns *= timeSteps(refinedModel(base, level));  // space-time: doubles per level
     rec.seconds = r.seconds;
     rec.toFile = toFile;
     for (const QuantityDef& q : s.quantities) rec.values.push_back(readQuantity(q, r.results));
     if (s.levels.size() >= 2) estimate(rec, s.levels[s.levels.size() - 2], s.levels.back(), s.quantities, r.results, options);
-    print(levelLine(rec, s.quantities));
+    print(levelLine(rec, s.quantities, options.time));
     s.levels.push_back(std::move(rec));
     last = std::move(r);
     const LevelRecord& now = s.levels.back();

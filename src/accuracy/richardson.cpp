@@ -17,18 +17,24 @@ const char* statusName(EstimateStatus s) {
 
 namespace {
 
-double distance(const std::vector<double>& a, const std::vector<double>& b) {
-  double s = 0;
-  for (std::size_t i = 0; i < a.size() && i < b.size(); ++i) s += (a[i] - b[i]) * (a[i] - b[i]);
-  return std::sqrt(s);
+/// |a - b|: Euclidean over all components (rowSize 0) or the largest over rows of rowSize components.
+double distance(const std::vector<double>& a, const std::vector<double>& b, std::size_t rowSize) {
+  const std::size_t n = std::min(a.size(), b.size()), row = rowSize > 0 ? rowSize : std::max<std::size_t>(n, 1);
+  double largest = 0;
+  for (std::size_t start = 0; start < n; start += row) {
+    double s = 0;
+    for (std::size_t i = start; i < n && i < start + row; ++i) s += (a[i] - b[i]) * (a[i] - b[i]);
+    largest = std::max(largest, std::sqrt(s));
+  }
+  return largest;
 }
 
 }  // namespace
 
 Estimate richardson(const std::vector<double>& q0, const std::vector<double>& q1, const std::vector<double>& q2,
-                    double scale, double theoreticalOrder, double target) {
+                    double scale, double theoreticalOrder, double target, std::size_t rowSize) {
   Estimate e;
-  const double d1 = distance(q1, q0), d2 = distance(q2, q1);
+  const double d1 = distance(q1, q0, rowSize), d2 = distance(q2, q1, rowSize);
   e.order = (d1 > 0 && d2 > 0) ? std::log2(d1 / d2) : std::numeric_limits<double>::quiet_NaN();
   const bool sane = std::isfinite(e.order) && e.order >= theoreticalOrder - kOrderBelow &&
                     e.order <= theoreticalOrder + kOrderAbove;

@@ -1,7 +1,8 @@
 // The discretization error of a quantity from three levels of refinement (h, h/2, h/4): Richardson
 // extrapolation with the observed order, checked against the element's theoretical order.
 //
-//   d1 = |q1 - q0|, d2 = |q2 - q1|            (Euclidean norm over the quantity's components)
+//   d1 = |q1 - q0|, d2 = |q2 - q1|            (Euclidean norm over the quantity's components, or for a
+//                                               time history the largest over its rows)
 //   p  = log2(d1 / d2)                         observed order
 //   e2 = d2 / (2^p - 1) / scale                estimated relative error of the finest level q2
 //   q* = q2 + (q2 - q1) / (2^p - 1)            extrapolated value (reported beside q2, never instead)
@@ -35,8 +36,10 @@ constexpr double kOrderAbove = 1.5;
 /// Changes below this fraction of target * scale between every pair of levels count as resolved.
 constexpr double kResolvedFraction = 0.1;
 
-/// The estimate of q2 from q0 (coarsest), q1, q2 (finest) of one quantity with `scale` (> 0).
+/// The estimate of q2 from q0 (coarsest), q1, q2 (finest) of one quantity with `scale` (> 0). rowSize
+/// > 0: the quantity is rows of rowSize components (a time history) and |.| the largest Euclidean
+/// norm of a row; 0: the Euclidean norm of all components.
 Estimate richardson(const std::vector<double>& q0, const std::vector<double>& q1, const std::vector<double>& q2,
-                    double scale, double theoreticalOrder, double target);
+                    double scale, double theoreticalOrder, double target, std::size_t rowSize = 0);
 
 }  // namespace sinew::accuracy

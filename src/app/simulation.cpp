@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "app/command_line.hpp"
+#include "app/phases/library_accuracy.hpp"
 #include "app/scene_run.hpp"
 #include "output/collective_agreement.hpp"
 #include "parallel/collective_error.hpp"
@@ -122,6 +123,8 @@ void finalize() {
 
 RunOutput run(MPI_Comm comm, const SceneSource& scene, const Settings& settings, bool echo) {
   initialize();
+  // opt.target_error: levels of refinement, each a run of this function (docs/accuracy.md)
+  if (std::optional<RunOutput> study = runTargetErrorInLibrary(comm, scene, settings, echo)) return std::move(*study);
   RunOutput out;
   const bool toFile = settings.output.file.has_value();
   bool ran = false;  // the analyses ran: their results come back

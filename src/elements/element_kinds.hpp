@@ -17,6 +17,11 @@ struct ElementKind {
   bool formFindable = false;
   /// Its elements carry sensors (`sensors` with `element`).
   bool elementSensors = false;
+  /// Theoretical orders of convergence in the element length h (-target_error, docs/accuracy.md):
+  /// nodal results (positions, rotations, reactions) and eigenvalues (frequencies with consistent
+  /// mass, buckling multipliers).
+  double nodalOrder = 2.0;
+  double modalOrder = 4.0;
   /// The set has inertia (a density or a mass per length).
   bool (*hasInertia)(const ElementSet& set) = nullptr;
   /// Something of the set acts at load factor 0 (prestress, initial pressure, reference strains, force laws).

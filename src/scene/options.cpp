@@ -57,7 +57,8 @@ const std::vector<OptionDoc>& sceneOptionDocs() {
        "transfer choose which analyses. Their datasets hold one row per analysed row, /step_analysis_rows says which"},
       {"target_error", "number in (0, 0.1]", "none",
        "refine until the estimated relative error is at most this; the discretization error of every watched result "
-       "quantity, estimated by Richardson extrapolation over levels of nbeams x 2 (beams, cables, ANCF cables); the "
+       "quantity, estimated by Richardson extrapolation over levels of nbeams x 2 (beams, cables, ANCF cables; "
+       "membranes split in four; with opt.dynamics dt / 2, the time histories); the "
        "finest level's results are written, /accuracy holds the levels and estimates (docs/accuracy.md)"},
       {"accuracy_quantities", "[freq | buck | stressmax | limit | bifurcation | shape | node <n> p|r|Freac|Mreac|CMglob]", "auto",
        "quantities -target_error watches; e.g. [freq, node 2 p]; auto: those the scene asks for (docs/accuracy.md)"},

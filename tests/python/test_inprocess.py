@@ -106,3 +106,32 @@ def test_process_run_gives_the_same_out():
         np.testing.assert_array_equal(mem.data[k], proc.data[k])
     # the scene text differs: the process run reads PyYAML's text of the dict, the in-process one yaml-cpp's
     assert {k: v for k, v in mem.attrs.items() if k != "scene"} == {k: v for k, v in proc.attrs.items() if k != "scene"}
+
+
+def test_target_error_in_process(tmp_path):
+    """opt.target_error through spacarlight (docs/accuracy.md, "From the library and Python"): a
+    cantilever's bending frequencies from one element (t / L = 1e-4, so Euler-Bernoulli's values are
+    the limit): the answer is the finest level's (more nodes than the scene's two), out.accuracy holds
+    the study, its estimates within a factor 3 of the true errors and the true errors within the target;
+    with output=... the same in the file, /accuracy included."""
+    L, w, t, E, rho = 1.0, 0.01, 1e-4, 210e9, 7800.0
+    beta = np.array([1.875104068711961, 4.694091132974175, 7.854757438237613])
+    ref = beta ** 2 * np.sqrt(E * w * t ** 3 / 12 / (rho * w * t * L ** 4)) / (2 * np.pi)
+    eprops = [{"elems": [1], "flex": [1, 2, 3, 4, 5, 6], "emod": E, "smod": 80e9, "dens": rho, "cshape": "rect",
+               "dim": [w, t], "orien": [0, 0, 1], "nbeams": 1}]
+    args = ([[0, 0, 0], [L, 0, 0]], [[1, 2]], {1: {"fix": True}}, eprops)
+    opt = {"nfreq": 3, "calccompl": False, "target_error": 1e-5}
+    out = sinew.spacarlight(*args, opt=opt)
+    acc = out.accuracy
+    assert acc is not None and acc["met"] == 1 and acc["target"] == 1e-5 and acc["refinement"] == "elements / 2^level"
+    assert out.data["mesh/p"].shape[1] == int(acc["nbeams_factor"][-1]) + 1 > 8, "the answer is the finest level's mesh"
+    true = np.abs(out.freq[-1][:3] / ref - 1)
+    est = acc["error"][-1][[acc["quantities"].index(f"freq {k + 1}") for k in range(3)]]
+    assert true.max() <= 1e-5
+    checked = true > 1e-7  # below target / 100 the model's shear terms are of the error's size
+    assert np.all(((est / true > 1 / 3) & (est / true < 3))[checked]), (est, true)
+    path = world().bcast(str(tmp_path / "accuracy.h5"))  # rank 0's path on every rank
+    filed = sinew.spacarlight(*args, opt=opt, flags={"o": path})
+    np.testing.assert_array_equal(filed.freq, out.freq)
+    np.testing.assert_array_equal(filed.accuracy["error"], acc["error"])
+    assert filed.accuracy["quantities"] == acc["quantities"] and filed.accuracy["met"] == 1

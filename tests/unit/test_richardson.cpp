@@ -46,3 +46,17 @@ TEST(Richardson, ChangesFarBelowTheTargetAreResolved) {
   EXPECT_EQ(same.status, EstimateStatus::Resolved);
   EXPECT_EQ(same.error, 0.0);
 }
+
+TEST(Richardson, TimeHistoryTakesTheWorstRow) {
+  // two rows of 3 components: row 1 converges as dt^2 (changes 0.4, 0.1), row 0 hardly changes and
+  // with another order; the norm is the worst row's, so the order is 2 and the error 0.1 / 3
+  const std::vector<double> q0{1, 0, 0, 2.0, 0, 0}, q1{1 + 1e-9, 0, 0, 2.4, 0, 0}, q2{1 + 1.5e-9, 0, 0, 2.5, 0, 0};
+  const auto e = richardson(q0, q1, q2, 1.0, 2.0, 1e-3, 3);
+  EXPECT_EQ(e.status, EstimateStatus::Converging);
+  EXPECT_NEAR(e.order, 2.0, 1e-12);
+  EXPECT_NEAR(e.error, 0.1 / 3, 1e-12);
+  EXPECT_NEAR(e.extrapolated[3], 2.5 + 0.1 / 3, 1e-12);
+  // the same values as one vector: the Euclidean norm over both rows
+  const auto whole = richardson(q0, q1, q2, 1.0, 2.0, 1e-3);
+  EXPECT_NEAR(whole.order, std::log2(std::hypot(0.4, 1e-9) / std::hypot(0.1, 5e-10)), 1e-12);
+}

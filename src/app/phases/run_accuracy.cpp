@@ -8,6 +8,7 @@
 #include "accuracy/membrane_refinement.hpp"
 #include "accuracy/path_quantities.hpp"
 #include "accuracy/refinement_study.hpp"
+#include "accuracy/time_refinement.hpp"
 #include "parallel/collective_error.hpp"
 #include "scene/scene_reader.hpp"
 #include "settings/read_settings.hpp"
@@ -27,9 +28,11 @@ bool mentionsTargetError(const std::string& path) {
 
 /// What -target_error cannot refine yet: "" or the reason (a scene error, exit 2).
 std::string unsupported(const Model& m, const Settings& settings) {
-  if (accuracy::hasMembranes(m))
+  if (accuracy::refinesTime(m)) {  // dt / 2^level, the mesh as written
+    if (const std::string why = accuracy::timeRefinementLimit(m); !why.empty()) return why;
+  } else if (accuracy::hasMembranes(m)) {
     if (const std::string why = accuracy::membraneRefinementLimit(m); !why.empty()) return why;
-  if (m.opt.dynamics) return "opt.dynamics: time steps are not refined by -target_error yet (statics and its step analyses are)";
+  }
   if (const std::string why = accuracy::pathRefinementLimit(m); !why.empty()) return why;
   if (m.opt.showinputonly) return "opt.showinputonly solves nothing to estimate";
   if (!settings.output.restart.empty()) return "-restart continues one run; it does not combine with -target_error";
@@ -112,12 +115,14 @@ PetscErrorCode runWithTargetError(int argc, char** argv, bool* handled, int* exi
   const std::string h5 = settings.output.file ? *settings.output.file : model.opt.filename + ".h5";
   const bool silent = model.opt.silent;
   const double target = model.opt.target_error;
-  const bool membranes = accuracy::hasMembranes(model);
+  const accuracy::StudyOptions options =
+      accuracy::studyOptions(model, target, settings.accuracy.maxUnknowns, settings.dynamics.beamMass == BeamMass::Lumped);
+  const char* levels = options.time        ? "dt / 2 (the mesh as written)"
+                       : options.membranes ? "every element split (membranes in four)"
+                                           : "nbeams x 2";
   if (!silent)
     PetscCall(PetscPrintf(comm, "accuracy on demand: -target_error %g, levels of %s up to -accuracy_max_unknowns %d\n", target,
-                          membranes ? "every element split (membranes in four)" : "nbeams x 2", settings.accuracy.maxUnknowns));
-  const accuracy::StudyOptions options{target, settings.accuracy.maxUnknowns, settings.dynamics.beamMass == BeamMass::Lumped,
-                                       membranes};
+                          levels, settings.accuracy.maxUnknowns));
   const accuracy::StudyResult study = accuracy::runRefinementStudy(
       model, options,
       [&](const Model& m, int, bool toFile, const std::set<std::string>& datasets) {
@@ -154,11 +159,20 @@ PetscErrorCode runWithTargetError(int argc, char** argv, bool* handled, int* exi
     const accuracy::LevelRecord& best = study.levels.back();
     char worst[32] = "none (fewer than 3 levels)";
     if (best.worst >= 0) std::snprintf(worst, sizeof worst, "%.2e", best.worst);
-    PetscCall(PetscPrintf(comm, "error: -target_error %g not reached: %s; %s holds level %d (nbeams x%ld), worst estimate %s\n",
-                          target, study.stopReason.c_str(), h5.c_str(), best.level, best.factor, worst));
+    PetscCall(PetscPrintf(comm, "error: -target_error %g not reached: %s; %s holds level %d (%s), worst estimate %s\n", target,
+                          study.stopReason.c_str(), h5.c_str(), best.level, accuracy::levelName(best.level, study.time).c_str(),
+                          worst));
     *exitCode = 3;
   }
   PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+std::string targetErrorLimit(const Model& model, const Settings& settings) { return unsupported(model, settings); }
+
+accuracy::LevelRun runAccuracyLevel(MPI_Comm comm, const Settings& settings, const std::string& scenePath,
+                                    const std::string& h5, const Model& model, bool toFile,
+                                    const std::set<std::string>& datasets) {
+  return runLevel(comm, settings, scenePath, h5, model, toFile, datasets);
 }
 
 }  // namespace sinew

@@ -4,6 +4,12 @@
 #pragma once
 #include <petscsys.h>
 
+#include <set>
+#include <string>
+
+#include "accuracy/refinement_study.hpp"
+#include "settings/settings.hpp"
+
 namespace sinew {
 
 /// Runs `sinew scene.yaml` with opt.target_error (from the scene or -target_error); *handled =
@@ -13,5 +19,13 @@ namespace sinew {
 /// refinement -target_error cannot do yet; else the failing level's exit code. Collective. Installs
 /// no error handler of its own: every level is a library run with its own.
 PetscErrorCode runWithTargetError(int argc, char** argv, bool* handled, int* exitCode);
+
+/// What -target_error cannot refine in `model` with `settings`: "" or the reason (a scene error).
+std::string targetErrorLimit(const Model& model, const Settings& settings);
+/// One level through the library entry (sinew::run, its own error handler): in memory (every dataset
+/// in the results), or into `h5` with `datasets` read back. scenePath names the scene in messages.
+accuracy::LevelRun runAccuracyLevel(MPI_Comm comm, const Settings& settings, const std::string& scenePath,
+                                    const std::string& h5, const Model& model, bool toFile,
+                                    const std::set<std::string>& datasets);
 
 }  // namespace sinew

@@ -62,15 +62,29 @@ void inertiaForceT(const V3<T> x[2], const V3<T> y[2], const T* v, const double*
   const T iu = inverse(sqrtT(dotT(u, u)));
   e[1] = scale(iu, u);
   e[2] = crossT(e[0], e[1]);
-  // the frame's spin for the rates r (12 values: velocities and spins of both nodes)
-  auto omega = [&](const T* r) {
-    const V3<T> ld = sub(block(r, 2), block(r, 0));
+  // the frame's spin is linear in the chord rate l' and the rate ybar' of the y directors:
+  // omega = G1 l' + G2 ybar'; the columns of G1, G2 are the spins of unit rates
+  auto spinOf = [&](const V3<T>& ld, const V3<T>& yd) {
     const V3<T> e1d = scale(iL, sub(ld, scale(dotT(e[0], ld), e[0])));
-    const V3<T> yd = add(crossT(block(r, 1), y[0]), crossT(block(r, 3), y[1]));
     const V3<T> ud = sub(sub(yd, scale(dotT(yd, e[0]) + dotT(ybar, e1d), e[0])), scale(ye, e1d));
     const V3<T> e2d = scale(iu, sub(ud, scale(dotT(e[1], ud), e[1])));
     const V3<T> e3d = add(crossT(e1d, e[1]), crossT(e[0], e2d));
     return scale(0.5, add(add(crossT(e[0], e1d), crossT(e[1], e2d)), crossT(e[2], e3d)));
+  };
+  V3<T> G1[3], G2[3];  // columns
+  const V3<T> zero{T(0.0), T(0.0), T(0.0)};
+  for (int j = 0; j < 3; ++j) {
+    V3<T> u = zero;
+    u[j] = T(1.0);
+    G1[j] = spinOf(u, zero);
+    G2[j] = spinOf(zero, u);
+  }
+  auto times = [](const V3<T>* G, const V3<T>& x) { return add(add(scale(x[0], G[0]), scale(x[1], G[1])), scale(x[2], G[2])); };
+  auto timesT = [](const V3<T>* G, const V3<T>& c) { return V3<T>{dotT(G[0], c), dotT(G[1], c), dotT(G[2], c)}; };
+  auto omega = [&](const T* r) {
+    const V3<T> ld = sub(block(r, 2), block(r, 0));
+    const V3<T> yd = add(crossT(block(r, 1), y[0]), crossT(block(r, 3), y[1]));
+    return add(times(G1, ld), times(G2, yd));
   };
   // out = M r = T Ml T^T r
   auto massTimes = [&](const T* r, T* out) {
@@ -81,7 +95,10 @@ void inertiaForceT(const V3<T> x[2], const V3<T> y[2], const T* v, const double*
       T pl[3];
       for (int i = 0; i < 3; ++i) {
         T s(0.0);
-        for (int c = 0; c < kDofs; ++c) s = s + Ml[(3 * b + i) * kDofs + c] * rl[c];
+        for (int c = 0; c < kDofs; ++c) {
+          const double m = Ml[(3 * b + i) * kDofs + c];
+          if (m != 0.0) s = s + m * rl[c];  // Ml is sparse (axial, torsion, two bending planes)
+        }
         pl[i] = s;
       }
       for (int j = 0; j < 3; ++j) out[3 * b + j] = pl[0] * e[0][j] + pl[1] * e[1][j] + pl[2] * e[2][j];
@@ -108,11 +125,14 @@ void inertiaForceT(const V3<T> x[2], const V3<T> y[2], const T* v, const double*
       if (b % 2 == 1) f[3 * b + i] = f[3 * b + i] - vxp[i];  // spin rows: -w x (M v)_w
     }
   }
-  // + E^T c: E's column k is the frame spin of the unit rate k
-  for (int k = 0; k < kDofs; ++k) {
-    T r[kDofs];
-    for (int j = 0; j < kDofs; ++j) r[j] = T(j == k ? 1.0 : 0.0);
-    f[k] = f[k] + dotT(c, omega(r));
+  // + E^T c, E = d omega / d r: l' = v_q - v_p, ybar' = w_p x y_p + w_q x y_q
+  const V3<T> g1 = timesT(G1, c), g2 = timesT(G2, c);
+  const V3<T> sp = crossT(y[0], g2), sq = crossT(y[1], g2);  // (w x y) . g = w . (y x g)
+  for (int i = 0; i < 3; ++i) {
+    f[i] = f[i] - g1[i];
+    f[6 + i] = f[6 + i] + g1[i];
+    f[3 + i] = f[3 + i] + sp[i];
+    f[9 + i] = f[9 + i] + sq[i];
   }
 }
 

@@ -60,6 +60,13 @@ struct StepForceInput {
   double decay = 0.0;  ///< energy decay xi >= 0: stresses S (eps0 + eps1) / 2 + xi / 2 S (eps1 - eps0)
 };
 
+/// The complete inertia force of a kernel's mass (ElementKernel::inertiaForce), [numDofs] and
+/// [numDofs^2] row-major: f, its derivative Kq by the state (translations, spatial spins) at fixed
+/// rates, and Dv by the velocities (the derivative by the accelerations is the mass matrix).
+struct InertiaOutput {
+  std::vector<double> f, Kq, Dv;
+};
+
 /// Thrown by ElementKernel::evaluate when a force law gives a value that is not finite (a user
 /// function dividing by zero, sqrt(-1), log(0), exp(1000)). law(): the law ("bendingMomentUserFunction
 /// \"1/0*curvature\""); returned(): "inf", "-inf", "nan" or "a non-finite derivative ..."; where(): its
@@ -141,6 +148,13 @@ class ElementKernel {
   /// Whether mass() changes with the state (the beams' consistent mass in the element frame); kinds whose
   /// mass is that of the reference configuration return false (the energy-momentum scheme takes them).
   virtual bool massDependsOnState() const { return constantMass() == nullptr; }
+  /// The complete inertia force of a state-dependent mass M(q): the Euler-Lagrange force of the kinetic
+  /// energy T = 1/2 v^T M(q) v (v: velocities and spatial spins, a: their rates),
+  ///   f = M a + dM/dt v - dT/dq - (w x dT/dw on the spin rows)   (Euler-Poincare form on SO(3)),
+  /// in place of M(q) a (docs/dynamics.md, "Inertia"). hasInertiaForce(): the kernel has it.
+  virtual bool hasInertiaForce() const { return false; }
+  virtual void inertiaForce(const double* /*q*/, const double* /*v*/, const double* /*a*/, bool /*tangent*/,
+                            InertiaOutput& /*out*/) const {}
   /// Equivalent nodal load [numDofs] of the body force density rho * a (gravity). Only when hasInertia().
   virtual void bodyForce(const double* q, const Vec3& a, std::vector<double>& f) const;
   /// Lumped inertia of the nodes instead of a mass matrix (then hasInertia() is false): per node 7

@@ -174,8 +174,13 @@ class Assembler {
   // ---- dynamics (assembler_dynamics.cpp); V, A in the unknowns layout, constrained DOFs at rest
   /// F = M A + f_int(U, V, t) - f_ext(t) (kernels see the velocities: damping, user functions).
   PetscErrorCode dynamicResidual(Vec U, Vec V, Vec A, const LoadState& ls, Vec F);
-  /// J = K(U, V) + shiftV D(U, V) + shiftA M; D only from kernels with hasDamping().
-  PetscErrorCode dynamicJacobian(Vec U, Vec V, const LoadState& ls, double shiftV, double shiftA, Mat J);
+  /// J = K(U, V) + shiftV D(U, V) + shiftA M; D only from kernels with hasDamping(). With the
+  /// complete inertia on, A (may be null: at rest) gives the frame terms d(M(q) A)/dq of its kernels.
+  PetscErrorCode dynamicJacobian(Vec U, Vec V, Vec A, const LoadState& ls, double shiftV, double shiftA, Mat J);
+  /// While on, the kernels with ElementKernel::inertiaForce (the complete consistent beam mass) give
+  /// their inertia force and its tangent in dynamicResidual, dynamicJacobian and the dynamic
+  /// reactions instead of M(q) qdd (the Arnold-Bruls scheme; docs/dynamics.md, "Inertia").
+  void setCompleteInertia(bool on) { completeInertia_ = on; }
   /// Hands every element block and the node terms of each dynamicJacobian() to `sink` (nullptr: none;
   /// the corotated Newton matrix of ANCF cables, solvers/ancf/corotated_newton_matrix.hpp).
   void setNewtonBlockSink(NewtonBlockSink* sink) { sink_ = sink; }
@@ -343,6 +348,12 @@ class Assembler {
   /// rotaryMomentumStep of free Frame6 node i under momentum_ (its mominertia, R_n = Rref_, theta from u1).
   RotaryMomentumStep midpointMomentum(int i) const;
   const double* vLocal_ = nullptr;  // local form of the velocities while a dynamic evaluation runs
+  const double* inertiaV_ = nullptr;  // velocities of the complete inertia force (residual and reactions)
+  bool completeInertia_ = false;
+  mutable InertiaOutput inertiaOut_;
+  /// The element's velocities and accelerations (kernel layout; prescribed DOFs from their time
+  /// functions, other constrained ones 0) from the local forms v (may be null) and a (may be null).
+  void elementRates(const LocalElement& el, const int* idx, const double* v, const double* a, double* ve, double* ae) const;
   const double* aLocal_ = nullptr;  // and of the accelerations while dynamicResidual or a dynamic fullResidual runs (element inertia in the force loop)
   // prescribed motions as functions of time (computeStates with ls.timeFunctions): per local node
   // 6 velocities, then 6 accelerations (dof layout; spatial angular rates for rot)

@@ -135,8 +135,9 @@ PetscErrorCode Assembler::fullResidual(Vec U, const LoadState& ls, Vec Ffull) {
     PetscCall(VecGetArrayRead(vl, &v));
     PetscCall(VecGetArrayRead(al, &a));
     aLocal_ = a;  // the elements' M_e qdd_e in the force loop
+    inertiaV_ = v;
     const PetscErrorCode e = assembleForces(u, ls, Target::Full, f);
-    aLocal_ = nullptr;
+    aLocal_ = inertiaV_ = nullptr;
     addNodeInertia(v, a, Target::Full, f);
     PetscCall(VecRestoreArrayRead(al, &a));
     PetscCall(VecRestoreArrayRead(vl, &v));

@@ -67,7 +67,8 @@ ElementKernels makeKernelFactory(const Model& model, BeamMass beamMass) {
   }
   // -beam_mass lumped: beams give their inertia to their nodes (docs/dynamics.md, "Free-floating beams")
   const bool lumped = beamMass == BeamMass::Lumped;
-  KernelFactory kernelOf = [scale, ancf, lumped](const Model& m, const FeMesh& fe, int e) -> std::unique_ptr<ElementKernel> {
+  const bool complete = beamMass == BeamMass::Consistent;  // the complete consistent mass (beam_inertia.cpp)
+  KernelFactory kernelOf = [scale, ancf, lumped, complete](const Model& m, const FeMesh& fe, int e) -> std::unique_ptr<ElementKernel> {
     const FeElement& el = fe.elements[e];
     const int set = el.set;
     const Vec3& Xp = fe.X[el.nodes[0]];
@@ -103,6 +104,7 @@ ElementKernels makeKernelFactory(const Model& model, BeamMass beamMass) {
         const bool inertia = set >= 0 && m.eprops[set].get<BeamProperties>().dens > 0;
         auto beam = std::make_unique<BeamCorotational>(Xp, Xq, orien, sec, modes, inertia, scale);
         beam->setLumpedMass(lumped);
+        beam->setCompleteMass(complete);
         return beam;
       }
       case ElementType::Cable: {

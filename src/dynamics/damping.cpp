@@ -47,7 +47,7 @@ PetscErrorCode Damping::setup(Vec U, const LoadState& ls, Vec keep, ResultFile& 
     PetscCall(VecSet(V, 0.0));
     PetscCall(asm_.createMatrix(&C0_));
     asm_.setSkipStrainRateDamped(true);  // K0 of the kinds that do not damp their strain rates
-    const PetscErrorCode ierr = asm_.dynamicJacobian(U, V, ls, 0.0, 0.0, C0_);
+    const PetscErrorCode ierr = asm_.dynamicJacobian(U, V, nullptr, ls, 0.0, 0.0, C0_);
     asm_.setSkipStrainRateDamped(false);
     PetscCall(ierr);
     PetscCall(VecDestroy(&V));

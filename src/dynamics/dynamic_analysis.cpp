@@ -91,6 +91,9 @@ DynamicAnalysis::DynamicAnalysis(Assembler& assembler, const DynamicsOptions& op
   // tangent would carry that spurious axial force (residuals alternating by 1e2 per iteration on a
   // swinging leaf spring at dt = T1/24). Each step's stresses are linearized from q_n.
   asm_.setMixedStressNewton(newton.mixedStresses && asm_.hasMixedStressKernels());
+  // the complete consistent beam mass (its kinetic energy's inertia force) in the Arnold-Bruls loop;
+  // the midpoint and energy-momentum rules take element masses as M(q_{n+1/2}) (qd_{n+1} - qd_n)/h
+  asm_.setCompleteInertia(scheme == Scheme::ArnoldBruls);
   // Newton's start of a step. The extrapolation q_n + h qd_n + h^2/2 a_n carries the algorithmic
   // accelerations of the modes the step does not resolve (h omega >> 1: the axial and the short
   // bending waves of a fine cable, omega ~ 1/l_e resp. 1/l_e^2). Those are noise of amplitude
@@ -195,12 +198,12 @@ PetscErrorCode DynamicAnalysis::initialAccelerations(Vec U, Vec V, Vec Qdd, bool
     // fixed-point iteration from x = 0 (rate ||K|| / (s ||M||) = 1e-4 with s below).
     PetscCall(asm_.createMatrix(&K));
     PetscCall(asm_.createMatrix(&A));
-    PetscCall(asm_.dynamicJacobian(U, V, ls0, 0.0, 0.0, K));
+    PetscCall(asm_.dynamicJacobian(U, V, nullptr, ls0, 0.0, 0.0, K));
     PetscReal nk = 0, nm = 0;
     PetscCall(MatNorm(K, NORM_INFINITY, &nk));
     PetscCall(MatNorm(M, NORM_INFINITY, &nm));
     s = nm > 0 && nk > 0 ? 1e4 * nk / nm : 1.0;
-    PetscCall(asm_.dynamicJacobian(U, V, ls0, 0.0, s, A));
+    PetscCall(asm_.dynamicJacobian(U, V, nullptr, ls0, 0.0, s, A));
     PetscCall(KSPSetOperators(ksp, A, A));
   } else {
     PetscCall(KSPSetOperators(ksp, M, M));
@@ -491,9 +494,9 @@ PetscErrorCode DynamicAnalysis::stepJacobian(Vec U, const EvaluationPoint& e, Ma
   // midpoint: the rotary inertia's block exact (rotaryMomentumStep; the elements' rotation columns are
   // those of the mid state)
   if (e.midStep || e.stepForces)
-    PetscCall(withRotaryMomentum(U, [&] { return asm_.dynamicJacobian(e.q, e.qd, ls, e.shiftV, e.shiftA, P); },
+    PetscCall(withRotaryMomentum(U, [&] { return asm_.dynamicJacobian(e.q, e.qd, e.qdd, ls, e.shiftV, e.shiftA, P); },
                                  e.stepForces));
-  else PetscCall(asm_.dynamicJacobian(e.q, e.qd, ls, e.shiftV, e.shiftA, P));
+  else PetscCall(asm_.dynamicJacobian(e.q, e.qd, e.qdd, ls, e.shiftV, e.shiftA, P));
   PetscCall(damping_.addJacobian(e.shiftV, P));
   if (e.jacobianScale != 1.0) PetscCall(MatScale(P, e.jacobianScale));
   if (e.midStep && Fend_) {
@@ -519,7 +522,7 @@ PetscErrorCode DynamicAnalysis::motionTangent(double t, Vec q, Vec qd, double sh
   PetscFunctionBeginUser;
   LoadState ls = ls_;
   ls.time = t;
-  PetscCall(asm_.dynamicJacobian(q, qd, ls, shiftV, shiftA, P));
+  PetscCall(asm_.dynamicJacobian(q, qd, nullptr, ls, shiftV, shiftA, P));
   PetscCall(damping_.addJacobian(shiftV, P));
   // the Newton test's round-off floor (roundoffFloor) scales with the Newton matrix, as formJacobian's
   // (without it the floor was 0 and Newton stalled at the round-off of the residual, 4e-11 on an ANCF cable)

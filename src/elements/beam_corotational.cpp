@@ -374,11 +374,9 @@ void BeamCorotational::linearizedStresses(const double* q0, const double* q1, do
   }
 }
 
-void BeamCorotational::mass(const double* q, std::vector<double>& M) const {
-  M.assign(kDofs * kDofs, 0.0);
-  const Mat3 Lam = currentFrame(q);  // chord, averaged rotated y axis projected perpendicular to it
+void BeamCorotational::localMass(double* Ml) const {
+  std::fill(Ml, Ml + kDofs * kDofs, 0.0);
   const double l = l0_, m = sec_.rhoA * l;
-  double Ml[kDofs * kDofs] = {};
   auto set = [&](int i, int j, double v) { Ml[i * kDofs + j] = v; Ml[j * kDofs + i] = v; };
   // axial, linear shape functions: rhoA l [2 1; 1 2] / 6
   set(0, 0, m / 3); set(6, 6, m / 3); set(0, 6, m / 6);
@@ -395,6 +393,13 @@ void BeamCorotational::mass(const double* q, std::vector<double>& M) const {
   };
   plane(1, 5, 7, 11, 1.0);   // v, theta_z = v'
   plane(2, 4, 8, 10, -1.0);  // w, theta_y = -w'
+}
+
+void BeamCorotational::mass(const double* q, std::vector<double>& M) const {
+  M.assign(kDofs * kDofs, 0.0);
+  const Mat3 Lam = currentFrame(q);  // chord, averaged rotated y axis projected perpendicular to it
+  double Ml[kDofs * kDofs];
+  localMass(Ml);
   // M = T Ml T^T, T = blockdiag(Lam)
   for (int bi = 0; bi < 4; ++bi)
     for (int bj = 0; bj < 4; ++bj) {

@@ -44,6 +44,11 @@ class BeamCorotational : public ElementKernel {
   void evaluate(const KernelInput& in, const KernelNeeds& needs, KernelOutput& out) const override;
   /// Consistent mass at the current configuration in the current element frame (chord, averaged triad).
   void mass(const double* q, std::vector<double>& M) const override;
+  /// The complete consistent mass (default; -beam_mass consistent_frozen switches it off): the
+  /// Euler-Lagrange force of T = 1/2 v^T M(q) v with the rotating element frame (beam_inertia.cpp).
+  void setCompleteMass(bool complete) { complete_ = complete; }
+  bool hasInertiaForce() const override { return hasInertia() && complete_; }
+  void inertiaForce(const double* q, const double* v, const double* a, bool tangent, InertiaOutput& out) const override;
   /// Lumped: rhoA l0 a / 2 on each node's translations, zero moments.
   void bodyForce(const double* q, const Vec3& a, std::vector<double>& f) const override;
   /// Max Von Mises stress over both end sections (normal stress from N, My, Mz; shear from torsion).
@@ -111,6 +116,8 @@ class BeamCorotational : public ElementKernel {
   struct Kinematics;
   /// disp (optional, 6 values): node translations x - X0, for a cancellation-free elongation.
   void kinematics(const double* q, Kinematics& k, const double* disp = nullptr) const;
+  /// The consistent mass in the element frame (12 x 12, row-major; mass() turns it with the frame).
+  void localMass(double* Ml) const;
   void stresses(const Kinematics& k, const double* lambda, double* sig) const;
   /// The step force's B rows and stresses for scalar type T (double or Dual<12>; beam_step_force.cpp).
   template <class T>
@@ -128,6 +135,7 @@ class BeamCorotational : public ElementKernel {
   std::array<BeamMode, 6> modes_{};
   bool hasInertia_ = false;
   bool lumped_ = false;
+  bool complete_ = true;  ///< complete consistent mass (inertiaForce) in dynamics
   double scale_ = 1.0;
   double beta_ = 0.0;  ///< strain-rate damping (s)
   int nRigid_ = 0;

@@ -20,7 +20,7 @@ enum class DynamicsScheme { ArnoldBruls, TSAlpha2, Midpoint, EnergyMomentum };  
 enum class ChainLU { Auto, Cut, Redundant };                 ///< auto, cut, redundant
 enum class DynamicsPredictor { Auto, Acceleration, State, Rotation };  ///< auto, acceleration, state, rotation
 enum class TimeStepControl { None, Newton, Error };          ///< none, newton, error
-enum class BeamMass { Consistent, Lumped };                  ///< consistent, lumped
+enum class BeamMass { Consistent, Lumped, ConsistentFrozen };  ///< consistent, lumped, consistent_frozen
 enum class StiffnessDamping { Corotated, Initial };          ///< corotated, initial
 enum class ComplianceMethod { SelectedInverse, SparseRhs, DenseRhs };  ///< selinv, sparse, dense
 

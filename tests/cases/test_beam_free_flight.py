@@ -18,7 +18,8 @@ Measured (2 ranks): max |H - H(0.5)| / |H| = 1.9e-13 (3.5e-13 in a 10 s run), |p
 nonlinear elasticity, Simo & Tarnow 1992; generalized alpha rho = 1 with the same lumped mass: 1.3e-2).
 1 vs 2 ranks: positions identical to 8.1e-14 m. Feature off: the default scheme (arnold_bruls, rho = 1)
 on the same lumped scene drifts H by 2.9e-2 (checked here, must exceed 1e-3); in a 10 s run with the
-consistent beam mass (default -beam_mass) H drifts by 2.2e-1 and p by 8.3e-3 (measured once, not run here).
+beam mass M(q) qdd (-beam_mass consistent_frozen) H drifts by 2.2e-1 and p by 8.3e-3, with the
+complete consistent mass (the default) by 3.6e-2 and 5.8e-4 (measured once, not run here).
 Also: stopped at t = 2 on 1 rank and restarted on 2 = the uninterrupted run to 2.2e-14 (state).
 The same scene with rigid torsion (flex [1, 3, 4, 5, 6]: index-3 multipliers, constraints at the step
 ends, their forces at mid-step): H drift 1.8e-13, T + S 1.0e-2, twist measure 2.2e-15 at every row

@@ -18,7 +18,8 @@ Measured: Sinew's tip deflection peaks at -0.5751 m at t = 6.8 s (reference -0.5
 and follows the reference history to 6.2e-3 of its peak over the run (3 modes: 6.0e-3); the same
 reference model without the stiffening term reaches |w| = 1000 m at t = 10.8 s (diverges). The
 tip's shortening stays below 0.02 m. Known limit (docs/dynamics.md, "Not yet"): at this dt and
-rho_inf = 0.9 the solution goes unstable after about 9.5 turns (Newton fails at t = 18.4 s); Newton
+rho_inf = 0.9 the solution goes unstable after about 10 turns (Newton fails at t = 18.64 s with the
+complete consistent mass, the default; 18.43 s with -beam_mass consistent_frozen); Newton
 itself takes 3 iterations per step at 6 rad/s with -dynamics_predictor rotation (4 from q_n;
 test_dynamics_spinup_newton.py counts them at rho_inf = 0.6, which runs to 30 s). The test takes about 65 s on
 the shared, loaded 2-core machine."""

@@ -122,7 +122,7 @@ PetscErrorCode check() {
   PetscCall(VecAssemblyBegin(xr));
   PetscCall(VecAssemblyEnd(xr));
   for (double extra : {0.0, 1e-4}) {
-    PetscCall(a.dynamicJacobian(U0, V, ls, shiftV, shiftA, J0));
+    PetscCall(a.dynamicJacobian(U0, V, nullptr, ls, shiftV, shiftA, J0));
     expect(cm.valid(), "blocks kept for every element (1 = yes)", cm.valid() ? 1.0 : 0.0);
     PetscCall(turned(a, mesh, U0, 0.7, extra, U1));
     // (1b) the kept matrix turned with the nodes (useNodeRotatedPC): R J0 R^T, R from the node turns
@@ -143,7 +143,7 @@ PetscErrorCode check() {
       PetscCall(MatMult(J0, xr, y0));
     }
     PetscCall(cm.assemble(U1, ls, Jc));
-    PetscCall(a.dynamicJacobian(U1, V, ls, shiftV, shiftA, J1));
+    PetscCall(a.dynamicJacobian(U1, V, nullptr, ls, shiftV, shiftA, J1));
     double dc = 0, d0 = 0, dn = 0, dk = 0;
     PetscCall(relDiff(Jc, J1, &dc));
     PetscCall(relDiff(J0, J1, &d0));
@@ -177,7 +177,7 @@ PetscErrorCode check() {
   PetscCall(cm.apply(x, y2));
   PetscCall(relVec(y2, y1, &dop));
   expect(dop < 1e-13, "rebuilt matrix: |element-wise product - assembled| / |assembled|", dop);
-  PetscCall(a.dynamicJacobian(U1, V, ls, shiftV, shiftA, J1));
+  PetscCall(a.dynamicJacobian(U1, V, nullptr, ls, shiftV, shiftA, J1));
   PetscCall(MatMult(J1, x, y1));
   PetscCall(cm.apply(x, y2));
   PetscCall(relVec(y2, y1, &dop));

@@ -51,7 +51,7 @@ def run(name, scene, np_=2, args=(), expect_exit=0):
             os.remove(stale)
     cmd = launcher(np_) + [path, "-o", out] + list(args)
     if in_process_eligible(path, np_, args, expect_exit):
-        words = ["-o", out] + [str(a) for a in args]
+        words = ["-o", out] + _environment_flags(args) + [str(a) for a in args]
         code, text = _worker(np_).run(path, words) if np_ > 1 else _run_here(path, words)
         cmd = ["(in process)"] + cmd
     else:
@@ -68,8 +68,8 @@ def run(name, scene, np_=2, args=(), expect_exit=0):
 # worker process per rank (inprocess_worker.py) instead of one mpirun each, which costs 0.25 s before
 # any work; on 1 rank in this process (an MPI singleton once, instead of once per run). Runs expected
 # to fail (their exit codes, messages and no-hang guarantees are the command line's) and runs with
-# the flags below stay processes. A test sets IN_PROCESS = False to run everything as processes;
-# SINEW_TEST_IN_PROCESS=0 does it for the whole suite.
+# the flags below stay processes; PETSC_OPTIONS in ENV become flags of the run. A test sets
+# IN_PROCESS = False to run everything as processes; SINEW_TEST_IN_PROCESS=0 does it for the whole suite.
 IN_PROCESS = os.environ.get("SINEW_TEST_IN_PROCESS", "1") != "0"
 # handled by the command line before a scene runs (help, version, options files, PETSc's log at
 # exit) or by its refinement driver (-target_error)
@@ -85,12 +85,26 @@ def _core_built():
 def in_process_eligible(path, np_, args, expect_exit):
     if not IN_PROCESS or expect_exit != 0 or not _core_built():
         return False
-    if ENV.get("PETSC_OPTIONS") or ENV.get("PETSC_OPTIONS_YAML"):  # read by each process's PetscInitialize
+    if ENV.get("PETSC_OPTIONS_YAML"):  # read by each process's PetscInitialize
         return False
     if any(str(a).split("=")[0] in PROCESS_FLAGS for a in args):
         return False
     with open(path) as f:
         return "target_error" not in f.read()
+
+
+def _environment_flags(args):
+    """ENV's PETSC_OPTIONS as flags of an in-process run (a process's PetscInitialize reads them; the
+    in-process runs start PETSc once, without them), those the run's own words give left out (the
+    command line overrides PETSC_OPTIONS)."""
+    words, given, out = ENV.get("PETSC_OPTIONS", "").split(), {str(a) for a in args if str(a).startswith("-")}, []
+    for i, w in enumerate(words):
+        if not w.startswith("-") or w[1:2].isdigit() or w[1:2] == ".":
+            continue  # a value
+        value = [words[i + 1]] if i + 1 < len(words) and not (words[i + 1].startswith("-") and not words[i + 1][1:2].isdigit()) else []
+        if w not in given:
+            out += [w] + value
+    return out
 
 
 _core = None
@@ -123,7 +137,8 @@ def _run_here(path, words):
 def _worker(np_):
     if np_ not in _workers:
         from inprocess_client import InProcessWorker
-        _workers[np_] = InProcessWorker(MPIEXEC, np_, ENV, WORK)
+        env = {k: v for k, v in ENV.items() if k != "PETSC_OPTIONS"}  # passed as flags per run (_environment_flags)
+        _workers[np_] = InProcessWorker(MPIEXEC, np_, env, WORK)
     return _workers[np_]
 
 

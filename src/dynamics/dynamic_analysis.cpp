@@ -45,6 +45,7 @@ DynamicAnalysis::DynamicAnalysis(Assembler& assembler, const DynamicsOptions& op
   SinewCallThrow(comm, asm_.createVector(&F_));
   const Scheme scheme = checkScheme(asm_.mesh(), settings.scheme);
   maxCuts_ = newton.maxCuts;
+  denseMax_ = newton.denseMaxUnknowns;
   growAfter_ = settings.dtGrowAfter;
   if (growAfter_ < 0) throw SceneError("-dt_grow_after", "expected a count >= 0, got " + std::to_string(growAfter_));
   const StepControlSettings sc = stepControl(opts_, settings, scheme);

@@ -207,6 +207,7 @@ class DynamicAnalysis : private MotionEquations {
   static constexpr double kRotationTurn = 2e-3;
   bool cutLU_ = false;  ///< ANCF chain with few coupling unknowns: useCutCorrectedLU on several ranks
   int mumpsWorkspace_ = 100;  ///< -mat_mumps_icntl_14 of the MUMPS step solver (DynamicsSettings::mumpsWorkspace)
+  int denseMax_ = 200;        ///< -dense_max_unknowns: the small models' dense step LU (useDynamicsSolver)
   static PetscErrorCode applyNewtonMatrix(Mat A, Vec x, Vec y);
   Vec F_ = nullptr;
   /// 1 on coordinates, 0 on Lagrange multipliers (index-3 constraints: no rates); null without multipliers

@@ -19,8 +19,9 @@ namespace sinew {
 // nested-dissection order) instead of MUMPS, whose fixed cost per factorization (about 0.1 ms)
 // exceeds a whole time step of a small model. ANCF chains: PETSc's LU in band order (useChainLU), on
 // several processes each rank's part with the exact correction of the unknowns coupling the ranks
-// (useCutCorrectedLU; -dynamics_chain_lu redundant: every process factors the whole matrix).
-// Anything else: MUMPS, as everywhere.
+// (useCutCorrectedLU; -dynamics_chain_lu redundant: every process factors the whole matrix). Other
+// models up to -dense_max_unknowns unknowns: a dense LU with partial pivoting (PCDENSELU; on several
+// processes redundant, every process factoring the whole matrix). Anything else: MUMPS, as everywhere.
 PetscErrorCode DynamicAnalysis::useDynamicsSolver(KSP ksp) {
   PetscFunctionBeginUser;
   if (nodeRotation_ != NodeRotation::Off) {
@@ -38,6 +39,13 @@ PetscErrorCode DynamicAnalysis::useDynamicsSolver(KSP ksp) {
   if (chain_) PetscFunctionReturn(useChainLU(ksp, mesh.comm));
   bool plain = size == 1;
   for (const LocalElement& e : mesh.elements) plain = plain && e.firstMultiplier < 0;
+  // small models (-dense_max_unknowns) that would go to MUMPS: a dense LU with partial pivoting, on
+  // several processes every process factoring the whole matrix (a 96-unknown leaf on 2 ranks spent 70 %
+  // of its time steps in MUMPS's per-call work)
+  if (!plain && mesh.numGlobalUnknowns <= static_cast<long>(denseMax_)) {
+    if (size == 1) PetscFunctionReturn(useDenseLU(ksp));
+    PetscFunctionReturn(useRedundantDenseLU(ksp));
+  }
   if (!plain) {
     // MUMPS: the off-diagonal pivoting a wild Newton iterate needs (a step load on a fine cable)
     // overflows the default workspace estimate (INFOG(1) = -9, a failed linear solve); reserve 100 %

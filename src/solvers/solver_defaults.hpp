@@ -72,6 +72,20 @@ inline PetscErrorCode useChainLU(KSP ksp, MPI_Comm comm) {
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/// The dense LU of a small matrix on every process of the KSP's communicator: PCREDUNDANT (options
+/// prefix redundant_) gathers the whole matrix on each process, which factors it with PCDENSELU.
+inline PetscErrorCode useRedundantDenseLU(KSP ksp) {
+  PetscFunctionBeginUser;
+  PC pc;
+  KSP inner;
+  PetscCall(KSPSetType(ksp, KSPPREONLY));
+  PetscCall(KSPGetPC(ksp, &pc));
+  PetscCall(PCSetType(pc, PCREDUNDANT));
+  PetscCall(PCRedundantGetKSP(pc, &inner));
+  PetscCall(useDenseLU(inner));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /// Whether the small-model dense LU applies: one process and at most denseMaxUnknowns unknowns.
 inline bool useDenseTangentLU(const DistributedMesh& mesh, int denseMaxUnknowns) {
   return mesh.size == 1 && mesh.numGlobalUnknowns <= static_cast<long>(denseMaxUnknowns);

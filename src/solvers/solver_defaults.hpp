@@ -112,13 +112,15 @@ inline PetscErrorCode useDirectSolver(KSP ksp, const DistributedMesh& mesh) {
 }
 
 /// The direct solver of a tangent solved many times in small designs (statics Newton, compliance,
-/// constraint check): a model on one process with at most `denseMaxUnknowns` unknowns
-/// (-dense_max_unknowns) is factored dense with LAPACK (useDenseLU: getrf with partial pivoting,
-/// PC type denselu), where MUMPS's fixed cost per call dominates (66 unknowns: docs/performance.md,
+/// constraint check): a model with at most `denseMaxUnknowns` unknowns (-dense_max_unknowns) is
+/// factored dense with LAPACK (useDenseLU: getrf with partial pivoting, PC type denselu; on several
+/// processes every process factors the whole matrix, useRedundantDenseLU; an ANCF chain keeps its
+/// chain LU), where MUMPS's fixed cost per call dominates (66 unknowns: docs/performance.md,
 /// "Designs from Python"); otherwise useDirectSolver(ksp, mesh). Collective.
 inline PetscErrorCode useDirectSolver(KSP ksp, const DistributedMesh& mesh, int denseMaxUnknowns) {
   PetscFunctionBeginUser;
   if (useDenseTangentLU(mesh, denseMaxUnknowns)) PetscCall(useDenseLU(ksp));
+  else if (mesh.numGlobalUnknowns <= static_cast<long>(denseMaxUnknowns) && !ancfChain(mesh)) PetscCall(useRedundantDenseLU(ksp));
   else PetscCall(useDirectSolver(ksp, mesh));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -29,7 +29,7 @@ const std::vector<Field<StaticsSettings>>& staticsFields() {
       {"increment_grow_its", integerAtLeast(0), &flag_groups::statics, "5", "Newton iterations that count as quick (the next increment doubles)", &StaticsSettings::incrementGrowIts},
       {"tangent_operator", oneOf({"auto", "elementwise", "assembled"}), &flag_groups::statics, "auto", "Newton systems: element-wise GMRES or LU; GMRES on the element-wise tangent preconditioned by LU, or the LU alone (auto: element-wise for ANCF cables)", choiceOf(&StaticsSettings::tangentOperator)},
       {"assembly_coo", boolean(), &flag_groups::statics, "true", "COO assembly of the Jacobian (false: MatSetValuesLocal)", &StaticsSettings::assemblyCoo, true},
-      {"dense_max_unknowns", integerAtLeast(0), &flag_groups::statics, "200", "dense LU of the tangent up to this many unknowns: the statics Newton, constraint-check and time-step solves (on several processes every process factoring the whole matrix) and on one process the compliance, by LAPACK (getrf with partial pivoting) instead of MUMPS (0: always MUMPS; docs/performance.md)", &StaticsSettings::denseMaxUnknowns},
+      {"dense_max_unknowns", integerAtLeast(0), &flag_groups::statics, "200", "dense LU of the tangent up to this many unknowns; the statics Newton, constraint-check and time-step solves (on several processes every process factoring the whole matrix) and on one process the compliance, by LAPACK (getrf with partial pivoting) instead of MUMPS (0: always MUMPS; docs/performance.md)", &StaticsSettings::denseMaxUnknowns},
   };
   return fields;
 }

@@ -83,17 +83,7 @@ std::optional<RunOutput> runTargetErrorInLibrary(MPI_Comm comm, const SceneSourc
     throw RunError(fin.exitCode, fin.message + "\nerror: -target_error: " + study.stopReason + "; no level is reported",
                    out.output);
   if (!h5.empty()) {  // the reported level's file, with /accuracy (rank 0 adds it to the closed file)
-    std::string error;
-    int rank = 0;
-    MPI_Comm_rank(comm, &rank);
-    if (rank == 0) {
-      try {
-        accuracy::writeAccuracyGroup(h5, study);
-      } catch (const std::exception& e) {
-        error = std::string("error: writing /accuracy: ") + e.what();
-      }
-    }
-    if (const RunFailure f = agreeOnFailure(comm, RunFailure{error.empty() ? 0 : 1, error}))
+    if (const RunFailure f = writeAccuracyToFile(comm, h5, study))
       throw RunError(f.exitCode, f.message, out.output);
     out.file = h5;
   } else {

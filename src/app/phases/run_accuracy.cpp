@@ -138,17 +138,7 @@ PetscErrorCode runWithTargetError(int argc, char** argv, bool* handled, int* exi
     *exitCode = fin.exitCode;
     PetscFunctionReturn(PETSC_SUCCESS);
   }
-  std::string error;  // /accuracy: rank 0 adds it to the closed file
-  int rank = 0;
-  MPI_Comm_rank(comm, &rank);
-  if (rank == 0) {
-    try {
-      accuracy::writeAccuracyGroup(h5, study);
-    } catch (const std::exception& e) {
-      error = std::string("error: writing /accuracy: ") + e.what();
-    }
-  }
-  if (const RunFailure f = agreeOnFailure(comm, RunFailure{error.empty() ? 0 : 1, error})) {
+  if (const RunFailure f = writeAccuracyToFile(comm, h5, study)) {
     PetscCall(PetscPrintf(comm, "%s\n", f.message.c_str()));
     *exitCode = f.exitCode;
     PetscFunctionReturn(PETSC_SUCCESS);
@@ -173,6 +163,20 @@ accuracy::LevelRun runAccuracyLevel(MPI_Comm comm, const Settings& settings, con
                                     const std::string& h5, const Model& model, bool toFile,
                                     const std::set<std::string>& datasets) {
   return runLevel(comm, settings, scenePath, h5, model, toFile, datasets);
+}
+
+RunFailure writeAccuracyToFile(MPI_Comm comm, const std::string& h5, const accuracy::StudyResult& study) {
+  std::string error;
+  int rank = 0;
+  MPI_Comm_rank(comm, &rank);
+  if (rank == 0) {
+    try {
+      accuracy::writeAccuracyGroup(h5, study);
+    } catch (const std::exception& e) {
+      error = std::string("error: writing /accuracy: ") + e.what();
+    }
+  }
+  return agreeOnFailure(comm, RunFailure{error.empty() ? 0 : 1, error});
 }
 
 }  // namespace sinew

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "accuracy/refinement_study.hpp"
+#include "parallel/collective_error.hpp"
 #include "settings/settings.hpp"
 
 namespace sinew {
@@ -27,5 +28,9 @@ std::string targetErrorLimit(const Model& model, const Settings& settings);
 accuracy::LevelRun runAccuracyLevel(MPI_Comm comm, const Settings& settings, const std::string& scenePath,
                                     const std::string& h5, const Model& model, bool toFile,
                                     const std::set<std::string>& datasets);
+
+/// Adds /accuracy of `study` to the closed result file `h5` (rank 0 writes) and agrees on the outcome:
+/// a failure (exit code 1, "error: writing /accuracy: ...") on every rank, or none. Collective.
+RunFailure writeAccuracyToFile(MPI_Comm comm, const std::string& h5, const accuracy::StudyResult& study);
 
 }  // namespace sinew

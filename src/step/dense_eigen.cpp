@@ -132,6 +132,23 @@ std::vector<double> equilibrate(std::vector<double>& A, std::vector<double>& B, 
   return d;
 }
 
+/// The finite eigenvalues lambda = alpha / beta of a QZ decomposition (beta above round-off of
+/// |alpha|) into out.re, out.im, nearest to sigma first; returns their QZ indices in that order.
+std::vector<int> finiteEigenvalues(const std::vector<double>& ar, const std::vector<double>& ai,
+                                   const std::vector<double>& beta, double sigma, DenseEigenpairs& out) {
+  const int n = static_cast<int>(beta.size());
+  std::vector<int> order;
+  for (int j = 0; j < n; ++j)
+    if (std::abs(beta[j]) > n * kEps * std::hypot(ar[j], ai[j])) order.push_back(j);
+  auto dist = [&](int j) { return std::hypot(ar[j] / beta[j] - sigma, ai[j] / beta[j]); };
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return dist(a) < dist(b); });
+  for (int j : order) {
+    out.re.push_back(ar[j] / beta[j]);
+    out.im.push_back(ai[j] / beta[j]);
+  }
+  return order;
+}
+
 }  // namespace
 
 void fixSign(double* x, int n) {
@@ -293,16 +310,7 @@ DenseEigenpairs generalPencil(const std::vector<double>& A0, const std::vector<d
     out.singular = true;
     return out;
   }
-  // finite lambda = alpha / beta (beta above round-off of |alpha|), nearest to sigma first
-  std::vector<int> order;
-  for (int j = 0; j < n; ++j)
-    if (std::abs(beta[j]) > n * kEps * std::hypot(ar[j], ai[j])) order.push_back(j);
-  auto dist = [&](int j) { return std::hypot(ar[j] / beta[j] - sigma, ai[j] / beta[j]); };
-  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return dist(a) < dist(b); });
-  for (int j : order) {
-    out.re.push_back(ar[j] / beta[j]);
-    out.im.push_back(ai[j] / beta[j]);
-  }
+  const std::vector<int> order = finiteEigenvalues(ar, ai, beta, sigma, out);
   const int k = std::min<int>(want, out.count());
   out.vectors.assign(static_cast<size_t>(n) * k, 0.0);
   out.estimate.assign(k, 0.0);
@@ -607,15 +615,7 @@ DenseEigenpairs generalPencil(const std::vector<double>& A0, const std::vector<d
     out.singular = true;
     return out;
   }
-  std::vector<int> order;
-  for (int j = 0; j < n; ++j)
-    if (std::abs(beta[j]) > n * kEps * std::hypot(ar[j], ai[j])) order.push_back(j);
-  auto dist = [&](int j) { return std::hypot(ar[j] / beta[j] - sigma, ai[j] / beta[j]); };
-  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return dist(a) < dist(b); });
-  for (int j : order) {
-    out.re.push_back(ar[j] / beta[j]);
-    out.im.push_back(ai[j] / beta[j]);
-  }
+  finiteEigenvalues(ar, ai, beta, sigma, out);
   const int k = std::min(wanted(out.re, out.im), out.count());
   for (int c = 0; c < k; ++c)
     if (out.im[c] != 0.0) return generalPencil(A0, B0, n, sigma, k);  // complex pairs: QZ's own vectors

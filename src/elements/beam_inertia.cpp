@@ -26,7 +26,6 @@ namespace {
 constexpr int kDofs = 12;
 using D24 = Dual<2 * kDofs>;  // derivatives by the 12 dofs (translations, spatial spins) and the 12 rates
 
-template <class T> using V3 = std::array<T, 3>;
 
 double sqrtT(double a) { return std::sqrt(a); }
 D24 sqrtT(const D24& a) {
@@ -36,13 +35,6 @@ D24 sqrtT(const D24& a) {
   return c;
 }
 
-template <class T> V3<T> add(const V3<T>& a, const V3<T>& b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
-template <class T> V3<T> sub(const V3<T>& a, const V3<T>& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-template <class T, class S> V3<T> scale(const S& s, const V3<T>& a) { return {s * a[0], s * a[1], s * a[2]}; }
-template <class T> T dotT(const V3<T>& a, const V3<T>& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-template <class T> V3<T> crossT(const V3<T>& a, const V3<T>& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
 inline Vec3 load3(const double* p) { return {p[0], p[1], p[2]}; }
 inline Mat3 load9(const double* p) { return {p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7], p[8]}; }
 template <class T> V3<T> block(const T* v, int b) { return {v[3 * b], v[3 * b + 1], v[3 * b + 2]}; }

@@ -30,7 +30,6 @@ constexpr int kDofs = 12;
 constexpr int XP = 0, WP = 1, XQ = 2, WQ = 3;  // 3-dof blocks of [x_p, w_p, x_q, w_q]
 using D12 = Dual<kDofs>;
 
-template <class T> using V3 = std::array<T, 3>;
 
 // A quantity of the end state q1 with its gradient by q1's 12 dofs (ignored for T = double).
 template <class T> T lift(double v, const double* grad);
@@ -41,13 +40,6 @@ template <> D12 lift<D12>(double v, const double* grad) {
   return x;
 }
 
-template <class T> V3<T> add(const V3<T>& a, const V3<T>& b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
-template <class T> V3<T> sub(const V3<T>& a, const V3<T>& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-template <class T, class S> V3<T> scale(const S& s, const V3<T>& a) { return {s * a[0], s * a[1], s * a[2]}; }
-template <class T> T dotT(const V3<T>& a, const V3<T>& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-template <class T> V3<T> crossT(const V3<T>& a, const V3<T>& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
 template <class T> V3<T> fromDouble(const Vec3& a) { return {T(a[0]), T(a[1]), T(a[2])}; }
 // the average (a0 + a1) / 2 of a start vector and an end vector
 template <class T> V3<T> mean(const Vec3& a0, const V3<T>& a1) { return scale(0.5, add(fromDouble<T>(a0), a1)); }

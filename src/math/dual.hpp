@@ -67,4 +67,14 @@ inline double inverse(double a) { return 1.0 / a; }
 inline double valueOf(double a) { return a; }
 template <int N> inline double valueOf(const Dual<N>& a) { return a.v; }
 
+/// 3-vectors of any scalar (double or Dual<N>), for kernels run with dual numbers.
+template <class T> using V3 = std::array<T, 3>;
+template <class T> V3<T> add(const V3<T>& a, const V3<T>& b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
+template <class T> V3<T> sub(const V3<T>& a, const V3<T>& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+template <class T, class S> V3<T> scale(const S& s, const V3<T>& a) { return {s * a[0], s * a[1], s * a[2]}; }
+template <class T> T dotT(const V3<T>& a, const V3<T>& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+template <class T> V3<T> crossT(const V3<T>& a, const V3<T>& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+
 }  // namespace sinew

@@ -12,10 +12,10 @@ error datasets hold accuracy figures below -eps_tol on both paths; every other d
 The summary names the dense solver only when it ran, so an ignored option fails the test."""
 import os
 
-import numpy as np
 
 import sinewtest as st
 from modal_util import beam_x
+from path_compare import compare_files
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 with open(os.path.join(ROOT, "runs", "crosshinge.yaml")) as f:
@@ -26,26 +26,9 @@ freefree = beam_x(0.2, 0.02, 1e-3, 6, {}, opt={"nfreq": 9})
 MARK = "eigensolver: dense LAPACK"
 
 
-def isolated(values, j):
-    """Mode j's shape is defined (up to sign): among the first 12, value nonzero and 1e-4 apart from its neighbours
-    (rigid-body modes of a free-free beam span a 6-dimensional space: any basis of it is right)."""
-    v = np.asarray(values)
-    if j >= min(len(v), 12) or not np.isfinite(v[j]) or abs(v[j]) <= 1e-6 * np.nanmax(np.abs(v)):
-        return False  # rigid-body modes: omega^2 at round-off
-    others = np.delete(v, j)
-    return bool(np.all(np.abs(others - v[j]) > 1e-4 * abs(v[j])))
-
-
-def datasets(f):
-    out = []
-    f.visititems(lambda n, o: out.append(n) if hasattr(o, "shape") and not n.startswith(("checkpoint", "timing")) else None)
-    return out
-
-
-def rel(x, y):
-    d = np.nan_to_num(x - y)
-    nx = np.linalg.norm(np.nan_to_num(x))
-    return np.linalg.norm(d) / nx if nx > 0 else np.linalg.norm(d)
+def tolerance(n):
+    """Eigenvalues and the state-space matrices (built from them) 1e-10; everything else 1e-12."""
+    return 1e-10 if n in ("freq", "buck") or n.startswith("statespace") else 1e-12
 
 
 for name, scene in (("crosshinge", crosshinge), ("cantilever", cantilever), ("freefree", freefree)):
@@ -55,31 +38,6 @@ for name, scene in (("crosshinge", crosshinge), ("cantilever", cantilever), ("fr
     st.check(MARK not in log_s, f"{name}: -eigen_dense_max_unknowns 0 runs SLEPc")
     st.check("warning" not in log_d, f"{name}: no warning on the dense path")
     with st.h5(dense) as a, st.h5(slepc) as b:
-        names = datasets(a)
-        st.check(sorted(names) == sorted(datasets(b)), f"{name}: the same datasets")
-        worst = {}
-        for n in names:
-            x, y = a[n][()], b[n][()]
-            if x.dtype.kind != "f":
-                st.check(np.array_equal(x, y), f"{name}: /{n} equal")
-                continue
-            st.check(x.shape == y.shape, f"{name}: /{n} shape {x.shape} vs {y.shape}")
-            st.check(np.array_equal(np.isnan(x), np.isnan(y)), f"{name}: /{n} NaN at the same places")
-            if n.endswith(("_error_estimate", "_backward_error")):  # accuracy figures, each path its own
-                ok = np.all(np.nan_to_num(x) <= 1e-8) and np.all(np.nan_to_num(y) <= 1e-8)
-                st.check(ok, f"{name}: /{n} below -eps_tol on both paths")
-                continue
-            if n.startswith("mesh/mode_"):
-                kind, j = n.split("_")[1], int(n.split("_")[2]) - 1
-                if not isolated(b[kind][-1], j):
-                    continue
-                r, tol = rel(np.abs(x), np.abs(y)), 2e-6
-            elif n in ("freq", "buck") or n.startswith("statespace"):
-                r, tol = rel(x, y), 1e-10
-            else:
-                r, tol = rel(x, y), 1e-12
-            group = n.rstrip("0123456789_rot") if n.startswith("mesh/mode_") else n
-            worst[group] = max(worst.get(group, 0.0), r)
-            st.check(r <= tol, f"{name}: /{n} differs by {r:.2e} (> {tol:g})")
+        worst = compare_files(name, a, b, tolerance, first=12)
         print(f"  {name}: " + ", ".join(f"{g} {w:.1e}" for g, w in sorted(worst.items()) if w > 0 or g in ("freq", "buck")))
 st.done()

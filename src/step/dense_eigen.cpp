@@ -149,6 +149,16 @@ std::vector<int> finiteEigenvalues(const std::vector<double>& ar, const std::vec
   return order;
 }
 
+/// x scaled to unit 2-norm (zero stays zero), its sign fixed (fixSign), into dest[0 .. x.size()).
+void storeUnitVector(const std::vector<double>& x, double* dest) {
+  const int n = static_cast<int>(x.size());
+  double nr = 0;
+  for (double v : x) nr += v * v;
+  nr = std::sqrt(nr);
+  for (int i = 0; i < n; ++i) dest[i] = nr > 0 ? x[i] / nr : 0.0;
+  fixSign(dest, n);
+}
+
 }  // namespace
 
 void fixSign(double* x, int n) {
@@ -346,12 +356,7 @@ DenseEigenpairs generalPencil(const std::vector<double>& A0, const std::vector<d
       if (ybx != 0.0 && std::isfinite(yax / ybx)) out.re[c] = yax / ybx;
     }
     out.estimate[c] = backwardError(axr, axi, bxr, bxi, xr.data(), xi.data(), out.re[c], out.im[c], nA, nB);
-    double nr = 0;
-    for (double v : xr) nr += v * v;
-    nr = std::sqrt(nr);
-    double* x = &out.vectors[static_cast<size_t>(c) * n];
-    for (int i = 0; i < n; ++i) x[i] = nr > 0 ? xr[i] / nr : 0.0;
-    fixSign(x, n);
+    storeUnitVector(xr, &out.vectors[static_cast<size_t>(c) * n]);
   }
   return out;
 }
@@ -645,12 +650,7 @@ DenseEigenpairs generalPencil(const std::vector<double>& A0, const std::vector<d
     const double ybx = std::inner_product(y.begin(), y.end(), Bx.begin(), 0.0);
     if (ybx != 0.0 && std::isfinite(yax / ybx)) out.re[c] = yax / ybx;
     out.estimate[c] = backwardError(Ax, zero, Bx, zero, x.data(), nullptr, out.re[c], 0.0, nA, nB);
-    double nr = 0;
-    for (double v : x) nr += v * v;
-    nr = std::sqrt(nr);
-    double* xo = &out.vectors[static_cast<size_t>(c) * n];
-    for (int i = 0; i < n; ++i) xo[i] = nr > 0 ? x[i] / nr : 0.0;
-    fixSign(xo, n);
+    storeUnitVector(x, &out.vectors[static_cast<size_t>(c) * n]);
   }
   return out;
 }

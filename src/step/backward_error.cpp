@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <tuple>
 
 namespace sinew {
 
@@ -20,7 +21,7 @@ PetscErrorCode unitFreeNorms(const DistributedMesh& mesh, Mat A, Mat B, UnitFree
   for (int k = 0; k < 3; ++k)
     if (hi[k] >= lo[k]) L2 += (hi[k] - lo[k]) * (hi[k] - lo[k]);
   const double L = L2 > 0.0 ? std::sqrt(L2) : 1.0;
-  PetscCall(MatCreateVecs(A, &n->w, nullptr));
+  if (!n->w) PetscCall(MatCreateVecs(A, &n->w, nullptr));
   PetscCall(VecSet(n->w, 0.0));
   PetscScalar* w;
   PetscCall(VecGetArray(n->w, &w));
@@ -31,14 +32,21 @@ PetscErrorCode unitFreeNorms(const DistributedMesh& mesh, Mat A, Mat B, UnitFree
       if (node.dof[static_cast<size_t>(k)] >= 0) w[node.dof[static_cast<size_t>(k)]] = k < translations ? 1.0 : 1.0 / L;
   }
   PetscCall(VecRestoreArray(n->w, &w));
-  for (auto [M, norm] : {std::pair<Mat, double*>{A, &n->normA}, std::pair<Mat, double*>{B, &n->normB}}) {
-    Mat S;
-    PetscCall(MatDuplicate(M, MAT_COPY_VALUES, &S));
-    PetscCall(MatDiagonalScale(S, n->w, n->w));
+  for (auto [M, S, norm] : {std::tuple<Mat, Mat*, double*>{A, &n->scaledA, &n->normA},
+                            std::tuple<Mat, Mat*, double*>{B, &n->scaledB, &n->normB}}) {
+    MatInfo mi, si;
+    PetscCall(MatGetInfo(M, MAT_GLOBAL_SUM, &mi));
+    if (*S) PetscCall(MatGetInfo(*S, MAT_GLOBAL_SUM, &si));
+    if (*S && si.nz_used == mi.nz_used) {
+      PetscCall(MatCopy(M, *S, SAME_NONZERO_PATTERN));
+    } else {
+      PetscCall(MatDestroy(S));
+      PetscCall(MatDuplicate(M, MAT_COPY_VALUES, S));
+    }
+    PetscCall(MatDiagonalScale(*S, n->w, n->w));
     PetscReal v;
-    PetscCall(MatNorm(S, NORM_INFINITY, &v));
+    PetscCall(MatNorm(*S, NORM_INFINITY, &v));
     *norm = v;
-    PetscCall(MatDestroy(&S));
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -46,6 +54,8 @@ PetscErrorCode unitFreeNorms(const DistributedMesh& mesh, Mat A, Mat B, UnitFree
 PetscErrorCode destroyUnitFreeNorms(UnitFreeNorms* n) {
   PetscFunctionBeginUser;
   PetscCall(VecDestroy(&n->w));
+  PetscCall(MatDestroy(&n->scaledA));
+  PetscCall(MatDestroy(&n->scaledB));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -15,9 +15,12 @@ namespace sinew {
 struct UnitFreeNorms {
   Vec w = nullptr;            ///< 1 / S: 1 on translation rows, 1/L on rotation and slope rows, 0 on multiplier rows
   double normA = 0.0, normB = 0.0;  ///< ||S^-1 A S^-1||_inf, ||S^-1 B S^-1||_inf
+  Mat scaledA = nullptr, scaledB = nullptr;  ///< S^-1 A S^-1, S^-1 B S^-1: kept for the next step's pencil
 };
 
-/// Collective; destroy with destroyUnitFreeNorms.
+/// Collective; n may hold the norms of an earlier step's pencil (the same unknowns), whose vector and
+/// matrices are reused (a matrix again when its number of nonzeros is unchanged). Destroy with
+/// destroyUnitFreeNorms.
 PetscErrorCode unitFreeNorms(const DistributedMesh& mesh, Mat A, Mat B, UnitFreeNorms* n);
 PetscErrorCode destroyUnitFreeNorms(UnitFreeNorms* n);
 

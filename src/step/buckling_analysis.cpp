@@ -52,6 +52,7 @@ BucklingAnalysis::~BucklingAnalysis() {
   MatDestroy(&Km_);
   MatDestroy(&Kg_);
   MatDestroy(&Kop_);
+  destroyUnitFreeNorms(&scaled_);
 }
 
 // K_m x = K x + (-K_g) x: the element-wise (rigid-motion-free) product with the whole tangent minus
@@ -152,8 +153,8 @@ PetscErrorCode BucklingAnalysis::atStep(Vec U, const LoadState& ls, ResultFile& 
   std::vector<Vec> shapes;
   if (ng > 1e-13 * nm) {  // a stress-free state has no buckling load: every multiplier +inf
     PetscCall(MatScale(Kg_, -1.0));  // K_m phi = mu (-K_g) phi
-    UnitFreeNorms scaled;  // scales of the backward errors: the pencil's, once for all its pairs
-    PetscCall(unitFreeNorms(mesh, Km_, Kg_, &scaled));
+    // scales of the backward errors: the pencil's, once for all its pairs
+    PetscCall(unitFreeNorms(mesh, Km_, Kg_, &scaled_));
     PetscInt N;
     PetscCall(MatGetSize(Km_, &N, nullptr));
     struct Pair {
@@ -211,7 +212,7 @@ PetscErrorCode BucklingAnalysis::atStep(Vec U, const LoadState& ls, ResultFile& 
         }
         double back = 0;
         // the element-wise operator's Rayleigh quotient is the multiplier, before the selection
-        if (elementwise_) PetscCall(refine(scaled, x, &kr, &back));
+        if (elementwise_) PetscCall(refine(scaled_, x, &kr, &back));
         if (kept(kr, ki)) positive.push_back({kr, x, est, back});
         else PetscCall(VecDestroy(&x));
       }
@@ -223,8 +224,7 @@ PetscErrorCode BucklingAnalysis::atStep(Vec U, const LoadState& ls, ResultFile& 
     // the assembled operator: the backward errors of the pairs written (refine leaves their multiplier)
     if (!elementwise_)
       for (int j = 0; j < nbuck_ && j < static_cast<int>(positive.size()); ++j)
-        PetscCall(refine(scaled, positive[j].x, &positive[j].mu, &positive[j].backward));
-    PetscCall(destroyUnitFreeNorms(&scaled));
+        PetscCall(refine(scaled_, positive[j].x, &positive[j].mu, &positive[j].backward));
     PetscReal tol;
     PetscInt maxit;
     PetscCall(EPSGetTolerances(eps_, &tol, &maxit));

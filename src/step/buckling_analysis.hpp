@@ -45,6 +45,7 @@ class BucklingAnalysis : public StepAnalysis {
   long symmetricSolves_ = 0, qzSolves_ = 0;  // dense solves of symmetric (dsygvd) / nonsymmetric pencils
   bool elementwise_ = false;  // -eigen_operator: K_m x = (element-wise K) x - K_g x
   Mat Kop_ = nullptr;
+  UnitFreeNorms scaled_;  // scales of the backward errors (its matrices kept between steps)
   std::vector<double> estimate_, backward_;
   double tol_ = 1e-8;
 

@@ -67,6 +67,8 @@ ComplianceAnalysis::ComplianceAnalysis(Assembler& assembler, const std::vector<i
 ComplianceAnalysis::~ComplianceAnalysis() {
   KSPDestroy(&ksp_);
   MatDestroy(&J_);
+  MatDestroy(&rhs_);
+  MatDestroy(&sol_);
 }
 
 // Selected entries of J^-1 (MUMPS ICNTL(30)): the wanted entries are the 6x6 blocks
@@ -185,9 +187,9 @@ PetscErrorCode ComplianceAnalysis::rhsBlocks(Mat F, bool sparse, std::vector<dou
     }
     MPI_Gatherv(g.data(), n, MPIU_INT, allRows.data(), counts.data(), displs.data(), MPIU_INT, 0, m.comm);
   }
-  Mat B = nullptr, X;
-  if (!sparse) PetscCall(MatCreateDense(m.comm, nloc, PETSC_DECIDE, N, nb, nullptr, &B));
-  PetscCall(MatCreateDense(m.comm, nloc, PETSC_DECIDE, N, nb, nullptr, &X));
+  if (!sparse && !rhs_) PetscCall(MatCreateDense(m.comm, nloc, PETSC_DECIDE, N, nb, nullptr, &rhs_));
+  if (!sol_) PetscCall(MatCreateDense(m.comm, nloc, PETSC_DECIDE, N, nb, nullptr, &sol_));
+  Mat B = rhs_, X = sol_;
   for (long c0 = 0; c0 < totalColumns_; c0 += nb) {
     const long c1 = std::min<long>(c0 + nb, totalColumns_);
     const long lo = std::max(c0, first), hi = std::min(c1, first + mine);
@@ -229,8 +231,6 @@ PetscErrorCode ComplianceAnalysis::rhsBlocks(Mat F, bool sparse, std::vector<dou
       PetscCall(MatDenseRestoreArrayRead(X, &x));
     }
   }
-  PetscCall(MatDestroy(&B));
-  PetscCall(MatDestroy(&X));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -56,6 +56,7 @@ class ComplianceAnalysis : public StepAnalysis {
 
   Assembler& asm_;
   Mat J_ = nullptr;
+  Mat rhs_ = nullptr, sol_ = nullptr;  // the dense right-hand side and solution blocks, kept between steps
   KSP ksp_ = nullptr;
   std::vector<Group> groups_;     ///< requested owned nodes with at least one free DOF
   bool dense_ = false;            ///< dense LU (PC type denselu) instead of MUMPS

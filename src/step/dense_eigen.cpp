@@ -1,5 +1,7 @@
 #include "step/dense_eigen.hpp"
 
+#include "step/dense_symmetric.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -7,8 +9,6 @@
 
 // LAPACK / BLAS (Fortran interfaces; the library linked is Debian's liblapack.so.3 alternative)
 extern "C" {
-void dsyevd_(const char* jobz, const char* uplo, const int* n, double* a, const int* lda, double* w, double* work,
-             const int* lwork, int* iwork, const int* liwork, int* info);
 void dgetrf_(const int* m, const int* n, double* a, const int* lda, int* ipiv, int* info);
 void dgetrs_(const char* trans, const int* n, const int* nrhs, const double* a, const int* lda, const int* ipiv,
              double* b, const int* ldb, int* info);
@@ -17,8 +17,6 @@ void dgeev_(const char* jobvl, const char* jobvr, const int* n, double* a, const
 void dggev_(const char* jobvl, const char* jobvr, const int* n, double* a, const int* lda, double* b, const int* ldb,
             double* alphar, double* alphai, double* beta, double* vl, const int* ldvl, double* vr, const int* ldvr,
             double* work, const int* lwork, int* info);
-void dsygvd_(const int* itype, const char* jobz, const char* uplo, const int* n, double* a, const int* lda, double* b,
-             const int* ldb, double* w, double* work, const int* lwork, int* iwork, const int* liwork, int* info);
 void dgeqrf_(const int* m, const int* n, double* a, const int* lda, double* tau, double* work, const int* lwork,
              int* info);
 void dorgqr_(const int* m, const int* n, const int* k, double* a, const int* lda, const double* tau, double* work,
@@ -41,37 +39,6 @@ constexpr double kEps = std::numeric_limits<double>::epsilon();
 void gemm(char ta, char tb, int m, int n, int k, const double* a, int lda, const double* b, int ldb, double* c) {
   const double one = 1.0, zero = 0.0;
   if (m > 0 && n > 0) dgemm_(&ta, &tb, &m, &n, &k, &one, a, &lda, b, &ldb, &zero, c, &m);
-}
-
-// Eigen-decomposition of the symmetric a (n x n, overwritten by the eigenvectors); ascending w.
-bool symmetricEigen(std::vector<double>& a, int n, std::vector<double>& w) {
-  w.assign(n, 0.0);
-  if (n == 0) return true;
-  int info = 0, lwork = -1, liwork = -1, iq = 0;
-  double wq = 0;
-  dsyevd_("V", "L", &n, a.data(), &n, w.data(), &wq, &lwork, &iq, &liwork, &info);
-  lwork = static_cast<int>(wq);
-  liwork = iq;
-  std::vector<double> work(std::max(lwork, 1));
-  std::vector<int> iwork(std::max(liwork, 1));
-  dsyevd_("V", "L", &n, a.data(), &n, w.data(), work.data(), &lwork, iwork.data(), &liwork, &info);
-  return info == 0;
-}
-
-// Generalized symmetric-definite H z = lambda G z (G positive definite; H overwritten by Z, G by its
-// Cholesky factor); ascending w.
-bool symmetricDefiniteEigen(std::vector<double>& H, std::vector<double>& G, int n, std::vector<double>& w) {
-  w.assign(n, 0.0);
-  if (n == 0) return true;
-  int info = 0, lwork = -1, liwork = -1, iq = 0, itype = 1;
-  double wq = 0;
-  dsygvd_(&itype, "V", "L", &n, H.data(), &n, G.data(), &n, w.data(), &wq, &lwork, &iq, &liwork, &info);
-  lwork = static_cast<int>(wq);
-  liwork = iq;
-  std::vector<double> work(std::max(lwork, 1));
-  std::vector<int> iwork(std::max(liwork, 1));
-  dsygvd_(&itype, "V", "L", &n, H.data(), &n, G.data(), &n, w.data(), work.data(), &lwork, iwork.data(), &liwork, &info);
-  return info == 0;
 }
 
 double normInf(const std::vector<double>& A, int n) {
@@ -170,7 +137,7 @@ void fixSign(double* x, int n) {
 }
 
 DenseEigenpairs symmetricPencil(const std::vector<double>& A0, const std::vector<double>& B0, int n, double sigma,
-                                int want) {
+                                int want, bool estimates) {
   DenseEigenpairs out;
   out.n = n;
   std::vector<double> A(A0), B(B0);
@@ -181,21 +148,12 @@ DenseEigenpairs symmetricPencil(const std::vector<double>& A0, const std::vector
     out.singular = true;
     return out;
   }
-  // B = L L^T from B's eigenpairs above round-off
-  std::vector<double> Q(B), d;
-  if (!symmetricEigen(Q, n, d)) {
+  // B = L L^T (pivoted Cholesky; B's eigenpairs where B is not semidefinite to round-off)
+  std::vector<double> L;
+  int r = 0;
+  if (!semidefiniteFactor(B, n, L, r)) {
     out.singular = true;
     return out;
-  }
-  const double dmax = n > 0 ? std::max(0.0, d.back()) : 0.0;
-  std::vector<int> keep;
-  for (int j = 0; j < n; ++j)
-    if (d[j] > n * kEps * dmax) keep.push_back(j);
-  const int r = static_cast<int>(keep.size());
-  std::vector<double> L(static_cast<size_t>(n) * r);
-  for (int c = 0; c < r; ++c) {
-    const double s = std::sqrt(d[keep[c]]);
-    for (int i = 0; i < n; ++i) L[static_cast<size_t>(c) * n + i] = s * Q[static_cast<size_t>(keep[c]) * n + i];
   }
   // W = (A - sigma B)^-1 L, H = L^T W (symmetric up to round-off)
   std::vector<double> W(L), H(static_cast<size_t>(r) * r);
@@ -232,6 +190,10 @@ DenseEigenpairs symmetricPencil(const std::vector<double>& A0, const std::vector
     double* x = &out.vectors[static_cast<size_t>(c) * n];
     for (int i = 0; i < n; ++i) x[i] *= D[i];
     fixSign(x, n);
+  }
+  if (!estimates) {
+    out.estimate.assign(k, 0.0);
+    return out;
   }
   // estimate: the pair's backward error in the pencil (A, B), as the dense solver's accuracy figure
   std::vector<double> AX(static_cast<size_t>(n) * k), BX(static_cast<size_t>(n) * k), zero(n, 0.0);

@@ -22,11 +22,12 @@ struct DenseEigenpairs {
 };
 
 /// A symmetric, B symmetric positive semidefinite (K and M of the frequency analysis). With
-/// B = L L^T (L: B's eigenvectors of nonzero eigenvalue scaled by their square roots), the finite
-/// eigenpairs are those of the symmetric H = L^T (A - sigma B)^-1 L = Y Theta Y^T, x = (A - sigma B)^-1 L y / theta.
-/// Vectors and estimates of the first `want` pairs.
+/// B = L L^T (L n x rank(B): semidefiniteFactor), the finite eigenpairs are those of the symmetric
+/// H = L^T (A - sigma B)^-1 L = Y Theta Y^T, x = (A - sigma B)^-1 L y / theta. Vectors of the first
+/// `want` pairs (only those are computed); their estimates and Rayleigh quotients unless `estimates`
+/// is false (a Rayleigh-Ritz step follows: estimate then holds `want` zeros).
 DenseEigenpairs symmetricPencil(const std::vector<double>& A, const std::vector<double>& B, int n, double sigma,
-                                int want);
+                                int want, bool estimates = true);
 
 /// Rayleigh-Ritz of the symmetric pencil (A, B) in the span of the m columns of X (n x m), given the
 /// products AX = A X computed accurately (the element-wise tangent): the pairs of X^T A X z =

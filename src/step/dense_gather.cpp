@@ -49,29 +49,34 @@ PetscErrorCode operatorToDense(Mat A, std::vector<double>& full) {
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode operatorProducts(Mat A, const DenseEigenpairs& p, std::vector<double>& AX) {
+PetscErrorCode destroyProductGather(ProductGather* g) {
   PetscFunctionBeginUser;
-  Vec x, y, y0;
-  VecScatter toZero;
-  PetscCall(MatCreateVecs(A, &x, &y));
-  PetscCall(VecScatterCreateToZero(y, &toZero, &y0));
+  PetscCall(VecScatterDestroy(&g->toZero));
+  PetscCall(VecDestroy(&g->y0));
+  PetscCall(VecDestroy(&g->x));
+  PetscCall(VecDestroy(&g->y));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode operatorProducts(Mat A, const DenseEigenpairs& p, std::vector<double>& AX, ProductGather* g) {
+  PetscFunctionBeginUser;
+  if (!g->x) {
+    PetscCall(MatCreateVecs(A, &g->x, &g->y));
+    PetscCall(VecScatterCreateToZero(g->y, &g->toZero, &g->y0));
+  }
   PetscInt n0;
-  PetscCall(VecGetSize(y0, &n0));  // n on rank 0, 0 elsewhere
+  PetscCall(VecGetSize(g->y0, &n0));  // n on rank 0, 0 elsewhere
   AX.assign(static_cast<size_t>(n0) * p.wanted(), 0.0);
   for (int j = 0; j < p.wanted(); ++j) {
-    PetscCall(pairVector(p, j, x));
-    PetscCall(MatMult(A, x, y));
-    PetscCall(VecScatterBegin(toZero, y, y0, INSERT_VALUES, SCATTER_FORWARD));
-    PetscCall(VecScatterEnd(toZero, y, y0, INSERT_VALUES, SCATTER_FORWARD));
+    PetscCall(pairVector(p, j, g->x));
+    PetscCall(MatMult(A, g->x, g->y));
+    PetscCall(VecScatterBegin(g->toZero, g->y, g->y0, INSERT_VALUES, SCATTER_FORWARD));
+    PetscCall(VecScatterEnd(g->toZero, g->y, g->y0, INSERT_VALUES, SCATTER_FORWARD));
     const PetscScalar* a;
-    PetscCall(VecGetArrayRead(y0, &a));
+    PetscCall(VecGetArrayRead(g->y0, &a));
     std::copy_n(a, n0, &AX[static_cast<size_t>(j) * n0]);
-    PetscCall(VecRestoreArrayRead(y0, &a));
+    PetscCall(VecRestoreArrayRead(g->y0, &a));
   }
-  PetscCall(VecScatterDestroy(&toZero));
-  PetscCall(VecDestroy(&y0));
-  PetscCall(VecDestroy(&x));
-  PetscCall(VecDestroy(&y));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

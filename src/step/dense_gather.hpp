@@ -19,8 +19,16 @@ PetscErrorCode gatherDense(Mat A, std::vector<double>& full);
 /// columns A e_j, on rank 0 as gatherDense. Collective.
 PetscErrorCode operatorToDense(Mat A, std::vector<double>& full);
 
+/// The vectors and the scatter to rank 0 of operatorProducts, kept from one call to the next (the
+/// same operator's layout); created by the first call. Destroy with destroyProductGather.
+struct ProductGather {
+  Vec x = nullptr, y = nullptr, y0 = nullptr;
+  VecScatter toZero = nullptr;
+};
+PetscErrorCode destroyProductGather(ProductGather* g);
+
 /// The products A x_j of every vector of `pairs` (on every rank), column-major n x wanted() on rank 0. Collective.
-PetscErrorCode operatorProducts(Mat A, const DenseEigenpairs& pairs, std::vector<double>& AX);
+PetscErrorCode operatorProducts(Mat A, const DenseEigenpairs& pairs, std::vector<double>& AX, ProductGather* g);
 
 /// The eigenpairs computed on rank 0 to every rank (eigenvalues, estimates, vectors). Collective.
 PetscErrorCode broadcastPairs(MPI_Comm comm, DenseEigenpairs& pairs);

@@ -150,6 +150,9 @@ ModalAnalysis::~ModalAnalysis() {
   MatDestroy(&M_);
   MatDestroy(&Kop_);
   MatDestroy(&P_);
+  destroyUnitFreeNorms(&scaled_);
+  destroyProductGather(&gather_);
+  VecDestroy(&residual_);
 }
 
 PetscErrorCode ModalAnalysis::stiffnessMult(Mat A, Vec x, Vec y) {
@@ -260,11 +263,11 @@ PetscErrorCode ModalAnalysis::solveDense(double target, DenseEigenpairs& pairs) 
   PetscCall(gatherDense(M_, M));
   // the Ritz basis: twice the pairs looked at (a wider one adds stiff modes, whose reduced
   // eigenproblem's round-off, eps lambda_max, would reach the soft ones)
-  if (mesh.rank == 0) pairs = symmetricPencil(K, M, n, target, elementwise_ ? 2 * (nev_ + 8) : nev_ + 8);
+  if (mesh.rank == 0) pairs = symmetricPencil(K, M, n, target, elementwise_ ? 2 * (nev_ + 8) : nev_ + 8, !elementwise_);
   PetscCall(broadcastPairs(mesh.comm, pairs));
   if (elementwise_ && !pairs.singular) {
     std::vector<double> KX;
-    PetscCall(operatorProducts(Kop_, pairs, KX));
+    PetscCall(operatorProducts(Kop_, pairs, KX, &gather_));
     PetscReal normK;
     PetscCall(MatNorm(K_, NORM_INFINITY, &normK));
     if (mesh.rank == 0) pairs = ritzPairs(pairs.vectors, KX, M, n, pairs.wanted(), target, normK, nev_ + 8);
@@ -314,10 +317,9 @@ PetscErrorCode ModalAnalysis::atStep(Vec U, const LoadState& ls, ResultFile& fil
   PetscInt maxit;
   PetscCall(EPSGetTolerances(eps_, &tol, &maxit));
   tol_ = tol > 0 ? tol : SLEPC_DEFAULT_TOL;  // set by EPSSetUp, which the dense path skips
-  UnitFreeNorms scaled;  // scales of the backward error
-  PetscCall(unitFreeNorms(mesh, K_, M_, &scaled));
-  Vec r;
-  PetscCall(MatCreateVecs(K_, &r, nullptr));
+  PetscCall(unitFreeNorms(mesh, K_, M_, &scaled_));
+  if (!residual_) PetscCall(MatCreateVecs(K_, &residual_, nullptr));
+  Vec r = residual_;
 
   // eigenpairs: drop infinite ones (zero mass norm: constraint directions), M-normalize the rest
   PetscReal mmax;
@@ -368,13 +370,11 @@ PetscErrorCode ModalAnalysis::atStep(Vec U, const LoadState& ls, ResultFile& fil
     // backward error of K x - lambda M x with the operator used, rotations scaled by the model size
     PetscCall(VecAXPY(r, -kr, Mx));
     PetscReal backward;
-    PetscCall(scaledBackwardError(scaled, x, r, kr, &backward));
+    PetscCall(scaledBackwardError(scaled_, x, r, kr, &backward));
     pairs.push_back({kr, static_cast<int>(found.size()), estimate, backward});
     found.push_back(x);
   }
   PetscCall(VecDestroy(&Mx));
-  PetscCall(VecDestroy(&r));
-  PetscCall(destroyUnitFreeNorms(&scaled));
   std::stable_sort(pairs.begin(), pairs.end(), [](const Pair& a, const Pair& b) { return a.lambda < b.lambda; });
 
   const double zeroTol = 1e-6 * scale;

@@ -1,10 +1,12 @@
 // The dense eigensolver kernels (src/step/dense_eigen.hpp) on pencils with known eigenpairs.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
 #include "step/dense_eigen.hpp"
+#include "step/dense_symmetric.hpp"
 
 using sinew::DenseEigenpairs;
 
@@ -155,4 +157,37 @@ TEST(DenseEigen, GeneralPencilWantedIsQZ) {
   EXPECT_EQ(asked, qz.count());
   EXPECT_EQ(p.wanted(), 1);
   expectSamePairs(p, qz, 1);
+}
+
+// B = L L^T by pivoted Cholesky: a consistent-mass-like semidefinite B with a zero row and column (a
+// multiplier) and a rank-one coupling gives L of B's rank whose product is B to round-off.
+TEST(DenseSymmetric, SemidefiniteFactorOfSingularMass) {
+  const int n = 4;
+  const auto B = mat(n, {2, 1, 0, 1, 1, 2, 0, 1, 0, 0, 0, 0, 1, 1, 0, 1});  // rows 1, 2, 4 rank 3, row 3 zero
+  std::vector<double> L;
+  int r = -1;
+  ASSERT_TRUE(sinew::semidefiniteFactor(B, n, L, r));
+  EXPECT_EQ(r, 3);
+  double worst = 0;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      double v = 0;
+      for (int c = 0; c < r; ++c) v += L[static_cast<size_t>(c) * n + i] * L[static_cast<size_t>(c) * n + j];
+      worst = std::max(worst, std::abs(v - B[static_cast<size_t>(j) * n + i]));
+    }
+  EXPECT_LT(worst, 1e-15);  // measured 4.4e-16
+}
+
+// An indefinite B (not a mass) is not taken from a truncated Cholesky, which would stop at the
+// negative pivot with L L^T = [[1, 2], [2, 4]]: the probe sees the mismatch and the fallback keeps B's
+// positive eigenpair, eigenvalue 3 with (1, 1)/sqrt(2): L L^T = 1.5 everywhere.
+TEST(DenseSymmetric, SemidefiniteFactorFallsBackOnIndefinite) {
+  const int n = 2;
+  const auto B = mat(n, {1, 2, 2, 1});
+  std::vector<double> L;
+  int r = -1;
+  ASSERT_TRUE(sinew::semidefiniteFactor(B, n, L, r));
+  EXPECT_EQ(r, 1);
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) EXPECT_NEAR(L[i] * L[j], 1.5, 1e-14) << i << " " << j;
 }

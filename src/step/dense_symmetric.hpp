@@ -1,0 +1,22 @@
+// Symmetric dense eigenvalue building blocks of the small-model eigensolvers (LAPACK). Pure: no MPI,
+// no PETSc objects; matrices are column-major n x n.
+#pragma once
+#include <vector>
+
+namespace sinew {
+
+/// Eigen-decomposition of the symmetric a (n x n, overwritten by the eigenvectors); ascending w
+/// (LAPACK dsyevd). False when LAPACK fails.
+bool symmetricEigen(std::vector<double>& a, int n, std::vector<double>& w);
+
+/// Generalized symmetric-definite H z = lambda G z (G positive definite; H overwritten by Z, G by its
+/// Cholesky factor); ascending w (LAPACK dsygvd). False when G is not positive definite.
+bool symmetricDefiniteEigen(std::vector<double>& H, std::vector<double>& G, int n, std::vector<double>& w);
+
+/// B = L L^T for the symmetric positive semidefinite B (n x n), L n x r with r its numerical rank:
+/// Cholesky with complete pivoting (LAPACK dpstrf, stopping at a pivot below n eps max B_ii), about
+/// n^3/3 operations. Checked on a probe vector: where B - L L^T exceeds round-off (B not semidefinite),
+/// L holds sqrt(d_j) q_j of B's eigenpairs with d_j > n eps max d instead. False when both fail.
+bool semidefiniteFactor(const std::vector<double>& B, int n, std::vector<double>& L, int& r);
+
+}  // namespace sinew

@@ -122,7 +122,8 @@ PetscErrorCode BucklingAnalysis::refine(const UnitFreeNorms& scaled, Vec x, Pets
   PetscFunctionBeginUser;
   if (!std::isfinite(*mu)) PetscFunctionReturn(PETSC_SUCCESS);
   Vec a, b;
-  PetscCall(MatCreateVecs(Km_, &a, &b));
+  PetscCall(pool_.get(Km_, &a));
+  PetscCall(pool_.get(Km_, &b));
   if (elementwise_) PetscCall(MatMult(Kop_, x, a));
   else PetscCall(MatMult(Km_, x, a));
   PetscCall(MatMult(Kg_, x, b));
@@ -132,8 +133,8 @@ PetscErrorCode BucklingAnalysis::refine(const UnitFreeNorms& scaled, Vec x, Pets
   if (elementwise_ && xb != 0.0) *mu = xa / xb;
   PetscCall(VecAXPY(a, -*mu, b));
   PetscCall(scaledBackwardError(scaled, x, a, *mu, backward));
-  PetscCall(VecDestroy(&a));
-  PetscCall(VecDestroy(&b));
+  pool_.put(&a);
+  pool_.put(&b);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -182,7 +183,7 @@ PetscErrorCode BucklingAnalysis::atStep(Vec U, const LoadState& ls, ResultFile& 
       return static_cast<int>(re.size());
     };
     for (int attempt = 0; attempt < 3; ++attempt) {
-      for (auto& p : positive) PetscCall(VecDestroy(&p.x));
+      for (auto& p : positive) pool_.put(&p.x);
       positive.clear();
       if (dense_) {  // every pair at once; -buck_eps_nev: SLEPc's count of the nearest
         PetscCall(solveDense(dense, wanted));
@@ -200,7 +201,7 @@ PetscErrorCode BucklingAnalysis::atStep(Vec U, const LoadState& ls, ResultFile& 
         PetscScalar kr, ki;
         Vec x;
         PetscReal est = 0;
-        PetscCall(MatCreateVecs(Km_, &x, nullptr));
+        PetscCall(pool_.get(Km_, &x));
         if (dense_) {
           kr = dense.re[i];
           ki = dense.im[i];
@@ -214,7 +215,7 @@ PetscErrorCode BucklingAnalysis::atStep(Vec U, const LoadState& ls, ResultFile& 
         // the element-wise operator's Rayleigh quotient is the multiplier, before the selection
         if (elementwise_) PetscCall(refine(scaled_, x, &kr, &back));
         if (kept(kr, ki)) positive.push_back({kr, x, est, back});
-        else PetscCall(VecDestroy(&x));
+        else pool_.put(&x);
       }
       // enough positive multipliers, or the nearest ones are all negative and the spectrum is exhausted
       if (static_cast<int>(positive.size()) >= nbuck_ || userNev_ || nev >= N || dense_) break;
@@ -238,7 +239,7 @@ PetscErrorCode BucklingAnalysis::atStep(Vec U, const LoadState& ls, ResultFile& 
       shapes.push_back(positive[j].x);
       positive[j].x = nullptr;
     }
-    for (auto& p : positive) PetscCall(VecDestroy(&p.x));
+    for (auto& p : positive) pool_.put(&p.x);
     if (worst > tol_)
       PetscCall(PetscPrintf(mesh.comm,
                             "  warning: buckling at step %d: error estimate or backward error %.2e of an eigenpair exceeds "
@@ -273,7 +274,7 @@ PetscErrorCode BucklingAnalysis::atStep(Vec U, const LoadState& ls, ResultFile& 
     file.writeMeshField("mesh/mode_buck_" + std::to_string(j + 1), rows, {3});
     if (withRot) file.writeMeshField("mesh/mode_buck_" + std::to_string(j + 1) + "_rot", rot, {3});
   }
-  for (Vec& x : shapes) PetscCall(VecDestroy(&x));
+  for (Vec& x : shapes) pool_.put(&x);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

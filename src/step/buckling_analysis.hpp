@@ -17,6 +17,7 @@
 #include "settings/settings.hpp"
 #include "step/dense_eigen.hpp"
 #include "step/step_analysis.hpp"
+#include "step/vec_pool.hpp"
 
 namespace sinew {
 
@@ -45,6 +46,7 @@ class BucklingAnalysis : public StepAnalysis {
   long symmetricSolves_ = 0, qzSolves_ = 0;  // dense solves of symmetric (dsygvd) / nonsymmetric pencils
   bool elementwise_ = false;  // -eigen_operator: K_m x = (element-wise K) x - K_g x
   Mat Kop_ = nullptr;
+  VecPool pool_;          // the steps' work vectors (kept between steps)
   UnitFreeNorms scaled_;  // scales of the backward errors (its matrices kept between steps)
   std::vector<double> estimate_, backward_;
   double tol_ = 1e-8;

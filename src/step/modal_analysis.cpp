@@ -152,7 +152,6 @@ ModalAnalysis::~ModalAnalysis() {
   MatDestroy(&P_);
   destroyUnitFreeNorms(&scaled_);
   destroyProductGather(&gather_);
-  VecDestroy(&residual_);
 }
 
 PetscErrorCode ModalAnalysis::stiffnessMult(Mat A, Vec x, Vec y) {
@@ -318,8 +317,8 @@ PetscErrorCode ModalAnalysis::atStep(Vec U, const LoadState& ls, ResultFile& fil
   PetscCall(EPSGetTolerances(eps_, &tol, &maxit));
   tol_ = tol > 0 ? tol : SLEPC_DEFAULT_TOL;  // set by EPSSetUp, which the dense path skips
   PetscCall(unitFreeNorms(mesh, K_, M_, &scaled_));
-  if (!residual_) PetscCall(MatCreateVecs(K_, &residual_, nullptr));
-  Vec r = residual_;
+  Vec r;
+  PetscCall(pool_.get(K_, &r));
 
   // eigenpairs: drop infinite ones (zero mass norm: constraint directions), M-normalize the rest
   PetscReal mmax;
@@ -331,13 +330,13 @@ PetscErrorCode ModalAnalysis::atStep(Vec U, const LoadState& ls, ResultFile& fil
   };
   std::vector<Pair> pairs;
   Vec Mx;
-  PetscCall(MatCreateVecs(K_, &Mx, nullptr));
+  PetscCall(pool_.get(K_, &Mx));
   std::vector<Vec> found;
   const int take = std::min<int>(static_cast<int>(nconv), nev_ + 8);
   for (int i = 0; i < take && static_cast<int>(pairs.size()) < nev_; ++i) {
     PetscScalar kr, ki;
     Vec x;
-    PetscCall(MatCreateVecs(K_, &x, nullptr));
+    PetscCall(pool_.get(K_, &x));
     if (dense_) {
       kr = dense.re[i];
       PetscCall(pairVector(dense, i, x));
@@ -351,7 +350,7 @@ PetscErrorCode ModalAnalysis::atStep(Vec U, const LoadState& ls, ResultFile& fil
     PetscCall(VecDot(x, Mx, &xMx));
     if (!std::isfinite(kr) || !(xMx > 1e-12 * mmax)) {
       ++spurious_;
-      PetscCall(VecDestroy(&x));
+      pool_.put(&x);
       continue;
     }
     PetscReal estimate = 0;
@@ -374,7 +373,8 @@ PetscErrorCode ModalAnalysis::atStep(Vec U, const LoadState& ls, ResultFile& fil
     pairs.push_back({kr, static_cast<int>(found.size()), estimate, backward});
     found.push_back(x);
   }
-  PetscCall(VecDestroy(&Mx));
+  pool_.put(&Mx);
+  pool_.put(&r);
   std::stable_sort(pairs.begin(), pairs.end(), [](const Pair& a, const Pair& b) { return a.lambda < b.lambda; });
 
   const double zeroTol = 1e-6 * scale;
@@ -389,7 +389,7 @@ PetscErrorCode ModalAnalysis::atStep(Vec U, const LoadState& ls, ResultFile& fil
     worst = std::max({worst, pairs[j].estimate, pairs[j].backward});
     PetscCall(VecCopy(found[pairs[j].index], modes_[j]));
   }
-  for (Vec& x : found) PetscCall(VecDestroy(&x));
+  for (Vec& x : found) pool_.put(&x);
   PetscCall(PetscInfo(nullptr, "step %d: target %g (scale %g), %d converged, reason %s\n", step_, userTarget_ ? 0.0 : sigma,
                       scale, static_cast<int>(nconv), dense_ ? "dense LAPACK" : EPSConvergedReasons[reason]));
   if (elementwise_) {

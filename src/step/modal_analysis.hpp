@@ -17,6 +17,7 @@
 #include "step/dense_eigen.hpp"
 #include "step/dense_gather.hpp"
 #include "step/step_analysis.hpp"
+#include "step/vec_pool.hpp"
 
 namespace sinew {
 
@@ -75,7 +76,7 @@ class ModalAnalysis : public StepAnalysis {
   Mat Kop_ = nullptr;          // shell: Assembler::applyTangent(x, y, true)
   Mat P_ = nullptr;            // assembled K - sigma M: the preconditioner (LU) of the inner GMRES
   std::vector<double> estimate_;  // SLEPc's error estimate per reported pair, last step
-  Vec residual_ = nullptr;         // K x - lambda M x of the pairs (kept between steps)
+  VecPool pool_;                  // the steps' work vectors (kept between steps)
   ProductGather gather_;          // the element-wise products of the dense path's Ritz step
   UnitFreeNorms scaled_;          // scales of the backward error (its matrices kept between steps)
   std::vector<double> backward_;  // backward error of K x - lambda M x, unit-free (scaledBackwardError)

@@ -215,6 +215,25 @@ class Assembler {
   /// applyTangent(x, y, true) needs (the element's internal forces and its infinitesimal rotation about
   /// its first node). Used by the eigenvalue analyses (docs/modal.md, "Eigenvalues on fine meshes").
   void keepRigidData(bool on) { keepRigid_ = on; }
+  /// keepTangentBlocks and keepRigidData on for the jacobian() calls of one scope (an eigenvalue
+  /// analysis' tangent at the converged state), the previous settings back after it: the Newton
+  /// iterations of the statics in between keep no blocks they would not use.
+  class KeptBlocksScope {
+   public:
+    explicit KeptBlocksScope(Assembler& a) : a_(a), blocks_(a.keepBlocks_), rigid_(a.keepRigid_) {
+      a.keepBlocks_ = a.keepRigid_ = true;
+    }
+    ~KeptBlocksScope() {
+      a_.keepBlocks_ = blocks_;
+      a_.keepRigid_ = rigid_;
+    }
+    KeptBlocksScope(const KeptBlocksScope&) = delete;
+    KeptBlocksScope& operator=(const KeptBlocksScope&) = delete;
+
+   private:
+    Assembler& a_;
+    bool blocks_, rigid_;
+  };
   /// y = J x from the kept blocks of the last jacobian(), each block applied to its element's part
   /// of x minus the translation of the element's first node (a rigid translation is in the null space
   /// of every element tangent). The assembled matrix applies the same J, but its products carry

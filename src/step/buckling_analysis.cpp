@@ -34,8 +34,6 @@ BucklingAnalysis::BucklingAnalysis(Assembler& assembler, int nbuck, const EigenS
   SinewCallThrow(comm, useDirectSolver(ksp, asm_.mesh()));
   SinewCallThrow(comm, eigenOperator(asm_, settings.eigenOperator, &elementwise_));
   if (elementwise_) {  // as the frequency analysis (modal_analysis.cpp)
-    asm_.keepTangentBlocks(true);
-    asm_.keepRigidData(true);
     const PetscInt nloc = asm_.mesh().numOwnedUnknowns, N = static_cast<PetscInt>(asm_.mesh().numGlobalUnknowns);
     SinewCallThrow(comm, MatCreateShell(comm, nloc, nloc, N, N, this, &Kop_));
     SinewCallThrow(comm, MatShellSetOperation(Kop_, MATOP_MULT, reinterpret_cast<void (*)(void)>(materialMult)));
@@ -144,7 +142,10 @@ PetscErrorCode BucklingAnalysis::atStep(Vec U, const LoadState& ls, ResultFile& 
   const DistributedMesh& mesh = asm_.mesh();
   const double inf = std::numeric_limits<double>::infinity();
   PetscCall(asm_.splitTangent(U, ls, Km_, Kg_));
-  if (elementwise_) PetscCall(asm_.jacobian(U, ls, nullptr));  // the element blocks of K = K_m + K_g
+  if (elementwise_) {  // the element blocks of K = K_m + K_g, for materialMult
+    const Assembler::KeptBlocksScope keep(asm_);
+    PetscCall(asm_.jacobian(U, ls, nullptr));
+  }
   PetscReal nm, ng;
   PetscCall(MatNorm(Km_, NORM_FROBENIUS, &nm));
   PetscCall(MatNorm(Kg_, NORM_FROBENIUS, &ng));

@@ -110,8 +110,6 @@ ModalAnalysis::ModalAnalysis(Assembler& assembler, int nfreq, bool writeResults,
   if (elementwise_) {
     // K x by the element-wise, rigid-motion-free products (accurate for the soft modes of fine
     // meshes); (K - sigma M) y = b by GMRES preconditioned with the LU of the assembled K - sigma M
-    asm_.keepTangentBlocks(true);
-    asm_.keepRigidData(true);
     const PetscInt nloc = asm_.mesh().numOwnedUnknowns, N = static_cast<PetscInt>(asm_.mesh().numGlobalUnknowns);
     SinewCallThrow(comm, MatCreateShell(comm, nloc, nloc, N, N, this, &Kop_));
     SinewCallThrow(comm, MatShellSetOperation(Kop_, MATOP_MULT, reinterpret_cast<void (*)(void)>(stiffnessMult)));
@@ -168,7 +166,12 @@ PetscErrorCode ModalAnalysis::stiffnessMult(Mat A, Vec x, Vec y) {
 // loads it is; what remains (follower-type moment terms) is reported as asymmetry_ (-info).
 PetscErrorCode ModalAnalysis::assemble(Vec U, const LoadState& ls) {
   PetscFunctionBeginUser;
-  PetscCall(asm_.jacobian(U, ls, K_));
+  if (elementwise_) {  // the element blocks and rigid-motion data of this tangent, for stiffnessMult
+    const Assembler::KeptBlocksScope keep(asm_);
+    PetscCall(asm_.jacobian(U, ls, K_));
+  } else {
+    PetscCall(asm_.jacobian(U, ls, K_));
+  }
   PetscCall(MatTranspose(K_, MAT_INITIAL_MATRIX, &Kt_));
   PetscCall(MatAXPY(Kt_, -1.0, K_, UNKNOWN_NONZERO_PATTERN));  // K^T - K
   PetscReal nk, nd;

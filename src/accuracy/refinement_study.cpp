@@ -183,7 +183,11 @@ StudyResult runRefinementStudy(const Model& base, const StudyOptions& options, c
       if (coarser) handover->guesses = interpolateStates(coarserModel, model, coarser->record);
     }
     LevelRun r = run(model, level, toFile, datasetsUsed(s.quantities), handover);
-    if (handover) lastGuesses = handover->guesses, coarser = handover, coarserModel = model;
+    if (handover) {  // a level that did not converge hands on the states it reached
+      lastGuesses = handover->guesses;
+      coarser = handover;
+      coarserModel = model;
+    }
     s.totalSeconds += r.seconds;
     // a coarse level whose analysis does not converge (one element cannot roll up a cantilever) is
     // dropped while there is no estimate yet: the sequence starts again from the next level

@@ -184,7 +184,7 @@ StudyResult runRefinementStudy(const Model& base, const StudyOptions& options, c
     }
     LevelRun r = run(model, level, toFile, datasetsUsed(s.quantities), handover);
     if (handover) {  // a level that did not converge hands on the states it reached
-      lastGuesses = handover->guesses;
+      lastGuesses = std::move(handover->guesses);  // kept for a repeat of this level into the file
       coarser = handover;
       coarserModel = model;
     }

@@ -110,12 +110,14 @@ RunResults accuracyResults(const StudyResult& study) {
   std::size_t m = 1;
   for (const LevelRecord& l : study.levels)
     for (const auto& v : l.values) m = std::max(m, v.size());
-  std::vector<double> level, factor, unknowns, seconds, worst, limiting, error, order, status, value;
+  std::vector<double> level, factor, unknowns, seconds, newton, reused, worst, limiting, error, order, status, value;
   for (const LevelRecord& l : study.levels) {
     level.push_back(l.level);
     factor.push_back(static_cast<double>(l.factor));
     unknowns.push_back(static_cast<double>(l.unknowns));
     seconds.push_back(l.seconds);
+    newton.push_back(l.newtonIterations >= 0 ? static_cast<double>(l.newtonIterations) : kNaN);
+    reused.push_back(l.guessesUsed);
     worst.push_back(l.worst >= 0 ? l.worst : kNaN);
     limiting.push_back(l.limiting);
     for (std::size_t q = 0; q < nq; ++q) {
@@ -142,6 +144,8 @@ RunResults accuracyResults(const StudyResult& study) {
   add("nbeams_factor", {L}, factor);  // with time refinement: the divisor of dt
   add("unknowns", {L}, unknowns);
   add("wall_time", {L}, seconds);
+  add("newton_iterations", {L}, newton);  // NaN: the level's summary reports none (opt.silent, no solver phase)
+  add("reused_starts", {L}, reused);      // load increments started from the coarser level's state
   add("worst_error", {L}, worst);
   add("limiting", {L}, limiting);
   add("error", {L, Q}, error);
@@ -185,8 +189,8 @@ std::string accuracyTable(const StudyResult& study) {
   s += study.met ? "met at level " + std::to_string(last.level) + " (" + levelName(last.level, study.time) + ")"
                  : "not met; " + study.stopReason;
   char b[256];
-  std::snprintf(b, sizeof b, "; %.3g s for all levels\n  %5s %10s %10s %15s  %s\n", study.totalSeconds, "level",
-                "unknowns", "time [s]", "worst estimate", "limiting quantity");
+  std::snprintf(b, sizeof b, "; %.3g s for all levels\n  %5s %10s %10s %7s %15s  %s\n", study.totalSeconds, "level",
+                "unknowns", "time [s]", "Newton", "worst estimate", "limiting quantity");
   s += b;
   for (const LevelRecord& l : study.levels) {
     std::string limit = "-";
@@ -196,7 +200,8 @@ std::string accuracyTable(const StudyResult& study) {
       std::snprintf(o, sizeof o, " (%s, order %.2f)", statusName(e.status), e.order);
       limit = study.quantities[static_cast<std::size_t>(l.limiting)].name + o;
     }
-    std::snprintf(b, sizeof b, "  %5d %10ld %10.3g %15s  %s\n", l.level, l.unknowns, l.seconds,
+    const std::string its = l.newtonIterations >= 0 ? std::to_string(l.newtonIterations) : "-";
+    std::snprintf(b, sizeof b, "  %5d %10ld %10.3g %7s %15s  %s\n", l.level, l.unknowns, l.seconds, its.c_str(),
                   l.worst >= 0 ? sci(l.worst).c_str() : "-", limit.c_str());
     s += b;
   }

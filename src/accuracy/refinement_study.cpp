@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <limits>
 
+#include "accuracy/level_reuse.hpp"
 #include "accuracy/membrane_refinement.hpp"
 #include "accuracy/path_quantities.hpp"
 #include "accuracy/time_refinement.hpp"
@@ -104,8 +105,23 @@ ElementOrders elementOrders(const Model& m) {
   return any ? o : ElementOrders{};
 }
 
-StudyOptions studyOptions(const Model& m, double target, long maxUnknowns, bool lumpedMass) {
+long newtonIterationsOf(const std::string& output) {
+  static const std::string tail = " Newton iterations)";  // the summary's "statics 0.1 s (12 Newton iterations)"
+  long total = -1;
+  for (std::size_t at = output.find(tail); at != std::string::npos; at = output.find(tail, at + 1)) {
+    const std::size_t open = output.rfind('(', at);
+    if (open == std::string::npos) continue;
+    try {
+      total = std::max(total, 0L) + std::stol(output.substr(open + 1, at - open - 1));
+    } catch (const std::exception&) {
+    }
+  }
+  return total;
+}
+
+StudyOptions studyOptions(const Model& m, double target, long maxUnknowns, bool lumpedMass, bool reuse) {
   StudyOptions o;
+  o.reuse = reuse && reusesStates(m);
   o.target = target;
   o.maxUnknowns = maxUnknowns;
   o.lumpedMass = lumpedMass;
@@ -143,6 +159,9 @@ StudyResult runRefinementStudy(const Model& base, const StudyOptions& options, c
   bool failed = false;
   int first = 0;  // the coarsest level of the sequence
   LevelRun last;
+  std::shared_ptr<StaticsHandover> coarser;  // the last level's record (-accuracy_reuse)
+  Model coarserModel;
+  std::vector<LevelState> lastGuesses;  // the guesses the last level started from
   for (int level = 0; level < kMaxLevels; ++level) {
     if (level > first) {  // unknowns grow with the elements, g = 2 per level (lines) or 4 (membranes):
       // U(L+1) - U(L) = g (U(L) - U(L-1))
@@ -157,7 +176,18 @@ StudyResult runRefinementStudy(const Model& base, const StudyOptions& options, c
       }
     }
     const bool toFile = mayBeLast;
-    LevelRun r = run(refinedModel(base, level), level, toFile, datasetsUsed(s.quantities));
+    const Model model = refinedModel(base, level);
+    std::shared_ptr<StaticsHandover> handover;  // the coarser level's states, this level's record
+    if (options.reuse) {
+      handover = std::make_shared<StaticsHandover>();
+      if (coarser) handover->guesses = interpolateStates(coarserModel, model, coarser->record);
+    }
+    LevelRun r = run(model, level, toFile, datasetsUsed(s.quantities), handover);
+    if (handover) {  // a level that did not converge hands on the states it reached
+      lastGuesses = std::move(handover->guesses);  // kept for a repeat of this level into the file
+      coarser = handover;
+      coarserModel = model;
+    }
     s.totalSeconds += r.seconds;
     // a coarse level whose analysis does not converge (one element cannot roll up a cantilever) is
     // dropped while there is no estimate yet: the sequence starts again from the next level
@@ -183,6 +213,8 @@ StudyResult runRefinementStudy(const Model& base, const StudyOptions& options, c
     rec.unknowns = numberOr(r.results, "nunknowns", r.unknowns);
     if (options.time) rec.unknowns *= timeSteps(refinedModel(base, level));  // space-time: doubles per level
     rec.seconds = r.seconds;
+    rec.newtonIterations = newtonIterationsOf(r.output);
+    rec.guessesUsed = handover ? handover->guessesUsed : 0;
     rec.toFile = toFile;
     for (const QuantityDef& q : s.quantities) rec.values.push_back(readQuantity(q, r.results));
     if (s.levels.size() >= 2) estimate(rec, s.levels[s.levels.size() - 2], s.levels.back(), s.quantities, r.results, options);
@@ -207,7 +239,12 @@ StudyResult runRefinementStudy(const Model& base, const StudyOptions& options, c
     s.finalRun = std::move(last);
   } else {  // the reported level ran in memory: once more, into the result file
     LevelRecord& rec = s.levels.back();
-    s.finalRun = run(refinedModel(base, rec.level), rec.level, true, datasetsUsed(s.quantities));
+    std::shared_ptr<StaticsHandover> handover;  // the same start as its run in memory
+    if (options.reuse) {
+      handover = std::make_shared<StaticsHandover>();
+      handover->guesses = std::move(lastGuesses);
+    }
+    s.finalRun = run(refinedModel(base, rec.level), rec.level, true, datasetsUsed(s.quantities), handover);
     s.totalSeconds += s.finalRun.seconds;
     char t[32];
     std::snprintf(t, sizeof t, "%.3g s", s.finalRun.seconds);

@@ -6,12 +6,14 @@
 // writes the run's result file; a reported level that ran in memory is run again into the file.
 #pragma once
 #include <functional>
+#include <memory>
 #include <set>
 #include <string>
 #include <vector>
 
 #include "accuracy/quantities.hpp"
 #include "accuracy/richardson.hpp"
+#include "analysis/statics_handover.hpp"
 #include "sinew/model.hpp"
 #include "sinew/result_store.hpp"
 
@@ -27,15 +29,18 @@ struct LevelRun {
   double seconds = 0;   ///< wall time of the level's run
 };
 /// Runs `model` (level `level`); toFile: into the run's result file, else in memory. `datasets`: what
-/// the quantities read, which a run to the file reads back from it.
-using LevelRunner =
-    std::function<LevelRun(const Model& model, int level, bool toFile, const std::set<std::string>& datasets)>;
+/// the quantities read, which a run to the file reads back from it. `handover`: the coarser level's
+/// states for this level's statics and the record of its own (Settings::accuracy.handover), or nullptr.
+using LevelRunner = std::function<LevelRun(const Model& model, int level, bool toFile, const std::set<std::string>& datasets,
+                                           const std::shared_ptr<StaticsHandover>& handover)>;
 
 struct LevelRecord {
   int level = 0;
   long factor = 1;     ///< nbeams multiplier 2^level
   long unknowns = 0;   ///< with time refinement: unknowns x time steps
   double seconds = 0;
+  long newtonIterations = -1;  ///< every phase's Newton iterations of the level's run (-1: none reported)
+  int guessesUsed = 0;         ///< load increments that started from the coarser level's state
   bool toFile = false;
   std::vector<std::vector<double>> values;  ///< per quantity
   std::vector<Estimate> estimates;          ///< per quantity, from this level and the two before (level >= 2)
@@ -67,14 +72,18 @@ struct StudyOptions {
   bool membranes = false;   ///< the scene has membranes: levels split every element, unknowns grow 4x, orders h^2
   ElementOrders orders;     ///< the elements' theoretical orders (elementOrders)
   bool time = false;        ///< opt.dynamics: levels halve dt (accuracy/time_refinement.hpp); unknowns x time steps
+  bool reuse = true;        ///< -accuracy_reuse: a level's load steps start from the coarser level's states
 };
 
 /// The lowest theoretical orders of the model's element kinds (ElementKind::nodalOrder, modalOrder).
 ElementOrders elementOrders(const Model& m);
 /// The options of a study of `m`: its kinds' orders, membranes, time refinement.
-StudyOptions studyOptions(const Model& m, double target, long maxUnknowns, bool lumpedMass);
+StudyOptions studyOptions(const Model& m, double target, long maxUnknowns, bool lumpedMass, bool reuse);
 /// "nbeams x4" or "dt / 4": how level `level` of the study refines the scene.
 std::string levelName(int level, bool time);
+
+/// The Newton iterations a run's summary reports (the sum over its phases; -1: none).
+long newtonIterationsOf(const std::string& output);
 
 /// Runs the levels. print: one progress line per level (rank 0's text, printed by the caller).
 StudyResult runRefinementStudy(const Model& base, const StudyOptions& options, const LevelRunner& run,

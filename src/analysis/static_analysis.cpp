@@ -319,8 +319,10 @@ PetscErrorCode StaticAnalysis::run(Vec U, const StepCallback& onStep, bool* conv
     PetscCall(VecNorm(F_, NORM_2, &fnormStart));
     newtonTest_.setStartResidual(fnormStart);
     // predictor: extrapolate the last increment (rotation increments included)
-    predicted = dlPrev > 0 && predictor_ && predictNext;
-    if (predicted) PetscCall(VecAXPY(U, (next - from) / dlPrev, dU));
+    bool guessed = false;  // a coarser level's state at this load factor (-target_error levels)
+    if (handover_ && predictNext) PetscCall(startFromGuess(U, next, &guessed));
+    predicted = guessed || (dlPrev > 0 && predictor_ && predictNext);
+    if (predicted && !guessed) PetscCall(VecAXPY(U, (next - from) / dlPrev, dU));
     if (coarse_ && coarsePredictor_) PetscCall(coarse_->predict(U, ls_));  // nonlinear coarse solve first
     PetscCall(solveIncrement(U, next, &a->converged, &a->iterations, &fnorm, &why));
     a->reason = SNESConvergedReasons[why];
@@ -351,11 +353,13 @@ PetscErrorCode StaticAnalysis::run(Vec U, const StepCallback& onStep, bool* conv
     fintConverged_ = asm_.internalForceNorm();
     PetscCall(asm_.setMixedReference(U, ls_));  // the next increment's stresses start from this state
     if (h != 0) dlPrev = next - from;  // step 1 of SPACAR Light's steps (size 0): no increment for the predictor
+    if (handover_) PetscCall(recordState(next));  // the states are those of U (the residual above)
     PetscCall(asm_.absorbRotations(U));
     equilibrium_ = ls_;  // the loads of the state just converged (tiny-load rule of the Newton test)
     return PETSC_SUCCESS;
   };
-  // the extrapolation can overshoot a sharply bending path: the same increment from the last state
+  // the extrapolation (or a coarser level's state) can overshoot a sharply bending path: the same
+  // increment from the last state
   increment.retry = [&](const StepAttempt&, bool* retry, std::string*) -> PetscErrorCode {
     *retry = predicted;
     if (predicted) predictNext = false;

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "analysis/statics_handover.hpp"
 #include "assembly/assembler.hpp"
 #include "settings/settings.hpp"
 #include "solvers/ancf/cable_coarse_space.hpp"
@@ -82,6 +83,11 @@ class StaticAnalysis {
   /// t = 0 at every load step when a time integration continues from the last one (opt.dynamics
   /// start: static), so that its start at t = 0 is the equilibrium found here.
   void setTimeZero(bool z) { timeZero_ = z; }
+  /// A -target_error level (analysis/statics_handover.hpp): every accepted increment's state is
+  /// recorded in h->record, and an increment that ends at the load factor of one of h->guesses starts
+  /// Newton from that state (instead of the last converged state or the predictor); if that Newton
+  /// fails, the increment is retried from the last converged state. nullptr: neither.
+  void setHandover(StaticsHandover* h) { handover_ = h; }
   /// Load factor of 1-based load step k (SPACAR Light: 0 at step 1, 1 at the last step).
   double stepFactor(int step) const;
 
@@ -97,6 +103,11 @@ class StaticAnalysis {
   NewtonRules newtonRules() const;
   PetscErrorCode loadChange(Vec U, double* change);
   PetscErrorCode solveIncrement(Vec U, double lambda, bool* ok, int* its, double* fnorm, SNESConvergedReason* why);
+  /// Appends the converged node states (current evaluation, every rank's owned nodes) to the record.
+  PetscErrorCode recordState(double lambda);
+  /// U <- the guess at load factor lambda on the free DOFs (rotations relative to the reference
+  /// rotations); *used: a guess was found (the same on every rank).
+  PetscErrorCode startFromGuess(Vec U, double lambda, bool* used);
   PetscErrorCode fail(const StepController& control, double lambda, SNESConvergedReason why, double fnorm, bool* converged);
 
   static PetscErrorCode tangentMult(Mat A, Vec x, Vec y);
@@ -134,6 +145,7 @@ class StaticAnalysis {
   int growIts_ = 5;        ///< -increment_grow_its: "quick" = at most this many Newton iterations
   int divergedIts_ = 0;    ///< -newton_diverged_its: an increment still above its start residual after this many
                            ///< iterations fails (0: off; default 6 for beams under the mixed-stress Newton)
+  StaticsHandover* handover_ = nullptr;
   std::vector<StepReport> reports_;
   std::string failure_;
   bool linearFailed_ = false;

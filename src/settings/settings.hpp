@@ -8,10 +8,13 @@
 // structs in code instead.
 #pragma once
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 
 namespace sinew {
+
+struct StaticsHandover;
 
 /// Word lists of the choice flags. Each enum's values follow its flag's words in order (fields.cpp).
 enum class OperatorChoice { Auto, Elementwise, Assembled };  ///< auto, elementwise, assembled
@@ -127,6 +130,10 @@ struct FormFindingSettings {
 /// Accuracy on demand (opt.target_error, docs/accuracy.md).
 struct AccuracySettings {
   int maxUnknowns = 1000000;  ///< -accuracy_max_unknowns: no level of refinement above this many unknowns
+  bool reuse = true;          ///< -accuracy_reuse: a level's statics start from the coarser level's states
+  /// Not a flag: set by a -target_error study on the run of one level (analysis/statics_handover.hpp);
+  /// its statics records its states there and starts from the guesses it holds. nullptr: none.
+  std::shared_ptr<StaticsHandover> handover;
   bool operator==(const AccuracySettings&) const = default;
 };
 

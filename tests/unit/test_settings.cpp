@@ -80,7 +80,7 @@ TEST(Settings, DefaultsAreTheRegistryDefaults) {
       EXPECT_EQ(defaultMismatch(f, defaults.*component), "") << "-" << f.flag;
     }
   });
-  EXPECT_EQ(fields, 58);
+  EXPECT_EQ(fields, 59);
 }
 
 TEST(Settings, RegistryIsTheFieldTablesThenTheSceneOptFields) {

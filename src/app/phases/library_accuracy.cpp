@@ -65,15 +65,17 @@ std::optional<RunOutput> runTargetErrorInLibrary(MPI_Comm comm, const SceneSourc
     if (echo) PetscPrintf(comm, "%s\n", line.c_str());
   };
   const accuracy::StudyOptions options =
-      accuracy::studyOptions(*model, target, settings.accuracy.maxUnknowns, settings.dynamics.beamMass == BeamMass::Lumped);
+      accuracy::studyOptions(*model, target, settings.accuracy.maxUnknowns, settings.dynamics.beamMass == BeamMass::Lumped,
+                               settings.accuracy.reuse);
   char head[160];
   std::snprintf(head, sizeof head, "accuracy on demand: -target_error %g, levels up to -accuracy_max_unknowns %ld", target,
                 options.maxUnknowns);
   say(head);
   accuracy::StudyResult study = accuracy::runRefinementStudy(
       *model, options,
-      [&](const Model& m, int, bool toFile, const std::set<std::string>& datasets) {
-        return runAccuracyLevel(comm, settings, scene.path, h5, m, toFile && !h5.empty(), datasets);
+      [&](const Model& m, int, bool toFile, const std::set<std::string>& datasets,
+          const std::shared_ptr<StaticsHandover>& handover) {
+        return runAccuracyLevel(comm, settings, scene.path, h5, m, toFile && !h5.empty(), datasets, handover);
       },
       say);
   accuracy::LevelRun& fin = study.finalRun;

@@ -41,9 +41,11 @@ std::string unsupported(const Model& m, const Settings& settings) {
 
 /// One level through the library entry: in memory, or into `h5` and read back from there.
 accuracy::LevelRun runLevel(MPI_Comm comm, const Settings& settings, const std::string& scenePath, const std::string& h5,
-                            const Model& model, bool toFile, const std::set<std::string>& datasets) {
+                            const Model& model, bool toFile, const std::set<std::string>& datasets,
+                            const std::shared_ptr<StaticsHandover>& handover) {
   accuracy::LevelRun r;
   Settings s = settings;
+  s.accuracy.handover = handover;
   s.sceneOpt.clear();  // applied when the scene was read
   s.output.file = toFile ? std::optional<std::string>(h5) : std::nullopt;
   const double t0 = MPI_Wtime();
@@ -116,7 +118,8 @@ PetscErrorCode runWithTargetError(int argc, char** argv, bool* handled, int* exi
   const bool silent = model.opt.silent;
   const double target = model.opt.target_error;
   const accuracy::StudyOptions options =
-      accuracy::studyOptions(model, target, settings.accuracy.maxUnknowns, settings.dynamics.beamMass == BeamMass::Lumped);
+      accuracy::studyOptions(model, target, settings.accuracy.maxUnknowns, settings.dynamics.beamMass == BeamMass::Lumped,
+                               settings.accuracy.reuse);
   const char* levels = options.time        ? "dt / 2 (the mesh as written)"
                        : options.membranes ? "every element split (membranes in four)"
                                            : "nbeams x 2";
@@ -125,8 +128,9 @@ PetscErrorCode runWithTargetError(int argc, char** argv, bool* handled, int* exi
                           levels, settings.accuracy.maxUnknowns));
   const accuracy::StudyResult study = accuracy::runRefinementStudy(
       model, options,
-      [&](const Model& m, int, bool toFile, const std::set<std::string>& datasets) {
-        return runLevel(comm, settings, path, h5, m, toFile, datasets);
+      [&](const Model& m, int, bool toFile, const std::set<std::string>& datasets,
+          const std::shared_ptr<StaticsHandover>& handover) {
+        return runLevel(comm, settings, path, h5, m, toFile, datasets, handover);
       },
       [&](const std::string& line) {
         if (!silent) PetscPrintf(comm, "%s\n", line.c_str());
@@ -161,8 +165,9 @@ std::string targetErrorLimit(const Model& model, const Settings& settings) { ret
 
 accuracy::LevelRun runAccuracyLevel(MPI_Comm comm, const Settings& settings, const std::string& scenePath,
                                     const std::string& h5, const Model& model, bool toFile,
-                                    const std::set<std::string>& datasets) {
-  return runLevel(comm, settings, scenePath, h5, model, toFile, datasets);
+                                    const std::set<std::string>& datasets,
+                                    const std::shared_ptr<StaticsHandover>& handover) {
+  return runLevel(comm, settings, scenePath, h5, model, toFile, datasets, handover);
 }
 
 RunFailure writeAccuracyToFile(MPI_Comm comm, const std::string& h5, const accuracy::StudyResult& study) {

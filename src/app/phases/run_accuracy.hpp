@@ -27,7 +27,8 @@ std::string targetErrorLimit(const Model& model, const Settings& settings);
 /// in the results), or into `h5` with `datasets` read back. scenePath names the scene in messages.
 accuracy::LevelRun runAccuracyLevel(MPI_Comm comm, const Settings& settings, const std::string& scenePath,
                                     const std::string& h5, const Model& model, bool toFile,
-                                    const std::set<std::string>& datasets);
+                                    const std::set<std::string>& datasets,
+                                    const std::shared_ptr<StaticsHandover>& handover);
 
 /// Adds /accuracy of `study` to the closed result file `h5` (rank 0 writes) and agrees on the outcome:
 /// a failure (exit code 1, "error: writing /accuracy: ...") on every rank, or none. Collective.

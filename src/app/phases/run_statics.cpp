@@ -38,6 +38,7 @@ PetscErrorCode runStatics(RunContext& ctx, bool resumeStatics, const ConstraintC
   statics.setUniformRamp(model.opt.load_ramp == "uniform");
   statics.setStartIsInitialState(!initiallyLoaded(model, dmesh));
   statics.setTimeZero(plan.preload);  // the time loop starts at t = 0 from the last load step
+  if (!resumeStatics) statics.setHandover(settings.accuracy.handover.get());  // a -target_error level
   if (resumeStatics) PetscCall(restart->resumeStatics(ctx, statics));
   ctx.checkpointState = [&](CheckpointData& d) -> PetscErrorCode {
     const StaticsProgress& p = statics.progress();

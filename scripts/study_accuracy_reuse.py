@@ -1,0 +1,108 @@
+#!/usr/bin/python3
+"""-target_error's reuse between levels (docs/accuracy.md, block accuracy_reuse): the cost of a study
+with -accuracy_reuse 1 and 0 against the cost of its finest level run alone, side by side in one run
+(2 MPI ranks each, one run after the other):
+
+- the beam roll-up to a quarter circle (scripts/study_accuracy.py's scene, 4 load steps), target 1e-4;
+- Lee's frame from 10 elements to v = -0.5 (tests/cases/test_accuracy_path.py's scene with ds 0.1), 1e-3.
+
+Per case: the levels, the Newton iterations of all levels (/accuracy newton_iterations) and of the
+finest level alone (the scene with that level's nbeams and max_steps, without target_error), the wall
+time of each run (mpirun's start, every level, the file; the least of three interleaved runs) and the
+study's ratio to the finest level alone.
+
+usage: scripts/study_accuracy_reuse.py   (a few minutes on 2 cores)"""
+import copy
+import json
+import os
+import subprocess
+import sys
+import time
+
+import h5py
+import yaml
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.join(ROOT, "scripts"))
+import doc_tables  # noqa: E402
+from study_accuracy import ENV, rollup  # noqa: E402
+
+WORK = os.path.join(ROOT, "build", "study_accuracy_reuse")
+REPEATS = 3
+
+
+def lee():
+    c = {"method": "arclength", "ds": 0.1, "ds_max": 0.3, "node": 3, "direction": "y", "max_steps": 40,
+         "stop_displacement": -0.5}
+    beam = {"flex": [1, 2, 3, 4, 5, 6], "emod": 72e9, "smod": 27.7e9, "cshape": "rect", "dim": [0.03, 0.02],
+            "orien": [0, 0, 1]}
+    return {"title": "Lee's frame", "nodes": [[0, 0, 0], [0, 1.2, 0], [0.24, 1.2, 0], [1.2, 1.2, 0]],
+            "elements": [[1, 2], [2, 3], [3, 4]],
+            "nprops": {1: {"fix_pos": True}, 4: {"fix_pos": True}, 2: {"fix_z": True},
+                       3: {"fix_z": True, "force": [0, -1000.0, 0]}},
+            "eprops": [dict(beam, elems=[1], nbeams=5), dict(beam, elems=[2], nbeams=1), dict(beam, elems=[3], nbeams=4)],
+            "opt": {"calccompl": False, "continuation": c}}
+
+
+def finest(scene, factor):
+    """The scene as the study's level with nbeams x factor runs it (refinedModel: max_steps x factor too)."""
+    s = copy.deepcopy(scene)
+    for p in s["eprops"]:
+        p["nbeams"] = p.get("nbeams", 1) * factor
+    if "continuation" in s["opt"]:
+        s["opt"]["continuation"]["max_steps"] *= factor
+    return s
+
+
+def run(tag, scene, args):
+    path = os.path.join(WORK, tag + ".yaml")
+    with open(path, "w") as f:
+        f.write(scene if isinstance(scene, str) else json.dumps(scene, indent=1))
+    h5 = os.path.join(WORK, tag + ".h5")
+    t0 = time.time()
+    p = subprocess.run(["mpirun", "-n", "2", os.path.join(ROOT, "build", "sinew"), path, "-o", h5] + args, env=ENV,
+                       capture_output=True, text=True)
+    wall = time.time() - t0
+    if p.returncode != 0:
+        print(p.stdout[-3000:], p.stderr[-2000:])
+        sys.exit(f"{tag}: exit {p.returncode}")
+    return h5, wall, p.stdout
+
+
+def main():
+    os.makedirs(WORK, exist_ok=True)
+    rows = ["| case | target | levels | Newton iterations of the study, reuse / none | of the finest level alone | "
+            f"wall time (s, least of {REPEATS}): study with reuse / without / finest level alone | "
+            "study / finest alone, reuse / none |",
+            "|---|---|---|---|---|---|---|"]
+    start = time.time()
+    for name, scene, target in (("roll-up tip position, from nbeams 1", rollup(), 1e-4),
+                                ("Lee's frame, from 10 elements", lee(), 1e-3)):
+        tag = name.split()[0].strip("'s,").lower()
+        its, walls = {}, {1: [], 0: [], "alone": []}
+        for _ in range(REPEATS):  # interleaved, so that a change of the machine's load hits all three alike
+            for reuse in (1, 0):
+                h5, wall, _ = run(f"{tag}_{reuse}", scene, ["-target_error", f"{target:g}", "-accuracy_reuse", str(reuse)])
+                walls[reuse].append(wall)
+                with h5py.File(h5, "r") as f:
+                    g = f["accuracy"]
+                    its[reuse] = int(sum(g["newton_iterations"][:]))
+                    factors = [int(x) for x in g["nbeams_factor"][:]]
+            alone = finest(yaml.safe_load(scene) if isinstance(scene, str) else scene, factors[-1])
+            _, wall, out = run(f"{tag}_finest", alone, [])
+            walls["alone"].append(wall)
+            alone_its = sum(int(w.split("(")[1].split()[0]) for w in out.split(", ") if w.endswith("Newton iterations)"))
+        w1, w0, wa = min(walls[1]), min(walls[0]), min(walls["alone"])
+        row = (f"| {name} | {target:g} | x{factors[0]} .. x{factors[-1]} | {its[1]} / {its[0]} | {alone_its} | "
+               f"{w1:.2f} / {w0:.2f} / {wa:.2f} | {w1 / wa:.2f} / {w0 / wa:.2f} |")
+        print(row, flush=True)
+        rows.append(row)
+    load = os.getloadavg()[0]
+    text = (f"Generated by `scripts/study_accuracy_reuse.py` ({time.time() - start:.0f} s, 2 MPI ranks; load average "
+            f"{load:.1f} on 2 cores shared with other jobs: times are indicative, the Newton iterations are not).\n\n"
+            + "\n".join(rows) + "\n")
+    doc_tables.write_block("accuracy.md", "accuracy_reuse", text)
+
+
+if __name__ == "__main__":
+    main()

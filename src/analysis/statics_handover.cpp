@@ -1,0 +1,60 @@
+// StaticAnalysis and a -target_error study's levels (analysis/statics_handover.hpp): the record of the
+// converged states and the Newton start from a coarser level's state.
+#include <cmath>
+
+#include "analysis/static_analysis.hpp"
+#include "sinew/rotation.hpp"
+
+namespace sinew {
+
+PetscErrorCode StaticAnalysis::recordState(double lambda) {
+  PetscFunctionBeginUser;
+  const DistributedMesh& mesh = asm_.mesh();
+  LevelState st;
+  st.loadFactor = lambda;
+  st.nodes.assign(12 * static_cast<std::size_t>(mesh.numFeNodes), 0.0);
+  for (int i = 0; i < mesh.numOwnedNodes; ++i) {  // every FE node is owned by one rank
+    const double* s = asm_.nodeState(i);
+    std::copy(s, s + 12, st.nodes.begin() + 12 * mesh.nodes[static_cast<std::size_t>(i)].gid);
+  }
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, st.nodes.data(), static_cast<int>(st.nodes.size()), MPI_DOUBLE, MPI_SUM,
+                             mesh.comm));
+  handover_->record.push_back(std::move(st));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode StaticAnalysis::startFromGuess(Vec U, double lambda, bool* used) {
+  PetscFunctionBeginUser;
+  *used = false;
+  const LevelState* guess = nullptr;  // the guesses are the same on every rank
+  for (const LevelState& g : handover_->guesses)
+    if (std::abs(g.loadFactor - lambda) <= 1e-12 * std::max(1.0, std::abs(lambda))) guess = &g;
+  if (!guess) PetscFunctionReturn(PETSC_SUCCESS);
+  const DistributedMesh& mesh = asm_.mesh();
+  const std::vector<Mat3> Rref = asm_.referenceRotations();
+  PetscScalar* u;
+  PetscCall(VecGetArray(U, &u));
+  for (int i = 0; i < mesh.numOwnedNodes; ++i) {
+    const LocalNode& n = mesh.nodes[static_cast<std::size_t>(i)];
+    const double* g = &guess->nodes[12 * static_cast<std::size_t>(n.gid)];
+    auto set = [&](int k, double value) {
+      if (n.status[k] == DofStatus::Free && n.dof[k] >= 0) u[n.dof[k]] = value;
+    };
+    if (n.kind == NodeKind::Ancf2D) {  // positions and slopes as displacements from the reference
+      set(0, g[0] - n.X0[0]), set(1, g[1] - n.X0[1]), set(2, g[2] - n.slope0[0]), set(3, g[3] - n.slope0[1]);
+      continue;
+    }
+    for (int k = 0; k < 3; ++k) set(k, g[k] - n.X0[k]);
+    if (n.kind != NodeKind::Frame6 || n.rotationPrescribed) continue;
+    Mat3 R;
+    std::copy(g + 3, g + 12, R.begin());
+    const Vec3 theta = logSO3(R * transpose(Rref[static_cast<std::size_t>(i)]));  // R = exp(theta) R_ref
+    for (int k = 0; k < 3; ++k) set(3 + k, theta[k]);
+  }
+  PetscCall(VecRestoreArray(U, &u));
+  ++handover_->guessesUsed;
+  *used = true;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+}  // namespace sinew

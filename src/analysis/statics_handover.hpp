@@ -1,0 +1,28 @@
+// One level of a -target_error study hands its load-stepped statics to the next, finer level
+// (docs/accuracy.md, "Reuse between levels"): the coarse level records its converged state at every
+// accepted load increment; the study interpolates those states onto the fine level's nodes
+// (accuracy/level_reuse.hpp), and the fine level's Newton starts each increment that ends at a
+// recorded load factor from that state instead of the last converged one (or the predictor).
+#pragma once
+#include <vector>
+
+namespace sinew {
+
+/// Node states of every FE node of a level, 12 doubles per node in FE node order (gid): x and the
+/// rotation R (row-major) of a Frame6 node, x alone of a Point3 node, (x, y, slope x, slope y) of an
+/// ANCF node (Assembler::nodeState's layout).
+struct LevelState {
+  double loadFactor = 0;
+  std::vector<double> nodes;
+};
+
+struct StaticsHandover {
+  /// written by the level's statics: the converged state of every accepted increment, in order
+  std::vector<LevelState> record;
+  /// read by the level's statics: the coarser level's states on this level's nodes (empty: none)
+  std::vector<LevelState> guesses;
+  /// increments whose Newton started from a guess (this level's run)
+  int guessesUsed = 0;
+};
+
+}  // namespace sinew

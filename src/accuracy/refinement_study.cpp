@@ -45,7 +45,11 @@ void estimate(LevelRecord& fine, const LevelRecord& coarse, const LevelRecord& m
       const std::size_t rowSize = qs[i].kind == QuantityDef::Kind::DisplacementHistory ? 3 : 0;  // the worst time row
       const double order = rowSize > 0 ? historyOrder(options)
                                        : theoreticalOrder(qs[i], options.lumpedMass, options.membranes, options.orders);
-      e = richardson(q0, q1, q2, quantityScale(qs[i], fineResults), order, options.target, rowSize);
+      // a bifurcation load is a buckling eigenvalue (the elements' modal order) where the path before it
+      // is straight, the prebuckling state linear in the load (a perfect column); the nodal order where
+      // that state bends and enters the tangent: either is trusted
+      const double upper = qs[i].kind == QuantityDef::Kind::BifurcationLoad ? options.orders.modal : 0;
+      e = richardson(q0, q1, q2, quantityScale(qs[i], fineResults), order, options.target, rowSize, upper);
     }
     const double err = std::isfinite(e.error) ? e.error : std::numeric_limits<double>::infinity();
     fine.worst = std::max(fine.worst, err);

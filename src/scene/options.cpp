@@ -62,8 +62,9 @@ const std::vector<OptionDoc>& sceneOptionDocs() {
        "finest level's results are written, /accuracy holds the levels and estimates (docs/accuracy.md)"},
       {"accuracy_quantities", "[freq | buck | stressmax | limit | bifurcation | shape | node <n> p|r|Freac|Mreac|CMglob]", "auto",
        "quantities -target_error watches; e.g. [freq, node 2 p]; auto: those the scene asks for (docs/accuracy.md)"},
-      {"accuracy_refine", "time | space | both", "time with opt.dynamics, else space",
-       "what the levels of -target_error refine: the time step (dt / 2 per level, the mesh as written), the elements "
+      {"accuracy_refine", "time | space | both", "auto",
+       "what the levels of -target_error refine (auto: time with opt.dynamics, else space): the time step (dt / 2 "
+       "per level, the mesh as written), the elements "
        "(nbeams x 2 or membranes split, dt as written) or both at once (the time histories' order is then the lower of "
        "the two); time and both only with opt.dynamics (docs/accuracy.md)"},
   };

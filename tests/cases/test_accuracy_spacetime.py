@@ -1,7 +1,7 @@
 """-target_error refining space and time together (docs/accuracy.md, "Dynamics: space and time"),
 2 ranks: a steel leaf cantilever (1 m x 20 mm x 2 mm, nbeams 1) under a tip force that rises smoothly
-over half the first period to 0.3 x 3 EI / L^3 (`smoothstep`; large motion, the tip swings by about
-0.4 L, so the corotational beam's nodal positions converge as h^2; a step load would excite every mode
+over half the first period to 0.3 x 3 EI / L^3 (`smoothstep`; large motion, the tip moves by up to
+0.29 L, 0.05 L of it along the beam, so the corotational beam's nodal positions converge as h^2; a step load would excite every mode
 of the finer meshes and make the orders erratic), generalized-alpha rho = 0.9 to t = T1 / 2 (11 rows),
 from dt = T1 / 40. On the first levels the spatial error (one element: 1.3e-2 of the largest
 displacement) dominates the time error (2.9e-3). With `accuracy_refine: both` every level doubles

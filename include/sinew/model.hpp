@@ -192,6 +192,10 @@ struct Options {
   /// Sinew: the quantities target_error watches ("freq", "buck", "stressmax", "node 3 p", ...);
   /// empty: those the scene asks for (docs/accuracy.md)
   std::vector<std::string> accuracy_quantities;
+  /// Sinew: what the levels of target_error refine with opt.dynamics: "time" (dt / 2 per level, the
+  /// mesh as written), "space" (the elements, dt as written) or "both"; empty: time with
+  /// opt.dynamics, else space (docs/accuracy.md)
+  std::string accuracy_refine;
 };
 
 struct FormFinding {

@@ -161,7 +161,7 @@ RunResults accuracyResults(const StudyResult& study) {
   t["met"] = study.met ? "1" : "0";
   t["level"] = std::to_string(nl ? study.levels.back().level : -1);
   t["stop_reason"] = study.stopReason;
-  t["refinement"] = study.time ? "dt / 2^level" : "elements / 2^level";
+  t["refinement"] = !study.time ? "elements / 2^level" : study.space ? "elements and dt / 2^level" : "dt / 2^level";
   return r;
 }
 
@@ -186,7 +186,7 @@ std::string accuracyTable(const StudyResult& study) {
   std::string s = "accuracy (-target_error " + sci(study.target) + ", relative): ";
   if (study.levels.empty()) return s + study.stopReason + "\n";
   const LevelRecord& last = study.levels.back();
-  s += study.met ? "met at level " + std::to_string(last.level) + " (" + levelName(last.level, study.time) + ")"
+  s += study.met ? "met at level " + std::to_string(last.level) + " (" + levelName(last.level, study.time, study.space) + ")"
                  : "not met; " + study.stopReason;
   char b[256];
   std::snprintf(b, sizeof b, "; %.3g s for all levels\n  %5s %10s %10s %7s %15s  %s\n", study.totalSeconds, "level",

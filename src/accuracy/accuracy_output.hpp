@@ -19,7 +19,8 @@ RunResults readResultDatasets(const std::string& path, const std::set<std::strin
 ///   status [nl, nq] (0 converging, 1 resolved, 2 erratic, -1 no estimate), value [nl, nq, m]
 ///   (m = the most components of a quantity, NaN-padded), extrapolated [nq, m] (finest level,
 ///   converging quantities only). Attributes: quantities (one name a line), target, met, level
-///   (the reported one), stop_reason, refinement ("elements / 2^level" or "dt / 2^level"). Throws std::runtime_error on an HDF5 failure.
+///   (the reported one), stop_reason, refinement ("elements / 2^level", "dt / 2^level" or "elements and
+///   dt / 2^level"). Throws std::runtime_error on an HDF5 failure.
 void writeAccuracyGroup(const std::string& path, const StudyResult& study);
 
 /// The same datasets as RunResults (names "accuracy/level", ...) and the attributes as texts of group

@@ -131,7 +131,6 @@ bool supported(const NodeProps& p) {
 }  // namespace
 
 double theoreticalOrder(const QuantityDef& q, bool lumpedMass, bool membranes, const ElementOrders& orders) {
-  if (q.kind == Kind::DisplacementHistory) return kTimeSchemeOrder;
   if (membranes) return 2.0;
   if (q.kind == Kind::Buckling || (q.kind == Kind::Frequency && !lumpedMass)) return orders.modal;
   if (q.kind == Kind::Frequency || q.kind == Kind::StressMax) return 2.0;

@@ -48,8 +48,8 @@ struct ElementOrders {
 /// interpolation), h^2 for frequencies with lumped beam mass, the elements' nodal order for nodal
 /// results (h^2 for the corotational beam under large displacements, h^4 for the ANCF cable's cubic
 /// Hermite nodes), h^2 for the max stress (a derivative); h^2 for every quantity of a scene with
-/// membranes (linear triangles: displacements, stresses and frequencies); the time scheme's order (2)
-/// for time histories (accuracy/time_refinement.hpp).
+/// membranes (linear triangles: displacements, stresses and frequencies). Time histories: historyOrder
+/// (accuracy/refinement_study.hpp).
 double theoreticalOrder(const QuantityDef& q, bool lumpedMass, bool membranes, const ElementOrders& orders);
 
 /// The scene loads the node (forces, moments, prescribed displacements or rotations).

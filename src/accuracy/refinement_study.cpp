@@ -1,5 +1,6 @@
 #include "accuracy/refinement_study.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -43,8 +44,13 @@ void estimate(LevelRecord& fine, const LevelRecord& coarse, const LevelRecord& m
       e.order = e.error = std::numeric_limits<double>::quiet_NaN();
     } else {
       const std::size_t rowSize = qs[i].kind == QuantityDef::Kind::DisplacementHistory ? 3 : 0;  // the worst time row
-      e = richardson(q0, q1, q2, quantityScale(qs[i], fineResults),
-                     theoreticalOrder(qs[i], options.lumpedMass, options.membranes, options.orders), options.target, rowSize);
+      const double order = rowSize > 0 ? historyOrder(options)
+                                       : theoreticalOrder(qs[i], options.lumpedMass, options.membranes, options.orders);
+      // a bifurcation load is a buckling eigenvalue (the elements' modal order) where the path before it
+      // is straight, the prebuckling state linear in the load (a perfect column); the nodal order where
+      // that state bends and enters the tangent: either is trusted
+      const double upper = qs[i].kind == QuantityDef::Kind::BifurcationLoad ? options.orders.modal : 0;
+      e = richardson(q0, q1, q2, quantityScale(qs[i], fineResults), order, options.target, rowSize, upper);
     }
     const double err = std::isfinite(e.error) ? e.error : std::numeric_limits<double>::infinity();
     fine.worst = std::max(fine.worst, err);
@@ -66,9 +72,9 @@ double predictedNext(const LevelRecord& r) {
   return worst;
 }
 
-std::string levelLine(const LevelRecord& r, const std::vector<QuantityDef>& qs, bool time) {
-  std::string s = "  accuracy level " + std::to_string(r.level) + ": " + levelName(r.level, time) + ", " +
-                  std::to_string(r.unknowns) + (time ? " unknowns x time steps, " : " unknowns, ");
+std::string levelLine(const LevelRecord& r, const std::vector<QuantityDef>& qs, const StudyOptions& options) {
+  std::string s = "  accuracy level " + std::to_string(r.level) + ": " + levelName(r.level, options.time, options.space) + ", " +
+                  std::to_string(r.unknowns) + (options.dynamics ? " unknowns x time steps, " : " unknowns, ");
   char t[32];
   std::snprintf(t, sizeof t, "%.3g s", r.seconds);
   s += t;
@@ -91,8 +97,16 @@ long numberOr(const RunResults& r, const char* name, long fallback) {
 
 }  // namespace
 
-std::string levelName(int level, bool time) {
-  return (time ? "dt / " : "nbeams x") + std::to_string(1L << level);
+std::string levelName(int level, bool time, bool space) {
+  const std::string f = std::to_string(1L << level);
+  if (time && space) return "nbeams x" + f + ", dt / " + f;
+  return (time ? "dt / " : "nbeams x") + f;
+}
+
+double historyOrder(const StudyOptions& options) {
+  const double space = options.membranes ? 2.0 : options.orders.nodal;
+  if (!options.space) return kTimeSchemeOrder;
+  return options.time ? std::min(space, kTimeSchemeOrder) : space;
 }
 
 ElementOrders elementOrders(const Model& m) {
@@ -126,13 +140,17 @@ StudyOptions studyOptions(const Model& m, double target, long maxUnknowns, bool 
   o.maxUnknowns = maxUnknowns;
   o.lumpedMass = lumpedMass;
   o.time = refinesTime(m);
-  o.membranes = hasMembranes(m) && !o.time;
+  o.space = refinesSpace(m);
+  o.dynamics = m.opt.dynamics.has_value();
+  o.membranes = hasMembranes(m) && o.space;
   o.orders = elementOrders(m);
   return o;
 }
 
-Model refinedModel(const Model& base, int level) {
-  if (refinesTime(base)) return timeRefinedModel(base, level);  // dt / 2^level, the mesh as written
+namespace {
+
+/// Level `level` in space: nbeams x 2^level, or every membrane element split `level` times.
+Model spaceRefinedModel(const Model& base, int level) {
   Model m = base;
   m.opt.target_error = 0;
   m.opt.accuracy_quantities.clear();
@@ -148,6 +166,14 @@ Model refinedModel(const Model& base, int level) {
   return m;
 }
 
+}  // namespace
+
+Model refinedModel(const Model& base, int level) {
+  if (!refinesSpace(base)) return timeRefinedModel(base, level);  // dt / 2^level, the mesh as written
+  Model m = spaceRefinedModel(base, level);
+  return refinesTime(base) ? timeRefinedModel(m, level) : m;  // both: the refined mesh with dt / 2^level
+}
+
 StudyResult runRefinementStudy(const Model& base, const StudyOptions& options, const LevelRunner& run,
                                const std::function<void(const std::string&)>& print) {
   const double target = options.target;
@@ -155,6 +181,7 @@ StudyResult runRefinementStudy(const Model& base, const StudyOptions& options, c
   StudyResult s;
   s.target = target;
   s.time = options.time;
+  s.space = options.space;
   bool mayBeLast = false;  // the next level's predicted estimate meets the target
   bool failed = false;
   int first = 0;  // the coarsest level of the sequence
@@ -166,10 +193,10 @@ StudyResult runRefinementStudy(const Model& base, const StudyOptions& options, c
     if (level > first) {  // unknowns grow with the elements, g = 2 per level (lines) or 4 (membranes):
       // U(L+1) - U(L) = g (U(L) - U(L-1))
       const std::size_t n = s.levels.size();
-      const long g = options.membranes ? 4 : 2;
+      const long g = (options.space ? (options.membranes ? 4 : 2) : 1) * (options.time ? 2 : 1);
       const long next = n == 1 ? g * s.levels[0].unknowns : (g + 1) * s.levels[n - 1].unknowns - g * s.levels[n - 2].unknowns;
       if (next > maxUnknowns) {
-        s.stopReason = "level " + std::to_string(level) + " (" + levelName(level, options.time) + ") would have about " +
+        s.stopReason = "level " + std::to_string(level) + " (" + levelName(level, options.time, options.space) + ") would have about " +
                        std::to_string(next) + (options.time ? " unknowns x time steps" : " unknowns") +
                        ", more than -accuracy_max_unknowns " + std::to_string(maxUnknowns);
         break;
@@ -192,7 +219,7 @@ StudyResult runRefinementStudy(const Model& base, const StudyOptions& options, c
     // a coarse level whose analysis does not converge (one element cannot roll up a cantilever) is
     // dropped while there is no estimate yet: the sequence starts again from the next level
     if (r.exitCode == kAnalysisFailed && s.levels.size() < 2) {
-      print("  accuracy level " + std::to_string(level) + ": " + levelName(level, options.time) +
+      print("  accuracy level " + std::to_string(level) + ": " + levelName(level, options.time, options.space) +
             ", the analysis did not converge; the levels start again from level " + std::to_string(level + 1));
       s.levels.clear();
       s.quantities.clear();
@@ -200,7 +227,7 @@ StudyResult runRefinementStudy(const Model& base, const StudyOptions& options, c
       continue;
     }
     if (r.exitCode != 0) {
-      s.stopReason = "level " + std::to_string(level) + " (" + levelName(level, options.time) + ") failed (exit " +
+      s.stopReason = "level " + std::to_string(level) + " (" + levelName(level, options.time, options.space) + ") failed (exit " +
                      std::to_string(r.exitCode) + ")";
       s.finalRun = std::move(r);
       failed = true;
@@ -211,14 +238,14 @@ StudyResult runRefinementStudy(const Model& base, const StudyOptions& options, c
     rec.level = level;
     rec.factor = 1L << level;
     rec.unknowns = numberOr(r.results, "nunknowns", r.unknowns);
-    if (options.time) rec.unknowns *= timeSteps(refinedModel(base, level));  // space-time: doubles per level
+    if (options.dynamics) rec.unknowns *= timeSteps(refinedModel(base, level));  // space-time
     rec.seconds = r.seconds;
     rec.newtonIterations = newtonIterationsOf(r.output);
     rec.guessesUsed = handover ? handover->guessesUsed : 0;
     rec.toFile = toFile;
     for (const QuantityDef& q : s.quantities) rec.values.push_back(readQuantity(q, r.results));
     if (s.levels.size() >= 2) estimate(rec, s.levels[s.levels.size() - 2], s.levels.back(), s.quantities, r.results, options);
-    print(levelLine(rec, s.quantities, options.time));
+    print(levelLine(rec, s.quantities, options));
     s.levels.push_back(std::move(rec));
     last = std::move(r);
     const LevelRecord& now = s.levels.back();

@@ -37,7 +37,7 @@ using LevelRunner = std::function<LevelRun(const Model& model, int level, bool t
 struct LevelRecord {
   int level = 0;
   long factor = 1;     ///< nbeams multiplier 2^level
-  long unknowns = 0;   ///< with time refinement: unknowns x time steps
+  long unknowns = 0;   ///< with opt.dynamics: unknowns x time steps
   double seconds = 0;
   long newtonIterations = -1;  ///< every phase's Newton iterations of the level's run (-1: none reported)
   int guessesUsed = 0;         ///< load increments that started from the coarser level's state
@@ -56,13 +56,15 @@ struct StudyResult {
   bool met = false;         ///< the reported (last) level's estimates are trusted and within the target
   std::string stopReason;   ///< why the levels ended ("target met", "next level ... unknowns > ...", a failure)
   bool time = false;        ///< the levels halve dt (StudyOptions::time)
+  bool space = true;        ///< the levels refine the elements (StudyOptions::space)
   LevelRun finalRun;        ///< the reported level's run to the result file (its output and exit code)
   double totalSeconds = 0;  ///< every level's run, the repeated one included
 };
 
 /// The model of level `level`, target_error off: nbeams x 2^level for the sets of 2-node elements, or
-/// with membranes every element split `level` times (accuracy/membrane_refinement.hpp), or with
-/// opt.dynamics dt / 2^level (accuracy/time_refinement.hpp).
+/// with membranes every element split `level` times (accuracy/membrane_refinement.hpp), and/or with
+/// opt.dynamics dt / 2^level (accuracy/time_refinement.hpp; opt.accuracy_refine chooses: time by
+/// default, space, or both).
 Model refinedModel(const Model& base, int level);
 
 struct StudyOptions {
@@ -71,16 +73,21 @@ struct StudyOptions {
   bool lumpedMass = false;  ///< -beam_mass lumped (frequencies converge as h^2)
   bool membranes = false;   ///< the scene has membranes: levels split every element, unknowns grow 4x, orders h^2
   ElementOrders orders;     ///< the elements' theoretical orders (elementOrders)
-  bool time = false;        ///< opt.dynamics: levels halve dt (accuracy/time_refinement.hpp); unknowns x time steps
+  bool time = false;        ///< levels halve dt (accuracy/time_refinement.hpp)
+  bool space = true;        ///< levels refine the elements (nbeams x 2, membranes split)
+  bool dynamics = false;    ///< opt.dynamics: a level's unknowns are counted as unknowns x time steps
   bool reuse = true;        ///< -accuracy_reuse: a level's load steps start from the coarser level's states
 };
 
 /// The lowest theoretical orders of the model's element kinds (ElementKind::nodalOrder, modalOrder).
 ElementOrders elementOrders(const Model& m);
-/// The options of a study of `m`: its kinds' orders, membranes, time refinement.
+/// The options of a study of `m`: its kinds' orders, membranes, what the levels refine, reuse.
 StudyOptions studyOptions(const Model& m, double target, long maxUnknowns, bool lumpedMass, bool reuse);
-/// "nbeams x4" or "dt / 4": how level `level` of the study refines the scene.
-std::string levelName(int level, bool time);
+/// "nbeams x4", "dt / 4" or "nbeams x4, dt / 4": how level `level` of the study refines the scene.
+std::string levelName(int level, bool time, bool space);
+/// The theoretical order of a time history (docs/accuracy.md "Dynamics"): the time scheme's in dt,
+/// the elements' nodal order in h (h^2 with membranes), the lower of the two when both are refined.
+double historyOrder(const StudyOptions& options);
 
 /// The Newton iterations a run's summary reports (the sum over its phases; -1: none).
 long newtonIterationsOf(const std::string& output);

@@ -32,12 +32,12 @@ double distance(const std::vector<double>& a, const std::vector<double>& b, std:
 }  // namespace
 
 Estimate richardson(const std::vector<double>& q0, const std::vector<double>& q1, const std::vector<double>& q2,
-                    double scale, double theoreticalOrder, double target, std::size_t rowSize) {
+                    double scale, double theoreticalOrder, double target, std::size_t rowSize, double upperOrder) {
   Estimate e;
   const double d1 = distance(q1, q0, rowSize), d2 = distance(q2, q1, rowSize);
   e.order = (d1 > 0 && d2 > 0) ? std::log2(d1 / d2) : std::numeric_limits<double>::quiet_NaN();
   const bool sane = std::isfinite(e.order) && e.order >= theoreticalOrder - kOrderBelow &&
-                    e.order <= theoreticalOrder + kOrderAbove;
+                    e.order <= std::max(theoreticalOrder, upperOrder) + kOrderAbove;
   if (sane) {
     const double f = 1.0 / (std::pow(2.0, e.order) - 1.0);  // q* - q2 = f (q2 - q1)
     e.status = EstimateStatus::Converging;

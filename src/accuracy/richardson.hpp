@@ -38,8 +38,10 @@ constexpr double kResolvedFraction = 0.1;
 
 /// The estimate of q2 from q0 (coarsest), q1, q2 (finest) of one quantity with `scale` (> 0). rowSize
 /// > 0: the quantity is rows of rowSize components (a time history) and |.| the largest Euclidean
-/// norm of a row; 0: the Euclidean norm of all components.
+/// norm of a row; 0: the Euclidean norm of all components. upperOrder > theoreticalOrder: a quantity
+/// that may converge as either, orders up to upperOrder + kOrderAbove are trusted too.
 Estimate richardson(const std::vector<double>& q0, const std::vector<double>& q1, const std::vector<double>& q2,
-                    double scale, double theoreticalOrder, double target, std::size_t rowSize = 0);
+                    double scale, double theoreticalOrder, double target, std::size_t rowSize = 0,
+                    double upperOrder = 0);
 
 }  // namespace sinew::accuracy

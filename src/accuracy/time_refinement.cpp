@@ -31,10 +31,18 @@ QuantityDef history(long node) { return {Kind::DisplacementHistory, "node " + st
 
 }  // namespace
 
-bool refinesTime(const Model& m) { return m.opt.dynamics.has_value(); }
+bool refinesTime(const Model& m) { return m.opt.dynamics.has_value() && m.opt.accuracy_refine != "space"; }
+
+bool refinesSpace(const Model& m) {
+  return !m.opt.dynamics || m.opt.accuracy_refine == "space" || m.opt.accuracy_refine == "both";
+}
 
 std::string timeRefinementLimit(const Model& m) {
-  if (!m.opt.dynamics) return "";
+  if (!m.opt.dynamics)
+    return m.opt.accuracy_refine == "time" || m.opt.accuracy_refine == "both"
+               ? "opt.accuracy_refine: " + m.opt.accuracy_refine +
+                     " refines the time step of opt.dynamics; this scene has none (use space, the default)"
+               : "";
   if (m.opt.dynamics->adaptive.control != "none")
     return "opt.dynamics.adaptive: -target_error halves a fixed time step level by level; adaptive steps choose "
            "their own (use control: none, or refine -dynamics_adapt_tol by hand)";
@@ -105,7 +113,10 @@ std::vector<QuantityDef> historyQuantities(const Model& model, const RunResults&
     if (loadedNode(props)) watched.push_back(node);
   long most = -1;
   double largest = 0;
-  for (long n = 0; n < numNodes(coarsest); ++n) {
+  // refined elements add nodes: only the scene's nodes are nodes of every level
+  const long candidates = refinesSpace(model) ? std::min<long>(numNodes(coarsest), static_cast<long>(model.nodes.size()))
+                                              : numNodes(coarsest);
+  for (long n = 0; n < candidates; ++n) {
     const double u = largestRow(displacementHistory(n, coarsest));
     if (u > largest) largest = u, most = n;
   }

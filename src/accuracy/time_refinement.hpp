@@ -5,6 +5,9 @@
 // the worst over the rows (accuracy/richardson.hpp with rows of 3 components). Every scheme of
 // src/dynamics (Arnold-Brüls generalized-alpha, midpoint, energy-momentum, PETSc's TSALPHA2) is second
 // order in dt. Adaptive steps (opt.dynamics.adaptive) choose their own steps: refused.
+// opt.accuracy_refine chooses what the levels of a dynamics scene refine: time (the default), space
+// (the elements as in statics, dt as written) or both (elements and dt halved together; the order of
+// a history is then the lower of the two).
 #pragma once
 #include <string>
 #include <vector>
@@ -18,17 +21,21 @@ namespace sinew::accuracy {
 /// The order in dt of every time scheme Sinew has.
 constexpr double kTimeSchemeOrder = 2.0;
 
-/// The scene's levels refine the time step (opt.dynamics) instead of the mesh.
+/// The scene's levels halve the time step (opt.dynamics, opt.accuracy_refine time or both).
 bool refinesTime(const Model& m);
-/// "" or why -target_error cannot refine the time steps of this scene (a scene error).
+/// The scene's levels refine the elements (no opt.dynamics, or opt.accuracy_refine space or both).
+bool refinesSpace(const Model& m);
+/// "" or why -target_error cannot refine the time steps of this scene (a scene error): adaptive
+/// steps, quantities other than histories, opt.accuracy_refine time or both without opt.dynamics.
 std::string timeRefinementLimit(const Model& m);
-/// Level `level`: dt / 2^level, rows written at the same times as level 0.
+/// Level `level` in time: dt / 2^level, rows written at the same times as level 0 (the mesh of `base`).
 Model timeRefinedModel(const Model& base, int level);
 /// Time steps of a run of `m` (tend / dt rounded up, as the time loop counts them).
 long timeSteps(const Model& m);
 
 /// The time histories watched: `names` ("node <n> p") or the loaded nodes and the node that moves
-/// most over the rows of the coarsest level.
+/// most over the rows of the coarsest level (with the elements refined: among the scene's nodes, which
+/// every level keeps).
 std::vector<QuantityDef> historyQuantities(const Model& model, const RunResults& coarsest,
                                            const std::vector<std::string>& names);
 /// Displacement of `node` at every row, [rows x 3] flattened (empty when node/p is missing).

@@ -62,6 +62,11 @@ const std::vector<OptionDoc>& sceneOptionDocs() {
        "finest level's results are written, /accuracy holds the levels and estimates (docs/accuracy.md)"},
       {"accuracy_quantities", "[freq | buck | stressmax | limit | bifurcation | shape | node <n> p|r|Freac|Mreac|CMglob]", "auto",
        "quantities -target_error watches; e.g. [freq, node 2 p]; auto: those the scene asks for (docs/accuracy.md)"},
+      {"accuracy_refine", "time | space | both", "auto",
+       "what the levels of -target_error refine (auto: time with opt.dynamics, else space): the time step (dt / 2 "
+       "per level, the mesh as written), the elements "
+       "(nbeams x 2 or membranes split, dt as written) or both at once (the time histories' order is then the lower of "
+       "the two); time and both only with opt.dynamics (docs/accuracy.md)"},
   };
   return docs;
 }
@@ -387,6 +392,7 @@ void parseOptions(const YAML::Node& opt, SceneContext& ctx) {
       o.target_error = getInRange(v, p, 0.0, 0.1);
       if (o.target_error <= 0) fail(p, "expected a relative error in (0, 0.1], got " + describe(v));
     } else if (k == "accuracy_quantities") o.accuracy_quantities = parseAccuracyQuantities(v, p, m.nodes.size());
+    else if (k == "accuracy_refine") o.accuracy_refine = getChoice(v, p, {"time", "space", "both"});
   }
   // path following writes every path point (output_steps does not thin a path)
   // (a restart's list is checked against the restart's plan, once its checkpoint is read)

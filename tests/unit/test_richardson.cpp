@@ -37,6 +37,17 @@ TEST(Richardson, OrderFarFromTheElementsIsErratic) {
   EXPECT_NEAR(e.error, 0.4, 1e-14);
 }
 
+TEST(Richardson, UpperOrderWidensTheBand) {
+  // a bifurcation load: h^4 on a straight path, h^2 where it bends; p_th = 2 alone calls h^4 erratic
+  const auto q0 = level(1, 0.1, 4, 0), q1 = level(1, 0.1, 4, 1), q2 = level(1, 0.1, 4, 2);
+  EXPECT_EQ(richardson(q0, q1, q2, 1.0, 2.0, 1e-3).status, EstimateStatus::Erratic);
+  const auto e = richardson(q0, q1, q2, 1.0, 2.0, 1e-3, 0, 4.0);
+  EXPECT_EQ(e.status, EstimateStatus::Converging);
+  EXPECT_NEAR(e.error, q2[0] - 1, 1e-15);
+  EXPECT_EQ(richardson(level(1, 1, 2, 0), level(1, 1, 2, 1), level(1, 1, 2, 2), 1.0, 2.0, 1e-3, 0, 4.0).status,
+            EstimateStatus::Converging);
+}
+
 TEST(Richardson, ChangesFarBelowTheTargetAreResolved) {
   // round-off changes of a mesh-independent quantity: no order, resolved, estimate the larger change
   const auto e = richardson({1.0, 0.0}, {1.0 + 3e-12, 0.0}, {1.0 - 1e-12, 0.0}, 1.0, 2.0, 1e-5);

@@ -102,7 +102,7 @@ std::optional<RunOutput> runTargetErrorInLibrary(MPI_Comm comm, const SceneSourc
     out.exitCode = 3;
     out.message = "error: -target_error " + std::to_string(target) + " not reached: " + study.stopReason +
                   "; the results are level " + std::to_string(best.level) + " (" +
-                  accuracy::levelName(best.level, study.time) + "), worst estimate " + worst;
+                  accuracy::levelName(best.level, study.time, study.space) + "), worst estimate " + worst;
     out.output += out.message + "\n";
     if (echo) PetscPrintf(comm, "%s\n", out.message.c_str());
   }

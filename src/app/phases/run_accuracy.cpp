@@ -28,11 +28,9 @@ bool mentionsTargetError(const std::string& path) {
 
 /// What -target_error cannot refine yet: "" or the reason (a scene error, exit 2).
 std::string unsupported(const Model& m, const Settings& settings) {
-  if (accuracy::refinesTime(m)) {  // dt / 2^level, the mesh as written
-    if (const std::string why = accuracy::timeRefinementLimit(m); !why.empty()) return why;
-  } else if (accuracy::hasMembranes(m)) {
+  if (const std::string why = accuracy::timeRefinementLimit(m); !why.empty()) return why;  // dt / 2^level
+  if (accuracy::refinesSpace(m) && accuracy::hasMembranes(m))
     if (const std::string why = accuracy::membraneRefinementLimit(m); !why.empty()) return why;
-  }
   if (const std::string why = accuracy::pathRefinementLimit(m); !why.empty()) return why;
   if (m.opt.showinputonly) return "opt.showinputonly solves nothing to estimate";
   if (!settings.output.restart.empty()) return "-restart continues one run; it does not combine with -target_error";
@@ -119,13 +117,15 @@ PetscErrorCode runWithTargetError(int argc, char** argv, bool* handled, int* exi
   const double target = model.opt.target_error;
   const accuracy::StudyOptions options =
       accuracy::studyOptions(model, target, settings.accuracy.maxUnknowns, settings.dynamics.beamMass == BeamMass::Lumped,
-                               settings.accuracy.reuse);
-  const char* levels = options.time        ? "dt / 2 (the mesh as written)"
-                       : options.membranes ? "every element split (membranes in four)"
-                                           : "nbeams x 2";
+                             settings.accuracy.reuse);
+  const std::string space = options.membranes ? "every element split (membranes in four)" : "nbeams x 2";
+  const std::string levels = !options.space     ? "dt / 2 (the mesh as written)"
+                             : options.time     ? space + " and dt / 2"
+                             : options.dynamics ? space + " (dt as written)"
+                                                : space;
   if (!silent)
     PetscCall(PetscPrintf(comm, "accuracy on demand: -target_error %g, levels of %s up to -accuracy_max_unknowns %d\n", target,
-                          levels, settings.accuracy.maxUnknowns));
+                          levels.c_str(), settings.accuracy.maxUnknowns));
   const accuracy::StudyResult study = accuracy::runRefinementStudy(
       model, options,
       [&](const Model& m, int, bool toFile, const std::set<std::string>& datasets,
@@ -154,7 +154,7 @@ PetscErrorCode runWithTargetError(int argc, char** argv, bool* handled, int* exi
     char worst[32] = "none (fewer than 3 levels)";
     if (best.worst >= 0) std::snprintf(worst, sizeof worst, "%.2e", best.worst);
     PetscCall(PetscPrintf(comm, "error: -target_error %g not reached: %s; %s holds level %d (%s), worst estimate %s\n", target,
-                          study.stopReason.c_str(), h5.c_str(), best.level, accuracy::levelName(best.level, study.time).c_str(),
+                          study.stopReason.c_str(), h5.c_str(), best.level, accuracy::levelName(best.level, study.time, study.space).c_str(),
                           worst));
     *exitCode = 3;
   }

@@ -393,6 +393,18 @@ void BeamCorotational::localMass(double* Ml) const {
   };
   plane(1, 5, 7, 11, 1.0);   // v, theta_z = v'
   plane(2, 4, 8, 10, -1.0);  // w, theta_y = -w'
+  // the sections' rotary inertia in bending (Rayleigh beam): 1/2 int rho I (v')^2 ds with the cubic
+  // Hermite slopes, rho I / (30 l) [36 3l -36 3l; 3l 4l^2 -3l -l^2; -36 -3l 36 -3l; 3l -l^2 -3l 4l^2]
+  auto rotary = [&](int v1, int t1, int v2, int t2, double sg, double rhoI) {
+    const double r = rhoI / (30.0 * l);
+    auto add = [&](int i, int j, double v) { Ml[i * kDofs + j] += v; if (i != j) Ml[j * kDofs + i] += v; };
+    add(v1, v1, 36 * r); add(v2, v2, 36 * r); add(v1, v2, -36 * r);
+    add(t1, t1, 4 * l * l * r); add(t2, t2, 4 * l * l * r); add(t1, t2, -l * l * r);
+    add(v1, t1, sg * 3 * l * r); add(v1, t2, sg * 3 * l * r);
+    add(v2, t1, -sg * 3 * l * r); add(v2, t2, -sg * 3 * l * r);
+  };
+  rotary(1, 5, 7, 11, 1.0, sec_.rhoIz);   // slope v' about z
+  rotary(2, 4, 8, 10, -1.0, sec_.rhoIy);  // slope w' = -theta_y about y
 }
 
 void BeamCorotational::mass(const double* q, std::vector<double>& M) const {

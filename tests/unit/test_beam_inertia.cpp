@@ -23,7 +23,8 @@ using Rates = std::array<double, 12>;
 const Vec3 kXp{0.1, -0.2, 0.3}, kXq{1.3, 0.4, 0.1};
 
 // comparableSection with the bending rotary inertia set (rotaryHeavy: larger than the translations'
-// rhoA l0^2 / 12 = 0.32 about the bending axes, so the rotary terms dominate).
+// rhoA l0^2 / 12 = 0.31 about the bending axes, so the rotary terms dominate); its shear stiffness makes
+// the rotation field the Timoshenko one (Phi = 0.34 about y, 0.15 about z).
 BeamSection section(bool rotaryHeavy) {
   BeamSection s = test::comparableSection();
   s.rhoIy = rotaryHeavy ? 1.1 : 0.03;
@@ -101,7 +102,7 @@ TEST(BeamInertia, PowerIsRateOfKineticEnergy) {
         power += v[i] * out.f[i];
         for (int j = 0; j < 12; ++j) powerFrozen += v[i] * M[12 * i + j] * a[j];
       }
-      const double h = 5e-5;
+      const double h = 2.5e-5;
       State qa, qb;
       Rates va, vb;
       motion(q0, v, a, h, qa, va);
@@ -111,8 +112,8 @@ TEST(BeamInertia, PowerIsRateOfKineticEnergy) {
       worst = std::max(worst, std::abs(power - dT) / scale);
       worstFrozen = std::max(worstFrozen, std::abs(powerFrozen - dT) / scale);
     }
-    // measured (2026-11-27, h = 5e-5): 1.4e-8, rotary-heavy 5.3e-8 (the central difference's h^2
-    // error: 5.5e-8 and 2.1e-7 with h = 1e-4); the frozen M(q) a: 0.96, rotary-heavy 1.36
+    // measured (2026-11-27, h = 2.5e-5): 3.2e-9, rotary-heavy 3.3e-8 (the central difference's h^2
+    // error: 1.3e-8 and 1.3e-7 with h = 5e-5); the frozen M(q) a: 0.93, rotary-heavy 2.37
     EXPECT_LT(worst, 2e-7) << "rotary-heavy " << heavy;
     EXPECT_GT(worstFrozen, 0.1) << "rotary-heavy " << heavy;
   }
@@ -169,8 +170,8 @@ TEST(BeamInertia, TangentMatchesCentralDifferences) {
       worstQ = std::max(worstQ, test::maxAbs(dq) / test::maxAbs(numQ));
       worstV = std::max(worstV, test::maxAbs(dv) / test::maxAbs(numV));
     }
-    // measured (2026-11-27, h = 1e-6): d f / d q 1.7e-9, d f / d v 4.1e-9 of their largest entry;
-    // rotary-heavy 8.3e-10, 1.6e-9
+    // measured (2026-11-27, h = 1e-6): d f / d q 2.1e-9, d f / d v 3.7e-9 of their largest entry;
+    // rotary-heavy 1.1e-9, 1.3e-9
     EXPECT_LT(worstQ, 3e-8) << "rotary-heavy " << heavy;
     EXPECT_LT(worstV, 3e-8) << "rotary-heavy " << heavy;
   }
@@ -215,7 +216,7 @@ TEST(BeamInertia, RigidMotionHasRigidBodyMomenta) {
       F = F + fn;
       Mc = Mc + mn + cross(test::nodePosition(q, n) - c, fn);
     }
-    // measured (2026-11-27): T, force and moment to 2.2e-16, 4.3e-16, 5.5e-16 of their size; without the
+    // measured (2026-11-27): T, force and moment to 6.7e-16, 7.3e-16, 5.0e-16 of their size; without the
     // bending rotary inertia in the mass the moment misses by |dM| = 0.40 (rotary-heavy: 6.0)
     const Vec3 Fref = m * Ac, Mref = Jc * al + cross(w, Jc * w);
     EXPECT_LT(norm(F - Fref), 1e-12 * norm(Fref)) << "rotary-heavy " << heavy;

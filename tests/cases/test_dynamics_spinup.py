@@ -24,7 +24,8 @@ reference model without the stiffening term reaches |w| = 1000 m at t = 10.8 s (
 tip's shortening stays below 0.02 m. Known limit (docs/dynamics.md, "Not yet"; measured before the
 bending rotary inertia was in the mass): at this dt and
 rho_inf = 0.9 the solution goes unstable after about 10 turns (Newton fails at t = 18.64 s with the
-complete consistent mass, the default; 18.43 s with -beam_mass consistent_frozen); Newton
+complete consistent mass, the default; 18.43 s with -beam_mass consistent_frozen; with the rotary
+inertia, 1 rank, -dynamics_predictor rotation: 18.44 s, against 18.71 s before it); Newton
 itself takes 3 iterations per step at 6 rad/s with -dynamics_predictor rotation (4 from q_n;
 test_dynamics_spinup_newton.py counts them at rho_inf = 0.6, which runs to 30 s). The test takes about 65 s on
 the shared, loaded 2-core machine."""

@@ -393,8 +393,8 @@ void BeamCorotational::localMass(double* Ml) const {
   };
   plane(1, 5, 7, 11, 1.0);   // v, theta_z = v'
   plane(2, 4, 8, 10, -1.0);  // w, theta_y = -w'
-  // the sections' rotary inertia in bending: 1/2 int rho I phi'^2 dx (phi' the rate of the section
-  // rotation phi) with phi interpolated as by the exact static shapes of the Timoshenko pair
+  // the sections' rotary inertia in bending: 1/2 int rho I (d phi/dt)^2 dx (phi the section
+  // rotation) with phi interpolated as by the exact static shapes of the Timoshenko pair
   // (Friedman & Kosmatka 1993; Phi = 12 EI / (kGA l^2), 0 without shear flexibility), xi = x / l:
   //   phi = mu [6 (xi^2 - xi) / l (v1 - v2) + (3 xi^2 - (4 + Phi) xi + 1 + Phi) t1 + (3 xi^2 - (2 - Phi) xi) t2],
   // mu = 1 / (1 + Phi); Phi = 0 gives the Hermite slopes v' (Rayleigh beam). A rigid turn (v2 - v1 = l t,

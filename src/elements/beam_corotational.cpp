@@ -393,6 +393,26 @@ void BeamCorotational::localMass(double* Ml) const {
   };
   plane(1, 5, 7, 11, 1.0);   // v, theta_z = v'
   plane(2, 4, 8, 10, -1.0);  // w, theta_y = -w'
+  // the sections' rotary inertia in bending: 1/2 int rho I (d phi/dt)^2 dx (phi the section
+  // rotation) with phi interpolated as by the exact static shapes of the Timoshenko pair
+  // (Friedman & Kosmatka 1993; Phi = 12 EI / (kGA l^2), 0 without shear flexibility), xi = x / l:
+  //   phi = mu [6 (xi^2 - xi) / l (v1 - v2) + (3 xi^2 - (4 + Phi) xi + 1 + Phi) t1 + (3 xi^2 - (2 - Phi) xi) t2],
+  // mu = 1 / (1 + Phi); Phi = 0 gives the Hermite slopes v' (Rayleigh beam). A rigid turn (v2 - v1 = l t,
+  // t1 = t2 = t) gives phi = t: exact for any Phi. Integrated by 3-point Gauss (degree 4, exact).
+  auto rotary = [&](int v1, int t1, int v2, int t2, double sg, double rhoI, double EI, double kGA) {
+    if (!(rhoI > 0.0)) return;
+    const double Phi = kGA > 0.0 ? 12.0 * EI / (kGA * l * l) : 0.0, mu = 1.0 / (1.0 + Phi);
+    const double gx[3] = {0.5 - 0.5 * std::sqrt(0.6), 0.5, 0.5 + 0.5 * std::sqrt(0.6)}, gw[3] = {5.0 / 18, 8.0 / 18, 5.0 / 18};
+    const int dof[4] = {v1, t1, v2, t2};
+    for (int g = 0; g < 3; ++g) {
+      const double xi = gx[g], a = sg * mu * 6.0 * (xi * xi - xi) / l;
+      const double N[4] = {a, mu * (3 * xi * xi - (4 + Phi) * xi + 1 + Phi), -a, mu * (3 * xi * xi - (2 - Phi) * xi)};
+      for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j) Ml[dof[i] * kDofs + dof[j]] += gw[g] * rhoI * l * N[i] * N[j];
+    }
+  };
+  rotary(1, 5, 7, 11, 1.0, sec_.rhoIz, sec_.EIz, sec_.kGAy);   // v, rotation theta_z about z
+  rotary(2, 4, 8, 10, -1.0, sec_.rhoIy, sec_.EIy, sec_.kGAz);  // w, rotation theta_y about y (= -w')
 }
 
 void BeamCorotational::mass(const double* q, std::vector<double>& M) const {

@@ -7,19 +7,25 @@ reproduce all four), clamped to a hub at the origin whose angle is prescribed as
   theta(t) = (Omega_s/T_s) (t^2/2 + (T_s/(2 pi))^2 (cos(2 pi t/T_s) - 1)), t < T_s;
   theta(t) = Omega_s (t - T_s/2) after, with Omega_s = 6 rad/s, T_s = 15 s.
 10 beams, dt = 0.02 s, rho_inf = 0.9, 16 s (the spin-up and 1 s at 6 rad/s, 7.9 turns).
-Reference: Kane et al.'s point is that the transverse tip deflection in the rotating frame stays
-bounded only if the centrifugal (geometric) stiffening is kept; a model linear in the deformation
-without it diverges once the spin exceeds the first bending frequency (3.52 sqrt(EI/(rhoA L^4))
-= 3.80 rad/s). No tabulated curve was found in the reference library, so the reference here is
-Kane's own linearized theory with stiffening, built independently in this test: a Galerkin model
-with 4 cantilever modes in the rotating frame, rhoA (w'' + alpha x - Omega^2 w) + EI w'''' -
-(T w')' = 0, T = rhoA Omega^2 (L^2 - x^2)/2 (RK4, h = 1e-3 s).
-Measured: Sinew's tip deflection peaks at -0.5751 m at t = 6.8 s (reference -0.5743 m at 6.76 s)
-and follows the reference history to 6.2e-3 of its peak over the run (3 modes: 6.0e-3); the same
+Reference: Kane et al.'s point is that the transverse tip deflection in the rotating frame stays bounded
+only if the centrifugal (geometric) stiffening is kept; a model linear in the deformation without it
+diverges once the spin exceeds the first bending frequency (3.52 sqrt(EI/(rhoA L^4)) = 3.80 rad/s). No
+tabulated or digitized published curve was found in the reference library (searched 2026-11-27: code,
+docs, pages and issues for the spin-up by its data and authors; AeroBeams.jl's spinupRobotArm example
+and a public corotational MATLAB code run the same data but ship no reference curve, the stored part of
+ANSYS VM258's page ("Spin-up Maneuver of a Flexible Beam") names only figures), so the reference here is
+Kane's own linearized theory with stiffening, built independently in this test: a Galerkin model with 4
+cantilever modes in the rotating frame, rhoA (w'' + alpha x - Omega^2 w) + EI w'''' - (T w')' = 0, T =
+rhoA Omega^2 (L^2 - x^2)/2 (RK4, h = 1e-3 s).
+Measured (2026-11-27, with the sections' bending rotary inertia rhoI in the mass): Sinew's tip
+deflection peaks at -0.5749 m at t = 6.8 s (reference -0.5743 m at 6.76 s) and follows the reference
+history to 5.7e-3 of its peak over the run (before the rotary inertia: -0.5751 m, 6.2e-3); the same
 reference model without the stiffening term reaches |w| = 1000 m at t = 10.8 s (diverges). The
-tip's shortening stays below 0.02 m. Known limit (docs/dynamics.md, "Not yet"): at this dt and
+tip's shortening stays below 0.02 m. Known limit (docs/dynamics.md, "Not yet"; measured before the
+bending rotary inertia was in the mass): at this dt and
 rho_inf = 0.9 the solution goes unstable after about 10 turns (Newton fails at t = 18.64 s with the
-complete consistent mass, the default; 18.43 s with -beam_mass consistent_frozen); Newton
+complete consistent mass, the default; 18.43 s with -beam_mass consistent_frozen; with the rotary
+inertia, 1 rank, -dynamics_predictor rotation: 18.44 s, against 18.71 s before it); Newton
 itself takes 3 iterations per step at 6 rad/s with -dynamics_predictor rotation (4 from q_n;
 test_dynamics_spinup_newton.py counts them at rho_inf = 0.6, which runs to 30 s). The test takes about 65 s on
 the shared, loaded 2-core machine."""

@@ -173,6 +173,7 @@ PetscErrorCode Assembler::loadLocal(Vec U, Vec local) {
 void Assembler::computeStates(const double* u, const LoadState& ls) {
   const double lam = ls.loadFactor, lam0 = ls.initialFactor;
   presRatesActive_ = false;
+  const bool shiftedMotion = !std::isnan(ls.motionTime);
   for (size_t i = 0; i < mesh_.nodes.size(); ++i) {
     const LocalNode& n = mesh_.nodes[i];
     double* s = &state_[12 * i];
@@ -193,7 +194,8 @@ void Assembler::computeStates(const double* u, const LoadState& ls) {
             const Expression::TimeJet j = tf->prescribed[k]->timeJet(ls.time);
             rate[k] = lam * j.df;
             rate[6 + k] = lam * j.ddf;
-            return lam * j.f + lam0 * n.prescribedInitial[k];
+            const double f = shiftedMotion ? tf->prescribed[k]->timeJet(ls.motionTime).f : j.f;
+            return lam * f + lam0 * n.prescribedInitial[k];
           }
           return lam * n.prescribed[k] + lam0 * n.prescribedInitial[k];
         default: return 0.0;
@@ -216,7 +218,8 @@ void Assembler::computeStates(const double* u, const LoadState& ls) {
     if (n.rotationPrescribed && tf && tf->rotAngle) {
       // rot = angle(t) e about a fixed axis e: R = exp(angle e) R0, spatial angular velocity angle' e
       const Expression::TimeJet j = tf->rotAngle->timeJet(ls.time);
-      R = expSO3(lam * j.f * tf->rotAxis) * expSO3(lam0 * n.rotInitial);
+      const double angle = shiftedMotion ? tf->rotAngle->timeJet(ls.motionTime).f : j.f;
+      R = expSO3(lam * angle * tf->rotAxis) * expSO3(lam0 * n.rotInitial);
       for (int k = 0; k < 3; ++k) {
         rate[3 + k] = lam * j.df * tf->rotAxis[k];
         rate[9 + k] = lam * j.ddf * tf->rotAxis[k];

@@ -9,6 +9,7 @@
 
 #include <array>
 #include <functional>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -43,6 +44,10 @@ struct LoadState {
   /// (and the prescribed velocities/accelerations from their derivatives); otherwise (statics) they
   /// act with their values at t = 0, ramped by the load factor like constant ones.
   bool timeFunctions = false;
+  /// Dynamics: the time of the configuration, when it is not `time` (energy-momentum: the step's end
+  /// t_{n+1}, loads at t_{n+1/2}): prescribed motions take their values at motionTime, their velocities
+  /// and accelerations stay those at `time`. NaN: `time`.
+  double motionTime = std::numeric_limits<double>::quiet_NaN();
 };
 
 /// Counters that prove which phases ran (also visible as PetscLogEvents in -log_view).

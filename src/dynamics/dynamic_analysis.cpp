@@ -25,12 +25,11 @@ DynamicAnalysis::Scheme DynamicAnalysis::checkScheme(const DistributedMesh& mesh
   if (scheme == Scheme::EnergyMomentum) {
     int bad = 0;
     for (const LocalElement& e : mesh.elements)
-      bad |= !e.kernel->hasStepForce() || (e.kernel->hasInertia() && e.kernel->massDependsOnState());
+      bad |= !e.kernel->hasStepForce();
     MPI_Allreduce(MPI_IN_PLACE, &bad, 1, MPI_INT, MPI_LOR, mesh.comm);
     if (bad)
-      throw SceneError("-dynamics_scheme", "energy_momentum integrates beams with lumped mass (-beam_mass lumped), rigid "
-                                           "elements, nodal masses, 3D cables and membranes; this model has ANCF cables "
-                                           "or the consistent beam mass (use midpoint or arnold_bruls)");
+      throw SceneError("-dynamics_scheme", "energy_momentum integrates beams, rigid elements, nodal masses, 3D cables "
+                                           "and membranes; this model has ANCF cables (use midpoint or arnold_bruls)");
   }
   return scheme;
 }
@@ -94,7 +93,7 @@ DynamicAnalysis::DynamicAnalysis(Assembler& assembler, const DynamicsOptions& op
   asm_.setMixedStressNewton(newton.mixedStresses && asm_.hasMixedStressKernels());
   // the complete consistent beam mass (its kinetic energy's inertia force) in the Arnold-Bruls loop;
   // the midpoint and energy-momentum rules take element masses as M(q_{n+1/2}) (qd_{n+1} - qd_n)/h
-  asm_.setCompleteInertia(scheme == Scheme::ArnoldBruls);
+  asm_.setCompleteInertia(scheme == Scheme::ArnoldBruls || scheme == Scheme::EnergyMomentum);
   // Newton's start of a step. The extrapolation q_n + h qd_n + h^2/2 a_n carries the algorithmic
   // accelerations of the modes the step does not resolve (h omega >> 1: the axial and the short
   // bending waves of a fine cable, omega ~ 1/l_e resp. 1/l_e^2). Those are noise of amplitude
@@ -135,6 +134,12 @@ DynamicAnalysis::DynamicAnalysis(Assembler& assembler, const DynamicsOptions& op
     for (const LocalElement& e : asm_.mesh().elements)
       for (int j = 0; e.firstMultiplier >= 0 && j < e.kernel->numConstraints(); ++j) k[e.firstMultiplier + j] = 0.0;
     SinewCallThrow(comm, VecRestoreArray(keep_, &k));
+  }
+  if (scheme == Scheme::EnergyMomentum) {
+    int state = 0;
+    for (const LocalElement& e : asm_.mesh().elements) state |= e.kernel->hasInertia() && e.kernel->massDependsOnState();
+    MPI_Allreduce(MPI_IN_PLACE, &state, 1, MPI_INT, MPI_LOR, comm);
+    stateMassSteps_ = state != 0;
   }
   // the scheme, with the multipliers (no rates) and the rotation unknowns (Lie-group form) of the model
   if (scheme == Scheme::TSAlpha2) {
@@ -467,10 +472,19 @@ PetscErrorCode DynamicAnalysis::withRotaryMomentum(Vec U, const std::function<Pe
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode DynamicAnalysis::stepResidual(Vec U, const EvaluationPoint& e, Vec F) {
-  PetscFunctionBeginUser;
+// The loads at the evaluation point's time; the energy-momentum scheme's configuration is the step's
+// end q_{n+1}, so its prescribed motions take their values at t_{n+1} (the step force runs from q_n at
+// t_n to q_{n+1} at t_{n+1}; at t_{n+1/2} a driven hub's end angle lagged by h Omega / 2).
+LoadState DynamicAnalysis::evaluationLoads(const EvaluationPoint& e) const {
   LoadState ls = ls_;
   ls.time += e.timeShift;
+  if (e.stepForces) ls.motionTime = ls_.time;
+  return ls;
+}
+
+PetscErrorCode DynamicAnalysis::stepResidual(Vec U, const EvaluationPoint& e, Vec F) {
+  PetscFunctionBeginUser;
+  const LoadState ls = evaluationLoads(e);
   if (e.midStep || e.stepForces)
     PetscCall(withRotaryMomentum(U, [&] { return asm_.dynamicResidual(e.q, e.qd, e.qdd, ls, F); }, e.stepForces));
   else PetscCall(asm_.dynamicResidual(e.q, e.qd, e.qdd, ls, F));
@@ -490,8 +504,7 @@ PetscErrorCode DynamicAnalysis::stepResidual(Vec U, const EvaluationPoint& e, Ve
 
 PetscErrorCode DynamicAnalysis::stepJacobian(Vec U, const EvaluationPoint& e, Mat P) {
   PetscFunctionBeginUser;
-  LoadState ls = ls_;
-  ls.time += e.timeShift;
+  const LoadState ls = evaluationLoads(e);
   // midpoint: the rotary inertia's block exact (rotaryMomentumStep; the elements' rotation columns are
   // those of the mid state)
   if (e.midStep || e.stepForces)

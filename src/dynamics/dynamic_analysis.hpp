@@ -144,6 +144,8 @@ class DynamicAnalysis : private MotionEquations {
   /// at its evaluation point e; the midpoint rule's rotary inertia as the momentum change over the
   /// step and, with multipliers, their constraints at the step's end.
   PetscErrorCode stepResidual(Vec U, const EvaluationPoint& e, Vec F);
+  /// The loads of the step's evaluation point e (time t_{n+1} + e.timeShift; see the definition).
+  LoadState evaluationLoads(const EvaluationPoint& e) const;
   /// Its derivative by U: e.jacobianScale (K + e.shiftV C + e.shiftA M) at e (midpoint: constraint rows
   /// and multiplier columns scaled by 2).
   PetscErrorCode stepJacobian(Vec U, const EvaluationPoint& e, Mat P);
@@ -236,6 +238,9 @@ class DynamicAnalysis : private MotionEquations {
   bool corotated_ = false;
   std::unique_ptr<CorotatedNewtonMatrix> corotatedMatrix_;  ///< the kept blocks (corotated_ only)
   bool chain_ = false;  ///< ancfChain(mesh): an ANCF cable model (its LU: useChainLU)
+  /// energy-momentum scheme with element masses that depend on the state (the consistent beam mass):
+  /// its inertia is not a discrete gradient, so Newton ends at the round-off floor (newtonRules)
+  bool stateMassSteps_ = false;
   bool lastCorotated_ = false;  ///< the current Newton matrix is a corotated rebuild
   double staleTurn_ = HUGE_VAL;  ///< smallest element turn (rad) at which a kept Newton matrix stalled
   int matrixIt_ = -100;          ///< Newton iteration of this solve that built the current matrix (-100: an earlier solve)

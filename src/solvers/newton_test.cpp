@@ -107,8 +107,11 @@ void NewtonTest::decide(const NewtonIterate& x, double atol, double rtol, double
     *reason = SNES_CONVERGED_SNORM_RELATIVE;  // at rest under loads still zero: residual and update at round-off
 
   // a verdict stands only once the update is at the round-off of the coordinates (midpoint rule)
-  if (r.finalUpdateRtol > 0 && *reason > 0 && !(it > 0 && x.snorm <= r.finalUpdateRtol * std::max(x.xnorm, x.coordMax)))
-    *reason = SNES_CONVERGED_ITERATING;
+  if (r.finalUpdateRtol > 0 && *reason > 0) {
+    const double tol = r.finalUpdateRtol * std::max(x.xnorm, x.coordMax);
+    const bool noiseUpdate = r.finalUpdateAtFloor && it >= 2 && fnormPrev_ <= floor && fnorm <= floor;
+    if (!(it > 0 && (x.snorm <= tol || noiseUpdate))) *reason = SNES_CONVERGED_ITERATING;
+  }
   if (it > 0) snormPrev_ = x.snorm;
   fnormPrev_ = fnorm;
   relUpdatePrev_ = relUpdate_;

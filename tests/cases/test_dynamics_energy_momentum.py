@@ -46,7 +46,8 @@ print(f"  energy decay 0.1, 2000 steps: T + S lost {1 - dec['E'][-1] / dec['E'][
 st.check((steps < 0).all(), "energy decay: T + S lower at every written row after the pulse")
 st.check(dec["dH"] < 1e-9, "energy decay: angular momentum constant to 1e-9")
 
-# element mass matrices (the default consistent beam mass) are refused at setup
-_, out = st.run("em_consistent_refused", scene(4, 0.1, 1), np_=1, args=em, expect_exit=2)
-st.check("-beam_mass lumped" in out, "energy_momentum with the consistent beam mass: refused, naming -beam_mass lumped")
+# the default consistent beam mass is taken (its inertia at q_{n+1}, not energy-exact: on this stiff free
+# beam T + S grows 125-fold within 1.6 s, docs/dynamics.md "Not yet"; test_dynamics_spinup runs it)
+_, out = st.run("em_consistent", scene(4, 0.1, 1), np_=1, args=em)
+st.check("energy-momentum scheme" in out, "energy_momentum with the consistent beam mass: accepted")
 st.done()

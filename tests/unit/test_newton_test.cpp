@@ -185,6 +185,17 @@ PetscErrorCode checks(SNES snes) {
     t.rules().finalUpdateRtol = 1e-14;
     PetscCall(run(snes, t, {{1.0, 0, 1}, {1e-8, 1e-3, 1}, {1e-9, 1e-15, 1}}, 1.0, 0, &why, &at));
     expect(why > 0 && at == 2, "midpoint: a verdict waits for an update at round-off");
+    // energy-momentum with the consistent beam mass (the spin-up at 6 rad/s): the update of iteration 3
+    // came from a residual at the floor (2e-6), so the step ends there instead of at the 1e-14 update
+    const std::vector<Point> spin = {{19, 0, 10}, {0.15, 2.9e-3, 10}, {3e-8, 2.2e-7, 10}, {1e-8, 5.8e-12, 10}, {1e-8, 1e-15, 10}};
+    PetscCall(run(snes, t, spin, 19.0, 2e-6, &why, &at));
+    expect(why > 0 && at == 4, "midpoint: the spin-up's steps end at the 1e-14 update, iteration 4");
+    t.rules().finalUpdateAtFloor = true;
+    PetscCall(run(snes, t, spin, 19.0, 2e-6, &why, &at));
+    expect(why > 0 && at == 3, "final update at floor: the update after a residual at the floor ends the step");
+    PetscCall(run(snes, t, {{19, 0, 10}, {1e-7, 2.9e-3, 10}, {3e-8, 2.2e-7, 10}}, 19.0, 0, &why, &at));
+    expect(why == SNES_CONVERGED_ITERATING, "final update at floor: not while the residuals are above the floor");
+    t.rules().finalUpdateAtFloor = false;
     t.rules().finalUpdateRtol = 0;
     PetscCall(run(snes, t, {{1.0, 0, 1}, {1e-8, 1e-3, 1}}, 1.0, 0, &why, &at));
     expect(why == SNES_CONVERGED_FNORM_ABS && at == 1, "without the midpoint rule the force rule decides at once");

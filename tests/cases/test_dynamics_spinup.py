@@ -25,7 +25,7 @@ Measured (2026-11-27): Sinew's tip deflection peaks at -0.5742 m at t = 6.8 s (r
 and follows the reference history to 2.5e-3 of its peak over the 20 s (generalized alpha at rho_inf = 0.9
 to 16 s: 6.2e-3); the same reference model without the stiffening term reaches |w| = 1000 m at t = 10.8 s
 (diverges). The tip's shortening stays below 0.02 m. At 6 rad/s the tip's elongation stays within
-5.1497e-4 .. 5.1607e-4 m (checked within 5.14e-4 .. 5.17e-4; 1 rank to 30 s: 5.1496e-4 .. 5.1608e-4) and
+5.1497e-4 .. 5.1608e-4 m with the sections' bending rotary inertia in the mass (5.1607e-4 before it; checked within 5.14e-4 .. 5.17e-4; 1 rank to 30 s: 5.1496e-4 .. 5.1608e-4) and
 Newton takes 3 iterations in every step (3.24 per step, max 4, before 15 s); the step ends after an update
 computed from a residual already at its round-off floor (src/solvers/newton_test.hpp). Before: the default
 scheme (generalized alpha) at rho_inf = 0.9 went unstable, the tip's elongation oscillating with period 2h

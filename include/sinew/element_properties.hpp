@@ -36,6 +36,7 @@ struct MembraneProperties {
   std::array<double, 3> prestress{};  ///< s11 s22 s12
   std::optional<Vec3> prestress_dir, prestress_radial_axis;
   double pressure = 0, pressure_initial = 0;  ///< follower surface pressure along the element normal (ramped / initial)
+  std::string pressure_t;  ///< pressure as a function of time t (its text; empty: the number `pressure`)
 };
 
 /// type: ancf_cable2d (Exudyn names).

@@ -69,7 +69,8 @@ std::string setLine(const ElementSet& s, std::size_t index) {
   } else if (const auto* mp = s.as<MembraneProperties>()) {
     o << " thickness " << num(mp->thickness) << ", emod " << num(mp->emod) << ", nu " << num(mp->nu) << ", prestress "
       << vec(mp->prestress);
-    if (mp->pressure != 0.0) o << ", pressure " << num(mp->pressure);
+    if (!mp->pressure_t.empty()) o << ", pressure = " << mp->pressure_t;
+    else if (mp->pressure != 0.0) o << ", pressure " << num(mp->pressure);
     if (mp->pressure_initial != 0.0) o << ", pressure_initial " << num(mp->pressure_initial);
     dens = mp->dens;
   } else if (const auto* a = s.as<AncfCable2DProperties>()) {

@@ -75,7 +75,7 @@ void Assembler::initLoads() {
     if (el.kernel->tensionOnly()) cableElems_.push_back(static_cast<int>(e));
     if (el.set < 0 || static_cast<size_t>(el.set) >= table.size() || (el.numNodes != 3 && el.numNodes != 4)) continue;
     const SetPressure& sp = table[static_cast<size_t>(el.set)].pressure;
-    if (sp.pressure != 0.0 || sp.pressureInitial != 0.0) pressureElems_.emplace_back(static_cast<int>(e), sp);
+    if (sp.pressure != 0.0 || sp.pressureInitial != 0.0 || sp.pressureOfTime) pressureElems_.emplace_back(static_cast<int>(e), sp);
   }
   int any = pressureElems_.empty() ? 0 : 1;
   MPI_Allreduce(MPI_IN_PLACE, &any, 1, MPI_INT, MPI_LOR, mesh_.comm);
@@ -89,7 +89,7 @@ double Assembler::addPressureForces(const LoadState& ls, Target target, double* 
   double fext2 = 0.0;
   for (const auto& [e, sp] : pressureElems_) {
     const LocalElement& el = mesh_.elements[static_cast<size_t>(e)];
-    const double p = sp.pressureInitial + ls.loadFactor * sp.pressure;
+    const double p = sp.at(ls.loadFactor, ls.time);
     if (p == 0.0) continue;
     gatherElement(el, q.data(), nullptr, idx.data(), fidx.data());
     pressureElement(el.numNodes, q.data(), p, f.data(), nullptr);
@@ -111,7 +111,7 @@ PetscErrorCode Assembler::addLoadTangents(const LoadState& ls, Mat J) {
   std::array<double, 144> K;
   for (const auto& [e, sp] : pressureElems_) {
     const LocalElement& el = mesh_.elements[static_cast<size_t>(e)];
-    const double p = sp.pressureInitial + ls.loadFactor * sp.pressure;
+    const double p = sp.at(ls.loadFactor, ls.time);
     if (p == 0.0) continue;
     gatherElement(el, q.data(), nullptr, idx.data(), nullptr);
     pressureElement(el.numNodes, q.data(), -p, f.data(), K.data());  // residual = f_int - f_ext

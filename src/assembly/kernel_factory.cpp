@@ -51,7 +51,12 @@ ElementKernels makeKernelFactory(const Model& model, BeamMass beamMass) {
   // per set: membrane pressures (the assembler's follower-load terms) and mass-proportional loads
   std::vector<SetLoads> setLoads(model.eprops.size());
   for (size_t set = 0; set < model.eprops.size(); ++set) {
-    if (const auto* mp = model.eprops[set].as<MembraneProperties>()) setLoads[set].pressure = {mp->pressure, mp->pressure_initial};
+    if (const auto* mp = model.eprops[set].as<MembraneProperties>()) {
+      setLoads[set].pressure = {mp->pressure, mp->pressure_initial, nullptr};
+      if (!mp->pressure_t.empty())  // checked by the scene reader
+        setLoads[set].pressure.pressureOfTime =
+            std::make_shared<const Expression>(Expression::compile(mp->pressure_t, "pressure"));
+    }
     if (const auto* a = model.eprops[set].as<AncfCable2DProperties>()) setLoads[set].acceleration = a->massProportionalLoad;
   }
   // ANCF parameters (and their compiled user functions) once per property set

@@ -67,9 +67,14 @@ struct LocalElement {
 using KernelFactory = std::function<std::unique_ptr<ElementKernel>(const Model&, const FeMesh&, int e)>;
 
 /// Surface pressure of an eprops set (membranes): pressureInitial + loadFactor * pressure, a follower
-/// load along the current element normal n = g1 x g2 / |g1 x g2| (node order, right-hand rule).
+/// load along the current element normal n = g1 x g2 / |g1 x g2| (node order, right-hand rule); with
+/// a function of time, pressure(t) at the load state's time (t = 0 in statics: its value there, ramped).
 struct SetPressure {
   double pressure = 0, pressureInitial = 0;
+  std::shared_ptr<const Expression> pressureOfTime;  ///< null: the constant `pressure`
+  double at(double loadFactor, double t) const {
+    return pressureInitial + loadFactor * (pressureOfTime ? pressureOfTime->timeJet(t).f : pressure);
+  }
 };
 
 /// Loads an eprops set puts on its elements besides their kernels (applied by the Assembler).

@@ -7,6 +7,7 @@
 
 #include "scene/nearest_name.hpp"
 #include "scene/scene_detail.hpp"
+#include "scene/time_fields.hpp"
 
 namespace sinew::scene {
 namespace {
@@ -186,7 +187,8 @@ void parseMembrane(const YAML::Node& n, const std::string& path, MembranePropert
       fail(childPath(path, "prestress_radial_axis"), "give either prestress_dir or prestress_radial_axis, not both");
     mp.prestress_radial_axis = getDirection(v, childPath(path, "prestress_radial_axis"));
   }
-  if (const YAML::Node v = n["pressure"]; v.IsDefined()) mp.pressure = getNumber(v, childPath(path, "pressure"), kLoad);
+  if (const YAML::Node v = n["pressure"]; v.IsDefined())
+    mp.pressure = getNumberOrTimeFunction(v, childPath(path, "pressure"), kLoad, &mp.pressure_t);
   if (const YAML::Node v = n["pressure_initial"]; v.IsDefined())
     mp.pressure_initial = getNumber(v, childPath(path, "pressure_initial"), kLoad);
 }

@@ -382,6 +382,14 @@ void parseRoot(const YAML::Node& root, const std::string& baseDir, Model& m, boo
                              "at t = 0 (ramped by the load factor); they follow t only in a time integration (opt.dynamics)");
         break;
       }
+  if (!m.opt.dynamics)
+    for (std::size_t set = 0; set < m.eprops.size(); ++set)
+      if (const auto* mp = m.eprops[set].as<MembraneProperties>(); mp && !mp->pressure_t.empty()) {
+        m.warnings.push_back(indexedPath("eprops", set) +
+                             ".pressure: a pressure given as a function of time acts in statics with its value at t = 0 "
+                             "(ramped by the load factor); it follows t only in a time integration (opt.dynamics)");
+        break;
+      }
   const YAML::Node ff = root["formfinding"];
   if (ff.IsDefined()) parseFormfinding(ff, ctx);
   parseSensors(root["sensors"], ctx);

@@ -12,11 +12,14 @@
    n0 = 1000 N/m, 1 kg/m^2), hit at its centre by a force pulse of 5 ms; after the pulse T + S stays
    constant to 1e-9 of itself (quads and, split, triangles), the default scheme's drift again checked
    larger.
-Pressure cannot be a function of time (a membrane `pressure` is a step load in dynamics), so the
-pulse is a nodal force.
-MEASURED (2 ranks, shared machine): chain T + S - W to 3.3e-13 of max T (2.42 J), 76 of 800 element-rows
-slack; the default scheme gains energy at the snaps (its max T 636 J, T + S - W off by 1.27 of it).
-Drum after the pulse: energy_momentum 2.5e-10 (quads), 2.4e-10 (triangles); default 1.7e-5, 1.2e-5."""
+3. A membrane flapping under a pressure pulse: the same drum (quads) under a uniform follower pressure
+   given as a function of time (eprops `pressure`: 200 sin^2(pi t / 5 ms) N/m^2 for 5 ms, then 0); it
+   must move (a pressure taken at t = 0 would be 0: no motion) and keep T + S after the pulse.
+MEASURED (2 ranks, 2026-11-27, after the energy_momentum changes of issue 27): chain T + S - W to 3.8e-13
+of max T (2.42 J), 76 of 800 element-rows slack; the default scheme gains energy at the snaps (its max T
+744 J, T + S - W off by 1.18 of it). Drum after the force pulse: energy_momentum 3.2e-10 (quads), 2.6e-10
+(triangles); default 1.7e-5, 1.2e-5. Drum under the pressure pulse: centre deflection up to 7.35e-3 m,
+T + S after the pulse 1.96e-12 (energy_momentum), 1.67e-4 (default)."""
 import numpy as np
 
 import sinewtest as st
@@ -82,4 +85,27 @@ for shape, elems in (("quads", quads), ("triangles", tris)):
     st.check(d["em"] < 1e-9, f"drum on {shape}, energy_momentum: T + S varies by {d['em']:.2e} after the pulse: 1e-9 expected")
     st.check(d["default"] > 100 * d["em"], f"drum on {shape}: the default scheme's drift {d['default']:.2e} should exceed "
              f"100 x energy_momentum's {d['em']:.2e}")
+
+# ---------------------------------------------------------------- 3. membrane flapping under a pressure pulse
+drum = {"title": "drum on quads, pressure pulse", "nodes": nodes, "elements": quads,
+        "nprops": {k: {"fix": True} for k in edge},
+        "eprops": [{"elems": list(range(1, len(quads) + 1)), "type": "membrane", "thickness": 1e-3, "emod": 1e9,
+                    "nu": 0.3, "dens": 1000, "prestress": [1e6, 1e6, 0],
+                    "pressure": f"t < {tp} ? 200*sin(pi*t/{tp})^2 : 0"}],
+        "opt": {"calcfreq": False, "dynamics": {"tend": 0.05, "dt": 5e-4, "spectral_radius": 1.0, "output_every": 2}}}
+d = {}
+for name, flags in (("em", em), ("default", default)):
+    h5, _ = st.run(f"emt_drum_pressure_{name}", drum, args=flags)
+    t, T, S, W, a, _ = energy(h5, after=tp)
+    with st.h5(h5) as f:
+        w = f["node/p"][:, centre - 1, 2]
+    E = (T + S)[a]
+    d[name] = np.abs(E - E[0]).max() / E[0]
+    print(f"  drum under a pressure pulse, {name}: centre |w| up to {np.abs(w).max():.4e} m; after the pulse "
+          f"T + S = {E[0]:.6g} J varies by {d[name]:.2e}")
+    st.check(np.abs(w).max() > 1e-3, f"drum under a pressure pulse, {name}: the pressure's time function moves the drum "
+             f"(centre |w| {np.abs(w).max():.2e} m)")
+st.check(d["em"] < 1e-9, f"drum under a pressure pulse, energy_momentum: T + S varies by {d['em']:.2e} after the pulse")
+st.check(d["default"] > 100 * d["em"], f"drum under a pressure pulse: the default scheme's drift {d['default']:.2e} "
+         f"should exceed 100 x energy_momentum's {d['em']:.2e}")
 st.done()

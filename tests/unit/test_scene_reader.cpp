@@ -274,3 +274,22 @@ TEST(SceneReader, BadScenes) {
 }
 
 }  // namespace
+
+// A membrane pressure given as a function of time: kept as text with its value at t = 0; a malformed
+// one names the field.
+TEST(SceneReader, MembranePressureOfTime) {
+  const std::string head = R"(
+nodes: [[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0]]
+elements: [[1, 2, 3, 4]]
+nprops: {1: {fix: true}, 2: {fix: true}, 3: {fix: true}, 4: {fix: true}}
+opt: {calcfreq: false, dynamics: {tend: 0.01, dt: 0.001}}
+eprops:
+  - {elems: [1], type: membrane, thickness: 1e-3, emod: 1e9, nu: 0.3, dens: 1000, prestress: [1e6, 1e6, 0], )";
+  const Model m = sinew::parseScene(head + "pressure: \"5 + 100*t\"}\n", sourceDir());
+  const auto* mp = m.eprops.at(0).as<sinew::MembraneProperties>();
+  ASSERT_NE(mp, nullptr);
+  EXPECT_EQ(mp->pressure_t, "5 + 100*t");
+  EXPECT_DOUBLE_EQ(mp->pressure, 5.0);
+  const SceneError e = parseError(head + "pressure: \"t < ? 2\"}\n");
+  EXPECT_EQ(e.path(), "eprops(1).pressure");
+}

@@ -140,6 +140,10 @@ DynamicAnalysis::DynamicAnalysis(Assembler& assembler, const DynamicsOptions& op
     for (const LocalElement& e : asm_.mesh().elements) state |= e.kernel->hasInertia() && e.kernel->massDependsOnState();
     MPI_Allreduce(MPI_IN_PLACE, &state, 1, MPI_INT, MPI_LOR, comm);
     stateMassSteps_ = state != 0;
+    if (stateMassSteps_)  // docs/dynamics.md "Energy-momentum scheme": the consistent mass' step is not a discrete gradient
+      SinewCallThrow(comm, PetscPrintf(comm, "  warning: -dynamics_scheme energy_momentum with the consistent beam mass: the "
+                                             "step does not keep the energy exactly (its inertia is taken at q_n+1) and stiff "
+                                             "beams can gain energy; -beam_mass lumped gives the exact energy-momentum step\n"));
   }
   // the scheme, with the multipliers (no rates) and the rotation unknowns (Lie-group form) of the model
   if (scheme == Scheme::TSAlpha2) {

@@ -50,4 +50,6 @@ st.check(dec["dH"] < 1e-9, "energy decay: angular momentum constant to 1e-9")
 # beam T + S grows 125-fold within 1.6 s, docs/dynamics.md "Not yet"; test_dynamics_spinup runs it)
 _, out = st.run("em_consistent", scene(4, 0.1, 1), np_=1, args=em)
 st.check("energy-momentum scheme" in out, "energy_momentum with the consistent beam mass: accepted")
+st.check("warning: -dynamics_scheme energy_momentum with the consistent beam mass" in out,
+         "energy_momentum with the consistent beam mass: the run warns that its energy is not exact")
 st.done()

@@ -82,6 +82,7 @@ void Cable3D::evaluate(const KernelInput& in, const KernelNeeds& needs, KernelOu
     out.K.assign(36, 0.0);
     if (needs.splitGeometric) out.Kg.assign(36, 0.0);
   }
+  if (needs.damping) out.D.assign(36, 0.0);  // stays zero while slack or form finding
   const Vec3 d = chord(q);
   const double l = norm(d);
   const Vec3 e = (1.0 / l) * d;
@@ -125,10 +126,7 @@ void Cable3D::addStrainRateDamping(const double* qdot, const Vec3& d, const Kern
     out.f[k] -= Nd * e[k];
     out.f[3 + k] += Nd * e[k];
   }
-  if (needs.damping) {
-    out.D.assign(36, 0.0);
-    addPair(out.D.data(), outer(e, e), c);
-  }
+  if (needs.damping) addPair(out.D.data(), outer(e, e), c);
   if (!needs.tangent) return;
   // d(N_d e)/d d = c/l (e w^T P) + N_d/l P: the first with the material part, the second (stress) with Kg
   const Mat3 P = identity3() - outer(e, e);

@@ -366,6 +366,8 @@ void Membrane::evaluate(const KernelInput& in, const KernelNeeds& needs, KernelO
     out.K.assign(n * n, 0.0);
     if (needs.splitGeometric) out.Kg.assign(n * n, 0.0);
   }
+  const bool damped = in.qdot && beta_ > 0.0 && !ff_;
+  if (needs.damping) out.D.assign(static_cast<size_t>(n) * n, 0.0);  // zero without strain-rate damping
   if (ff_) {
     if (!needs.tangent) {
       ffForce<double>(q, out.f.data());
@@ -397,8 +399,6 @@ void Membrane::evaluate(const KernelInput& in, const KernelNeeds& needs, KernelO
   // Elastic St. Venant-Kirchhoff: S = S0 + C E, P_i = S_ij f_j
   double* Kg = needs.splitGeometric ? out.Kg.data() : out.K.data();
   const double t = props_.thickness;
-  const bool damped = in.qdot && beta_ > 0.0;
-  if (damped && needs.damping) out.D.assign(static_cast<size_t>(n) * n, 0.0);
   for (int p = 0; p < ngp_; ++p) {
     const Point& P = pts_[p];
     Vec3 f1{}, f2{};

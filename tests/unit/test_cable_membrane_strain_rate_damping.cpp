@@ -161,6 +161,16 @@ TEST(CableMembraneStrainRateDamping, CableTangentsRigidMotionAndSlack) {
   const Dofs qs = {0.1, -0.2, 0.3, 0.8, 0.3, 0.1};
   ASSERT_TRUE(c.isSlack(qs.data()));
   EXPECT_EQ(maxAbs(force(c, qs, qd.data())), 0.0);
+  KernelInput in;
+  in.q = qs.data();
+  in.qdot = qd.data();
+  KernelNeeds nd;
+  nd.tangent = true;
+  nd.damping = true;
+  KernelOutput out;
+  c.evaluate(in, nd, out);
+  EXPECT_EQ(out.D.size(), 36u);  // the assembler reads D whenever it asks for it
+  EXPECT_EQ(maxAbs(out.D), 0.0);
 }
 
 TEST(CableMembraneStrainRateDamping, MembraneTangentsAndRigidMotion) {

@@ -82,6 +82,7 @@ void Cable3D::evaluate(const KernelInput& in, const KernelNeeds& needs, KernelOu
     out.K.assign(36, 0.0);
     if (needs.splitGeometric) out.Kg.assign(36, 0.0);
   }
+  if (needs.damping) out.D.assign(36, 0.0);  // stays zero while slack or form finding
   const Vec3 d = chord(q);
   const double l = norm(d);
   const Vec3 e = (1.0 / l) * d;
@@ -103,7 +104,7 @@ void Cable3D::evaluate(const KernelInput& in, const KernelNeeds& needs, KernelOu
   }
 
   const double N = N0_ + E_ * A_ * (l / L_ - 1.0);
-  if (N <= 0.0) return;  // slack: zero force and tangent (isSlack reports it)
+  if (N <= 0.0) return;  // slack: zero force, tangent and damping (isSlack reports it)
   for (int k = 0; k < 3; ++k) {
     out.f[k] = -N * e[k];
     out.f[3 + k] = N * e[k];
@@ -112,6 +113,28 @@ void Cable3D::evaluate(const KernelInput& in, const KernelNeeds& needs, KernelOu
     addPair(out.K.data(), outer(e, e), E_ * A_ / L_);
     addPair(Kg, identity3() - outer(e, e), N / l);
   }
+  if (in.qdot && beta_ > 0.0) addStrainRateDamping(in.qdot, d, needs, out);
+}
+
+void Cable3D::addStrainRateDamping(const double* qdot, const Vec3& d, const KernelNeeds& needs, KernelOutput& out) const {
+  // N_d = c ld, c = beta EA/L, ld = e . (v_q - v_p)
+  const double l = norm(d), c = beta_ * E_ * A_ / L_;
+  const Vec3 e = (1.0 / l) * d;
+  const Vec3 w{qdot[3] - qdot[0], qdot[4] - qdot[1], qdot[5] - qdot[2]};
+  const double ld = dot(e, w), Nd = c * ld;
+  for (int k = 0; k < 3; ++k) {
+    out.f[k] -= Nd * e[k];
+    out.f[3 + k] += Nd * e[k];
+  }
+  if (needs.damping) addPair(out.D.data(), outer(e, e), c);
+  if (!needs.tangent) return;
+  // d(N_d e)/d d = c/l (e w^T P) + N_d/l P: the first with the material part, the second (stress) with Kg
+  const Mat3 P = identity3() - outer(e, e);
+  Vec3 wP{};
+  for (int j = 0; j < 3; ++j)
+    for (int i = 0; i < 3; ++i) wP[j] += w[i] * P[3 * i + j];
+  addPair(out.K.data(), outer(e, wP), c / l);
+  addPair(needs.splitGeometric ? out.Kg.data() : out.K.data(), P, Nd / l);
 }
 
 void Cable3D::mass(const double* /*q*/, std::vector<double>& M) const {

@@ -5,6 +5,13 @@
 //   K_mat = EA/L [e e^T] (+/- blocks),  K_geo = N/l [I - e e^T] (+/- blocks).
 // A slack cable (N0 + EA (l/L - 1) <= 0) returns f = 0, K = 0; isSlack() reports it and the
 // assembler deals with the global singularity.
+// Strain-rate damping (setStrainRateDamping, -stiffness_damping corotated): with the velocities w =
+// v_q - v_p the axial force gains N_d = beta EA/L ld, ld = e . w (the rate of l, so of the strain
+// l/L - 1): f_d = N_d [-e; e], D = beta EA/L [e e^T] (+/- blocks) = beta K_mat, and at fixed w
+// d f_d/d x = beta EA/(L l) [e w^T P + ld P] (+/- blocks), P = I - e e^T. Rigid motion has ld = 0.
+// Like the stiffness it is proportional to, it is zero while the cable is slack, and it leaves the
+// geometric stiffness N/l P undamped (a prestressed cable's transverse motion is damped only
+// through the stretch it causes).
 // Form-finding mode (URS, Bletzinger & Ramm), prescribed force N = N0 (Cauchy, current config):
 //   delta W = lambda N delta l + (1 - lambda) A int_L S delta E dL,  S = N/A,  E = (l^2 - L^2)/(2 L^2)
 //   => f = [lambda N/l + (1 - lambda) N/L] (x_q - x_p) [-1; 1]        (force density at lambda = 0)
@@ -38,8 +45,16 @@ class Cable3D final : public ElementKernel, public FormFindingKernel {
   bool massDependsOnState() const override { return false; }
   /// U(l) = EA/(2L) (l - l_s)^2 above the slack length l_s = L (1 - N0/EA), 0 below (N0 l when EA = 0).
   bool strainEnergy(const double* q, double* energy) const override;
+  /// Strain-rate damping (file comment): beta (s) on the axial strain rate; beta = 0 switches it off.
+  bool setStrainRateDamping(double beta) override {
+    beta_ = beta;
+    return true;
+  }
+  bool strainRateDamped() const override { return beta_ > 0.0; }
+  bool hasDamping() const override { return beta_ > 0.0; }
   /// Energy-momentum step force (cable3d_step_force.cpp): +-N_bar (d0 + d1)/(l0 + l1) with the
-  /// discrete-gradient force N_bar = (U(l1) - U(l0))/(l1 - l0), exact through going slack.
+  /// discrete-gradient force N_bar = (U(l1) - U(l0))/(l1 - l0), exact through going slack; strain-rate
+  /// damping adds beta/h EA/L (l1 - l0) where taut at either end (dissipating beta/h EA/L (l1 - l0)^2).
   bool hasStepForce() const override { return true; }
   void stepForce(const StepForceInput& in, bool tangent, KernelOutput& out) const override;
   /// {N}: elastic axial force, or the URS force lambda N0 + (1 - lambda) N0 l/L in form finding.
@@ -105,10 +120,14 @@ class Cable3D final : public ElementKernel, public FormFindingKernel {
   bool isSlack(const double* q) const { return axialForce(q) <= 0.0; }
 
  private:
+  /// Adds the strain-rate damping force (and D, tangent as needed) of the taut cable with chord d.
+  void addStrainRateDamping(const double* qdot, const Vec3& d, const KernelNeeds& needs, KernelOutput& out) const;
+
   double A_, E_, dens_, N0_, L_;
   bool ff_ = false;
   double lambda_ = 0.0;
   double lambdaMax_ = 0.0, mueRelax_ = 0.0;
+  double beta_ = 0.0;  ///< strain-rate damping (s)
 };
 
 }  // namespace sinew

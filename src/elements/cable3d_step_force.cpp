@@ -9,7 +9,7 @@
 // and no moment about the mid positions (it is parallel to the mid chord). Taut at both ends N_bar =
 // N((l0 + l1)/2); a step through the slack length takes the secant of the kinked energy. The energy
 // decay xi adds xi/2 EA/L (l1 - l0) to N_bar where the cable is taut at either end (dissipating
-// xi/2 EA/L (l1 - l0)^2).
+// xi/2 EA/L (l1 - l0)^2); strain-rate damping beta likewise adds beta/h EA/L (l1 - l0).
 #include <cmath>
 
 #include "elements/cable3d.hpp"
@@ -58,6 +58,10 @@ void Cable3D::stepForce(const StepForceInput& in, bool tangent, KernelOutput& ou
     if ((taut0 || taut1) && in.decay > 0.0) {
       N += 0.5 * in.decay * k * (l1 - l0);
       dN += 0.5 * in.decay * k;
+    }
+    if ((taut0 || taut1) && beta_ > 0.0 && in.h > 0.0) {  // strain-rate damping: beta EA/L (l1 - l0)/h
+      N += beta_ / in.h * k * (l1 - l0);
+      dN += beta_ / in.h * k;
     }
   }
   const Vec3 w = d0 + d1;

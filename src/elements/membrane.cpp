@@ -366,6 +366,8 @@ void Membrane::evaluate(const KernelInput& in, const KernelNeeds& needs, KernelO
     out.K.assign(n * n, 0.0);
     if (needs.splitGeometric) out.Kg.assign(n * n, 0.0);
   }
+  const bool damped = in.qdot && beta_ > 0.0 && !ff_;
+  if (needs.damping) out.D.assign(static_cast<size_t>(n) * n, 0.0);  // zero without strain-rate damping
   if (ff_) {
     if (!needs.tangent) {
       ffForce<double>(q, out.f.data());
@@ -407,11 +409,21 @@ void Membrane::evaluate(const KernelInput& in, const KernelNeeds& needs, KernelO
     const double Ev[3] = {0.5 * (dot(f1, f1) - 1.0), 0.5 * (dot(f2, f2) - 1.0), dot(f1, f2)};
     double S[3];
     for (int i = 0; i < 3; ++i) S[i] = sAct_[i] + C_[i][0] * Ev[0] + C_[i][1] * Ev[1] + C_[i][2] * Ev[2];
+    // strain-rate damping: S_d = beta C Ed, Ed = [f1.v1, f2.v2, f1.v2 + f2.v1] (v_i = dv/dX^i)
+    Vec3 v1{}, v2{};
+    if (damped) {
+      for (int a = 0; a < nn_; ++a) {
+        v1 += P.dN[a][0] * nodeVec(in.qdot, a);
+        v2 += P.dN[a][1] * nodeVec(in.qdot, a);
+      }
+      const double Ed[3] = {dot(f1, v1), dot(f2, v2), dot(f1, v2) + dot(f2, v1)};
+      for (int i = 0; i < 3; ++i) S[i] += beta_ * (C_[i][0] * Ed[0] + C_[i][1] * Ed[1] + C_[i][2] * Ed[2]);
+    }
     const Vec3 P1 = S[0] * f1 + S[2] * f2, P2 = S[2] * f1 + S[1] * f2;
     const double wt = t * P.wJ0;
     for (int a = 0; a < nn_; ++a)
       for (int k = 0; k < 3; ++k) out.f[3 * a + k] += wt * (P.dN[a][0] * P1[k] + P.dN[a][1] * P2[k]);
-    if (!needs.tangent) continue;
+    if (!needs.tangent && !(damped && needs.damping)) continue;
     // B (Voigt strain variation per dof) and C B
     double B[3][12], CB[3][12];
     for (int a = 0; a < nn_; ++a)
@@ -423,9 +435,26 @@ void Membrane::evaluate(const KernelInput& in, const KernelNeeds& needs, KernelO
       }
     for (int i = 0; i < 3; ++i)
       for (int c = 0; c < n; ++c) CB[i][c] = C_[i][0] * B[0][c] + C_[i][1] * B[1][c] + C_[i][2] * B[2][c];
+    if (damped && needs.damping)  // D = d f_d / d v = beta t int B^T C B dA
+      for (int r = 0; r < n; ++r)
+        for (int c = 0; c < n; ++c)
+          out.D[n * r + c] += beta_ * wt * (B[0][r] * CB[0][c] + B[1][r] * CB[1][c] + B[2][r] * CB[2][c]);
+    if (!needs.tangent) continue;
     for (int r = 0; r < n; ++r)
       for (int c = 0; c < n; ++c)
         out.K[n * r + c] += wt * (B[0][r] * CB[0][c] + B[1][r] * CB[1][c] + B[2][r] * CB[2][c]);
+    if (damped) {  // S_d through Ed at fixed v: beta t int B^T C B(v) dA (the S_d stress part is in S below)
+      double CBv[3][12];
+      for (int a = 0; a < nn_; ++a)
+        for (int k = 0; k < 3; ++k) {
+          const int c = 3 * a + k;
+          const double Bv[3] = {P.dN[a][0] * v1[k], P.dN[a][1] * v2[k], P.dN[a][0] * v2[k] + P.dN[a][1] * v1[k]};
+          for (int i = 0; i < 3; ++i) CBv[i][c] = C_[i][0] * Bv[0] + C_[i][1] * Bv[1] + C_[i][2] * Bv[2];
+        }
+      for (int r = 0; r < n; ++r)
+        for (int c = 0; c < n; ++c)
+          out.K[n * r + c] += beta_ * wt * (B[0][r] * CBv[0][c] + B[1][r] * CBv[1][c] + B[2][r] * CBv[2][c]);
+    }
     for (int a = 0; a < nn_; ++a)
       for (int b = 0; b < nn_; ++b) {
         const double G = wt * (S[0] * P.dN[a][0] * P.dN[b][0] + S[1] * P.dN[a][1] * P.dN[b][1] +

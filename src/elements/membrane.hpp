@@ -8,6 +8,13 @@
 //   C = emod/(1 - nu^2) [1 nu 0; nu 1 0; 0 0 (1 - nu)/2]   (Voigt, engineering shear)
 //   delta W_int = t int_A S : delta E dA = t int_A sum_i P_i . delta f_i dA,   P_i = sum_j S_ij f_j
 //   K_mat = t int B^T C B dA,   K_geo = t int (sum_ij S_ij N_a,i N_b,j) I dA.
+// Strain-rate damping (setStrainRateDamping, -stiffness_damping corotated; elastic mode only): the
+//   Green-Lagrange rate Ed = B(x) v = [f1.v1, f2.v2, f1.v2 + f2.v1], v_i = sum_a N_a,i v_a (reference
+//   frame, frame-indifferent: zero for v = w x x + c) adds S_d = beta C Ed to S. So
+//   f_d = t int B^T S_d dA, D = beta t int B^T C B dA = beta K_mat, and at fixed v the tangent gains
+//   beta t int B^T C B(v) dA (B with f_i -> v_i) plus S_d in the geometric part. The prestress's
+//   geometric stiffness is not damped (out-of-plane motion of a prestressed membrane is damped only
+//   through the stretch it causes).
 // Form finding (URS, Bletzinger & Ramm 1999; Wuechner & Bletzinger 2005), homotopy factor lambda:
 //   delta W = lambda t int_a sigma : delta e da + (1 - lambda) t int_A S : delta E dA
 //   current term: sigma = s_kl e_k (x) e_l in the CURRENT prestress frame (e1, e2) of the current
@@ -151,8 +158,17 @@ class Membrane final : public ElementKernel, public FormFindingKernel {
   bool massDependsOnState() const override { return false; }
   /// U = t int (S0 . E + 1/2 E . C E) dA over the reference (elastic; false in form finding).
   bool strainEnergy(const double* q, double* energy) const override;
+  /// Strain-rate damping (file comment): beta (s) on the Green-Lagrange strain rate; 0 switches it off.
+  bool setStrainRateDamping(double beta) override {
+    beta_ = beta;
+    return true;
+  }
+  bool strainRateDamped() const override { return beta_ > 0.0; }
+  bool hasDamping() const override { return beta_ > 0.0; }
+
   /// Energy-momentum step force (membrane_step_force.cpp): the St. Venant-Kirchhoff force with the mean
-  /// stress S0 + C (E0 + E1)/2 on the mid deformation gradient (exact for the quadratic strains).
+  /// stress S0 + C (E0 + E1)/2 on the mid deformation gradient (exact for the quadratic strains), plus
+  /// beta/h C (E1 - E0) with strain-rate damping.
   bool hasStepForce() const override { return true; }
   void stepForce(const StepForceInput& in, bool tangent, KernelOutput& out) const override;
 
@@ -182,6 +198,7 @@ class Membrane final : public ElementKernel, public FormFindingKernel {
   double C_[3][3] = {};
   bool ff_ = false, xurs_ = false;
   double lambda_ = 0.0, lambdaMax_ = 0.0, mueRelax_ = 0.0, muMax_ = 0.0;
+  double beta_ = 0.0;  ///< strain-rate damping (s)
 };
 
 }  // namespace sinew

@@ -7,7 +7,8 @@
 // S = S0 + C (E0 + E1)/2 (+ xi/2 C (E1 - E0) with the energy decay xi) on B(fm) does the work
 // (S0 + C (E0 + E1)/2) . (E1 - E0) = U1 - U0 exactly (Simo & Tarnow 1992), with no resultant force or
 // moment about the mid positions (the force of a frame-invariant energy at the mid configuration).
-// The energy decay dissipates xi/2 (E1 - E0) . C (E1 - E0) at each integration point.
+// The energy decay dissipates xi/2 (E1 - E0) . C (E1 - E0) at each integration point; strain-rate damping
+// beta adds beta/h C (E1 - E0) to S (dissipating beta/h (E1 - E0) . C (E1 - E0); zero for a rigid step).
 #include "elements/membrane.hpp"
 
 namespace sinew {
@@ -60,10 +61,14 @@ void Membrane::stepForce(const StepForceInput& in, bool tangent, KernelOutput& o
       E[s][2] = dot(g1[s], g2[s]);
     }
     double S[3];
-    const double w0 = 0.5 * (1.0 - in.decay), w1 = 0.5 * (1.0 + in.decay);  // S0 + C ((E0 + E1)/2 + xi/2 (E1 - E0))
+    // S0 + C ((E0 + E1)/2 + (xi/2 + beta/h) (E1 - E0))
+    const double bh = beta_ > 0.0 && in.h > 0.0 ? beta_ / in.h : 0.0;
+    const double w0 = 0.5 * (1.0 - in.decay), w1 = 0.5 * (1.0 + in.decay);
     for (int i = 0; i < 3; ++i) {
       S[i] = sAct_[i];
       for (int j = 0; j < 3; ++j) S[i] += C_[i][j] * (w0 * E[0][j] + w1 * E[1][j]);
+      if (bh > 0.0)
+        for (int j = 0; j < 3; ++j) S[i] += bh * C_[i][j] * (E[1][j] - E[0][j]);
     }
     const Vec3 m1 = 0.5 * (g1[0] + g1[1]), m2 = 0.5 * (g2[0] + g2[1]);
     const Vec3 P1 = S[0] * m1 + S[2] * m2, P2 = S[2] * m1 + S[1] * m2;
@@ -71,7 +76,7 @@ void Membrane::stepForce(const StepForceInput& in, bool tangent, KernelOutput& o
     for (int a = 0; a < nn_; ++a)
       for (int k = 0; k < 3; ++k) out.f[3 * a + k] += wt * (P.dN[a][0] * P1[k] + P.dN[a][1] * P2[k]);
     if (!tangent) continue;
-    // d/dq1: the stress through E1 (w1 C B(f(q1))) on B(fm), and the mid gradient (1/2) with S
+    // d/dq1: the stress through E1 ((w1 + beta/h) C B(f(q1))) on B(fm), and the mid gradient (1/2) with S
     double Bm[3][12], CB1[3][12];
     for (int a = 0; a < nn_; ++a)
       for (int k = 0; k < 3; ++k) {
@@ -80,7 +85,7 @@ void Membrane::stepForce(const StepForceInput& in, bool tangent, KernelOutput& o
         Bm[1][c] = P.dN[a][1] * m2[k];
         Bm[2][c] = P.dN[a][0] * m2[k] + P.dN[a][1] * m1[k];
         const double B1[3] = {P.dN[a][0] * g1[1][k], P.dN[a][1] * g2[1][k], P.dN[a][0] * g2[1][k] + P.dN[a][1] * g1[1][k]};
-        for (int i = 0; i < 3; ++i) CB1[i][c] = w1 * (C_[i][0] * B1[0] + C_[i][1] * B1[1] + C_[i][2] * B1[2]);
+        for (int i = 0; i < 3; ++i) CB1[i][c] = (w1 + bh) * (C_[i][0] * B1[0] + C_[i][1] * B1[1] + C_[i][2] * B1[2]);
       }
     for (int r = 0; r < n; ++r)
       for (int c = 0; c < n; ++c)

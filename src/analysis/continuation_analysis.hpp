@@ -115,10 +115,10 @@ class ContinuationAnalysis {
   /// The corrector from the predicted (U, lambda) of a step from (U0, lambda0) of size ds.
   PetscErrorCode correct(Vec U, double* lambda, Vec U0, double lambda0, double ds, double qnorm, double jnorm,
                          KSPConvergedReason* kr, bool* ok, int* its);
-  /// The coarser level's path (handover_->guesses) where it meets the arc-length constraint of the step
-  /// from (U0, lambda0): |P - U0|^2 + w (lambda_P - lambda0)^2 = ds^2, between the first two of its
-  /// points after the one nearest to U0 that straddle it (linear in the unknowns and the load factor);
-  /// into (G, *lambdaG) when found (the same on every rank).
+  /// The start of the corrector of a step of size ds from (U0, lambda0) from the coarser level's path
+  /// (handover_->guesses, linear between its points): (U0, lambda0) plus the path's increment from C0,
+  /// its point nearest to U0, to C1, where it leaves the ball |P - C0|^2 + w (lambda_P - lambda_C0)^2 =
+  /// ds^2; into (G, *lambdaG) when found (the same on every rank).
   PetscErrorCode coarsePathGuess(Vec U0, double lambda0, double ds, double w, Vec G, double* lambdaG, bool* found);
   /// Appends the state at (U, lambda) to handover_->record.
   PetscErrorCode recordPoint(Vec U, double lambda);

@@ -52,7 +52,8 @@ void midpoint(NodeKind kind, const Vec3& Xa, const Vec3& Xb, const double* sa, c
 }  // namespace
 
 bool reusesStates(const Model& m) {
-  return !refinesTime(m) && !hasMembranes(m) && !m.opt.continuation && !m.formfinding;
+  const bool arcLength = !m.opt.continuation || m.opt.continuation->method != "displacement";
+  return !refinesTime(m) && !hasMembranes(m) && arcLength && !m.formfinding;
 }
 
 std::vector<LevelState> interpolateStates(const Model& coarse, const Model& fine, const std::vector<LevelState>& record) {

@@ -1,6 +1,7 @@
 // Reuse between the levels of a -target_error study (docs/accuracy.md, "Reuse between levels"): the
-// converged states of a level's load steps, interpolated onto the next level's nodes, are that level's
-// Newton starts (analysis/statics_handover.hpp).
+// converged states of a level's load steps (or path points), interpolated onto the next level's nodes,
+// are that level's Newton starts (analysis/statics_handover.hpp; the path's predictor,
+// ContinuationAnalysis::coarsePathGuess).
 #pragma once
 #include <vector>
 
@@ -9,8 +10,9 @@
 
 namespace sinew::accuracy {
 
-/// The levels of `m` can hand their states on: load-stepped statics refined by nbeams (not the time
-/// step of dynamics, not the split of membranes, not a path: its steps differ per level).
+/// The levels of `m` can hand their states on: load-stepped statics or an arc-length path refined by
+/// nbeams (not the time step of dynamics, not the split of membranes, not displacement control, not
+/// form finding).
 bool reusesStates(const Model& m);
 
 /// The states `record` of level `coarse` on the FE nodes of level `fine` (nbeams x2 or equal per scene

@@ -40,7 +40,7 @@ struct LevelRecord {
   long unknowns = 0;   ///< with opt.dynamics: unknowns x time steps
   double seconds = 0;
   long newtonIterations = -1;  ///< every phase's Newton iterations of the level's run (-1: none reported)
-  int guessesUsed = 0;         ///< load increments that started from the coarser level's state
+  int guessesUsed = 0;         ///< load increments (path steps) that started from the coarser level's state (path)
   bool toFile = false;
   std::vector<std::vector<double>> values;  ///< per quantity
   std::vector<Estimate> estimates;          ///< per quantity, from this level and the two before (level >= 2)

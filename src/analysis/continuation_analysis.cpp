@@ -397,6 +397,70 @@ PetscErrorCode ContinuationAnalysis::pathSlopes(Vec U, double lambda, Vec dUlast
 
 // One path step from (U, lambda) with arc length (or displacement increment) ds. On success U and
 // lambda hold the new point; on failure they are unchanged.
+PetscErrorCode ContinuationAnalysis::correct(Vec U, double* lambda, Vec U0, double lambda0, double ds, double qnorm,
+                                             double jnorm, KSPConvergedReason* kr, bool* ok, int* its) {
+  PetscFunctionBeginUser;
+  const bool displacement = opt_.method == "displacement";
+  const double psi2 = opt_.constraint == "spherical" ? opt_.psi * opt_.psi : 0.0;
+  for (int k = 0; k < maxIts_ && *kr >= 0 && std::isfinite(*lambda); ++k) {
+    LoadState ls;
+    ls.loadFactor = ls.time = *lambda;
+    PetscCall(asm_.residual(U, ls, R_));
+    PetscReal rnorm;
+    PetscCall(VecNorm(R_, NORM_2, &rnorm));
+    if (!std::isfinite(rnorm)) break;
+    // the corrector's tolerance is relative to the load vector |dR/dlambda| max(1, |lambda|)
+    if (newtonTest_.judge(iterate(k, rnorm, rtol_ * qnorm * std::max(1.0, std::abs(*lambda)), jnorm)) > 0) {
+      *ok = true;
+      lastResidual_ = rnorm;
+      break;
+    }
+    ++*its;
+    PetscCall(loadDerivative(U, *lambda, q_));
+    PetscCall(factor(U, *lambda));
+    PetscCall(VecScale(R_, -1.0));
+    PetscCall(KSPSolve(ksp_, R_, duR_));
+    PetscCall(KSPGetConvergedReason(ksp_, kr));
+    if (*kr < 0) break;
+    PetscCall(KSPSolve(ksp_, q_, duq_));
+    PetscCall(VecWAXPY(dU_, -1.0, U0, U));  // increment so far
+    double dll = 0.0;
+    if (displacement) {
+      PetscReal er, eq, eu;
+      PetscCall(VecDot(duR_, e_, &er));
+      PetscCall(VecDot(duq_, e_, &eq));
+      PetscCall(VecDot(dU_, e_, &eu));
+      if (eq == 0.0) break;
+      dll = (ds - eu - er) / eq;
+    } else {
+      // |dU + du_R + dll du_q|^2 + psi^2 |q|^2 (dl + dll)^2 = ds^2
+      PetscCall(VecAXPY(dU_, 1.0, duR_));  // dU + du_R
+      PetscReal aa, bb, cc;
+      PetscCall(VecDot(duq_, duq_, &aa));
+      PetscCall(VecDot(duq_, dU_, &bb));
+      PetscCall(VecDot(dU_, dU_, &cc));
+      const double dlt = *lambda - lambda0, w = psi2 * qnorm * qnorm;
+      const double A = aa + w, B = 2.0 * (bb + w * dlt), C = cc + w * dlt * dlt - ds * ds;
+      const double disc = B * B - 4.0 * A * C;
+      if (!(disc >= 0.0) || A <= 0.0) break;  // no real root: the step is cut
+      const double sq = std::sqrt(disc);
+      const double r1 = (-B + sq) / (2.0 * A), r2 = (-B - sq) / (2.0 * A);
+      // the root whose increment makes the smaller angle with the increment so far (Crisfield 1981)
+      PetscReal d0;
+      PetscCall(VecWAXPY(work_, -1.0, U0, U));
+      PetscCall(VecDot(work_, dU_, &d0));
+      PetscReal dq;
+      PetscCall(VecDot(work_, duq_, &dq));
+      const double c1 = d0 + r1 * dq + w * dlt * (dlt + r1), c2 = d0 + r2 * dq + w * dlt * (dlt + r2);
+      dll = c1 >= c2 ? r1 : r2;
+    }
+    PetscCall(VecAXPY(U, 1.0, duR_));
+    PetscCall(VecAXPY(U, dll, duq_));
+    *lambda += dll;
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode ContinuationAnalysis::step(Vec U, double* lambda, double ds, Vec dUprev, double dlPrev, bool first,
                                           bool* ok, int* its) {
   PetscFunctionBeginUser;
@@ -440,63 +504,24 @@ PetscErrorCode ContinuationAnalysis::step(Vec U, double* lambda, double ds, Vec 
     PetscCall(VecAXPY(U, dl, duq_));
     *lambda = lambda0 + dl;
   }
-  // corrector
-  for (int k = 0; k < maxIts_ && kr >= 0 && std::isfinite(*lambda); ++k) {
-    LoadState ls;
-    ls.loadFactor = ls.time = *lambda;
-    PetscCall(asm_.residual(U, ls, R_));
-    PetscReal rnorm;
-    PetscCall(VecNorm(R_, NORM_2, &rnorm));
-    if (!std::isfinite(rnorm)) break;
-    // the corrector's tolerance is relative to the load vector |dR/dlambda| max(1, |lambda|)
-    if (newtonTest_.judge(iterate(k, rnorm, rtol_ * qnorm * std::max(1.0, std::abs(*lambda)), jnorm)) > 0) {
-      *ok = true;
-      lastResidual_ = rnorm;
-      break;
-    }
-    ++*its;
-    PetscCall(loadDerivative(U, *lambda, q_));
-    PetscCall(factor(U, *lambda));
-    PetscCall(VecScale(R_, -1.0));
-    PetscCall(KSPSolve(ksp_, R_, duR_));
-    PetscCall(KSPGetConvergedReason(ksp_, &kr));
-    if (kr < 0) break;
-    PetscCall(KSPSolve(ksp_, q_, duq_));
-    PetscCall(VecWAXPY(dU_, -1.0, U0, U));  // increment so far
-    double dll = 0.0;
-    if (displacement) {
-      PetscReal er, eq, eu;
-      PetscCall(VecDot(duR_, e_, &er));
-      PetscCall(VecDot(duq_, e_, &eq));
-      PetscCall(VecDot(dU_, e_, &eu));
-      if (eq == 0.0) break;
-      dll = (ds - eu - er) / eq;
-    } else {
-      // |dU + du_R + dll du_q|^2 + psi^2 |q|^2 (dl + dll)^2 = ds^2
-      PetscCall(VecAXPY(dU_, 1.0, duR_));  // dU + du_R
-      PetscReal aa, bb, cc;
-      PetscCall(VecDot(duq_, duq_, &aa));
-      PetscCall(VecDot(duq_, dU_, &bb));
-      PetscCall(VecDot(dU_, dU_, &cc));
-      const double dlt = *lambda - lambda0, w = psi2 * qnorm * qnorm;
-      const double A = aa + w, B = 2.0 * (bb + w * dlt), C = cc + w * dlt * dlt - ds * ds;
-      const double disc = B * B - 4.0 * A * C;
-      if (!(disc >= 0.0) || A <= 0.0) break;  // no real root: the step is cut
-      const double sq = std::sqrt(disc);
-      const double r1 = (-B + sq) / (2.0 * A), r2 = (-B - sq) / (2.0 * A);
-      // the root whose increment makes the smaller angle with the increment so far (Crisfield 1981)
-      PetscReal d0;
-      PetscCall(VecWAXPY(work_, -1.0, U0, U));
-      PetscCall(VecDot(work_, dU_, &d0));
-      PetscReal dq;
-      PetscCall(VecDot(work_, duq_, &dq));
-      const double c1 = d0 + r1 * dq + w * dlt * (dlt + r1), c2 = d0 + r2 * dq + w * dlt * (dlt + r2);
-      dll = c1 >= c2 ? r1 : r2;
-    }
-    PetscCall(VecAXPY(U, 1.0, duR_));
-    PetscCall(VecAXPY(U, dll, duq_));
-    *lambda += dll;
+  // the coarser level's path where it meets the constraint, else (and when its corrector fails) the tangent
+  bool guessed = false;
+  Vec Upred = nullptr;
+  const double lambdaPred = *lambda;
+  if (kr >= 0 && !displacement && handover_ && !handover_->guesses.empty()) {
+    PetscCall(VecDuplicate(U, &Upred));
+    PetscCall(VecCopy(U, Upred));
+    PetscCall(coarsePathGuess(U0, lambda0, ds, psi2 * qnorm * qnorm, U, lambda, &guessed));
   }
+  PetscCall(correct(U, lambda, U0, lambda0, ds, qnorm, jnorm, &kr, ok, its));
+  if (guessed && *ok) ++handover_->guessesUsed;
+  if (guessed && !*ok) {
+    PetscCall(VecCopy(Upred, U));
+    *lambda = lambdaPred;
+    kr = KSP_CONVERGED_ITS;
+    PetscCall(correct(U, lambda, U0, lambda0, ds, qnorm, jnorm, &kr, ok, its));
+  }
+  PetscCall(VecDestroy(&Upred));
   if (!*ok) {
     PetscCall(VecCopy(U0, U));
     *lambda = lambda0;
@@ -539,6 +564,7 @@ PetscErrorCode ContinuationAnalysis::run(Vec U, const PointCallback& onPoint, bo
       PetscFunctionReturn(PETSC_SUCCESS);
     }
   }
+  if (handover_ && !resumed) PetscCall(recordPoint(U, lambda));  // the path's start, for the next level
   int prevNeg = resumed ? resumePrevNeg_ : -1;
   if (inertia_ && !resumed) PetscCall(negativeEigenvalues(U, 0.0, &prevNeg, nullptr));
   const std::string sizeName = opt_.method == "displacement" ? "displacement increment" : "arc length";
@@ -624,6 +650,7 @@ PetscErrorCode ContinuationAnalysis::run(Vec U, const PointCallback& onPoint, bo
         if (inertia_) PetscCall(pathSlopes(U, lambda, dUprev, dlPrev, &b));
         if (inertia_) PetscCall(negativeEigenvalues(U, lambda, &b.negativeEigenvalues, &b));
         points_.push_back(b);
+        if (handover_) PetscCall(recordPoint(U, lambda));
         prevNeg = b.negativeEigenvalues;
         switchedAt_ = b.step;
         PetscCall(PetscPrintf(comm, "  branch switched at path point %d (load factor %.6g)\n", b.step, lambda));
@@ -655,6 +682,7 @@ PetscErrorCode ContinuationAnalysis::run(Vec U, const PointCallback& onPoint, bo
     if (inertia_) PetscCall(pathSlopes(U, lambda, dUprev, dlPrev, &p));
     if (inertia_) PetscCall(negativeEigenvalues(U, lambda, &p.negativeEigenvalues, &p));
     points_.push_back(p);
+    if (handover_) PetscCall(recordPoint(U, lambda));
     if (inertia_ && prevNeg >= 0 && p.negativeEigenvalues != prevNeg) classify();
     prevNeg = p.negativeEigenvalues;
     ckDs_ = ds;

@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "analysis/statics_handover.hpp"
 #include "assembly/assembler.hpp"
 #include "settings/settings.hpp"
 #include "sinew/model.hpp"
@@ -67,6 +68,10 @@ class ContinuationAnalysis {
   /// The start state already carries the initial loads (a form-found shape: form finding applied the
   /// prescribed initial motions): equilibrium under them is found from it in one increment, not ramped.
   void setStartCarriesInitialLoads(bool v) { startCarriesInitial_ = v; }
+  /// A -target_error level (docs/accuracy.md "Reuse between levels"): the path records its start state
+  /// and every converged point into h->record, and an arc-length step predicts from the coarser level's
+  /// path h->guesses (interpolated onto this level's nodes) where it reaches the step's constraint.
+  void setHandover(StaticsHandover* h) { handover_ = h; }
 
   /// Checkpoint (-restart): the path's state after the last reported point as a fixed-size row of
   /// checkpointSize() values (header, the points so far, the critical points), and the last increment
@@ -107,6 +112,16 @@ class ContinuationAnalysis {
   /// Path tangent at a converged point, oriented along dUlast: d lambda / ds and d u_control / ds.
   PetscErrorCode pathSlopes(Vec U, double lambda, Vec dUlast, double dlLast, PathPoint* p);
   PetscErrorCode step(Vec U, double* lambda, double ds, Vec dUprev, double dlPrev, bool first, bool* ok, int* its);
+  /// The corrector from the predicted (U, lambda) of a step from (U0, lambda0) of size ds.
+  PetscErrorCode correct(Vec U, double* lambda, Vec U0, double lambda0, double ds, double qnorm, double jnorm,
+                         KSPConvergedReason* kr, bool* ok, int* its);
+  /// The start of the corrector of a step of size ds from (U0, lambda0) from the coarser level's path
+  /// (handover_->guesses, linear between its points): (U0, lambda0) plus the path's increment from C0,
+  /// its point nearest to U0, to C1, where it leaves the ball |P - C0|^2 + w (lambda_P - lambda_C0)^2 =
+  /// ds^2; into (G, *lambdaG) when found (the same on every rank).
+  PetscErrorCode coarsePathGuess(Vec U0, double lambda0, double ds, double w, Vec G, double* lambdaG, bool* found);
+  /// Appends the state at (U, lambda) to handover_->record.
+  PetscErrorCode recordPoint(Vec U, double lambda);
   /// The model's size in the arc-length metric: |s| with s = D (bounding-box diagonal of the nodes) at
   /// every free translation and 1 at every free rotation or ANCF slope (collective).
   double modelPathSize() const;
@@ -154,6 +169,8 @@ class ContinuationAnalysis {
   std::vector<CriticalPoint> critical_;
   std::string failure_;
   const bool* stop_ = nullptr;
+  StaticsHandover* handover_ = nullptr;
+  std::size_t guessCursor_ = 0;  ///< the coarser path's point nearest to the last step's start
 };
 
 }  // namespace sinew

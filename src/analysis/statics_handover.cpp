@@ -1,4 +1,4 @@
-// StaticAnalysis and a -target_error study's levels (analysis/statics_handover.hpp): the record of the
+// StaticAnalysis, ContinuationAnalysis and a -target_error study's levels (analysis/statics_handover.hpp): the record of the
 // converged states and the Newton start from a coarser level's state.
 #include <cmath>
 
@@ -7,36 +7,30 @@
 
 namespace sinew {
 
-PetscErrorCode StaticAnalysis::recordState(double lambda) {
+PetscErrorCode gatherLevelState(const Assembler& assembler, double lambda, LevelState* state) {
   PetscFunctionBeginUser;
-  const DistributedMesh& mesh = asm_.mesh();
-  LevelState st;
+  const DistributedMesh& mesh = assembler.mesh();
+  LevelState& st = *state;
   st.loadFactor = lambda;
   st.nodes.assign(12 * static_cast<std::size_t>(mesh.numFeNodes), 0.0);
   for (int i = 0; i < mesh.numOwnedNodes; ++i) {  // every FE node is owned by one rank
-    const double* s = asm_.nodeState(i);
+    const double* s = assembler.nodeState(i);
     std::copy(s, s + 12, st.nodes.begin() + 12 * mesh.nodes[static_cast<std::size_t>(i)].gid);
   }
   PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, st.nodes.data(), static_cast<int>(st.nodes.size()), MPI_DOUBLE, MPI_SUM,
                              mesh.comm));
-  handover_->record.push_back(std::move(st));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode StaticAnalysis::startFromGuess(Vec U, double lambda, bool* used) {
+PetscErrorCode setUnknownsFromState(const Assembler& assembler, const LevelState& guess, Vec U) {
   PetscFunctionBeginUser;
-  *used = false;
-  const LevelState* guess = nullptr;  // the guesses are the same on every rank
-  for (const LevelState& g : handover_->guesses)
-    if (std::abs(g.loadFactor - lambda) <= 1e-12 * std::max(1.0, std::abs(lambda))) guess = &g;
-  if (!guess) PetscFunctionReturn(PETSC_SUCCESS);
-  const DistributedMesh& mesh = asm_.mesh();
-  const std::vector<Mat3> Rref = asm_.referenceRotations();
+  const DistributedMesh& mesh = assembler.mesh();
+  const std::vector<Mat3> Rref = assembler.referenceRotations();
   PetscScalar* u;
   PetscCall(VecGetArray(U, &u));
   for (int i = 0; i < mesh.numOwnedNodes; ++i) {
     const LocalNode& n = mesh.nodes[static_cast<std::size_t>(i)];
-    const double* g = &guess->nodes[12 * static_cast<std::size_t>(n.gid)];
+    const double* g = &guess.nodes[12 * static_cast<std::size_t>(n.gid)];
     auto set = [&](int k, double value) {
       if (n.status[k] == DofStatus::Free && n.dof[k] >= 0) u[n.dof[k]] = value;
     };
@@ -52,6 +46,25 @@ PetscErrorCode StaticAnalysis::startFromGuess(Vec U, double lambda, bool* used) 
     for (int k = 0; k < 3; ++k) set(3 + k, theta[k]);
   }
   PetscCall(VecRestoreArray(U, &u));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode StaticAnalysis::recordState(double lambda) {
+  PetscFunctionBeginUser;
+  LevelState st;
+  PetscCall(gatherLevelState(asm_, lambda, &st));
+  handover_->record.push_back(std::move(st));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode StaticAnalysis::startFromGuess(Vec U, double lambda, bool* used) {
+  PetscFunctionBeginUser;
+  *used = false;
+  const LevelState* guess = nullptr;  // the guesses are the same on every rank
+  for (const LevelState& g : handover_->guesses)
+    if (std::abs(g.loadFactor - lambda) <= 1e-12 * std::max(1.0, std::abs(lambda))) guess = &g;
+  if (!guess) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(setUnknownsFromState(asm_, *guess, U));
   ++handover_->guessesUsed;
   *used = true;
   PetscFunctionReturn(PETSC_SUCCESS);

@@ -4,9 +4,13 @@
 // (accuracy/level_reuse.hpp), and the fine level's Newton starts each increment that ends at a
 // recorded load factor from that state instead of the last converged one (or the predictor).
 #pragma once
+#include <petscvec.h>
+
 #include <vector>
 
 namespace sinew {
+
+class Assembler;
 
 /// Node states of every FE node of a level, 12 doubles per node in FE node order (gid): x and the
 /// rotation R (row-major) of a Frame6 node, x alone of a Point3 node, (x, y, slope x, slope y) of an
@@ -21,8 +25,15 @@ struct StaticsHandover {
   std::vector<LevelState> record;
   /// read by the level's statics: the coarser level's states on this level's nodes (empty: none)
   std::vector<LevelState> guesses;
-  /// increments whose Newton started from a guess (this level's run)
+  /// increments (path steps) whose Newton started from a guess and converged (this level's run)
   int guessesUsed = 0;
 };
+
+/// The node states of the assembler's current evaluation (every FE node, every rank) at load factor
+/// lambda (collective).
+PetscErrorCode gatherLevelState(const Assembler& assembler, double lambda, LevelState* state);
+/// U <- the state g on the free DOFs (rotations relative to the assembler's reference rotations); the
+/// other entries of U stay.
+PetscErrorCode setUnknownsFromState(const Assembler& assembler, const LevelState& g, Vec U);
 
 }  // namespace sinew

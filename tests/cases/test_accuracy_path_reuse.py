@@ -1,0 +1,51 @@
+"""-target_error's reuse between the levels of a path (docs/accuracy.md, "Reuse between levels"), 2 ranks:
+an arc-length step of a level predicts from the coarser level's path, interpolated onto its nodes: its
+increment over the step's arc length from the coarser path's point nearest to the step's start. Lee's
+frame from 10 elements to v = -0.5 (tests/cases/test_accuracy_path.py's scene with ds 0.1), target 1e-3,
+with -accuracy_reuse 1 (default) and 0: the same levels and limiting quantities, the first limit load of
+every level within 1e-6 relative (measured 8e-8: the levels' steps differ, see the docs; the limit point is
+located by the cubic Hermite over the step that straddles it), the same worst estimates to 1e-3 relative,
+fewer Newton iterations (/accuracy newton_iterations) in all and on the finest level with reuse, whose steps
+started from the coarser path (/accuracy reused_starts)."""
+import numpy as np
+
+import sinewtest as st
+
+
+def lee():
+    c = {"method": "arclength", "ds": 0.1, "ds_max": 0.3, "node": 3, "direction": "y", "max_steps": 40,
+         "stop_displacement": -0.5}
+    beam = {"flex": [1, 2, 3, 4, 5, 6], "emod": 72e9, "smod": 27.7e9, "cshape": "rect", "dim": [0.03, 0.02],
+            "orien": [0, 0, 1]}
+    return {"title": "Lee's frame, reuse between levels", "nodes": [[0, 0, 0], [0, 1.2, 0], [0.24, 1.2, 0], [1.2, 1.2, 0]],
+            "elements": [[1, 2], [2, 3], [3, 4]],
+            "nprops": {1: {"fix_pos": True}, 4: {"fix_pos": True}, 2: {"fix_z": True},
+                       3: {"fix_z": True, "force": [0, -1000.0, 0]}},
+            "eprops": [dict(beam, elems=[1], nbeams=5), dict(beam, elems=[2], nbeams=1), dict(beam, elems=[3], nbeams=4)],
+            "opt": {"calccompl": False, "continuation": c}}
+
+
+runs = {}
+for reuse in (1, 0):
+    path, out = st.run(f"accuracy_path_reuse_{reuse}", lee(), args=["-target_error", "1e-3", "-accuracy_reuse", str(reuse)])
+    with st.h5(path) as f:
+        g = f["accuracy"]
+        names = [n for n in g.attrs["quantities"].split("\n") if n]
+        runs[reuse] = {k: g[k][:] for k in ("level", "worst_error", "limiting", "value", "newton_iterations", "reused_starts")}
+        runs[reuse]["limit"] = g["value"][:, names.index("limit 1"), 0]
+on, off = runs[1], runs[0]
+its_on, its_off = int(on["newton_iterations"].sum()), int(off["newton_iterations"].sum())
+change = float(np.max(np.abs(on["limit"] / off["limit"] - 1)))
+print(f"  Lee's frame: levels {list(on['level'])}, Newton iterations per level {list(on['newton_iterations'])} with reuse, "
+      f"{list(off['newton_iterations'])} without ({its_on} against {its_off}); steps from the coarser path "
+      f"{list(on['reused_starts'])}; limit loads {list(on['limit'])}, largest relative change {change:.1e}")
+st.check(np.array_equal(on["level"], off["level"]), "the same levels")
+st.check(np.array_equal(on["limiting"], off["limiting"]), "the same limiting quantities")
+st.check(change < 1e-6, f"the limit loads do not depend on the reuse beyond 1e-6 ({change:.1e})")
+st.check(np.allclose(on["worst_error"][2:], off["worst_error"][2:], rtol=1e-3, atol=0), "the same worst estimates")
+st.check(np.all(off["reused_starts"] == 0), "-accuracy_reuse 0 starts no step from the coarser path")
+st.check(np.all(on["reused_starts"][1:] > 0), "with reuse every level after the first predicts from the coarser path")
+st.check(its_on < its_off, f"reuse saves Newton iterations ({its_on} against {its_off})")
+fine_on, fine_off = int(on["newton_iterations"][-1]), int(off["newton_iterations"][-1])
+st.check(fine_on < 0.95 * fine_off, f"reuse saves Newton iterations on the finest level ({fine_on} against {fine_off})")
+st.done()

@@ -18,13 +18,13 @@
 #include <vector>
 
 #include "elements/beam_section.hpp"
-#include "sinew/element_kernel.hpp"
+#include "elements/strain_rate_damped.hpp"
 
 namespace sinew {
 
 enum class BeamMode { Flexible, Rigid, Released };
 
-class BeamCorotational : public ElementKernel {
+class BeamCorotational : public StrainRateDampedKernel {
  public:
   /// Xp, Xq: initial node positions; orien: local y direction (default global z, or global y when the
   /// chord is parallel to z); modes: per deformation mode 1..6; constraintScale multiplies every
@@ -59,15 +59,9 @@ class BeamCorotational : public ElementKernel {
   int numMixedStresses() const override { return 6; }
   void linearizedStresses(const double* q0, const double* q1, double* sigma) const override;
 
-  /// Stiffness-proportional damping on the strain rates (Kelvin-Voigt, docs/dynamics.md "Damping"):
-  /// sigma_d = beta S epsd with epsd = grad eps . qdot, f_d = grad eps^T sigma_d; zero for every rigid
-  /// velocity field at the current state (the strains are invariant under rigid motion).
-  bool setStrainRateDamping(double beta) override {
-    beta_ = beta;
-    return true;
-  }
-  bool strainRateDamped() const override { return beta_ > 0.0; }
-  bool hasDamping() const override { return beta_ > 0.0; }
+  // Stiffness-proportional damping on the strain rates (Kelvin-Voigt, docs/dynamics.md "Damping";
+  // StrainRateDampedKernel): sigma_d = beta S epsd with epsd = grad eps . qdot, f_d = grad eps^T sigma_d;
+  // zero for every rigid velocity field at the current state (the strains are invariant under rigid motion).
 
   /// Energy-momentum step force (beam_step_force.cpp): f = B^T sigma with B (x1 - x0, theta_c) =
   /// eps(q1) - eps(q0) exactly (products of averaged vectors; theta_c the Cayley rotation vector) and
@@ -137,7 +131,6 @@ class BeamCorotational : public ElementKernel {
   bool lumped_ = false;
   bool complete_ = true;  ///< complete consistent mass (inertiaForce) in dynamics
   double scale_ = 1.0;
-  double beta_ = 0.0;  ///< strain-rate damping (s)
   int nRigid_ = 0;
   std::array<int, 6> rigidIndex_{};  ///< mode index of constraint k
   std::array<double, 36> S_{};       ///< sigma = S eps on flexible modes

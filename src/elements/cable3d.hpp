@@ -21,11 +21,11 @@
 #pragma once
 #include <array>
 
-#include "sinew/element_kernel.hpp"
+#include "elements/strain_rate_damped.hpp"
 
 namespace sinew {
 
-class Cable3D final : public ElementKernel, public FormFindingKernel {
+class Cable3D final : public StrainRateDampedKernel, public FormFindingKernel {
  public:
   /// Reference positions of the two nodes, cross-section area, Young's modulus, density and
   /// prestress force N0. The reference length is |Xq - Xp| until setReferenceLength().
@@ -45,13 +45,7 @@ class Cable3D final : public ElementKernel, public FormFindingKernel {
   bool massDependsOnState() const override { return false; }
   /// U(l) = EA/(2L) (l - l_s)^2 above the slack length l_s = L (1 - N0/EA), 0 below (N0 l when EA = 0).
   bool strainEnergy(const double* q, double* energy) const override;
-  /// Strain-rate damping (file comment): beta (s) on the axial strain rate; beta = 0 switches it off.
-  bool setStrainRateDamping(double beta) override {
-    beta_ = beta;
-    return true;
-  }
-  bool strainRateDamped() const override { return beta_ > 0.0; }
-  bool hasDamping() const override { return beta_ > 0.0; }
+  // strain-rate damping (file comment; StrainRateDampedKernel): beta (s) on the axial strain rate
   /// Energy-momentum step force (cable3d_step_force.cpp): +-N_bar (d0 + d1)/(l0 + l1) with the
   /// discrete-gradient force N_bar = (U(l1) - U(l0))/(l1 - l0), exact through going slack; strain-rate
   /// damping adds beta/h EA/L (l1 - l0) where taut at either end (dissipating beta/h EA/L (l1 - l0)^2).
@@ -127,7 +121,6 @@ class Cable3D final : public ElementKernel, public FormFindingKernel {
   bool ff_ = false;
   double lambda_ = 0.0;
   double lambdaMax_ = 0.0, mueRelax_ = 0.0;
-  double beta_ = 0.0;  ///< strain-rate damping (s)
 };
 
 }  // namespace sinew

@@ -60,7 +60,7 @@
 #include <span>
 
 #include "elements/prestress_frame.hpp"
-#include "sinew/element_kernel.hpp"
+#include "elements/strain_rate_damped.hpp"
 
 namespace sinew {
 
@@ -72,7 +72,7 @@ struct MembraneProps {
   std::array<double, 3> prestress{};  ///< [s11, s22, s12] (stress) in the prestress frame
 };
 
-class Membrane final : public ElementKernel, public FormFindingKernel {
+class Membrane final : public StrainRateDampedKernel, public FormFindingKernel {
  public:
   /// X: 3 (triangle) or 4 (quad, counter-clockwise) reference node positions.
   Membrane(std::span<const Vec3> X, const MembraneProps& props, const PrestressFrame& frame = {});
@@ -158,13 +158,7 @@ class Membrane final : public ElementKernel, public FormFindingKernel {
   bool massDependsOnState() const override { return false; }
   /// U = t int (S0 . E + 1/2 E . C E) dA over the reference (elastic; false in form finding).
   bool strainEnergy(const double* q, double* energy) const override;
-  /// Strain-rate damping (file comment): beta (s) on the Green-Lagrange strain rate; 0 switches it off.
-  bool setStrainRateDamping(double beta) override {
-    beta_ = beta;
-    return true;
-  }
-  bool strainRateDamped() const override { return beta_ > 0.0; }
-  bool hasDamping() const override { return beta_ > 0.0; }
+  // strain-rate damping (file comment; StrainRateDampedKernel): beta (s) on the Green-Lagrange strain rate
 
   /// Energy-momentum step force (membrane_step_force.cpp): the St. Venant-Kirchhoff force with the mean
   /// stress S0 + C (E0 + E1)/2 on the mid deformation gradient (exact for the quadratic strains), plus
@@ -198,7 +192,6 @@ class Membrane final : public ElementKernel, public FormFindingKernel {
   double C_[3][3] = {};
   bool ff_ = false, xurs_ = false;
   double lambda_ = 0.0, lambdaMax_ = 0.0, mueRelax_ = 0.0, muMax_ = 0.0;
-  double beta_ = 0.0;  ///< strain-rate damping (s)
 };
 
 }  // namespace sinew

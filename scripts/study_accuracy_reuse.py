@@ -29,21 +29,15 @@ sys.path.insert(0, os.path.join(ROOT, "scripts"))
 import doc_tables  # noqa: E402
 from study_accuracy import ENV, rollup  # noqa: E402
 
+sys.path.insert(0, os.path.join(ROOT, "tests", "cases"))
+import lee_frame_scene as lf  # noqa: E402
+
 WORK = os.path.join(ROOT, "build", "study_accuracy_reuse")
 REPEATS = int(sys.argv[1]) if len(sys.argv) > 1 else 3
 
 
 def lee():
-    c = {"method": "arclength", "ds": 0.1, "ds_max": 0.3, "node": 3, "direction": "y", "max_steps": 40,
-         "stop_displacement": -0.5}
-    beam = {"flex": [1, 2, 3, 4, 5, 6], "emod": 72e9, "smod": 27.7e9, "cshape": "rect", "dim": [0.03, 0.02],
-            "orien": [0, 0, 1]}
-    return {"title": "Lee's frame", "nodes": [[0, 0, 0], [0, 1.2, 0], [0.24, 1.2, 0], [1.2, 1.2, 0]],
-            "elements": [[1, 2], [2, 3], [3, 4]],
-            "nprops": {1: {"fix_pos": True}, 4: {"fix_pos": True}, 2: {"fix_z": True},
-                       3: {"fix_z": True, "force": [0, -1000.0, 0]}},
-            "eprops": [dict(beam, elems=[1], nbeams=5), dict(beam, elems=[2], nbeams=1), dict(beam, elems=[3], nbeams=4)],
-            "opt": {"calccompl": False, "continuation": c}}
+    return lf.lee("Lee's frame", 0.1)
 
 
 def finest(scene, factor):

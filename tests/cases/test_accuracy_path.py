@@ -7,6 +7,7 @@ converged first limit load 18.54475 (Richardson from the levels nbeams x32, x64,
 1e-3 .. 1e-5, observed order 2.000; docs/accuracy.md); the published 18.5 (Schweizerhof & Wriggers 1986) has three digits. At
 1e-2 the true error of the reported limit load is within the target and its estimate within a factor
 3 of it. A path without a stop criterion is refused (exit 2): its end is a different point on every level."""
+import lee_frame_scene as lf
 import sinewtest as st
 
 LIMIT = 18.54475
@@ -14,17 +15,7 @@ target = 1e-2
 
 
 def lee(stop=-0.5):
-    c = {"method": "arclength", "ds": 0.15, "ds_max": 0.3, "node": 3, "direction": "y", "max_steps": 40}
-    if stop is not None:
-        c["stop_displacement"] = stop
-    beam = {"flex": [1, 2, 3, 4, 5, 6], "emod": 72e9, "smod": 27.7e9, "cshape": "rect", "dim": [0.03, 0.02],
-            "orien": [0, 0, 1]}
-    return {"title": "Lee's frame, accuracy on demand", "nodes": [[0, 0, 0], [0, 1.2, 0], [0.24, 1.2, 0], [1.2, 1.2, 0]],
-            "elements": [[1, 2], [2, 3], [3, 4]],
-            "nprops": {1: {"fix_pos": True}, 4: {"fix_pos": True}, 2: {"fix_z": True},
-                       3: {"fix_z": True, "force": [0, -1000.0, 0]}},
-            "eprops": [dict(beam, elems=[1], nbeams=5), dict(beam, elems=[2], nbeams=1), dict(beam, elems=[3], nbeams=4)],
-            "opt": {"calccompl": False, "target_error": target, "continuation": c}}
+    return lf.lee("Lee's frame, accuracy on demand", 0.15, stop, {"target_error": target})
 
 
 path, out = st.run("accuracy_path_lee", lee())

@@ -15,6 +15,7 @@
 
 #include "elements/cable3d.hpp"
 #include "elements/membrane.hpp"
+#include "membrane_test_support.hpp"
 
 using namespace sinew;
 
@@ -149,14 +150,7 @@ TEST(CableStepForce, ExactWorkNoResultantsAndTangent) {
 TEST(MembraneStepForce, ExactWorkNoResultantsAndTangent) {
   std::mt19937 g(7);
   for (int nn : {3, 4}) {
-    const std::vector<Vec3> X = nn == 3 ? std::vector<Vec3>{{0, 0, 0}, {1.0, 0.1, 0}, {0.3, 0.9, 0.1}}
-                                        : std::vector<Vec3>{{0, 0, 0}, {1.0, 0, 0.1}, {1.1, 0.9, 0}, {0, 1.0, -0.05}};
-    MembraneProps mp;
-    mp.thickness = 1e-3;
-    mp.emod = 2e8;
-    mp.nu = 0.3;
-    mp.dens = 1000;
-    mp.prestress = {2e5, 1e5, 3e4};
+    const auto [X, mp] = skewMembranePatch(nn);
     Membrane m(X, mp);
     Dofs q;
     for (const Vec3& x : X) q.insert(q.end(), x.begin(), x.end());

@@ -13,6 +13,7 @@
 
 #include "elements/cable3d.hpp"
 #include "elements/membrane.hpp"
+#include "membrane_test_support.hpp"
 #include "sinew/rotation.hpp"
 
 using namespace sinew;
@@ -110,15 +111,8 @@ double dampingMatrixVsMaterial(const ElementKernel& k, const Dofs& q, const Dofs
 }
 
 Membrane patch(int nn) {
-  const std::vector<Vec3> X = nn == 3 ? std::vector<Vec3>{{0, 0, 0}, {1.0, 0.1, 0}, {0.3, 0.9, 0.1}}
-                                      : std::vector<Vec3>{{0, 0, 0}, {1.0, 0, 0.1}, {1.1, 0.9, 0}, {0, 1.0, -0.05}};
-  MembraneProps mp;
-  mp.thickness = 1e-3;
-  mp.emod = 2e8;
-  mp.nu = 0.3;
-  mp.dens = 1000;
-  mp.prestress = {2e5, 1e5, 3e4};
-  return Membrane(X, mp);
+  const MembranePatch p = skewMembranePatch(nn);
+  return Membrane(p.X, p.props);
 }
 
 Dofs referenceOf(const Membrane& m) {

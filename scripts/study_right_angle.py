@@ -45,11 +45,7 @@ def run(name, n, dt):
 
 
 def fit(r):
-    sv = ras.SIMO_VUQUOC_TIP
-    rms = {s: float(np.sqrt(np.mean((np.interp(sv[:, 0], r["t"] - s, r["tip"]) - sv[:, 1]) ** 2)))
-           for s in np.round(np.arange(0.0, 2.001, 0.05), 2)}
-    best = min(rms, key=rms.get)
-    return rms[0.0], best, rms[best]
+    return ras.digitized_fit(r["t"], r["tip"], 0.05)
 
 
 def main():

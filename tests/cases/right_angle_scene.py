@@ -23,6 +23,16 @@ SIMO_VUQUOC_TIP = np.array([
 LE_EXTREMA = {"tip maximum": 8.2, "tip minimum": -9.7, "elbow minimum": -4.0, "elbow maximum": 6.2}
 
 
+def digitized_fit(t, tip, step):
+    """The tip history (t, tip) against SIMO_VUQUOC_TIP at its points: the RMS difference as computed,
+    the time shift in 0 .. 2 s (in steps of `step`) that fits best (the digitized axis leads), its RMS."""
+    sv = SIMO_VUQUOC_TIP
+    rms = {s: float(np.sqrt(np.mean((np.interp(sv[:, 0], t - s, tip) - sv[:, 1]) ** 2)))
+           for s in np.round(np.arange(0.0, 2.0 + step / 2, step), 6)}
+    best = min(rms, key=rms.get)
+    return rms[0.0], float(best), rms[best]
+
+
 def scene(n=10, dt=0.1, tend=30.0, output_steps="every:2"):
     """n beam elements per leg, generalized alpha with rho_inf = 1; node n + 1 is the elbow, 2 n + 1 the tip."""
     h = L / n

@@ -26,30 +26,16 @@ t = 18.64 s with the complete mass, 18.43 s with consistent_frozen; with -beam_m
 which neither the Newton start nor the complete mass fixes: rho_inf = 0.6 damps it (to t = 30 s without
 a retried step), and so does dt = 0.01 s at rho_inf = 0.9 (to 20 s; docs/dynamics.md "Not yet")."""
 # ctest-processors: 1
-import math
 import re
 
 import numpy as np
 
 import beamtools as bt
 import sinewtest as st
+import spinup_scene as sps
 
-L, EA, EI, rhoA = 10.0, 2.8e7, 1.4e4, 1.2
-Om, Ts = 6.0, 15.0
-a = math.sqrt(12 * EI / EA)
-A = a * a
 dt, tend = 0.02, 20.0
-theta_expr = f"t < {Ts} ? ({Om}/{Ts})*(t^2/2 + ({Ts}/(2*pi))^2*(cos(2*pi*t/{Ts}) - 1)) : {Om}*(t - {Ts}/2)"
-scene = {"title": "spin-up, Newton iterations", "nodes": [[0, 0, 0], [L, 0, 0]], "elements": [[1, 2]],
-         "nprops": {1: {"fix_pos": True, "rot": [theta_expr, 0, 0, 1]}},
-         "eprops": [dict(bt.beam_set([1], a, a, nbeams=10), emod=EA / A, smod=EA / A / 2.6, dens=rhoA / A)],
-         "opt": {"calcfreq": False, "calccompl": False,
-                 "dynamics": {"tend": tend, "dt": dt, "spectral_radius": 0.6, "output_every": 10}}}
-
-
-def theta(tt):
-    return np.where(tt < Ts, (Om / Ts) * (tt ** 2 / 2 + (Ts / (2 * np.pi)) ** 2 * (np.cos(2 * np.pi * tt / Ts) - 1)),
-                    Om * (tt - Ts / 2))
+scene = sps.scene("spin-up, Newton iterations", 0.6, tend=tend, dt=dt)
 
 
 def run(name, extra):
@@ -72,11 +58,10 @@ def run(name, extra):
     st.check(len(its) == round(tend / dt) and "retried" not in out, f"{name}: one Newton solve per step expected")
     with st.h5(h5) as f:
         t, p = f["time"][:], f["node/p"][:, 1, :]
-    c, s = np.cos(theta(t)), np.sin(theta(t))
-    v = -s * p[:, 0] + c * p[:, 1]
+    v, _ = sps.rotating_frame(t, p)
     k = np.argmin(v)
     ts = dt * np.arange(1, len(its) + 1)
-    spin = ts > Ts + 1e-9
+    spin = ts > sps.Ts + 1e-9
     print(f"  {extra[-1] if extra else 'default'}: Newton iterations per step up to 1 s {its[ts <= 1].mean():.2f}, "
           f"5..15 s {its[(ts > 5) & ~spin].mean():.2f} (max {its[(ts > 5) & ~spin].max()}), at 6 rad/s {its[spin].mean():.2f} "
           f"(max {its[spin].max()}), final residual median {np.median(last[spin]):.1e} N; tip peak {v[k]:.4f} m at t = {t[k]:.2f} s")

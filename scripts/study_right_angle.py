@@ -9,9 +9,7 @@ Reported: Sinew's extrema against the readings, and the RMS difference of the ti
 digitized curve without and with the time shift that fits best (the digitized time axis leads).
 
 usage: scripts/study_right_angle.py [--doc]"""
-import argparse
 import os
-import subprocess
 import sys
 import time
 
@@ -19,29 +17,21 @@ import h5py
 import numpy as np
 
 import doc_tables
+import study_runs
 
-SOURCE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..")
+SOURCE = study_runs.SOURCE
 sys.path.insert(0, os.path.join(SOURCE, "tests", "cases"))
 import beamtools as bt  # noqa: E402
 import right_angle_scene as ras  # noqa: E402
 
 WORK = os.path.join(SOURCE, "build", "study", "right_angle")
-ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
-           OMPI_MCA_pml="ob1", OMPI_MCA_btl="self,vader")
 
 
 def run(name, n, dt):
-    os.makedirs(WORK, exist_ok=True)
-    yml, h5 = os.path.join(WORK, name + ".yaml"), os.path.join(WORK, name + ".h5")
-    with open(yml, "w") as f:
-        f.write(bt.yaml_text(ras.scene(n=n, dt=dt, output_steps="every:1")))
-    t0 = time.perf_counter()
-    r = subprocess.run([os.path.join(SOURCE, "build", "sinew"), yml, "-o", h5], env=ENV, capture_output=True, text=True)
-    if r.returncode:
-        sys.exit(f"{name}: exit {r.returncode}\n{r.stdout[-2000:]}{r.stderr[-2000:]}")
+    h5, seconds = study_runs.run_scene(WORK, name, bt.yaml_text(ras.scene(n=n, dt=dt, output_steps="every:1")))
     with h5py.File(h5) as f:
         t, p = f["time"][:], f["node/p"][:]
-    return dict(name=name, n=n, dt=dt, t=t, tip=p[:, 2 * n, 2], elbow=p[:, n, 2], seconds=time.perf_counter() - t0)
+    return dict(name=name, n=n, dt=dt, t=t, tip=p[:, 2 * n, 2], elbow=p[:, n, 2], seconds=seconds)
 
 
 def fit(r):
@@ -49,9 +39,7 @@ def fit(r):
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("--doc", action="store_true", help="write the table and the figure into docs/")
-    args = ap.parse_args()
+    doc = study_runs.doc_flag(__doc__)
     load = os.getloadavg()[0]
     runs = [run("n10_dt0.1", 10, 0.1), run("n20_dt0.1", 20, 0.1), run("n10_dt0.05", 10, 0.05)]
     rows = []
@@ -74,7 +62,7 @@ minimum {sv[:, 1].min():.2f}): RMS difference at its points, as computed and wit
 |---|---|---|---|---|---|---|---|---|
 """ + "\n".join(rows) + "\n\n![tip and elbow against the published curves](accuracy_dynamics_right_angle.png)\n"
     print(text)
-    if args.doc:
+    if doc:
         import matplotlib
         matplotlib.use("Agg")
         import matplotlib.pyplot as plt
@@ -88,12 +76,8 @@ minimum {sv[:, 1].min():.2f}): RMS difference at its points, as computed and wit
         for k, v in ras.LE_EXTREMA.items():
             ax.axhline(v, color="0.6", lw=0.7, ls="--")
         ax.text(0.3, ras.LE_EXTREMA["tip maximum"] + 0.2, "Le et al. 2012 extrema (dashed)", fontsize=8, color="0.4")
-        ax.set_xlabel("t [s]")
-        ax.set_ylabel("out-of-plane displacement")
-        ax.legend(fontsize=8, loc="lower left")
-        ax.grid(alpha=0.3)
-        fig.tight_layout()
-        fig.savefig(os.path.join(SOURCE, "docs", "accuracy_dynamics_right_angle.png"), dpi=110)
+        study_runs.label_axes(ax, "out-of-plane displacement", "t [s]", "lower left")
+        study_runs.save_figure(fig, "accuracy_dynamics_right_angle.png")
         doc_tables.write_block("accuracy_dynamics.md", "study_right_angle", text)
 
 

@@ -86,6 +86,7 @@ Assembler::~Assembler() {
   VecDestroy(&xOp_);
   VecDestroy(&yOp_);
   ISLocalToGlobalMappingDestroy(&l2g_);
+  MatDestroy(&structure_);
 }
 
 PetscErrorCode Assembler::createVector(Vec* v) const {

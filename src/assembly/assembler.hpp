@@ -342,6 +342,8 @@ class Assembler {
   ISLocalToGlobalMapping l2g_ = nullptr;
   PetscErrorCode preallocationCounts() const;
   mutable bool countsReady_ = false;
+  mutable Mat structure_ = nullptr;  // every element block and the diagonal, zeros (createMatrix copies it)
+  PetscErrorCode buildStructure(Mat* A) const;
   mutable std::vector<PetscInt> dnnz_, onnz_;  // nonzeros per owned row (diagonal / off-diagonal block)
   std::vector<double> state_;  // 12 per local node
   bool mixedNewton_ = false;

@@ -98,8 +98,18 @@ PetscErrorCode Assembler::preallocationCounts() const {
 }
 
 // The structure is every element block plus the diagonal of every unknown, inserted as zeros and
-// assembled, so that later assemblies, shifts and diagonal updates never allocate.
+// assembled, so that later assemblies, shifts and diagonal updates never allocate. Built once per
+// assembler; every further matrix is a copy of that structure (an analysis makes up to eight).
 PetscErrorCode Assembler::createMatrix(Mat* A) const {
+  PetscFunctionBeginUser;
+  if (!structure_) PetscCall(buildStructure(&structure_));
+  PetscCall(MatDuplicate(structure_, MAT_DO_NOT_COPY_VALUES, A));
+  PetscCall(MatSetOption(*A, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_TRUE));
+  PetscCall(MatSetOption(*A, MAT_SUBSET_OFF_PROC_ENTRIES, PETSC_TRUE));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode Assembler::buildStructure(Mat* A) const {
   PetscFunctionBeginUser;
   const PetscInt nloc = mesh_.numOwnedUnknowns, N = static_cast<PetscInt>(mesh_.numGlobalUnknowns);
   PetscCall(preallocationCounts());

@@ -14,6 +14,18 @@ PetscErrorCode gatherDense(Mat A, std::vector<double>& full) {
   PetscInt n, r0, r1;
   PetscCall(MatGetSize(A, &n, nullptr));
   PetscCall(MatGetOwnershipRange(A, &r0, &r1));
+  if (size == 1) {  // the rows straight into the column-major array
+    full.assign(static_cast<size_t>(n) * n, 0.0);
+    for (PetscInt i = 0; i < n; ++i) {
+      PetscInt nc;
+      const PetscInt* cols;
+      const PetscScalar* vals;
+      PetscCall(MatGetRow(A, i, &nc, &cols, &vals));
+      for (PetscInt k = 0; k < nc; ++k) full[static_cast<size_t>(cols[k]) * n + i] = vals[k];
+      PetscCall(MatRestoreRow(A, i, &nc, &cols, &vals));
+    }
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
   // my rows, row-major
   std::vector<double> rows(static_cast<size_t>(r1 - r0) * n, 0.0);
   for (PetscInt i = r0; i < r1; ++i) {

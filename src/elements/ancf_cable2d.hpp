@@ -61,9 +61,13 @@ class AncfCable2D : public StrainRateDampedKernel {
   /// beta on the strain rates (N += beta EA eps_t, M += beta EI K_t); refused (false, beta K0 instead)
   /// with a user force law, which has no stiffness EA, EI of its own.
   bool setStrainRateDamping(double beta) override;
+  /// The energy-momentum step force (ancf_cable2d_step_force.cpp); not with user force laws (not potentials).
+  bool hasStepForce() const override { return !userForceLaw(); }
+  void stepForce(const StepForceInput& in, bool tangent, KernelOutput& out) const override;
   /// The scene field of a user force law of this kernel ("axialForceUserFunction" or
   /// "bendingMomentUserFunction"), nullptr without one.
   const char* userForceLaw() const;
+  const char* stepForceRefusal() const override { return userForceLaw(); }
 
   /// f = Q_e(q, qdot, t) (elastic + viscous generalized forces, Exudyn's ODE2 LHS);
   /// K = df/dq; D = df/dqdot. With splitGeometric, K holds the terms with derivatives of the

@@ -12,15 +12,17 @@ zeta = beta w / 2.
    centrifugal stretch. From t = 0.2 s on the energy it dissipates (least-squares trend of T + S - W) is
    below 3e-12 of T and T + S - W varies by less than 1e-11 of T. The same run with -stiffness_damping
    initial (beta K0 of the start frame; one rank, to t = 0.1 s) loses its kinetic energy (checked
-   > 1e-2 of T): the test fails if the option is ignored.
+   > 1e-2 of T): the test fails if the option is ignored. With -dynamics_scheme energy_momentum (one
+   rank; beta in the step force) the steady rotation keeps T + S - W to 3e-12 of T.
 2. Bending decay. The cable as a cantilever (clamp x, y, slope_y at node 1), a tip load of 0.01 N from
    rest (linear: 3.3e-4 m), beta = 2 zeta / w1 with zeta = 0.02, w1 = 3.516 sqrt(EI / rhoA) / L^2,
    dt = T1/200, 5 periods: the tip deflection after the first period fitted by
    u_s + exp(-s t) (a cos w t + b sin w t); the damping ratio s / sqrt(s^2 + w^2) against
    beta sqrt(s^2 + w^2) / 2 (tolerance 1e-2).
-MEASURED (2026-11-27, 61 s on a loaded machine): from 0.15 to 0.25 s T + S - W varies by 5.9e-12 of T
+MEASURED (2026-11-27, 16 .. 61 s on a loaded machine): from 0.15 to 0.25 s T + S - W varies by 5.9e-12 of T
 (2.109 J), trend -5.9e-12 (a gain: round-off of the trapezoidal rule on the rotating cable, of either sign;
-the undamped run varies by 1.7e-9, the midpoint rule's trend 4.4e-13), S by 2.1e-15 of T; initial: kinetic
+the undamped run varies by 1.7e-9, the midpoint rule's trend 4.4e-13), S by 2.1e-15 of T; energy_momentum:
+varies by 4.8e-13, trend -8.4e-15 (undamped energy_momentum: 7.6e-13, keeping its vibration); initial: kinetic
 energy 3.7e-8 J at 0.1 s (lost 1.00); cantilever w = 35.149 rad/s, zeta 0.019986 against beta w / 2
 0.019994: -3.7e-4 (fit rms 6.6e-5)."""
 import math
@@ -86,6 +88,15 @@ print(f"  free ANCF cable, corotated beta = {beta:.3e} s: from t = {STEADY} to {
       f"{np.ptp(S[late]) / Tm:.1e} of T)")
 st.check(abs(lost) < 1e-11, f"steady rotation dissipates {lost:.2e} of T with corotated damping (expected |.| < 1e-11)")
 st.check(dE < 2e-11, f"T + S - W varies by {dE:.2e} of T in steady rotation (expected < 2e-11)")
+# the same with the energy-momentum scheme (beta in the step force as beta EA (eps1 - eps0)/h, ...; one rank)
+te, Te, Se, We = energies("ancfdamp_spin_em", spinning(beta, TEND), ["-dynamics_scheme", "energy_momentum"], np_=1)
+late_e = te >= STEADY - 1e-12
+Ee = (Te + Se - We)[late_e] / Te[late_e].mean()
+tle = te[late_e] - te[late_e][0]
+lost_e = -np.polyfit(tle, Ee, 1)[0] * tle[-1]
+print(f"  energy_momentum with corotated beta: T + S - W varies by {np.ptp(Ee):.2e} of T, its trend loses {lost_e:.2e}")
+st.check(abs(lost_e) < 3e-12 and np.ptp(Ee) < 3e-12,
+         f"energy_momentum: steady rotation loses {lost_e:.2e} of T, varies by {np.ptp(Ee):.2e} (expected < 3e-12)")
 t0, T0, S0, W0 = energies("ancfdamp_spin_k0", spinning(beta, TEND_K0), ["-stiffness_damping", "initial"], np_=1)
 lost0 = 1 - T0[-1] / Tm
 print(f"  -stiffness_damping initial: kinetic energy at t = {TEND_K0} s {T0[-1]:.3e} J, lost {lost0:.2e} of the "

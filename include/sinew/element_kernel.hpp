@@ -187,6 +187,9 @@ class ElementKernel {
   /// K = its derivative by q1 (translations, spatial spins of R1) and the multipliers.
   virtual bool hasStepForce() const { return false; }
   virtual void stepForce(const StepForceInput& /*in*/, bool /*tangent*/, KernelOutput& /*out*/) const {}
+  /// Without a step force: the scene field that keeps the kernel from having one (a force law that is not
+  /// a potential, e.g. "axialForceUserFunction"), nullptr when there is none to name.
+  virtual const char* stepForceRefusal() const { return nullptr; }
   /// Element force output (cable axial force, membrane resultants n11 n22 n12); empty when none.
   virtual void elementForce(const double* /*q*/, std::vector<double>& out) const { out.clear(); }
 

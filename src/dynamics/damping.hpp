@@ -2,7 +2,8 @@
 //   f_d = C qd,  C = alpha M0 + beta K0 + M0 Phi diag(2 zeta_i omega_i) Phi^T M0
 // With -stiffness_damping corotated (the default) the beta part of the kernels that damp their own
 // strain rates (beams: sigma_d = beta S epsd, epsd = grad eps . qd; 3D cables: N_d = beta EA/L ld;
-// membranes: S_d = beta C Ed; ElementKernel::setStrainRateDamping)
+// membranes: S_d = beta C Ed; ANCF cables without user force laws: N_d = beta EA eps_t, M_d = beta EI K_t;
+// ElementKernel::setStrainRateDamping)
 // is theirs, in their forces and tangents wherever the assembler passes velocities: it never damps rigid
 // motion. K0 then holds the other kinds only; -stiffness_damping initial keeps beta K0 for every kind.
 // M0, K0: consistent mass and tangent stiffness (material + geometric) of the state the time loop
@@ -28,7 +29,7 @@ namespace sinew {
 class Damping {
  public:
   /// eigen: the settings of the frequency analysis behind modal damping.
-  /// mode: -stiffness_damping (corotated: beams, 3D cables and membranes damp their strain rates themselves).
+  /// mode: -stiffness_damping (corotated: beams, 3D cables, ANCF cables and membranes damp their strain rates themselves).
   Damping(Assembler& assembler, const DynamicsOptions& opts, const EigenSettings& eigen, StiffnessDamping mode);
   ~Damping();
   Damping(const Damping&) = delete;

@@ -23,13 +23,21 @@ DynamicAnalysis::Scheme DynamicAnalysis::checkScheme(const DistributedMesh& mesh
     throw SceneError("-dynamics_scheme", "tsalpha2 integrates the unknowns as a vector space; beam rotations need the "
                                          "Lie-group form of the default scheme (arnold_bruls)");
   if (scheme == Scheme::EnergyMomentum) {
-    int bad = 0;
-    for (const LocalElement& e : mesh.elements)
-      bad |= !e.kernel->hasStepForce();
-    MPI_Allreduce(MPI_IN_PLACE, &bad, 1, MPI_INT, MPI_LOR, mesh.comm);
-    if (bad)
-      throw SceneError("-dynamics_scheme", "energy_momentum integrates beams, rigid elements, nodal masses, 3D cables "
-                                           "and membranes; this model has ANCF cables (use midpoint or arnold_bruls)");
+    // the first set (lowest eprops index, agreed on every rank) whose kernels have no step force
+    RunFailure local;
+    long key = -1;
+    for (const LocalElement& e : mesh.elements) {
+      if (e.kernel->hasStepForce() || (key >= 0 && e.set >= key)) continue;
+      key = e.set;
+      const char* field = e.kernel->stepForceRefusal();
+      local = {2, std::string(e.kernel->name()) + " elements of " + (e.set >= 0 ? epropsName(e.set) : "the model") +
+                      (field ? " with " + std::string(field) + ": a user force law is not the gradient of a strain energy"
+                             : ": no step force")};
+    }
+    const RunFailure agreed = agreeOnFailure(mesh.comm, local, key);
+    if (agreed)
+      throw SceneError("-dynamics_scheme", "energy_momentum needs the step force of a strain energy; this model has " +
+                                               agreed.message + " (use midpoint or arnold_bruls)");
   }
   return scheme;
 }

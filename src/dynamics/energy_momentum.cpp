@@ -46,12 +46,14 @@ PetscErrorCode EnergyMomentum::evaluate(Vec U, Vec V, const LoadState& ls, Energ
   for (int i = 0; i < mesh.numOwnedNodes; ++i) {
     const LocalNode& n = mesh.nodes[i];
     if (n.kind == NodeKind::Ancf2D) {
-      // x, y and the slope coordinates: the translation part is the first two
+      // x, y and the slope coordinates: the translation part is the first two; a rotation turns
+      // positions and slopes alike (the cable's int rhoA r x v dx = sum over both pairs of q x pi)
       const double* x = asm_.nodeState(i);
-      const double px = n.dof[0] >= 0 ? pi[n.dof[0]] : 0.0, py = n.dof[1] >= 0 ? pi[n.dof[1]] : 0.0;
-      m[1] += px;
-      m[2] += py;
-      m[6] += x[0] * py - x[1] * px;
+      double pc[4];
+      for (int k = 0; k < 4; ++k) pc[k] = n.dof[k] >= 0 ? pi[n.dof[k]] : 0.0;
+      m[1] += pc[0];
+      m[2] += pc[1];
+      m[6] += x[0] * pc[1] - x[1] * pc[0] + x[2] * pc[3] - x[3] * pc[2];
       continue;
     }
     const double* x = asm_.nodeState(i);

@@ -7,7 +7,8 @@
 //            forces minus the residual, so follower loads and body forces are included)
 //   momentum pi = M(U) V (generalized): linear p = sum_i pi_t,i, angular about the origin
 //            H = sum_i x_i x pi_t,i + pi_r,i (a rigid velocity (v, w) has power p.v + H.w with
-//            pi, so this is the momentum of the kinetic energy's mass matrix).
+//            pi, so this is the momentum of the kinetic energy's mass matrix); an ANCF node adds
+//            s x pi_s of its slope coordinates (a rotation turns them with the positions).
 // Supported nodes (eliminated DOFs) carry no velocity and no momentum entry.
 #pragma once
 #include <petscmat.h>

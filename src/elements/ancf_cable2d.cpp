@@ -346,6 +346,17 @@ AncfCable2D::AncfCable2D(const std::array<double, 8>& qRef, double L, std::share
       ub && (ub->uses(UfVar::axialStrain) || ub->uses(UfVar::axialStrain_t) || ub->uses(UfVar::axialStrainRef));
 }
 
+bool AncfCable2D::setStrainRateDamping(double beta) {
+  beta_ = userForceLaw() ? 0.0 : beta;
+  return !userForceLaw();
+}
+
+const char* AncfCable2D::userForceLaw() const {
+  if (params_->axialForceUserFunction) return "axialForceUserFunction";
+  if (params_->bendingMomentUserFunction) return "bendingMomentUserFunction";
+  return nullptr;
+}
+
 std::span<const NodeKind> AncfCable2D::nodeKinds() const {
   static constexpr std::array<NodeKind, 2> kinds{NodeKind::Ancf2D, NodeKind::Ancf2D};
   return kinds;
@@ -402,30 +413,33 @@ struct AncfCable2D::Law {
     if (e.uses(UfVar::axialStrain_t) || e.uses(UfVar::curvature_t)) gDampingTerms.fetch_add(1, std::memory_order_relaxed);
     return e.evaluate(args(p, t, xiNorm, s, epsRef, kapRef));
   }
-  static UserFunctionValue axial(const AncfCable2DParameters& p, double t, double xiNorm, const PointState& s,
-                                 double epsRef, double kapRef) {
+  // beta: the strain-rate damping (s) added as beta EA eps_t (beta EI K_t) to Exudyn's d_eps eps_t (d_K K_t)
+  static UserFunctionValue axial(const AncfCable2DParameters& p, double beta, double t, double xiNorm,
+                                 const PointState& s, double epsRef, double kapRef) {
     if (p.axialForceUserFunction) return user(*p.axialForceUserFunction, p, t, xiNorm, s, epsRef, kapRef);
     UserFunctionValue v;
     v.value = p.physicsAxialStiffness * (s.eps - epsRef);
     v.dAxialStrain = p.physicsAxialStiffness;
-    if (p.physicsAxialDamping != 0.0) {
+    const double d = p.physicsAxialDamping + beta * p.physicsAxialStiffness;
+    if (d != 0.0) {
       gDampingTerms.fetch_add(1, std::memory_order_relaxed);
-      v.value += p.physicsAxialDamping * s.eps_t;
-      v.dAxialStrain_t = p.physicsAxialDamping;
+      v.value += d * s.eps_t;
+      v.dAxialStrain_t = d;
     }
     return v;
   }
   // M = EI (K - K_ref) + d_K K_t   (Exudyn eq. (M))
-  static UserFunctionValue bending(const AncfCable2DParameters& p, double t, double xiNorm, const PointState& s,
-                                   double epsRef, double kapRef) {
+  static UserFunctionValue bending(const AncfCable2DParameters& p, double beta, double t, double xiNorm,
+                                   const PointState& s, double epsRef, double kapRef) {
     if (p.bendingMomentUserFunction) return user(*p.bendingMomentUserFunction, p, t, xiNorm, s, epsRef, kapRef);
     UserFunctionValue v;
     v.value = p.physicsBendingStiffness * (s.kap - kapRef);
     v.dCurvature = p.physicsBendingStiffness;
-    if (p.physicsBendingDamping != 0.0) {
+    const double d = p.physicsBendingDamping + beta * p.physicsBendingStiffness;
+    if (d != 0.0) {
       gDampingTerms.fetch_add(1, std::memory_order_relaxed);
-      v.value += p.physicsBendingDamping * s.kap_t;
-      v.dCurvature_t = p.physicsBendingDamping;
+      v.value += d * s.kap_t;
+      v.dCurvature_t = d;
     }
     return v;
   }
@@ -473,10 +487,10 @@ AncfCable2D::EvaluationCounts AncfCable2D::evaluationCounts() {
 void AncfCable2D::evaluate(const KernelInput& in, const KernelNeeds& needs, KernelOutput& out) const {
   const double* q = in.q;
   // Velocities enter only through a law that reads them (a damping term or a *_t argument of a user
-  // function: hasDamping_); otherwise eps_t, K_t and their gradients are not computed.
-  const double* qd = hasDamping_ ? in.qdot : nullptr;
+  // function: hasDamping_, or beta > 0); otherwise eps_t, K_t and their gradients are not computed.
+  const double* qd = hasDamping() ? in.qdot : nullptr;
   const bool wantK = needs.tangent;
-  const bool wantD = needs.damping && hasDamping_;
+  const bool wantD = needs.damping && hasDamping();
   const bool derivatives = wantK || wantD;
   double f[8] = {};
   // Tangent blocks are accumulated in place: Km (material) and Kg (geometric) are the same 8x8
@@ -506,7 +520,7 @@ void AncfCable2D::evaluate(const KernelInput& in, const KernelNeeds& needs, Kern
   for (int ip = 0; ip < geo.nAxial; ++ip) {
     const IntegrationPoint& P = geo.axial[ip];
     const PointState& s = states[ip];
-    const UserFunctionValue N = Law::axial(*params_, in.t, P.xiNorm, s, axialRef(ip).strain, axialRef(ip).curvature);
+    const UserFunctionValue N = Law::axial(*params_, beta_, in.t, P.xiNorm, s, axialRef(ip).strain, axialRef(ip).curvature);
     Law::check(*params_, N, true, in.t, s, true, axialNeedsCurvature_, derivatives);
     const double w = P.w;
     for (int a = 0; a < 8; ++a) f[a] += w * N.value * s.g[a];
@@ -553,7 +567,7 @@ void AncfCable2D::evaluate(const KernelInput& in, const KernelNeeds& needs, Kern
   for (int ip = 0; ip < geo.nBending; ++ip) {
     const IntegrationPoint& P = geo.bending[ip];
     const PointState& s = states[ip];
-    const UserFunctionValue M = Law::bending(*params_, in.t, P.xiNorm, s, bendingRef(ip).strain, bendingRef(ip).curvature);
+    const UserFunctionValue M = Law::bending(*params_, beta_, in.t, P.xiNorm, s, bendingRef(ip).strain, bendingRef(ip).curvature);
     Law::check(*params_, M, false, in.t, s, bendingNeedsStrain_, true, derivatives);
     const double w = P.w;
     for (int a = 0; a < 8; ++a) f[a] += w * M.value * s.h[a];
@@ -609,7 +623,7 @@ double AncfCable2D::axialForceAt(const double* q, const double* qdot, double x, 
   const std::array<double, 4> Sx = shape_x(x, L_);
   axialState(Sx, q, qdot, s);
   if (axialNeedsCurvature_) bendingState(Sx, shape_xx(x, L_), q, qdot, s);
-  return Law::axial(*params_, t, x / L_, s, axialStrainRef(x), curvatureRef(x)).value;
+  return Law::axial(*params_, beta_, t, x / L_, s, axialStrainRef(x), curvatureRef(x)).value;
 }
 
 double AncfCable2D::bendingMomentAt(const double* q, const double* qdot, double x, double t) const {
@@ -617,7 +631,7 @@ double AncfCable2D::bendingMomentAt(const double* q, const double* qdot, double 
   const std::array<double, 4> Sx = shape_x(x, L_);
   bendingState(Sx, shape_xx(x, L_), q, qdot, s);
   if (bendingNeedsStrain_) axialState(Sx, q, qdot, s);
-  return Law::bending(*params_, t, x / L_, s, axialStrainRef(x), curvatureRef(x)).value;
+  return Law::bending(*params_, beta_, t, x / L_, s, axialStrainRef(x), curvatureRef(x)).value;
 }
 
 void AncfCable2D::elementForce(const double* q, std::vector<double>& out) const {

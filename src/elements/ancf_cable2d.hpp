@@ -6,10 +6,12 @@
 // Element vector q = [r0, r0', r1, r1'] (8), r(x) = S(x) q with
 //   S1 = 1 - 3 xi^2 + 2 xi^3, S2 = x - 2 x^2/L + x^3/L^2, S3 = 3 xi^2 - 2 xi^3, S4 = -x^2/L + x^3/L^2.
 // Virtual work: dW = int_0^L (N d eps + M d K) dx with
-//   N = EA (eps - eps_ref) + d_eps eps_t,   M = EI (K - K_ref) + d_K K_t,
+//   N = EA (eps - eps_ref) + (d_eps + beta EA) eps_t,   M = EI (K - K_ref) + (d_K + beta EI) K_t,
 //   eps_ref = physicsReferenceAxialStrain + f_ref (|r'_ref| - 1),
 //   K_ref   = physicsReferenceCurvature   + f_ref K(reference configuration),
 // f_ref = strainIsRelativeToReference; user functions replace N and M and receive Exudyn's arguments.
+// beta: the scene's stiffness-proportional damping on the strain rates (-stiffness_damping corotated,
+// setStrainRateDamping; docs/dynamics.md "Damping"), 0 with user functions (they keep beta K0).
 // Integration (useReducedOrderIntegration): 0 -> axial Gauss 5 points, bending Gauss 3 points;
 // 1 -> Gauss 4 / Gauss 2; 2 -> Lobatto 3 (0, L/2, L) / Gauss 2.
 #pragma once
@@ -18,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "elements/strain_rate_damped.hpp"
 #include "math/expression.hpp"
 #include "sinew/element_kernel.hpp"
 #include "sinew/element_properties.hpp"
@@ -43,7 +46,7 @@ struct AncfCable2DParameters {
 /// std::invalid_argument with the expression, column and caret on a syntax error).
 AncfCable2DParameters ancfCable2DParameters(const AncfCable2DProperties& set);
 
-class AncfCable2D : public ElementKernel {
+class AncfCable2D : public StrainRateDampedKernel {
  public:
   /// qRef: both nodes' reference coordinates [x0, y0, sx0, sy0, x1, y1, sx1, sy1]; L: reference length.
   AncfCable2D(const std::array<double, 8>& qRef, double L, const AncfCable2DParameters& p);
@@ -54,7 +57,17 @@ class AncfCable2D : public ElementKernel {
   const char* name() const override { return "ancf_cable2d"; }
   std::span<const NodeKind> nodeKinds() const override;
   bool hasInertia() const override { return params_->physicsMassPerLength > 0.0; }
-  bool hasDamping() const override { return hasDamping_; }
+  bool hasDamping() const override { return hasDamping_ || beta_ > 0.0; }
+  /// beta on the strain rates (N += beta EA eps_t, M += beta EI K_t); refused (false, beta K0 instead)
+  /// with a user force law, which has no stiffness EA, EI of its own.
+  bool setStrainRateDamping(double beta) override;
+  /// The energy-momentum step force (ancf_cable2d_step_force.cpp); not with user force laws (not potentials).
+  bool hasStepForce() const override { return !userForceLaw(); }
+  void stepForce(const StepForceInput& in, bool tangent, KernelOutput& out) const override;
+  /// The scene field of a user force law of this kernel ("axialForceUserFunction" or
+  /// "bendingMomentUserFunction"), nullptr without one.
+  const char* userForceLaw() const;
+  const char* stepForceRefusal() const override { return userForceLaw(); }
 
   /// f = Q_e(q, qdot, t) (elastic + viscous generalized forces, Exudyn's ODE2 LHS);
   /// K = df/dq; D = df/dqdot. With splitGeometric, K holds the terms with derivatives of the

@@ -9,23 +9,8 @@ the first started from the coarser level (/accuracy reused_starts), and fewer Ne
 two finest levels with reuse (measured 482 against 637)."""
 import numpy as np
 
-import beamtools as bt
+import leaf_dynamics_scene as leaf
 import sinewtest as st
-
-L, W, T = 1.0, 0.02, 0.002
-sec = bt.rect_section(W, T)
-F = 0.3 * 3 * sec["EIy"] / L ** 3
-T1 = 2 * np.pi / (1.875104068711961 ** 2 * np.sqrt(sec["EIy"] / (7800 * sec["A"] * L ** 4)))
-STEPS0 = 20  # level 0: dt = T1 / 40 to T1 / 2
-
-
-def scene():
-    force = f"{F!r} * smoothstep(t, 0, {T1 / 2!r}, 0, 1)"
-    dyn = {"tend": T1 / 2, "dt": T1 / 40, "spectral_radius": 0.9, "output_every": 2}
-    return bt.yaml_text({"title": "leaf, smooth tip load", "nodes": [[0, 0, 0], [L, 0, 0]], "elements": [[1, 2]],
-                         "nprops": {1: {"fix": True}, 2: {"force": [0, force, 0]}},
-                         "eprops": [bt.beam_set([1], W, T, dens=7800, nbeams=4)],
-                         "opt": {"calccompl": False, "calcfreq": False, "dynamics": dyn}})
 
 
 def study(path):
@@ -37,7 +22,7 @@ def study(path):
 
 runs, outs = {}, {}
 for reuse in (1, 0):
-    path, outs[reuse] = st.run(f"accuracy_time_reuse_{reuse}", scene(),
+    path, outs[reuse] = st.run(f"accuracy_time_reuse_{reuse}", leaf.smooth_large(),
                                args=["-target_error", "1e-4", "-accuracy_reuse", str(reuse)])
     runs[reuse] = study(path)
 on, off = runs[1], runs[0]
@@ -58,7 +43,7 @@ st.check(change < 1e-8, f"the level histories do not depend on the Newton start 
 st.check(np.allclose(on["worst_error"][2:], off["worst_error"][2:], rtol=1e-5, atol=0), "the same worst estimates")
 st.check(np.allclose(on["order"][2:], off["order"][2:], rtol=0, atol=1e-4, equal_nan=True), "the same observed orders")
 st.check(np.all(off["reused_starts"] == 0), "-accuracy_reuse 0 starts no step from a coarser level")
-steps = STEPS0 * 2 ** on["level"][1:].astype(int)
+steps = leaf.STEPS0 * 2 ** on["level"][1:].astype(int)
 st.check(np.array_equal(on["reused_starts"][1:].astype(int), steps),
          f"with reuse every step of every level after the first starts from the coarser level "
          f"({list(on['reused_starts'][1:])} of {list(steps)})")

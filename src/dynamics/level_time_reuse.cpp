@@ -28,6 +28,40 @@ std::size_t numRotationNodes(const DistributedMesh& mesh) {
   return r;
 }
 
+/// The coarser record at t (owned entries q, the rotation of every rotation node R): its state at its
+/// own times, the cubic Hermite in time between two of them; false when t is outside the record.
+bool coarseStateAt(const TimeHandover& c, const DistributedMesh& mesh, double t, std::vector<double>* q,
+                   std::vector<Mat3>* R) {
+  const std::vector<TimeHandover::Step>& steps = c.steps;
+  const double tol = 1e-9 * (steps[1].t - steps[0].t);  // the summed steps' round-off
+  // b: the first recorded time at or after t (up to tol)
+  const auto after = std::lower_bound(steps.begin(), steps.end(), t - tol,
+                                      [](const TimeHandover::Step& s, double time) { return s.t < time; });
+  if (after == steps.end()) return false;
+  const TimeHandover::Step& b = *after;
+  const bool exact = std::abs(b.t - t) <= tol;
+  if (!exact && after == steps.begin()) return false;
+  const TimeHandover::Step& a = exact ? b : *(after - 1);
+  const double H = b.t - a.t, s = exact ? 1.0 : (t - a.t) / H;
+  const HermiteWeights w = hermiteWeights(s);
+  q->resize(b.q.size());
+  for (std::size_t j = 0; j < b.q.size(); ++j)
+    (*q)[j] = exact ? b.q[j] : w.h00 * a.q[j] + w.h10 * H * a.v[j] + w.h01 * b.q[j] + w.h11 * H * b.v[j];
+  R->clear();
+  for (int i = 0; i < mesh.numOwnedNodes; ++i) {
+    const LocalNode& n = mesh.nodes[static_cast<std::size_t>(i)];
+    if (!rotationUnknowns(n)) continue;
+    const std::size_t r = R->size();
+    const Mat3 Rb = rotationOfQuaternion(&b.rotations[4 * r]);
+    const auto spin = [&](const TimeHandover::Step& st) {
+      return Vec3{st.v[static_cast<std::size_t>(n.dof[3])], st.v[static_cast<std::size_t>(n.dof[4])],
+                  st.v[static_cast<std::size_t>(n.dof[5])]};
+    };
+    R->push_back(exact ? Rb : hermiteRotation(rotationOfQuaternion(&a.rotations[4 * r]), spin(a), Rb, spin(b), H, s));
+  }
+  return true;
+}
+
 }  // namespace
 
 PetscErrorCode DynamicAnalysis::useCoarseLevel() {
@@ -77,43 +111,23 @@ PetscErrorCode DynamicAnalysis::recordLevelStep(double t, Vec q, Vec qd) {
 
 PetscErrorCode DynamicAnalysis::startFromCoarseLevel(double t1, Vec U, bool* found) {
   PetscFunctionBeginUser;
-  *found = false;
-  const std::vector<TimeHandover::Step>& steps = coarse_->steps;
-  const double tol = 1e-9 * (steps[1].t - steps[0].t);  // the summed steps' round-off
-  // b: the first recorded time at or after t1 (up to tol)
-  const auto after = std::lower_bound(steps.begin(), steps.end(), t1 - tol,
-                                      [](const TimeHandover::Step& s, double t) { return s.t < t; });
-  if (after == steps.end() || after == steps.begin()) PetscFunctionReturn(PETSC_SUCCESS);
-  const TimeHandover::Step& b = *after;
-  const TimeHandover::Step& a = *(after - 1);
-  const bool exact = std::abs(b.t - t1) <= tol;
-  const double H = b.t - a.t, s = exact ? 1.0 : (t1 - a.t) / H;
-  const HermiteWeights w = hermiteWeights(s);
+  const DistributedMesh& mesh = asm_.mesh();
+  std::vector<double> q;
+  std::vector<Mat3> R;
+  *found = coarseStateAt(*coarse_, mesh, t1, &q, &R);
+  if (!*found) PetscFunctionReturn(PETSC_SUCCESS);
   PetscScalar* u;
   PetscCall(VecGetArray(U, &u));
-  for (std::size_t j = 0; j < b.q.size(); ++j)
-    u[j] = exact ? b.q[j] : w.h00 * a.q[j] + w.h10 * H * a.v[j] + w.h01 * b.q[j] + w.h11 * H * b.v[j];
-  const DistributedMesh& mesh = asm_.mesh();
+  std::copy(q.begin(), q.end(), u);
   const std::vector<Mat3> Rref = asm_.referenceRotations();  // R_n of this level: the unknowns are exp(theta) R_n
   std::size_t r = 0;
   for (int i = 0; i < mesh.numOwnedNodes; ++i) {
     const LocalNode& n = mesh.nodes[static_cast<std::size_t>(i)];
     if (!rotationUnknowns(n)) continue;
-    const Mat3 Rb = rotationOfQuaternion(&b.rotations[4 * r]);
-    Mat3 R = Rb;
-    if (!exact) {
-      const auto spin = [&](const TimeHandover::Step& st) {
-        return Vec3{st.v[static_cast<std::size_t>(n.dof[3])], st.v[static_cast<std::size_t>(n.dof[4])],
-                    st.v[static_cast<std::size_t>(n.dof[5])]};
-      };
-      R = hermiteRotation(rotationOfQuaternion(&a.rotations[4 * r]), spin(a), Rb, spin(b), H, s);
-    }
-    ++r;
-    const Vec3 theta = logSO3(R * transpose(Rref[static_cast<std::size_t>(i)]));
+    const Vec3 theta = logSO3(R[r++] * transpose(Rref[static_cast<std::size_t>(i)]));
     for (int k = 0; k < 3; ++k) u[n.dof[3 + k]] = theta[static_cast<std::size_t>(k)];
   }
   PetscCall(VecRestoreArray(U, &u));
-  *found = true;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -208,6 +208,13 @@ StudyResult runRefinementStudy(const Model& base, const StudyOptions& options, c
     if (options.reuse) {
       handover = std::make_shared<StaticsHandover>();
       if (coarser) handover->guesses = interpolateStates(coarserModel, model, coarser->record);
+      if (options.time) {  // levels in time: the coarser level's time steps; this level records its own
+        if (coarser) {
+          handover->coarseHistory = std::move(coarser->history);
+          coarser->coarseHistory.reset();  // two levels back: no longer needed
+        }
+        handover->history = std::make_shared<TimeHandover>();
+      }
     }
     LevelRun r = run(model, level, toFile, datasetsUsed(s.quantities), handover);
     if (handover) {  // a level that did not converge hands on the states it reached
@@ -270,6 +277,8 @@ StudyResult runRefinementStudy(const Model& base, const StudyOptions& options, c
     if (options.reuse) {
       handover = std::make_shared<StaticsHandover>();
       handover->guesses = std::move(lastGuesses);
+      if (coarser) handover->coarseHistory = coarser->coarseHistory;  // in time; it records nothing
+      coarser.reset();  // its own record: no finer level follows
     }
     s.finalRun = run(refinedModel(base, rec.level), rec.level, true, datasetsUsed(s.quantities), handover);
     s.totalSeconds += s.finalRun.seconds;

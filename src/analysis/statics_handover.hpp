@@ -2,11 +2,15 @@
 // (docs/accuracy.md, "Reuse between levels"): the coarse level records its converged state at every
 // accepted load increment; the study interpolates those states onto the fine level's nodes
 // (accuracy/level_reuse.hpp), and the fine level's Newton starts each increment that ends at a
-// recorded load factor from that state instead of the last converged one (or the predictor).
+// recorded load factor from that state instead of the last converged one (or the predictor). Levels
+// in time hand on their time steps instead (analysis/time_handover.hpp).
 #pragma once
 #include <petscvec.h>
 
+#include <memory>
 #include <vector>
+
+#include "analysis/time_handover.hpp"
 
 namespace sinew {
 
@@ -25,8 +29,12 @@ struct StaticsHandover {
   std::vector<LevelState> record;
   /// read by the level's statics: the coarser level's states on this level's nodes (empty: none)
   std::vector<LevelState> guesses;
-  /// increments (path steps) whose Newton started from a guess and converged (this level's run)
+  /// increments (path steps, time steps) whose Newton started from a guess and converged (this level's run)
   int guessesUsed = 0;
+  /// dynamics, levels in time (analysis/time_handover.hpp): written by the level's time loop when set
+  std::shared_ptr<TimeHandover> history;
+  /// read by the level's time loop: the coarser level's time steps (null: none)
+  std::shared_ptr<const TimeHandover> coarseHistory;
 };
 
 /// The node states of the assembler's current evaluation (every FE node, every rank) at load factor

@@ -270,8 +270,14 @@ PetscErrorCode DynamicAnalysis::initialAccelerations(Vec U, Vec V, Vec Qdd, bool
 PetscErrorCode DynamicAnalysis::step(double t1, bool* ok, int* its, double* fnorm, SNESConvergedReason* why, bool commit) {
   PetscFunctionBeginUser;
   const double h = h_;
-  const bool rotated = followRotation_ && !restPredictor_;
-  if (asm_.mixedStressNewton() && !rotated) {  // the mixed-stress tangent linearizes from the converged q_n (also on a retry)
+  Vec U;
+  PetscCall(SNESGetSolution(snes_, &U));
+  // a -target_error level in time: Newton starts from the coarser level's state at t1 where it has one
+  // (not on a guarded retry), instead of the predictor (level_time_reuse.cpp)
+  bool coarseStart = false;
+  if (coarse_ && !restPredictor_) PetscCall(startFromCoarseLevel(t1, U, &coarseStart));
+  const bool rotated = followRotation_ && !restPredictor_ && !coarseStart;
+  if (asm_.mixedStressNewton() && !rotated && !coarseStart) {  // the mixed-stress tangent linearizes from the converged q_n (also on a retry)
     LoadState lsn = ls_;
     lsn.time = t1 - h;
     PetscCall(asm_.setMixedReference(stepScheme_->state().q, lsn));
@@ -283,12 +289,16 @@ PetscErrorCode DynamicAnalysis::step(double t1, bool* ok, int* its, double* fnor
   }
   ls_.time = t1;
   PetscCall(stepScheme_->beginStep(h));
-  Vec U;
-  PetscCall(SNESGetSolution(snes_, &U));
   // Newton starts at the scheme's extrapolation or at q_n; guarded: at q_n (an extrapolation by the
   // accelerations of a step load on a fine mesh lands far outside Newton's reach: stiff axial waves)
-  if (restPredictor_ || predictor_ == Predictor::State) PetscCall(VecCopy(stepScheme_->state().q, U));
-  else PetscCall(stepScheme_->predict(U));
+  if (coarseStart) {
+    // the mixed stresses linearize from the start, near q_{n+1} (as from the rotation predictor's)
+    if (asm_.mixedStressNewton()) PetscCall(asm_.setMixedReference(U, ls_));
+  } else if (restPredictor_ || predictor_ == Predictor::State) {
+    PetscCall(VecCopy(stepScheme_->state().q, U));
+  } else {
+    PetscCall(stepScheme_->predict(U));
+  }
   if (rotated) {
     // q_n moved by each node's rigid motion; the mixed stresses linearize from there (linearized from
     // q_n, the strains of a turn by h Omega are off by ~ (h Omega)^2 / 2 of the element: the spin-up at
@@ -306,6 +316,10 @@ PetscErrorCode DynamicAnalysis::step(double t1, bool* ok, int* its, double* fnor
   if (*ok) {
     PetscCall(stepScheme_->rates(U));
     if (commit) PetscCall(stepScheme_->commit(U));
+    if (coarseStart) {
+      ++report_.coarseStarts;
+      ++handover_->guessesUsed;
+    }
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -398,6 +412,7 @@ PetscErrorCode DynamicAnalysis::runArnoldBruls(Vec U, const StepCallback& onStep
     }
     PetscCall(VecCopy(state.qdd, state.a));  // a_0 = qdd_0
     progress_ = {0, 0.0, opts_.dt, 0, 0.0};
+    PetscCall(recordLevelStep(0.0, state.q, state.qd));
     if (onStep) PetscCall(onStep(0, 0.0, state.q, state.qd, state.qdd));
   }
 
@@ -406,6 +421,7 @@ PetscErrorCode DynamicAnalysis::runArnoldBruls(Vec U, const StepCallback& onStep
     PetscCall(VecCopy(state.q, U));
     PetscFunctionReturn(PETSC_SUCCESS);
   }
+  PetscCall(useCoarseLevel());
   const double dt = opts_.dt, tend = opts_.tend;
   const int nsteps = std::max(1, static_cast<int>(std::ceil(tend / dt - 1e-9)));
   double t = resumed_ ? progress_.time : 0.0;
@@ -442,6 +458,7 @@ PetscErrorCode DynamicAnalysis::runArnoldBruls(Vec U, const StepCallback& onStep
     report_.reducedSteps += reduced || control.cuts() > 0;
     report_.time = t;
     progress_ = {k, t, control.carried(), control.successes(), 0.0};
+    PetscCall(recordLevelStep(t, state.q, state.qd));
     if (onStep) PetscCall(onStep(k, t, state.q, state.qd, state.qdd));
     if (stop_ && *stop_) *stop = StepStop::Interrupted;
     return PETSC_SUCCESS;

@@ -21,6 +21,7 @@
 #include <memory>
 #include <string>
 
+#include "analysis/statics_handover.hpp"
 #include "assembly/assembler.hpp"
 #include "dynamics/damping.hpp"
 #include "dynamics/energy_momentum_scheme.hpp"
@@ -46,6 +47,7 @@ struct DynamicsReport {
   int corotatedJacobians = 0;  ///< of those, rebuilt from rotated kept element blocks (ANCF cables, no kernel)
   int refinements = 0;       ///< refinements per step solve at the end (-dynamics_refine)
   int refinedSolves = 0;     ///< step solves that were refined
+  int coarseStarts = 0;      ///< step solves that started from the coarser level's record and converged (-target_error)
   double time = 0;           ///< last converged time
   // adaptive time steps (opt.dynamics.adaptive; 0 with a fixed dt)
   int acceptedSteps = 0;     ///< accepted steps (time steps taken) since t = 0
@@ -101,6 +103,11 @@ class DynamicAnalysis : private MotionEquations {
   /// The loop ends after the step whose onStep set *stop (an interrupt or a failed result file);
   /// the run is then neither converged nor failed here: the caller knows why it stopped.
   void setStopFlag(const bool* stop) { stop_ = stop; }
+  /// A -target_error level in time (analysis/time_handover.hpp; -accuracy_reuse): the fixed-step loop
+  /// records its converged time steps in h->history (when set) and starts Newton at each step's end
+  /// time from h->coarseHistory (when its layout is this run's on every rank), counted in
+  /// h->guessesUsed. Call before run(); null: neither.
+  void setLevelHandover(StaticsHandover* h) { handover_ = h; }
 
   const DynamicsReport& report() const { return report_; }
   /// Continues after time step p.step (a checkpoint; Arnold-Brüls scheme only): U, V, the
@@ -166,9 +173,19 @@ class DynamicAnalysis : private MotionEquations {
   PetscErrorCode runTSAlpha2(Vec U, const StepCallback& onStep, bool* converged);
   /// Builds the damping matrix from the start state U (rotations absorbed).
   PetscErrorCode setupDamping(Vec U);
+  // a -target_error level in time (level_time_reuse.cpp)
+  /// coarse_ <- the coarser level's record when its layout is this run's on every rank (collective).
+  PetscErrorCode useCoarseLevel();
+  /// Appends the converged state (t, q, qd; rotations absorbed) to handover_->history, if set.
+  PetscErrorCode recordLevelStep(double t, Vec q, Vec qd);
+  /// U <- the coarser level's state at t1 (exact at its times, cubic Hermite between); *found false
+  /// (U unchanged) when t1 is outside its record. The same answer on every rank.
+  PetscErrorCode startFromCoarseLevel(double t1, Vec U, bool* found);
 
   Assembler& asm_;
   const bool* stop_ = nullptr;
+  StaticsHandover* handover_ = nullptr;     ///< setLevelHandover
+  const TimeHandover* coarse_ = nullptr;    ///< the coarser level's record in use (useCoarseLevel)
   bool resumed_ = false;
   bool dampingReady_ = false;  ///< setupResumedDamping was called
   DynamicsProgress progress_;

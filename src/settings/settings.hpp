@@ -130,7 +130,7 @@ struct FormFindingSettings {
 /// Accuracy on demand (opt.target_error, docs/accuracy.md).
 struct AccuracySettings {
   int maxUnknowns = 1000000;  ///< -accuracy_max_unknowns: no level of refinement above this many unknowns
-  bool reuse = true;          ///< -accuracy_reuse: a level's statics (arc-length path) start (predict) from the coarser level's states (path)
+  bool reuse = true;          ///< -accuracy_reuse: a level's statics (arc-length path, time steps) start (predict) from the coarser level's states (path, steps)
   /// Not a flag: set by a -target_error study on the run of one level (analysis/statics_handover.hpp);
   /// its statics records its states there and starts from the guesses it holds. nullptr: none.
   std::shared_ptr<StaticsHandover> handover;

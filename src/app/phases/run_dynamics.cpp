@@ -39,6 +39,8 @@ PetscErrorCode runDynamics(RunContext& ctx) {
   if (ctx.restart && ctx.restart->phase() == CheckpointPhase::Dynamics) {
     PetscCall(ctx.restart->resumeDynamics(ctx, dyn, &energy0, &maxDrift, &work, &power));
     tPrev = dyn.progress().time;
+  } else {
+    dyn.setLevelHandover(ctx.settings.accuracy.handover.get());  // a -target_error level in time
   }
   // the checkpoint of a written time step (Arnold-Brüls only: PETSc TS keeps its state inside)
   Vec stepU = nullptr, stepV = nullptr, stepQdd = nullptr;  // the step being written
@@ -155,6 +157,7 @@ PetscErrorCode runDynamics(RunContext& ctx) {
     s << ", " << r.refinedSolves << " refinements of step solves with the element-wise Newton matrix (" << r.refinements
       << " per solve at the end)";
   s << ", " << ctx.assembler.counters().dampingMatrices << " element damping matrices";
+  if (r.coarseStarts > 0) s << ", " << r.coarseStarts << " steps started from the coarser level";
   if (r.guardedSteps > 0) s << ", " << r.guardedSteps << " steps retried from the last state";
   if (r.reducedSteps > 0) s << ", " << r.reducedSteps << " steps with halved sub-steps (" << r.substeps << " solves)";
   s << "\n";

@@ -1,0 +1,104 @@
+#!/usr/bin/python3
+"""-target_error's reuse between levels in time (docs/accuracy.md, block accuracy_time_reuse): a study of
+a dynamics scene whose levels halve dt, with -accuracy_reuse 1 and 0 side by side in one run (2 MPI ranks
+each, one run after the other):
+
+- the beam step response of the accuracy studies (tests/cases/test_accuracy_dynamics.py: a one-element
+  steel leaf under a tip step force in the linear range), targets 1e-5 and 1e-7;
+- the same leaf with nbeams 4 under a smooth large tip load (tests/cases/test_accuracy_time_reuse.py;
+  the tip turns by 0.4 rad), 1e-4;
+- the right-angle cantilever of Simo & Vu-Quoc 1988 (tests/cases/right_angle_scene.py; out-of-plane
+  flapping, the nodes turn by up to 1.75 rad), 4 elements per leg, dt = 0.25 s to 5 s, 1e-4.
+
+Per case: the levels, the Newton iterations per level with reuse and without (/accuracy
+newton_iterations), the wall time of each study (mpirun's start, every level, the file; the least of
+`repeats` interleaved runs), the steps that
+started from the coarser level (/accuracy reused_starts), the worst estimate of the reported level with
+and without, and the largest change of a level's history between the two (per watched history, relative
+to its largest row on that level).
+
+usage: scripts/study_accuracy_time_reuse.py [repeats]   (repeats default 3; about 10 minutes on 2 shared cores)"""
+import json
+import os
+import subprocess
+import sys
+import time
+
+import h5py
+import numpy as np
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.join(ROOT, "scripts"))
+import doc_tables  # noqa: E402
+from study_accuracy import ENV  # noqa: E402
+
+sys.path.insert(0, os.path.join(ROOT, "tests", "cases"))
+import leaf_dynamics_scene as leaf  # noqa: E402
+import right_angle_scene as ra  # noqa: E402
+
+WORK = os.path.join(ROOT, "build", "study_accuracy_time_reuse")
+REPEATS = int(sys.argv[1]) if len(sys.argv) > 1 else 3
+
+
+def run(tag, scene, args):
+    path = os.path.join(WORK, tag + ".yaml")
+    with open(path, "w") as f:
+        f.write(scene if isinstance(scene, str) else json.dumps(scene, indent=1))
+    h5 = os.path.join(WORK, tag + ".h5")
+    t0 = time.time()
+    p = subprocess.run(["mpirun", "-n", "2", os.path.join(ROOT, "build", "sinew"), path, "-o", h5] + args, env=ENV,
+                       capture_output=True, text=True)
+    wall = time.time() - t0
+    if p.returncode != 0:
+        print(p.stdout[-3000:], p.stderr[-2000:])
+        sys.exit(f"{tag}: exit {p.returncode}")
+    return h5, wall
+
+
+def read(h5):
+    with h5py.File(h5, "r") as f:
+        g = f["accuracy"]
+        v = np.nan_to_num(g["value"][:])
+        return dict(its=[int(x) for x in g["newton_iterations"][:]], reused=int(sum(g["reused_starts"][:])),
+                    worst=float(g["worst_error"][-1]), factors=[int(x) for x in g["nbeams_factor"][:]],
+                    rows=v.reshape(v.shape[0], v.shape[1], -1, 3))
+
+
+def main():
+    os.makedirs(WORK, exist_ok=True)
+    rows = ["| case | target | levels | Newton iterations per level, reuse | without | total, reuse / none | "
+            f"steps started from the coarser level | wall time of the study (s, least of {REPEATS}), reuse / none | "
+            "worst estimate, reuse / none | largest change of a level's history |",
+            "|---|---|---|---|---|---|---|---|---|---|"]
+    start = time.time()
+    cases = (("beam step response, 1 element", leaf.step_response(), 1e-5),
+             ("beam step response, 1 element", leaf.step_response(), 1e-7),
+             ("leaf, smooth large tip load, nbeams 4", leaf.smooth_large(), 1e-4),
+             ("right-angle cantilever, 4 elements per leg, to 5 s", ra.scene(n=4, dt=0.25, tend=5.0), 1e-4))
+    for name, scene, target in cases:
+        tag = f"{name.split(',')[0].replace(' ', '_').replace('-', '_')}_{target:g}"
+        r, walls = {}, {1: [], 0: []}
+        for _ in range(REPEATS):  # interleaved, so that a change of the machine's load hits both alike
+            for reuse in (1, 0):
+                h5, w = run(f"{tag}_{reuse}", scene, ["-target_error", f"{target:g}", "-accuracy_reuse", str(reuse)])
+                walls[reuse].append(w)
+                r[reuse] = read(h5)
+        wall = {k: min(v) for k, v in walls.items()}
+        on, off = r[1], r[0]
+        size = np.maximum(np.max(np.linalg.norm(off["rows"], axis=3), axis=2), 1e-300)
+        change = float(np.max(np.max(np.linalg.norm(on["rows"] - off["rows"], axis=3), axis=2) / size))
+        row = (f"| {name} | {target:g} | dt / {on['factors'][0]} .. dt / {on['factors'][-1]} | "
+               f"{', '.join(map(str, on['its']))} | {', '.join(map(str, off['its']))} | "
+               f"{sum(on['its'])} / {sum(off['its'])} | {on['reused']} | {wall[1]:.1f} / {wall[0]:.1f} | "
+               f"{on['worst']:.3g} / {off['worst']:.3g} | {change:.1e} |")
+        print(row, flush=True)
+        rows.append(row)
+    load = os.getloadavg()[0]
+    text = (f"Generated by `scripts/study_accuracy_time_reuse.py {REPEATS}` on {time.strftime('%Y-%m-%d')} ({time.time() - start:.0f} s, "
+            f"2 MPI ranks; load average {load:.1f} on 2 cores shared with other jobs: times are indicative, the Newton "
+            "iterations are not).\n\n" + "\n".join(rows) + "\n")
+    doc_tables.write_block("accuracy.md", "accuracy_time_reuse", text)
+
+
+if __name__ == "__main__":
+    main()

@@ -27,6 +27,8 @@ struct StaticsHandover {
   std::vector<LevelState> guesses;
   /// increments (path steps) whose Newton started from a guess and converged (this level's run)
   int guessesUsed = 0;
+  /// path steps that followed the coarser level's step plan and converged (this level's run)
+  int plannedSteps = 0;
 };
 
 /// The node states of the assembler's current evaluation (every FE node, every rank) at load factor

@@ -121,7 +121,7 @@ const std::vector<Field<AccuracySettings>>& accuracyFields() {
   static const std::vector<Field<AccuracySettings>> fields = {
       {"accuracy_max_unknowns", integerAtLeast(1), &flag_groups::accuracy, "1000000", "largest level of -target_error, in unknowns; a target that needs a finer level stops at the best level reached with its estimate (exit 3; docs/accuracy.md)", &AccuracySettings::maxUnknowns},
       {"accuracy_reuse", boolean(), &flag_groups::accuracy, "true", "-target_error levels start from the coarser level's states; each level's load steps start Newton from the coarser level's converged states, interpolated onto its nodes, and an arc-length path's steps predict from the coarser level's path; false: every level from the unloaded state (statics: the same results to Newton's tolerance; a path's points move with its step sizes; docs/accuracy.md)", &AccuracySettings::reuse},
-      {"accuracy_path_plan", boolean(), &flag_groups::accuracy, "true", "with -accuracy_reuse, a level's arc-length path takes the coarser level's accepted steps as its plan and lands its last step on stop_displacement; false: its own step control (for comparison; docs/accuracy.md)", &AccuracySettings::pathPlan, true},
+      {"accuracy_path_plan", boolean(), &flag_groups::accuracy, "true", "a level's arc-length path follows the coarser level's steps (with -accuracy_reuse: its accepted steps as the plan, the last step landed on stop_displacement; false: the level's own step control, for comparison; docs/accuracy.md)", &AccuracySettings::pathPlan, true},
   };
   return fields;
 }

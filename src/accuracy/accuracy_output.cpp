@@ -111,6 +111,8 @@ RunResults accuracyResults(const StudyResult& study) {
   for (const LevelRecord& l : study.levels)
     for (const auto& v : l.values) m = std::max(m, v.size());
   std::vector<double> level, factor, unknowns, seconds, newton, reused, worst, limiting, error, order, status, value;
+  std::vector<double> steps, rejected, planned;  // paths only
+  bool path = false;
   for (const LevelRecord& l : study.levels) {
     level.push_back(l.level);
     factor.push_back(static_cast<double>(l.factor));
@@ -118,6 +120,10 @@ RunResults accuracyResults(const StudyResult& study) {
     seconds.push_back(l.seconds);
     newton.push_back(l.newtonIterations >= 0 ? static_cast<double>(l.newtonIterations) : kNaN);
     reused.push_back(l.guessesUsed);
+    path = path || l.pathSteps >= 0;
+    steps.push_back(l.pathSteps >= 0 ? static_cast<double>(l.pathSteps) : kNaN);
+    rejected.push_back(l.rejectedSteps >= 0 ? static_cast<double>(l.rejectedSteps) : kNaN);
+    planned.push_back(l.plannedSteps);
     worst.push_back(l.worst >= 0 ? l.worst : kNaN);
     limiting.push_back(l.limiting);
     for (std::size_t q = 0; q < nq; ++q) {
@@ -146,6 +152,11 @@ RunResults accuracyResults(const StudyResult& study) {
   add("wall_time", {L}, seconds);
   add("newton_iterations", {L}, newton);  // NaN: the level's summary reports none (opt.silent, no solver phase)
   add("reused_starts", {L}, reused);      // load increments started from the coarser level's state
+  if (path) {
+    add("path_steps", {L}, steps);        // a path's accepted steps (its points)
+    add("rejected_steps", {L}, rejected);  // its steps cut or repeated shorter
+    add("planned_steps", {L}, planned);    // its steps that followed the coarser level's steps
+  }
   add("worst_error", {L}, worst);
   add("limiting", {L}, limiting);
   add("error", {L, Q}, error);

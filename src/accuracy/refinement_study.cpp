@@ -133,6 +133,26 @@ long newtonIterationsOf(const std::string& output) {
   return total;
 }
 
+void pathStepsOf(const std::string& output, long* steps, long* rejected) {
+  // the path summary's "path: 41 points, ..., 0 cut steps[, 2 steps repeated shorter ...]"
+  *steps = *rejected = -1;
+  const std::size_t at = output.find("  path: ");
+  if (at == std::string::npos) return;
+  const std::string line = output.substr(at, output.find('\n', at) - at);
+  auto before = [&line](const std::string& tail) -> long {
+    const std::size_t end = line.find(tail);
+    if (end == std::string::npos) return 0;
+    const std::size_t open = line.find_last_of(" ,:", end - 1);
+    try {
+      return std::stol(line.substr(open + 1, end - open - 1));
+    } catch (const std::exception&) {
+      return 0;
+    }
+  };
+  *steps = before(" points");
+  *rejected = before(" cut steps") + before(" steps repeated shorter");
+}
+
 StudyOptions studyOptions(const Model& m, double target, long maxUnknowns, bool lumpedMass, bool reuse) {
   StudyOptions o;
   o.reuse = reuse && reusesStates(m);
@@ -249,6 +269,8 @@ StudyResult runRefinementStudy(const Model& base, const StudyOptions& options, c
     rec.seconds = r.seconds;
     rec.newtonIterations = newtonIterationsOf(r.output);
     rec.guessesUsed = handover ? handover->guessesUsed : 0;
+    rec.plannedSteps = handover ? handover->plannedSteps : 0;
+    pathStepsOf(r.output, &rec.pathSteps, &rec.rejectedSteps);
     rec.toFile = toFile;
     for (const QuantityDef& q : s.quantities) rec.values.push_back(readQuantity(q, r.results));
     if (s.levels.size() >= 2) estimate(rec, s.levels[s.levels.size() - 2], s.levels.back(), s.quantities, r.results, options);

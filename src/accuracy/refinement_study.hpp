@@ -41,6 +41,9 @@ struct LevelRecord {
   double seconds = 0;
   long newtonIterations = -1;  ///< every phase's Newton iterations of the level's run (-1: none reported)
   int guessesUsed = 0;         ///< load increments (path steps) that started from the coarser level's state (path)
+  long pathSteps = -1;         ///< a path's accepted steps (its points; -1: no path)
+  long rejectedSteps = -1;     ///< a path's steps cut or repeated shorter (-1: no path)
+  int plannedSteps = 0;        ///< a path's steps that followed the coarser level's steps as their plan
   bool toFile = false;
   std::vector<std::vector<double>> values;  ///< per quantity
   std::vector<Estimate> estimates;          ///< per quantity, from this level and the two before (level >= 2)
@@ -91,6 +94,10 @@ double historyOrder(const StudyOptions& options);
 
 /// The Newton iterations a run's summary reports (the sum over its phases; -1: none).
 long newtonIterationsOf(const std::string& output);
+
+/// A path's accepted steps and its rejected ones (cut, or repeated shorter after turning the path too far)
+/// from a run's summary; -1 each without a path.
+void pathStepsOf(const std::string& output, long* steps, long* rejected);
 
 /// Runs the levels. print: one progress line per level (rank 0's text, printed by the caller).
 StudyResult runRefinementStudy(const Model& base, const StudyOptions& options, const LevelRunner& run,

@@ -400,7 +400,7 @@ PetscErrorCode ContinuationAnalysis::pathSlopes(Vec U, double lambda, Vec dUlast
 PetscErrorCode ContinuationAnalysis::correct(Vec U, double* lambda, Vec U0, double lambda0, double ds, double qnorm,
                                              double jnorm, KSPConvergedReason* kr, bool* ok, int* its) {
   PetscFunctionBeginUser;
-  const bool displacement = opt_.method == "displacement";
+  const bool displacement = opt_.method == "displacement" || landing_;
   const double psi2 = opt_.constraint == "spherical" ? opt_.psi * opt_.psi : 0.0;
   for (int k = 0; k < maxIts_ && *kr >= 0 && std::isfinite(*lambda); ++k) {
     LoadState ls;
@@ -465,7 +465,7 @@ PetscErrorCode ContinuationAnalysis::step(Vec U, double* lambda, double ds, Vec 
                                           bool* ok, int* its) {
   PetscFunctionBeginUser;
   MPI_Comm comm = asm_.mesh().comm;
-  const bool displacement = opt_.method == "displacement";
+  const bool displacement = opt_.method == "displacement" || landing_;
   const double psi2 = opt_.constraint == "spherical" ? opt_.psi * opt_.psi : 0.0;
   Vec U0;
   PetscCall(VecDuplicate(U, &U0));
@@ -504,14 +504,19 @@ PetscErrorCode ContinuationAnalysis::step(Vec U, double* lambda, double ds, Vec 
     PetscCall(VecAXPY(U, dl, duq_));
     *lambda = lambda0 + dl;
   }
-  // the coarser level's path where it meets the constraint, else (and when its corrector fails) the tangent
+  // a planned step: the coarser level's step; else the coarser level's path where it meets the constraint;
+  // else (and when its corrector fails) the tangent
   bool guessed = false;
   Vec Upred = nullptr;
   const double lambdaPred = *lambda;
   if (kr >= 0 && !displacement && handover_ && !handover_->guesses.empty()) {
     PetscCall(VecDuplicate(U, &Upred));
     PetscCall(VecCopy(U, Upred));
-    PetscCall(coarsePathGuess(U0, lambda0, ds, psi2 * qnorm * qnorm, U, lambda, &guessed));
+    double dsPlan = 0;
+    if (planned_) PetscCall(plannedStep(planStep_, U0, lambda0, &dsPlan, U, lambda));
+    else PetscCall(coarsePathGuess(U0, lambda0, ds, psi2 * qnorm * qnorm, U, lambda, &guessed));
+    guessed = guessed || planned_;
+    if (!guessed) PetscCall(VecCopy(Upred, U));  // no coarser point ahead: the tangent (U was its scratch)
   }
   PetscCall(correct(U, lambda, U0, lambda0, ds, qnorm, jnorm, &kr, ok, its));
   if (guessed && *ok) ++handover_->guessesUsed;
@@ -582,8 +587,15 @@ PetscErrorCode ContinuationAnalysis::run(Vec U, const PointCallback& onPoint, bo
   double turn = 0.0, lambdaStart = lambda;
   int correctorIts = 0, repeats = 0;
   rules.strategy = [&](double h, double proposal, const StepAttempt& a, double* next, bool* reject) -> int {
+    if (planned_ && ++planStep_ < handover_->guesses.size()) {  // the plan's next step (its turn was the coarser one's)
+      *reject = false;
+      PetscCall(plannedStep(planStep_, U, lambda, &planSize_));
+      *next = planSize_;
+      return PETSC_SUCCESS;
+    }
+    if (planned_) planActive_ = false, guessCursor_ = planStep_ - 1;  // the plan ended: the own step control
     if (angleControl_ && turn > kMaxAngle && repeats < 3) {
-      ++repeats;
+      ++repeats, ++repeated_;
       *reject = true;
       *next = h * std::max(kTargetAngle / turn, 0.25);
       PetscCall(VecCopy(Uprev, U));  // back to the step's start
@@ -593,6 +605,12 @@ PetscErrorCode ContinuationAnalysis::run(Vec U, const PointCallback& onPoint, bo
     }
     return aim(h, proposal, a, next, reject);
   };
+  // -target_error levels: the coarser level's steps as the plan (no branch switch: its point would not be a step)
+  if (!resumed && handover_ && plan_ && !branchSwitch_ && opt_.method != "displacement" && handover_->guesses.size() >= 2) {
+    planActive_ = true, planStep_ = 1;
+    PetscCall(plannedStep(planStep_, U, lambda, &planSize_));
+    ds = planSize_;
+  }
   StepController control(rules, {"path step", "load factor", sizeName});
   control.resume(ds);
   SteppedProcedure path;
@@ -600,7 +618,13 @@ PetscErrorCode ContinuationAnalysis::run(Vec U, const PointCallback& onPoint, bo
     Rsave = asm_.referenceRotations();
     PetscCall(VecCopy(U, Uprev));
     lambdaStart = lambda;
+    planned_ = planActive_ && h == planSize_;
     PetscCall(step(U, &lambda, h, dUprev, dlPrev, control.step() == 1, &a->converged, &a->iterations));
+    if (planned_ && !a->converged) planActive_ = false, guessCursor_ = planStep_ - 1;  // cut by the own control
+    if (planned_ && a->converged) ++handover_->plannedSteps;
+    landedDs_ = 0;
+    if (a->converged && handover_ && plan_ && haveControl_ && opt_.stop_displacement)
+      PetscCall(landOnStop(U, &lambda, Uprev, lambdaStart, dUprev, dlPrev, &a->iterations));
     a->reason = "corrector did not converge";
     a->at = lambda;
     correctorIts = a->iterations;
@@ -620,7 +644,7 @@ PetscErrorCode ContinuationAnalysis::run(Vec U, const PointCallback& onPoint, bo
     ls.loadFactor = ls.time = lambda;
     PetscCall(asm_.setMixedReference(U, ls));
     PetscCall(asm_.absorbRotations(U));
-    ds = h;
+    ds = landedDs_ > 0 ? landedDs_ : h;
     its = a.iterations;
     repeats = 0;
     return PETSC_SUCCESS;
@@ -662,7 +686,7 @@ PetscErrorCode ContinuationAnalysis::run(Vec U, const PointCallback& onPoint, bo
         PetscCall(PetscPrintf(comm, "  branch switch at path point %d failed: Newton returned to the primary path\n", n));
       }
     }
-    if ((opt_.stop_load_factor && lambda >= *opt_.stop_load_factor) ||
+    if (landedDs_ > 0 || (opt_.stop_load_factor && lambda >= *opt_.stop_load_factor) ||
         (opt_.stop_displacement && std::abs(p.controlValue) >= std::abs(*opt_.stop_displacement)))
       *stop = StepStop::StopCondition;
     return PETSC_SUCCESS;
@@ -715,58 +739,6 @@ PetscErrorCode ContinuationAnalysis::run(Vec U, const PointCallback& onPoint, bo
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-// The last two points differ in their negative-eigenvalue count: a limit point when the load factor
-// turned back between them (located by the cubic Hermite interpolant of the load factor over the step),
-// a bifurcation otherwise, located at the zero of the eigenvalue that changes sign (linear over the step)
-// when SLEPc gave it at both points, else at the midpoint.
-void ContinuationAnalysis::classify() {
-  const size_t n = points_.size();
-  const PathPoint& b = points_[n - 1];
-  const PathPoint a = n >= 2 ? points_[n - 2] : PathPoint{};
-  // a limit point when the load factor turned back between the two points (path slopes of opposite
-  // sign), a bifurcation otherwise
-  const bool turned = n >= 2 && a.slopeLoad * b.slopeLoad < 0;
-  CriticalPoint c;
-  c.afterStep = static_cast<int>(n) - 1;
-  c.kind = turned ? CriticalPoint::Limit : CriticalPoint::Bifurcation;
-  if (turned) {
-    // cubic Hermite lambda(t), t in [0, 1] over the step's arc length h, from the values and the path
-    // slopes at both ends; the limit point is where d lambda / dt = 0
-    const double h = b.arcLength, la = a.loadFactor, lb = b.loadFactor, ma = h * a.slopeLoad, mb = h * b.slopeLoad;
-    const double A2 = 6 * la + 3 * ma - 6 * lb + 3 * mb, A1 = -6 * la - 4 * ma + 6 * lb - 2 * mb, A0 = ma;
-    double t = 0.5;
-    if (std::abs(A2) > 1e-300) {
-      const double disc = std::max(A1 * A1 - 4 * A2 * A0, 0.0);
-      const double t1 = (-A1 + std::sqrt(disc)) / (2 * A2), t2 = (-A1 - std::sqrt(disc)) / (2 * A2);
-      t = (t1 >= 0 && t1 <= 1) ? t1 : std::clamp(t2, 0.0, 1.0);
-    } else if (A1 != 0.0) {
-      t = std::clamp(-A0 / A1, 0.0, 1.0);
-    }
-    auto hermite = [t](double ya, double yb, double sa, double sb) {
-      const double t2 = t * t, t3 = t2 * t;
-      return (2 * t3 - 3 * t2 + 1) * ya + (t3 - 2 * t2 + t) * sa + (-2 * t3 + 3 * t2) * yb + (t3 - t2) * sb;
-    };
-    c.loadFactor = hermite(la, lb, ma, mb);
-    c.controlValue = hermite(a.controlValue, b.controlValue, h * a.slopeControl, h * b.slopeControl);
-  } else if (const double ma = b.negativeEigenvalues > a.negativeEigenvalues ? a.nearestPositive : a.nearestNegative,
-             mb = b.negativeEigenvalues > a.negativeEigenvalues ? b.nearestNegative : b.nearestPositive;
-             n >= 2 && (lowest_ || branchSwitch_) && std::isfinite(ma) && std::isfinite(mb) && ma * mb < 0) {
-    // With k negative eigenvalues at a and k + 1 at b, the (k+1)-th smallest crosses zero: at a it is the
-    // smallest positive one, at b the largest negative one (k + 1 -> k: the other way round). For k = 0
-    // that is the lowest eigenvalue at both points; at a second bifurcation (1 -> 2) the lowest is
-    // already negative at both and says nothing. Linear interpolation of it over the step. (A count
-    // jumping by more than one: the nearest ones, exact for a multiple eigenvalue.)
-    const double t = ma / (ma - mb);
-    c.loadFactor = a.loadFactor + t * (b.loadFactor - a.loadFactor);
-    c.controlValue = a.controlValue + t * (b.controlValue - a.controlValue);
-    c.interpolated = true;
-  } else {
-    c.loadFactor = 0.5 * (a.loadFactor + b.loadFactor);
-    c.controlValue = 0.5 * (a.controlValue + b.controlValue);
-  }
-  critical_.push_back(c);
-}
-
 std::string ContinuationAnalysis::summary() const {
   std::ostringstream s;
   s << "  path: " << points_.size() << " points, load factor " << (points_.empty() ? 0.0 : points_.back().loadFactor);
@@ -775,7 +747,9 @@ std::string ContinuationAnalysis::summary() const {
     its += p.iterations;
     cuts += p.cuts;
   }
-  s << ", " << its << " corrector iterations, " << cuts << " cut steps\n";
+  s << ", " << its << " corrector iterations, " << cuts << " cut steps";
+  if (repeated_ > 0) s << ", " << repeated_ << " steps repeated shorter (the path turned too far)";
+  s << "\n";
   for (const CriticalPoint& c : critical_) {
     s << "  " << (c.kind == CriticalPoint::Limit ? "limit point" : "bifurcation point") << " between path points "
       << c.afterStep << " and " << c.afterStep + 1 << ": load factor " << c.loadFactor;

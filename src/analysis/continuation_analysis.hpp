@@ -70,8 +70,14 @@ class ContinuationAnalysis {
   void setStartCarriesInitialLoads(bool v) { startCarriesInitial_ = v; }
   /// A -target_error level (docs/accuracy.md "Reuse between levels"): the path records its start state
   /// and every converged point into h->record, and an arc-length step predicts from the coarser level's
-  /// path h->guesses (interpolated onto this level's nodes) where it reaches the step's constraint.
-  void setHandover(StaticsHandover* h) { handover_ = h; }
+  /// path h->guesses (interpolated onto this level's nodes) where it reaches the step's constraint. Its steps
+  /// follow the coarser level's accepted steps as their plan (the same number of steps, from the coarser
+  /// point k - 1 to point k as the predictor) until one fails or the plan ends; then its own step control.
+  /// plan false: the own step control throughout, and no landing on stop_displacement (-accuracy_path_plan).
+  void setHandover(StaticsHandover* h, bool plan = true) {
+    handover_ = h;
+    plan_ = plan;
+  }
 
   /// Checkpoint (-restart): the path's state after the last reported point as a fixed-size row of
   /// checkpointSize() values (header, the points so far, the critical points), and the last increment
@@ -120,6 +126,16 @@ class ContinuationAnalysis {
   /// its point nearest to U0, to C1, where it leaves the ball |P - C0|^2 + w (lambda_P - lambda_C0)^2 =
   /// ds^2; into (G, *lambdaG) when found (the same on every rank).
   PetscErrorCode coarsePathGuess(Vec U0, double lambda0, double ds, double w, Vec G, double* lambdaG, bool* found);
+  /// The coarser level's step k (k >= 1; handover_->guesses[k - 1] to [k], on this level's unknowns about the
+  /// current reference rotations) as a step from (U, lambda): its size in the constraint's metric into *ds;
+  /// with G given, the step's start G = U + (C_k - C_k-1), *lambdaG = lambda + (lambda_k - lambda_k-1).
+  PetscErrorCode plannedStep(std::size_t k, Vec U, double lambda, double* ds, Vec G = nullptr, double* lambdaG = nullptr);
+  /// A -target_error level's step from (U0, lambda0) to (U, *lambda) that crossed stop_displacement is
+  /// repeated from its start by displacement control onto the stop (the end state then carries no
+  /// interpolation between path points, whose error would not shrink from level to level with the
+  /// plan's steps); on success landedDs_ is the repeated step's arc length and *its grows by its corrector
+  /// iterations, else the step stays as it was.
+  PetscErrorCode landOnStop(Vec U, double* lambda, Vec U0, double lambda0, Vec dUprev, double dlPrev, int* its);
   /// Appends the state at (U, lambda) to handover_->record.
   PetscErrorCode recordPoint(Vec U, double lambda);
   /// The model's size in the arc-length metric: |s| with s = D (bounding-box diagonal of the nodes) at
@@ -171,6 +187,14 @@ class ContinuationAnalysis {
   const bool* stop_ = nullptr;
   StaticsHandover* handover_ = nullptr;
   std::size_t guessCursor_ = 0;  ///< the coarser path's point nearest to the last step's start
+  /// The coarser level's steps as this level's plan (run()): path step n is the coarser step planStep_ of
+  /// size planSize_ while planActive_; planned_: the current attempt is one.
+  bool plan_ = true, planActive_ = false, planned_ = false;
+  std::size_t planStep_ = 0;
+  double planSize_ = 0;
+  int repeated_ = 0;  ///< steps repeated shorter because they turned the path too far (summary)
+  bool landing_ = false;  ///< the step is solved by displacement control (landOnStop)
+  double landedDs_ = 0;   ///< arc length of the step landed on stop_displacement (0: none)
 };
 
 }  // namespace sinew

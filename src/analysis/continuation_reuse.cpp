@@ -1,5 +1,5 @@
 // ContinuationAnalysis on the levels of a -target_error study (docs/accuracy.md "Reuse between levels"):
-// the record of the path's states and the predictor from the coarser level's path.
+// the record of the path's states, the coarser level's steps as the plan and the predictor from its path.
 #include <algorithm>
 #include <cmath>
 
@@ -105,6 +105,69 @@ PetscErrorCode ContinuationAnalysis::coarsePathGuess(Vec U0, double lambda0, dou
   guessCursor_ = nearest;
   PetscCall(VecDestroy(&A));
   PetscCall(VecDestroy(&B));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode ContinuationAnalysis::plannedStep(std::size_t k, Vec U, double lambda, double* ds, Vec G, double* lambdaG) {
+  PetscFunctionBeginUser;
+  const std::vector<LevelState>& path = handover_->guesses;
+  Vec A;  // C_k - C_k-1 on this level's unknowns (the entries without a state: 0)
+  PetscCall(VecDuplicate(U, &A));
+  PetscCall(VecCopy(U, A));
+  PetscCall(setUnknownsFromState(asm_, path[k], A));
+  PetscCall(VecCopy(U, work_));
+  PetscCall(setUnknownsFromState(asm_, path[k - 1], work_));
+  PetscCall(VecAXPY(A, -1.0, work_));
+  const double dl = path[k].loadFactor - path[k - 1].loadFactor;
+  double w = 0;  // the constraint's metric |dU|^2 + psi^2 |q|^2 dlambda^2 (cylindrical: psi 0)
+  if (opt_.constraint == "spherical") {
+    PetscCall(loadDerivative(U, lambda, q_));
+    PetscReal qn;
+    PetscCall(VecNorm(q_, NORM_2, &qn));
+    w = opt_.psi * opt_.psi * qn * qn;
+  }
+  PetscReal n2;
+  PetscCall(VecDot(A, A, &n2));
+  *ds = std::sqrt(n2 + w * dl * dl);
+  if (G) {
+    PetscCall(VecWAXPY(G, 1.0, U, A));
+    *lambdaG = lambda + dl;
+  }
+  PetscCall(VecDestroy(&A));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode ContinuationAnalysis::landOnStop(Vec U, double* lambda, Vec U0, double lambda0, Vec dUprev, double dlPrev,
+                                                int* its) {
+  PetscFunctionBeginUser;
+  const double stop = *opt_.stop_displacement;
+  double v = 0, v0 = 0;
+  PetscCall(controlDisplacement(U, *lambda, &v));
+  PetscCall(controlDisplacement(U0, lambda0, &v0));
+  if (!(std::abs(v) >= std::abs(stop) && std::abs(v0) < std::abs(stop))) PetscFunctionReturn(PETSC_SUCCESS);
+  Vec Ukeep;
+  PetscCall(VecDuplicate(U, &Ukeep));
+  PetscCall(VecCopy(U, Ukeep));
+  const double lambdaKeep = *lambda;
+  PetscCall(VecCopy(U0, U));
+  *lambda = lambda0;
+  bool ok = false;
+  int landingIts = 0;
+  landing_ = true;  // u_control - u_control(U0) = stop - v0
+  PetscCall(step(U, lambda, stop - v0, dUprev, dlPrev, false, &ok, &landingIts));
+  landing_ = false;
+  *its += landingIts;
+  if (ok) {  // the step's arc length in the constraint's metric (the limit point locator's parameter)
+    const double w = opt_.constraint == "spherical" ? opt_.psi * opt_.psi * lastQnorm_ * lastQnorm_ : 0.0;
+    PetscCall(VecWAXPY(work_, -1.0, U0, U));
+    PetscReal n2;
+    PetscCall(VecDot(work_, work_, &n2));
+    landedDs_ = std::sqrt(n2 + w * (*lambda - lambda0) * (*lambda - lambda0));
+  } else {
+    PetscCall(VecCopy(Ukeep, U));
+    *lambda = lambdaKeep;
+  }
+  PetscCall(VecDestroy(&Ukeep));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

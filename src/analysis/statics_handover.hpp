@@ -35,6 +35,8 @@ struct StaticsHandover {
   std::shared_ptr<TimeHandover> history;
   /// read by the level's time loop: the coarser level's time steps (null: none)
   std::shared_ptr<const TimeHandover> coarseHistory;
+  /// path steps that followed the coarser level's step plan and converged (this level's run)
+  int plannedSteps = 0;
 };
 
 /// The node states of the assembler's current evaluation (every FE node, every rank) at load factor

@@ -131,6 +131,7 @@ struct FormFindingSettings {
 struct AccuracySettings {
   int maxUnknowns = 1000000;  ///< -accuracy_max_unknowns: no level of refinement above this many unknowns
   bool reuse = true;          ///< -accuracy_reuse: a level's statics (arc-length path, time steps) start (predict) from the coarser level's states (path, steps)
+  bool pathPlan = true;       ///< -accuracy_path_plan (developer): with reuse, a level's path follows the coarser level's steps
   /// Not a flag: set by a -target_error study on the run of one level (analysis/statics_handover.hpp);
   /// its statics records its states there and starts from the guesses it holds. nullptr: none.
   std::shared_ptr<StaticsHandover> handover;

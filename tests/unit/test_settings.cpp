@@ -80,7 +80,7 @@ TEST(Settings, DefaultsAreTheRegistryDefaults) {
       EXPECT_EQ(defaultMismatch(f, defaults.*component), "") << "-" << f.flag;
     }
   });
-  EXPECT_EQ(fields, 59);
+  EXPECT_EQ(fields, 60);
 }
 
 TEST(Settings, RegistryIsTheFieldTablesThenTheSceneOptFields) {

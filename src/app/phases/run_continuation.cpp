@@ -19,7 +19,7 @@ PetscErrorCode runContinuation(RunContext& ctx) {
   path.setStopFlag(ctx.status.stopFlag());
   path.setStartCarriesInitialLoads(ctx.model.formfinding.has_value());  // runs after form finding
   if (ctx.restart && ctx.restart->phase() == CheckpointPhase::Continuation) PetscCall(ctx.restart->resumeContinuation(ctx, path));
-  else path.setHandover(ctx.settings.accuracy.handover.get());  // a -target_error level
+  else path.setHandover(ctx.settings.accuracy.handover.get(), ctx.settings.accuracy.pathPlan);  // a -target_error level
   const long ckSize = ContinuationAnalysis::checkpointSize(ctx.model.opt.continuation->max_steps);
   ctx.checkpointState = [&](CheckpointData& d) -> PetscErrorCode {
     const std::vector<PathPoint>& pts = path.points();

@@ -20,9 +20,7 @@ first limit load and its estimate, and the change of the finest level's values a
 
 usage: scripts/study_accuracy_reuse.py [repeats] [--plan-only | --reuse-only]   (one block each; about 15 minutes on 2 cores; repeats default 3)"""
 import copy
-import json
 import os
-import subprocess
 import sys
 import time
 
@@ -33,6 +31,7 @@ import yaml
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(ROOT, "scripts"))
 import doc_tables  # noqa: E402
+import study_runs  # noqa: E402
 from study_accuracy import ENV, rollup  # noqa: E402
 
 sys.path.insert(0, os.path.join(ROOT, "tests", "cases"))
@@ -57,18 +56,7 @@ def finest(scene, factor):
 
 
 def run(tag, scene, args):
-    path = os.path.join(WORK, tag + ".yaml")
-    with open(path, "w") as f:
-        f.write(scene if isinstance(scene, str) else json.dumps(scene, indent=1))
-    h5 = os.path.join(WORK, tag + ".h5")
-    t0 = time.time()
-    p = subprocess.run(["mpirun", "-n", "2", os.path.join(ROOT, "build", "sinew"), path, "-o", h5] + args, env=ENV,
-                       capture_output=True, text=True)
-    wall = time.time() - t0
-    if p.returncode != 0:
-        print(p.stdout[-3000:], p.stderr[-2000:])
-        sys.exit(f"{tag}: exit {p.returncode}")
-    return h5, wall, p.stdout
+    return study_runs.run_mpi(WORK, tag, scene, args, ENV)
 
 
 def main():

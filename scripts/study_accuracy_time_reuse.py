@@ -18,9 +18,7 @@ and without, and the largest change of a level's history between the two (per wa
 to its largest row on that level).
 
 usage: scripts/study_accuracy_time_reuse.py [repeats]   (repeats default 3; about 10 minutes on 2 shared cores)"""
-import json
 import os
-import subprocess
 import sys
 import time
 
@@ -30,6 +28,7 @@ import numpy as np
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(ROOT, "scripts"))
 import doc_tables  # noqa: E402
+import study_runs  # noqa: E402
 from study_accuracy import ENV  # noqa: E402
 
 sys.path.insert(0, os.path.join(ROOT, "tests", "cases"))
@@ -41,18 +40,7 @@ REPEATS = int(sys.argv[1]) if len(sys.argv) > 1 else 3
 
 
 def run(tag, scene, args):
-    path = os.path.join(WORK, tag + ".yaml")
-    with open(path, "w") as f:
-        f.write(scene if isinstance(scene, str) else json.dumps(scene, indent=1))
-    h5 = os.path.join(WORK, tag + ".h5")
-    t0 = time.time()
-    p = subprocess.run(["mpirun", "-n", "2", os.path.join(ROOT, "build", "sinew"), path, "-o", h5] + args, env=ENV,
-                       capture_output=True, text=True)
-    wall = time.time() - t0
-    if p.returncode != 0:
-        print(p.stdout[-3000:], p.stderr[-2000:])
-        sys.exit(f"{tag}: exit {p.returncode}")
-    return h5, wall
+    return study_runs.run_mpi(WORK, tag, scene, args, ENV)[:2]
 
 
 def read(h5):

@@ -1,7 +1,9 @@
 #!/usr/bin/python3
-"""One run of a scene with this tree's build/sinew on one rank, the command line and the figures of the
-study scripts that compare with published curves (study_right_angle.py, study_spinup.py)."""
+"""One run of a scene with this tree's build/sinew (on one rank, or by mpirun), the command line and the
+figures of the study scripts (study_right_angle.py, study_spinup.py, study_accuracy_reuse.py,
+study_accuracy_time_reuse.py)."""
 import argparse
+import json
 import os
 import subprocess
 import sys
@@ -32,6 +34,24 @@ def run_scene(work, name, yaml_text, args=()):
     if r.returncode:
         sys.exit(f"{name}: exit {r.returncode}\n{r.stdout[-2000:]}{r.stderr[-2000:]}")
     return h5, time.perf_counter() - t0
+
+
+def run_mpi(work, tag, scene, args, env, np_=2):
+    """Writes the scene (YAML text, or a dict as JSON) to work/tag.yaml and runs it on np_ ranks into
+    work/tag.h5; returns that path, the wall seconds of mpirun and the run's output. Exits with the end of
+    the output when the run fails."""
+    path = os.path.join(work, tag + ".yaml")
+    with open(path, "w") as f:
+        f.write(scene if isinstance(scene, str) else json.dumps(scene, indent=1))
+    h5 = os.path.join(work, tag + ".h5")
+    t0 = time.time()
+    p = subprocess.run(["mpirun", "-n", str(np_), os.path.join(SOURCE, "build", "sinew"), path, "-o", h5] + list(args),
+                       env=env, capture_output=True, text=True)
+    wall = time.time() - t0
+    if p.returncode != 0:
+        print(p.stdout[-3000:], p.stderr[-2000:])
+        sys.exit(f"{tag}: exit {p.returncode}")
+    return h5, wall, p.stdout
 
 
 def save_figure(fig, png):

@@ -5,16 +5,13 @@
 #include <numbers>
 #include <random>
 
+#include "rotation_test_support.hpp"
 #include "sinew/rotation.hpp"
 
 using namespace sinew;
 
 namespace {
-double maxDiff(const Mat3& a, const Mat3& b) {
-  double m = 0;
-  for (int i = 0; i < 9; ++i) m = std::max(m, std::abs(a[i] - b[i]));
-  return m;
-}
+using test::maxDiff;
 Mat3 quatToMat(const std::array<double, 4>& q) {
   const double w = q[0], x = q[1], y = q[2], z = q[3];
   return {1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y),

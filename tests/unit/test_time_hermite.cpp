@@ -6,16 +6,13 @@
 #include <cmath>
 
 #include "math/time_hermite.hpp"
+#include "rotation_test_support.hpp"
 #include "sinew/rotation.hpp"
 
 using namespace sinew;
 
 namespace {
-double maxDiff(const Mat3& a, const Mat3& b) {
-  double m = 0;
-  for (int i = 0; i < 9; ++i) m = std::max(m, std::abs(a[i] - b[i]));
-  return m;
-}
+using test::maxDiff;
 
 /// A rotation history R(t) = exp(phi(t)) R0 with a spin that changes in size and direction, and its
 /// spatial angular velocity w = T(phi) dphi/dt.

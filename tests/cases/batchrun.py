@@ -22,6 +22,7 @@ class Run:
         self.proc = subprocess.Popen(self.cmd, env=env or ENV, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
                                      text=True, bufsize=1)
         self.lines = []
+        self.rank_pids = []
         self.reader = threading.Thread(target=self._read, daemon=True)
         self.reader.start()
 
@@ -43,15 +44,31 @@ class Run:
     def ranks(self):
         """Pids of the sinew processes started by this mpirun."""
         out = subprocess.run(["pgrep", "-P", str(self.proc.pid)], stdout=subprocess.PIPE, text=True).stdout
-        return [int(p) for p in out.split()]
+        self.rank_pids = [int(p) for p in out.split()]
+        return self.rank_pids
 
     def wait(self, timeout=600):
+        """mpirun's exit code, once the rank processes asked for by ranks() have exited too: a rank killed
+        together with mpirun is left to the kernel and holds its files (and the result's lock) until it has
+        died, which on a loaded machine can come after mpirun's own end."""
+        end = time.monotonic() + timeout
         code = self.proc.wait(timeout=timeout)
         self.reader.join(timeout=10)
+        while time.monotonic() < end and not all(_exited(pid) for pid in self.rank_pids):
+            time.sleep(0.02)
         return code
 
     def text(self):
         return "\n".join(l for _, l in self.lines)
+
+
+def _exited(pid):
+    """Whether the process has ended: gone, or a zombie (its files, and so its locks, released)."""
+    try:
+        with open(f"/proc/{pid}/stat") as f:
+            return f.read().rsplit(")", 1)[1].split()[0] in ("Z", "X")
+    except (FileNotFoundError, ProcessLookupError, IndexError):
+        return True
 
 
 def remove_outputs(out):

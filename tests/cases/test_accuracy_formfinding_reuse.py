@@ -6,11 +6,13 @@ then a snow load in 5 load steps) at target 1e-3 with -accuracy_reuse 1 (default
 and level values to Newton's tolerance, the estimates at round-off (the net is exact between its loaded
 nodes) with reuse too, and far fewer Newton
 iterations (/accuracy newton_iterations) on the finer levels, whose load steps started from the coarser
-level's states (/accuracy reused_starts)."""
+level's states (/accuracy reused_starts). A loaded catenoid (split membranes) at 3e-2: the same answer, and
+every finer level starts load steps from the coarser level's displacements."""
 import os
 
 import numpy as np
 
+import ffscenes as ff
 import sinewtest as st
 
 SCENE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "runs", "hypar_net.yaml")
@@ -48,4 +50,26 @@ st.check(np.all(on["reused_starts"][1:] > 0), "with reuse every level after the 
 # displacements (exact on the straight cable segments between the loaded nodes) need few
 fine_on, fine_off = int(on["newton_iterations"][1:].sum()), int(off["newton_iterations"][1:].sum())
 st.check(fine_on < 0.5 * fine_off, f"reuse saves Newton iterations on the finer levels ({fine_on} against {fine_off})")
+
+# split membranes: a catenoid (64 triangles) under a pressure of a tenth of its prestress in 4 load steps,
+# target 3e-2 (levels x1 .. x4): the new edge midpoints start from the mean of their edge's displacements;
+# the first loaded step of every finer level starts from the coarser level's state, the answer is the same
+cat = ff.catenoid_scene(R=1.0, halfh=0.5, nt=8, nz=4, steps=40, tol=1e-6)
+cat["eprops"][0]["pressure"] = 0.1
+cat["formfinding"]["elastic_restart_method"] = "FORCE"
+cat["opt"].update({"loadsteps": 4, "accuracy_quantities": ["node 17 p"]})
+runs = {}
+for reuse in (1, 0):
+    path, out = st.run(f"accuracy_ff_reuse_catenoid_{reuse}", ff.to_yaml(cat),
+                       args=["-target_error", "3e-2", "-accuracy_reuse", str(reuse)])
+    runs[reuse] = study(path)
+on, off = runs[1], runs[0]
+print(f"  catenoid: levels {list(on['level'])}, Newton iterations per level {list(on['newton_iterations'])} "
+      f"with reuse, {list(off['newton_iterations'])} without; reused starts {list(on['reused_starts'])}")
+st.check(np.array_equal(on["level"], off["level"]), "catenoid: the same levels")
+change = np.max(np.linalg.norm(on["value"] - off["value"], axis=2) / np.linalg.norm(off["value"], axis=2))
+st.check(change < 1e-9, f"catenoid: the level values do not depend on the Newton start ({change:.1e})")
+st.check(np.allclose(on["worst_error"][2:], off["worst_error"][2:], rtol=1e-6, atol=0), "catenoid: the same estimates")
+st.check(np.all(on["reused_starts"][1:] > 0), "catenoid: every finer level starts load steps from the coarser one")
+st.check(np.all(on["newton_iterations"] <= off["newton_iterations"]), "catenoid: no level needs more Newton iterations")
 st.done()

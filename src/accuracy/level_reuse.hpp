@@ -11,8 +11,9 @@
 namespace sinew::accuracy {
 
 /// The levels of `m` can hand their states on: load-stepped statics or an arc-length path refined by
-/// nbeams (not the split of membranes, not displacement control, not form finding), or dynamics whose
-/// levels halve dt alone (their time steps, analysis/time_handover.hpp; not with the elements refined too).
+/// nbeams (not the split of membranes, not displacement control), the load steps after form finding
+/// (also of split membranes; accuracy/found_shape_reuse.hpp; not a path), or dynamics whose levels halve
+/// dt alone (their time steps, analysis/time_handover.hpp; not with the elements refined too).
 bool reusesStates(const Model& m);
 
 /// The states `record` of level `coarse` on the FE nodes of level `fine` (nbeams x2 or equal per scene

@@ -46,7 +46,8 @@ std::optional<NodeProps> midpointProps(const std::map<int, NodeProps>& nprops, i
 }
 
 /// One split: every edge gets its midpoint node (shared by the elements along it), every quad its centre.
-Model splitOnce(const Model& base) {
+/// parents (if given): per new node (numbered from base.nodes.size()) the base nodes it is the mean of.
+Model splitOnce(const Model& base, std::vector<std::vector<int>>* parents = nullptr) {
   Model m = base;
   std::map<std::pair<int, int>, int> midpoints;  // sorted node pair -> midpoint node
   // form finding: a supported boundary edge's midpoint goes on the boundary curve (supported_boundary.hpp)
@@ -65,6 +66,7 @@ Model splitOnce(const Model& base) {
     const std::optional<Vec3> curved = boundary ? boundary->midpoint(a, b) : std::nullopt;
     const int n = newNode(curved ? *curved : Vec3{0.5 * (xa[0] + xb[0]), 0.5 * (xa[1] + xb[1]), 0.5 * (xa[2] + xb[2])});
     if (std::optional<NodeProps> p = midpointProps(base.nprops, a, b)) m.nprops[n] = *p;
+    if (parents) parents->push_back({a, b});
     midpoints.emplace(key, n);
     return n;
   };
@@ -86,6 +88,7 @@ Model splitOnce(const Model& base) {
       for (int v : el)
         for (int k = 0; k < 3; ++k) x[k] += 0.25 * base.nodes[static_cast<std::size_t>(v)][k];
       const int o = newNode(x);
+      if (parents) parents->push_back(el);
       children = {{el[0], ab, o, da}, {ab, el[1], bc, o}, {o, bc, el[2], cd}, {da, o, cd, el[3]}};
     }
     m.elements[e] = children[0];  // the first child keeps the parent's number, the others follow
@@ -117,6 +120,12 @@ std::string membraneRefinementLimit(const Model& m) {
     if (s.type() == ElementType::AncfCable2D)
       return "ANCF cables beside membranes are not split by the refinement (their slopes are nodal)";
   return "";
+}
+
+std::vector<std::vector<int>> splitParents(const Model& coarse) {
+  std::vector<std::vector<int>> parents;
+  splitOnce(coarse, &parents);
+  return parents;
 }
 
 Model splitMembraneModel(const Model& base, int times) {

@@ -5,6 +5,7 @@
 // keep their numbers; the new nodes follow them.
 #pragma once
 #include <string>
+#include <vector>
 
 #include "sinew/model.hpp"
 
@@ -20,5 +21,9 @@ std::string membraneRefinementLimit(const Model& m);
 /// nodes; a midpoint node is held in a translation component (or fixed) when both nodes of its edge
 /// are, and gets the mean of their prescribed displacements where both prescribe a component by number.
 Model splitMembraneModel(const Model& base, int times);
+
+/// The nodes one split of `coarse` adds (numbered from coarse.nodes.size(), in order): per new node the
+/// coarse nodes it lies between, the two ends of an edge or the four corners of a quad.
+std::vector<std::vector<int>> splitParents(const Model& coarse);
 
 }  // namespace sinew::accuracy

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <limits>
 
+#include "accuracy/found_shape_reuse.hpp"
 #include "accuracy/level_reuse.hpp"
 #include "accuracy/membrane_refinement.hpp"
 #include "accuracy/path_quantities.hpp"
@@ -227,7 +228,11 @@ StudyResult runRefinementStudy(const Model& base, const StudyOptions& options, c
     std::shared_ptr<StaticsHandover> handover;  // the coarser level's states, this level's record
     if (options.reuse) {
       handover = std::make_shared<StaticsHandover>();
-      if (coarser) handover->guesses = interpolateStates(coarserModel, model, coarser->record);
+      handover->fromStart = model.formfinding.has_value();  // displacements from each level's found shape
+      if (coarser)
+        handover->guesses = handover->fromStart
+                                ? interpolateDisplacements(coarserModel, model, coarser->record, coarser->start)
+                                : interpolateStates(coarserModel, model, coarser->record);
       if (options.time) {  // levels in time: the coarser level's time steps; this level records its own
         if (coarser) {
           handover->coarseHistory = std::move(coarser->history);
@@ -299,6 +304,7 @@ StudyResult runRefinementStudy(const Model& base, const StudyOptions& options, c
     if (options.reuse) {
       handover = std::make_shared<StaticsHandover>();
       handover->guesses = std::move(lastGuesses);
+      handover->fromStart = base.formfinding.has_value();
       if (coarser) handover->coarseHistory = coarser->coarseHistory;  // in time; it records nothing
       coarser.reset();  // its own record: no finer level follows
     }

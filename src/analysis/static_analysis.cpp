@@ -320,8 +320,13 @@ PetscErrorCode StaticAnalysis::run(Vec U, const StepCallback& onStep, bool* conv
     newtonTest_.setStartResidual(fnormStart);
     // predictor: extrapolate the last increment (rotation increments included)
     bool guessed = false;  // a coarser level's state at this load factor (-target_error levels)
+    if (handover_ && handover_->fromStart && handover_->start.nodes.empty())  // U: the start state (the residual above)
+      PetscCall(gatherLevelState(asm_, from, &handover_->start));
     if (handover_ && predictNext) PetscCall(startFromGuess(U, next, &guessed));
-    predicted = guessed || (dlPrev > 0 && predictor_ && predictNext);
+    const bool extrapolate = dlPrev > 0 && predictor_ && predictNext;
+    if (guessed && extrapolate && handover_->fromStart)  // after form finding: the nearer of the two starts
+      PetscCall(nearerStart(U, Usave, dU, (next - from) / dlPrev, &guessed));
+    predicted = guessed || extrapolate;
     if (predicted && !guessed) PetscCall(VecAXPY(U, (next - from) / dlPrev, dU));
     if (coarse_ && coarsePredictor_) PetscCall(coarse_->predict(U, ls_));  // nonlinear coarse solve first
     PetscCall(solveIncrement(U, next, &a->converged, &a->iterations, &fnorm, &why));

@@ -108,6 +108,9 @@ class StaticAnalysis {
   /// U <- the guess at load factor lambda on the free DOFs (rotations relative to the reference
   /// rotations); *used: a guess was found (the same on every rank).
   PetscErrorCode startFromGuess(Vec U, double lambda, bool* used);
+  /// The load steps after form finding (StaticsHandover::fromStart): U holds the guess; keeps it when its
+  /// residual (at ls_) is below that of the extrapolation Ulast + s dU, else U <- Ulast, *guessed = false.
+  PetscErrorCode nearerStart(Vec U, Vec Ulast, Vec dU, double s, bool* guessed);
   PetscErrorCode fail(const StepController& control, double lambda, SNESConvergedReason why, double fnorm, bool* converged);
 
   static PetscErrorCode tangentMult(Mat A, Vec x, Vec y);

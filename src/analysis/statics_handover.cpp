@@ -64,9 +64,39 @@ PetscErrorCode StaticAnalysis::startFromGuess(Vec U, double lambda, bool* used) 
   for (const LevelState& g : handover_->guesses)
     if (std::abs(g.loadFactor - lambda) <= 1e-12 * std::max(1.0, std::abs(lambda))) guess = &g;
   if (!guess) PetscFunctionReturn(PETSC_SUCCESS);
-  PetscCall(setUnknownsFromState(asm_, *guess, U));
+  if (handover_->fromStart) {  // a displacement from the start state: this level's found shape plus it
+    const std::vector<double>& x0 = handover_->start.nodes;
+    if (x0.size() != guess->nodes.size()) PetscFunctionReturn(PETSC_SUCCESS);
+    LevelState g = *guess;
+    for (std::size_t n = 0; 12 * n < g.nodes.size(); ++n)
+      for (std::size_t k = 0; k < 3; ++k) g.nodes[12 * n + k] += x0[12 * n + k];
+    PetscCall(setUnknownsFromState(asm_, g, U));
+  } else {
+    PetscCall(setUnknownsFromState(asm_, *guess, U));
+  }
   ++handover_->guessesUsed;
   *used = true;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode StaticAnalysis::nearerStart(Vec U, Vec Ulast, Vec dU, double s, bool* guessed) {
+  PetscFunctionBeginUser;
+  // the coarser level's displacement carries its discretization error; where the load steps are nearly
+  // linear (a prestressed sail under wind) the extrapolation of the last increment is nearer
+  PetscReal fromGuess = 0, fromExtrapolation = 0;
+  PetscCall(asm_.residual(U, ls_, F_));
+  PetscCall(VecNorm(F_, NORM_2, &fromGuess));
+  Vec W;
+  PetscCall(VecDuplicate(U, &W));
+  PetscCall(VecWAXPY(W, s, dU, Ulast));
+  PetscCall(asm_.residual(W, ls_, F_));
+  PetscCall(VecNorm(F_, NORM_2, &fromExtrapolation));
+  PetscCall(VecDestroy(&W));
+  if (fromExtrapolation < fromGuess) {  // the caller extrapolates from Ulast
+    PetscCall(VecCopy(Ulast, U));
+    --handover_->guessesUsed;
+    *guessed = false;
+  }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -37,6 +37,11 @@ struct StaticsHandover {
   std::shared_ptr<const TimeHandover> coarseHistory;
   /// path steps that followed the coarser level's step plan and converged (this level's run)
   int plannedSteps = 0;
+  /// the load analysis after form finding (accuracy/found_shape_reuse.hpp): the level records `start`, its
+  /// statics' start state (its found shape), and its guesses hold displacements from that start, which the
+  /// statics adds to its own start (the positions of Point3 nodes; set by the study)
+  bool fromStart = false;
+  LevelState start;
 };
 
 /// The node states of the assembler's current evaluation (every FE node, every rank) at load factor

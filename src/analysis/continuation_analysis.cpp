@@ -400,7 +400,8 @@ PetscErrorCode ContinuationAnalysis::pathSlopes(Vec U, double lambda, Vec dUlast
 PetscErrorCode ContinuationAnalysis::correct(Vec U, double* lambda, Vec U0, double lambda0, double ds, double qnorm,
                                              double jnorm, KSPConvergedReason* kr, bool* ok, int* its) {
   PetscFunctionBeginUser;
-  const bool displacement = opt_.method == "displacement" || landing_;
+  const bool displacement = opt_.method == "displacement" || landing_ == StopLanding::Displacement;
+  const bool loadControl = landing_ == StopLanding::LoadFactor;  // lambda stays at the predictor's
   const double psi2 = opt_.constraint == "spherical" ? opt_.psi * opt_.psi : 0.0;
   for (int k = 0; k < maxIts_ && *kr >= 0 && std::isfinite(*lambda); ++k) {
     LoadState ls;
@@ -425,7 +426,8 @@ PetscErrorCode ContinuationAnalysis::correct(Vec U, double* lambda, Vec U0, doub
     PetscCall(KSPSolve(ksp_, q_, duq_));
     PetscCall(VecWAXPY(dU_, -1.0, U0, U));  // increment so far
     double dll = 0.0;
-    if (displacement) {
+    if (loadControl) {
+    } else if (displacement) {
       PetscReal er, eq, eu;
       PetscCall(VecDot(duR_, e_, &er));
       PetscCall(VecDot(duq_, e_, &eq));
@@ -465,7 +467,8 @@ PetscErrorCode ContinuationAnalysis::step(Vec U, double* lambda, double ds, Vec 
                                           bool* ok, int* its) {
   PetscFunctionBeginUser;
   MPI_Comm comm = asm_.mesh().comm;
-  const bool displacement = opt_.method == "displacement" || landing_;
+  const bool displacement = opt_.method == "displacement" || landing_ == StopLanding::Displacement;
+  const bool loadControl = landing_ == StopLanding::LoadFactor;  // ds: the load factor's increment
   const double psi2 = opt_.constraint == "spherical" ? opt_.psi * opt_.psi : 0.0;
   Vec U0;
   PetscCall(VecDuplicate(U, &U0));
@@ -488,7 +491,9 @@ PetscErrorCode ContinuationAnalysis::step(Vec U, double* lambda, double ds, Vec 
   if (kr >= 0) {
     PetscReal a;
     PetscCall(VecDot(duq_, duq_, &a));
-    if (displacement) {
+    if (loadControl) {
+      dl = ds;
+    } else if (displacement) {
       PetscReal ec;
       PetscCall(VecDot(duq_, e_, &ec));
       dl = ec != 0.0 ? ds / ec : 0.0;
@@ -502,14 +507,14 @@ PetscErrorCode ContinuationAnalysis::step(Vec U, double* lambda, double ds, Vec 
       }
     }
     PetscCall(VecAXPY(U, dl, duq_));
-    *lambda = lambda0 + dl;
+    *lambda = loadControl ? landingLambda_ : lambda0 + dl;
   }
   // a planned step: the coarser level's step; else the coarser level's path where it meets the constraint;
   // else (and when its corrector fails) the tangent
   bool guessed = false;
   Vec Upred = nullptr;
   const double lambdaPred = *lambda;
-  if (kr >= 0 && !displacement && handover_ && !handover_->guesses.empty()) {
+  if (kr >= 0 && !displacement && !loadControl && handover_ && !handover_->guesses.empty()) {
     PetscCall(VecDuplicate(U, &Upred));
     PetscCall(VecCopy(U, Upred));
     double dsPlan = 0;
@@ -623,7 +628,7 @@ PetscErrorCode ContinuationAnalysis::run(Vec U, const PointCallback& onPoint, bo
     if (planned_ && !a->converged) planActive_ = false, guessCursor_ = planStep_ - 1;  // cut by the own control
     if (planned_ && a->converged) ++handover_->plannedSteps;
     landedDs_ = 0;
-    if (a->converged && handover_ && plan_ && haveControl_ && opt_.stop_displacement)
+    if (a->converged && handover_ && plan_ && ((haveControl_ && opt_.stop_displacement) || opt_.stop_load_factor))
       PetscCall(landOnStop(U, &lambda, Uprev, lambdaStart, dUprev, dlPrev, &a->iterations));
     a->reason = "corrector did not converge";
     a->at = lambda;

@@ -73,7 +73,7 @@ class ContinuationAnalysis {
   /// path h->guesses (interpolated onto this level's nodes) where it reaches the step's constraint. Its steps
   /// follow the coarser level's accepted steps as their plan (the same number of steps, from the coarser
   /// point k - 1 to point k as the predictor) until one fails or the plan ends; then its own step control.
-  /// plan false: the own step control throughout, and no landing on stop_displacement (-accuracy_path_plan).
+  /// plan false: the own step control throughout, and no landing on the stop (-accuracy_path_plan).
   void setHandover(StaticsHandover* h, bool plan = true) {
     handover_ = h;
     plan_ = plan;
@@ -130,11 +130,12 @@ class ContinuationAnalysis {
   /// current reference rotations) as a step from (U, lambda): its size in the constraint's metric into *ds;
   /// with G given, the step's start G = U + (C_k - C_k-1), *lambdaG = lambda + (lambda_k - lambda_k-1).
   PetscErrorCode plannedStep(std::size_t k, Vec U, double lambda, double* ds, Vec G = nullptr, double* lambdaG = nullptr);
-  /// A -target_error level's step from (U0, lambda0) to (U, *lambda) that crossed stop_displacement is
-  /// repeated from its start by displacement control onto the stop (the end state then carries no
-  /// interpolation between path points, whose error would not shrink from level to level with the
-  /// plan's steps); on success landedDs_ is the repeated step's arc length and *its grows by its corrector
-  /// iterations, else the step stays as it was.
+  /// A -target_error level's step from (U0, lambda0) to (U, *lambda) that crossed a stop is repeated from
+  /// its start onto the stop: by displacement control onto stop_displacement, by load control onto
+  /// stop_load_factor (the one the step crossed first, linear in the step, when it crossed both); the end
+  /// state then carries no interpolation between path points, whose error would not shrink from level to
+  /// level with the plan's steps. On success landedDs_ is the repeated step's arc length and *its grows by
+  /// its corrector iterations, else the step stays as it was (src/analysis/continuation_landing.cpp).
   PetscErrorCode landOnStop(Vec U, double* lambda, Vec U0, double lambda0, Vec dUprev, double dlPrev, int* its);
   /// Appends the state at (U, lambda) to handover_->record.
   PetscErrorCode recordPoint(Vec U, double lambda);
@@ -193,8 +194,11 @@ class ContinuationAnalysis {
   std::size_t planStep_ = 0;
   double planSize_ = 0;
   int repeated_ = 0;  ///< steps repeated shorter because they turned the path too far (summary)
-  bool landing_ = false;  ///< the step is solved by displacement control (landOnStop)
-  double landedDs_ = 0;   ///< arc length of the step landed on stop_displacement (0: none)
+  /// The step is solved by displacement control or by load control at landingLambda_ (landOnStop).
+  enum class StopLanding { None, Displacement, LoadFactor };
+  StopLanding landing_ = StopLanding::None;
+  double landingLambda_ = 0;
+  double landedDs_ = 0;   ///< arc length of the step landed on the stop (0: none)
 };
 
 }  // namespace sinew

@@ -137,38 +137,4 @@ PetscErrorCode ContinuationAnalysis::plannedStep(std::size_t k, Vec U, double la
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode ContinuationAnalysis::landOnStop(Vec U, double* lambda, Vec U0, double lambda0, Vec dUprev, double dlPrev,
-                                                int* its) {
-  PetscFunctionBeginUser;
-  const double stop = *opt_.stop_displacement;
-  double v = 0, v0 = 0;
-  PetscCall(controlDisplacement(U, *lambda, &v));
-  PetscCall(controlDisplacement(U0, lambda0, &v0));
-  if (!(std::abs(v) >= std::abs(stop) && std::abs(v0) < std::abs(stop))) PetscFunctionReturn(PETSC_SUCCESS);
-  Vec Ukeep;
-  PetscCall(VecDuplicate(U, &Ukeep));
-  PetscCall(VecCopy(U, Ukeep));
-  const double lambdaKeep = *lambda;
-  PetscCall(VecCopy(U0, U));
-  *lambda = lambda0;
-  bool ok = false;
-  int landingIts = 0;
-  landing_ = true;  // u_control - u_control(U0) = stop - v0
-  PetscCall(step(U, lambda, stop - v0, dUprev, dlPrev, false, &ok, &landingIts));
-  landing_ = false;
-  *its += landingIts;
-  if (ok) {  // the step's arc length in the constraint's metric (the limit point locator's parameter)
-    const double w = opt_.constraint == "spherical" ? opt_.psi * opt_.psi * lastQnorm_ * lastQnorm_ : 0.0;
-    PetscCall(VecWAXPY(work_, -1.0, U0, U));
-    PetscReal n2;
-    PetscCall(VecDot(work_, work_, &n2));
-    landedDs_ = std::sqrt(n2 + w * (*lambda - lambda0) * (*lambda - lambda0));
-  } else {
-    PetscCall(VecCopy(Ukeep, U));
-    *lambda = lambdaKeep;
-  }
-  PetscCall(VecDestroy(&Ukeep));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
 }  // namespace sinew

@@ -24,12 +24,16 @@ def study(path):
         return {k: g[k][:] for k in ("level", "worst_error", "error", "value", "newton_iterations", "reused_starts")}
 
 
-runs = {}
-for reuse in (1, 0):
-    path, out = st.run(f"accuracy_ff_reuse_{reuse}", os.path.abspath(SCENE),
-                       args=["-target_error", "1e-3", "-accuracy_reuse", str(reuse)])
-    runs[reuse] = study(path)
-on, off = runs[1], runs[0]
+def with_and_without_reuse(tag, scene, target):
+    """The study of the scene with -accuracy_reuse 1 and 0: (with, without)."""
+    runs = {}
+    for reuse in (1, 0):
+        path, _ = st.run(f"{tag}_{reuse}", scene, args=["-target_error", target, "-accuracy_reuse", str(reuse)])
+        runs[reuse] = study(path)
+    return runs[1], runs[0]
+
+
+on, off = with_and_without_reuse("accuracy_ff_reuse", os.path.abspath(SCENE), "1e-3")
 print(f"  hypar net: levels {list(on['level'])}, Newton iterations per level {list(on['newton_iterations'])} "
       f"with reuse, {list(off['newton_iterations'])} without; reused starts {list(on['reused_starts'])}")
 st.check(np.array_equal(on["level"], off["level"]), "the same levels")
@@ -58,12 +62,7 @@ cat = ff.catenoid_scene(R=1.0, halfh=0.5, nt=8, nz=4, steps=40, tol=1e-6)
 cat["eprops"][0]["pressure"] = 0.1
 cat["formfinding"]["elastic_restart_method"] = "FORCE"
 cat["opt"].update({"loadsteps": 4, "accuracy_quantities": ["node 17 p"]})
-runs = {}
-for reuse in (1, 0):
-    path, out = st.run(f"accuracy_ff_reuse_catenoid_{reuse}", ff.to_yaml(cat),
-                       args=["-target_error", "3e-2", "-accuracy_reuse", str(reuse)])
-    runs[reuse] = study(path)
-on, off = runs[1], runs[0]
+on, off = with_and_without_reuse("accuracy_ff_reuse_catenoid", ff.to_yaml(cat), "3e-2")
 print(f"  catenoid: levels {list(on['level'])}, Newton iterations per level {list(on['newton_iterations'])} "
       f"with reuse, {list(off['newton_iterations'])} without; reused starts {list(on['reused_starts'])}")
 st.check(np.array_equal(on["level"], off["level"]), "catenoid: the same levels")

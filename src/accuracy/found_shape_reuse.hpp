@@ -2,7 +2,8 @@
 // (docs/accuracy.md, "Reuse between levels"): each level's reference is its own found shape, so what a
 // coarser level hands on is its displacement from that shape at each load step, interpolated onto the
 // finer level's nodes; the finer level starts each load step's Newton from its own found shape plus that
-// displacement (analysis/statics_handover.hpp, StaticsHandover::fromStart).
+// displacement, and an arc-length path takes its own found shape plus the coarser path's displacements as
+// the coarser path (predictor and step plan; analysis/statics_handover.hpp, StaticsHandover::fromStart).
 #pragma once
 #include <vector>
 

@@ -53,8 +53,8 @@ void midpoint(NodeKind kind, const Vec3& Xa, const Vec3& Xb, const double* sa, c
 
 bool reusesStates(const Model& m) {
   if (refinesTime(m)) return !refinesSpace(m);  // levels in time alone: the same mesh (analysis/time_handover.hpp)
-  if (m.formfinding) return !m.opt.continuation && !m.opt.dynamics;  // its load steps (accuracy/found_shape_reuse.hpp)
   const bool arcLength = !m.opt.continuation || m.opt.continuation->method != "displacement";
+  if (m.formfinding) return arcLength && !m.opt.dynamics;  // its load steps or path (accuracy/found_shape_reuse.hpp)
   return !hasMembranes(m) && arcLength;
 }
 

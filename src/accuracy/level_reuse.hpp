@@ -11,8 +11,8 @@
 namespace sinew::accuracy {
 
 /// The levels of `m` can hand their states on: load-stepped statics or an arc-length path refined by
-/// nbeams (not the split of membranes, not displacement control), the load steps after form finding
-/// (also of split membranes; accuracy/found_shape_reuse.hpp; not a path), or dynamics whose levels halve
+/// nbeams (not the split of membranes, not displacement control), the load steps or the arc-length path
+/// after form finding (also of split membranes; accuracy/found_shape_reuse.hpp), or dynamics whose levels halve
 /// dt alone (their time steps, analysis/time_handover.hpp; not with the elements refined too).
 bool reusesStates(const Model& m);
 

@@ -514,7 +514,7 @@ PetscErrorCode ContinuationAnalysis::step(Vec U, double* lambda, double ds, Vec 
   bool guessed = false;
   Vec Upred = nullptr;
   const double lambdaPred = *lambda;
-  if (kr >= 0 && !displacement && !loadControl && handover_ && !handover_->guesses.empty()) {
+  if (kr >= 0 && !displacement && !loadControl && handover_ && !coarsePath().empty()) {
     PetscCall(VecDuplicate(U, &Upred));
     PetscCall(VecCopy(U, Upred));
     double dsPlan = 0;
@@ -522,6 +522,10 @@ PetscErrorCode ContinuationAnalysis::step(Vec U, double* lambda, double ds, Vec 
     else PetscCall(coarsePathGuess(U0, lambda0, ds, psi2 * qnorm * qnorm, U, lambda, &guessed));
     guessed = guessed || planned_;
     if (!guessed) PetscCall(VecCopy(Upred, U));  // no coarser point ahead: the tangent (U was its scratch)
+    if (guessed && handover_->fromStart) {
+      PetscCall(nearerPredictor(U, lambda, Upred, lambdaPred, &guessed));
+      if (planned_ && !guessed) planned_ = planActive_ = false, guessCursor_ = planStep_ - 1;  // then the own steps
+    }
   }
   PetscCall(correct(U, lambda, U0, lambda0, ds, qnorm, jnorm, &kr, ok, its));
   if (guessed && *ok) ++handover_->guessesUsed;
@@ -574,7 +578,7 @@ PetscErrorCode ContinuationAnalysis::run(Vec U, const PointCallback& onPoint, bo
       PetscFunctionReturn(PETSC_SUCCESS);
     }
   }
-  if (handover_ && !resumed) PetscCall(recordPoint(U, lambda));  // the path's start, for the next level
+  if (handover_ && !resumed) PetscCall(recordStart(U, lambda));  // the path's start, for the next level
   int prevNeg = resumed ? resumePrevNeg_ : -1;
   if (inertia_ && !resumed) PetscCall(negativeEigenvalues(U, 0.0, &prevNeg, nullptr));
   const std::string sizeName = opt_.method == "displacement" ? "displacement increment" : "arc length";
@@ -592,7 +596,7 @@ PetscErrorCode ContinuationAnalysis::run(Vec U, const PointCallback& onPoint, bo
   double turn = 0.0, lambdaStart = lambda;
   int correctorIts = 0, repeats = 0;
   rules.strategy = [&](double h, double proposal, const StepAttempt& a, double* next, bool* reject) -> int {
-    if (planned_ && ++planStep_ < handover_->guesses.size()) {  // the plan's next step (its turn was the coarser one's)
+    if (planned_ && ++planStep_ < coarsePath().size()) {  // the plan's next step (its turn was the coarser one's)
       *reject = false;
       PetscCall(plannedStep(planStep_, U, lambda, &planSize_));
       *next = planSize_;
@@ -611,7 +615,7 @@ PetscErrorCode ContinuationAnalysis::run(Vec U, const PointCallback& onPoint, bo
     return aim(h, proposal, a, next, reject);
   };
   // -target_error levels: the coarser level's steps as the plan (no branch switch: its point would not be a step)
-  if (!resumed && handover_ && plan_ && !branchSwitch_ && opt_.method != "displacement" && handover_->guesses.size() >= 2) {
+  if (!resumed && handover_ && plan_ && !branchSwitch_ && opt_.method != "displacement" && coarsePath().size() >= 2) {
     planActive_ = true, planStep_ = 1;
     PetscCall(plannedStep(planStep_, U, lambda, &planSize_));
     ds = planSize_;

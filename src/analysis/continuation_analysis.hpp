@@ -137,8 +137,19 @@ class ContinuationAnalysis {
   /// level with the plan's steps. On success landedDs_ is the repeated step's arc length and *its grows by
   /// its corrector iterations, else the step stays as it was (src/analysis/continuation_landing.cpp).
   PetscErrorCode landOnStop(Vec U, double* lambda, Vec U0, double lambda0, Vec dUprev, double dlPrev, int* its);
+  /// After form finding (StaticsHandover::fromStart): the corrector starts from the tangent predictor
+  /// (Upred, lambdaPred) instead of the coarser path's (U, *lambda) where its residual is smaller (a coarse
+  /// membrane's path can be far from the finer one's); then *guessed is false.
+  PetscErrorCode nearerPredictor(Vec U, double* lambda, Vec Upred, double lambdaPred, bool* guessed);
   /// Appends the state at (U, lambda) to handover_->record.
   PetscErrorCode recordPoint(Vec U, double lambda);
+  /// The path's start (U, lambda) into handover_->record; after form finding (StaticsHandover::fromStart)
+  /// also into handover_->start, and the coarser path becomes this start plus the coarser level's
+  /// displacements from its own start (handover_->guesses) in coarsePath_.
+  PetscErrorCode recordStart(Vec U, double lambda);
+  /// The coarser level's path on this level's nodes: states (handover_->guesses, or coarsePath_ after form
+  /// finding).
+  const std::vector<LevelState>& coarsePath() const { return handover_->fromStart ? coarsePath_ : handover_->guesses; }
   /// The model's size in the arc-length metric: |s| with s = D (bounding-box diagonal of the nodes) at
   /// every free translation and 1 at every free rotation or ANCF slope (collective).
   double modelPathSize() const;
@@ -187,6 +198,7 @@ class ContinuationAnalysis {
   std::string failure_;
   const bool* stop_ = nullptr;
   StaticsHandover* handover_ = nullptr;
+  std::vector<LevelState> coarsePath_;  ///< after form finding: this level's found shape plus the coarser displacements
   std::size_t guessCursor_ = 0;  ///< the coarser path's point nearest to the last step's start
   /// The coarser level's steps as this level's plan (run()): path step n is the coarser step planStep_ of
   /// size planSize_ while planActive_; planned_: the current attempt is one.

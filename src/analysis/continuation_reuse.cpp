@@ -18,11 +18,45 @@ PetscErrorCode ContinuationAnalysis::recordPoint(Vec U, double lambda) {
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+PetscErrorCode ContinuationAnalysis::recordStart(Vec U, double lambda) {
+  PetscFunctionBeginUser;
+  PetscCall(recordPoint(U, lambda));
+  if (!handover_->fromStart) PetscFunctionReturn(PETSC_SUCCESS);
+  // after form finding each level's path starts from its own found shape: the coarser path is that shape
+  // moved by the coarser level's displacements from its found shape (accuracy/found_shape_reuse.hpp), so the
+  // nearest point and the steps of the coarser path are measured from this level's start
+  handover_->start = handover_->record.back();
+  coarsePath_.clear();
+  for (const LevelState& d : handover_->guesses)
+    if (d.nodes.size() == handover_->start.nodes.size()) coarsePath_.push_back(displacedFrom(handover_->start, d));
+  if (coarsePath_.size() != handover_->guesses.size()) coarsePath_.clear();  // other nodes: no coarser path
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode ContinuationAnalysis::nearerPredictor(Vec U, double* lambda, Vec Upred, double lambdaPred, bool* guessed) {
+  PetscFunctionBeginUser;
+  // both starts lie on the step's constraint; the one with the smaller |R(U, lambda)| is nearer the path
+  LoadState ls;
+  ls.loadFactor = ls.time = *lambda;
+  PetscCall(asm_.residual(U, ls, work_));
+  PetscReal fromCoarse, fromTangent;
+  PetscCall(VecNorm(work_, NORM_2, &fromCoarse));
+  ls.loadFactor = ls.time = lambdaPred;
+  PetscCall(asm_.residual(Upred, ls, work_));
+  PetscCall(VecNorm(work_, NORM_2, &fromTangent));
+  if (fromTangent < fromCoarse) {
+    PetscCall(VecCopy(Upred, U));
+    *lambda = lambdaPred;
+    *guessed = false;
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode ContinuationAnalysis::coarsePathGuess(Vec U0, double lambda0, double ds, double w, Vec G, double* lambdaG,
                                                      bool* found) {
   PetscFunctionBeginUser;
   *found = false;
-  const std::vector<LevelState>& path = handover_->guesses;
+  const std::vector<LevelState>& path = coarsePath();
   Vec A, B;  // the coarser path's points j - 1 and j on this level's unknowns (rotations about Rref)
   PetscCall(VecDuplicate(U0, &A));
   PetscCall(VecDuplicate(U0, &B));
@@ -110,7 +144,7 @@ PetscErrorCode ContinuationAnalysis::coarsePathGuess(Vec U0, double lambda0, dou
 
 PetscErrorCode ContinuationAnalysis::plannedStep(std::size_t k, Vec U, double lambda, double* ds, Vec G, double* lambdaG) {
   PetscFunctionBeginUser;
-  const std::vector<LevelState>& path = handover_->guesses;
+  const std::vector<LevelState>& path = coarsePath();
   Vec A;  // C_k - C_k-1 on this level's unknowns (the entries without a state: 0)
   PetscCall(VecDuplicate(U, &A));
   PetscCall(VecCopy(U, A));

@@ -22,6 +22,13 @@ PetscErrorCode gatherLevelState(const Assembler& assembler, double lambda, Level
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+LevelState displacedFrom(const LevelState& start, const LevelState& d) {
+  LevelState g = d;
+  for (std::size_t n = 0; 12 * n < g.nodes.size(); ++n)
+    for (std::size_t k = 0; k < 3; ++k) g.nodes[12 * n + k] += start.nodes[12 * n + k];
+  return g;
+}
+
 PetscErrorCode setUnknownsFromState(const Assembler& assembler, const LevelState& guess, Vec U) {
   PetscFunctionBeginUser;
   const DistributedMesh& mesh = assembler.mesh();
@@ -65,12 +72,8 @@ PetscErrorCode StaticAnalysis::startFromGuess(Vec U, double lambda, bool* used) 
     if (std::abs(g.loadFactor - lambda) <= 1e-12 * std::max(1.0, std::abs(lambda))) guess = &g;
   if (!guess) PetscFunctionReturn(PETSC_SUCCESS);
   if (handover_->fromStart) {  // a displacement from the start state: this level's found shape plus it
-    const std::vector<double>& x0 = handover_->start.nodes;
-    if (x0.size() != guess->nodes.size()) PetscFunctionReturn(PETSC_SUCCESS);
-    LevelState g = *guess;
-    for (std::size_t n = 0; 12 * n < g.nodes.size(); ++n)
-      for (std::size_t k = 0; k < 3; ++k) g.nodes[12 * n + k] += x0[12 * n + k];
-    PetscCall(setUnknownsFromState(asm_, g, U));
+    if (handover_->start.nodes.size() != guess->nodes.size()) PetscFunctionReturn(PETSC_SUCCESS);
+    PetscCall(setUnknownsFromState(asm_, displacedFrom(handover_->start, *guess), U));
   } else {
     PetscCall(setUnknownsFromState(asm_, *guess, U));
   }

@@ -38,8 +38,8 @@ struct StaticsHandover {
   /// path steps that followed the coarser level's step plan and converged (this level's run)
   int plannedSteps = 0;
   /// the load analysis after form finding (accuracy/found_shape_reuse.hpp): the level records `start`, its
-  /// statics' start state (its found shape), and its guesses hold displacements from that start, which the
-  /// statics adds to its own start (the positions of Point3 nodes; set by the study)
+  /// statics' or path's start state (its found shape), and its guesses hold displacements from that start,
+  /// which the statics or the path adds to its own start (the positions of Point3 nodes; set by the study)
   bool fromStart = false;
   LevelState start;
 };
@@ -47,6 +47,9 @@ struct StaticsHandover {
 /// The node states of the assembler's current evaluation (every FE node, every rank) at load factor
 /// lambda (collective).
 PetscErrorCode gatherLevelState(const Assembler& assembler, double lambda, LevelState* state);
+/// The state `start` moved by the displacement d (StaticsHandover::fromStart; its positions, the first
+/// three doubles of each node, added to start's): this level's found shape plus a coarser displacement.
+LevelState displacedFrom(const LevelState& start, const LevelState& d);
 /// U <- the state g on the free DOFs (rotations relative to the assembler's reference rotations); the
 /// other entries of U stay.
 PetscErrorCode setUnknownsFromState(const Assembler& assembler, const LevelState& g, Vec U);

@@ -198,7 +198,7 @@ class ContinuationAnalysis {
   std::string failure_;
   const bool* stop_ = nullptr;
   StaticsHandover* handover_ = nullptr;
-  std::vector<LevelState> coarsePath_;  ///< after form finding: this level's found shape plus the coarser displacements
+  std::vector<LevelState> coarsePath_;  ///< after form finding: the found shape plus the coarser displacements
   std::size_t guessCursor_ = 0;  ///< the coarser path's point nearest to the last step's start
   /// The coarser level's steps as this level's plan (run()): path step n is the coarser step planStep_ of
   /// size planSize_ while planActive_; planned_: the current attempt is one.

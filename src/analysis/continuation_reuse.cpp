@@ -33,7 +33,8 @@ PetscErrorCode ContinuationAnalysis::recordStart(Vec U, double lambda) {
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode ContinuationAnalysis::nearerPredictor(Vec U, double* lambda, Vec Upred, double lambdaPred, bool* guessed) {
+PetscErrorCode ContinuationAnalysis::nearerPredictor(Vec U, double* lambda, Vec Upred, double lambdaPred,
+                                                     bool* guessed) {
   PetscFunctionBeginUser;
   // both starts lie on the step's constraint; the one with the smaller |R(U, lambda)| is nearer the path
   LoadState ls;

@@ -1,11 +1,11 @@
 #include "accuracy/level_reuse.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "accuracy/membrane_refinement.hpp"
 #include "accuracy/time_refinement.hpp"
 #include "mesh/fe_mesh.hpp"
-#include "sinew/linalg3.hpp"
 #include "sinew/rotation.hpp"
 
 namespace sinew::accuracy {
@@ -24,7 +24,8 @@ std::vector<int> chain(const FeMesh& mesh, int e) {
 Vec3 at(const double* s) { return {s[0], s[1], s[2]}; }
 
 /// The state of the midpoint of the coarse element from node a to node b (states sa, sb) into s.
-void midpoint(NodeKind kind, const Vec3& Xa, const Vec3& Xb, const double* sa, const double* sb, double* s) {
+void midpoint(NodeKind kind, const Vec3& Xa, const Vec3& Xb, const double* sa, const double* sb, BeamMidRotation rot,
+              double* s) {
   const Vec3 chord = Xb - Xa;
   const double l = std::sqrt(chord[0] * chord[0] + chord[1] * chord[1] + chord[2] * chord[2]);
   if (kind == NodeKind::Ancf2D) {  // r(1/2) = (ra + rb)/2 + l/8 (r'a - r'b), r'(1/2) = 3/(2l) (rb - ra) - (r'a + r'b)/4
@@ -44,7 +45,14 @@ void midpoint(NodeKind kind, const Vec3& Xa, const Vec3& Xb, const double* sa, c
   std::copy(sb + 3, sb + 12, Rb.begin());
   const Vec3 d = (1.0 / l) * chord;  // the tangents of the deformed element at its ends: R d
   const Vec3 x = mid + (l / 8) * (Ra * d - Rb * d);
-  const Mat3 R = expSO3(0.5 * logSO3(Rb * transpose(Ra))) * Ra;
+  Mat3 R = expSO3(0.5 * logSO3(Rb * transpose(Ra))) * Ra;
+  if (rot == BeamMidRotation::HermiteTangent) {  // turned by the least rotation from R d to the shape's tangent
+    // x'(1/2) / l = 3/(2l) (xb - xa) - (Ra d + Rb d)/4: exact for a cubic deflection, so for a quadratic rotation
+    const Vec3 tangent = (1.5 / l) * (at(sb) - at(sa)) - 0.25 * (Ra * d + Rb * d), t = R * d;
+    const Vec3 axis = cross(t, tangent);
+    const double sine = norm(axis);
+    if (sine > 0) R = expSO3((std::atan2(sine, dot(t, tangent)) / sine) * axis) * R;
+  }
   for (int k = 0; k < 3; ++k) s[k] = x[k];
   for (int k = 0; k < 9; ++k) s[3 + k] = R[static_cast<std::size_t>(k)];
 }
@@ -52,50 +60,81 @@ void midpoint(NodeKind kind, const Vec3& Xa, const Vec3& Xb, const double* sa, c
 }  // namespace
 
 bool reusesStates(const Model& m) {
-  if (refinesTime(m)) return !refinesSpace(m);  // levels in time alone: the same mesh (analysis/time_handover.hpp)
+  if (m.opt.dynamics) return true;  // time steps: the same nodes, or mapped by LevelNodeMap (analysis/time_handover.hpp)
   const bool arcLength = !m.opt.continuation || m.opt.continuation->method != "displacement";
-  if (m.formfinding) return arcLength && !m.opt.dynamics;  // its load steps or path (accuracy/found_shape_reuse.hpp)
+  if (m.formfinding) return arcLength;  // its load steps or path (accuracy/found_shape_reuse.hpp)
   return !hasMembranes(m) && arcLength;
 }
 
-std::vector<LevelState> interpolateStates(const Model& coarse, const Model& fine, const std::vector<LevelState>& record) {
+LevelNodeMap::LevelNodeMap(const Model& coarse, const Model& fine, BeamMidRotation rotation) : rotation_(rotation) {
   const FeMesh cm = discretize(coarse), fm = discretize(fine);
-  const std::size_t nc = cm.X.size(), nf = fm.X.size();
-  if (cm.sceneElementFirst.size() != fm.sceneElementFirst.size()) return {};
-  // per fine node: the coarse node it is, or the coarse element (a, b) it is the midpoint of
-  std::vector<int> same(nf, -1), midA(nf, -1), midB(nf, -1);
-  for (int n = 0; n < cm.numSceneNodes && static_cast<std::size_t>(n) < nf; ++n) same[static_cast<std::size_t>(n)] = n;
+  nc_ = cm.X.size();
+  const std::size_t nf = fm.X.size();
+  kind_ = fm.kind;
+  same_.assign(nf, -1), midA_.assign(nf, -1), midB_.assign(nf, -1);
+  if (hasMembranes(coarse)) {  // one split: the coarse nodes keep their numbers, the new nodes follow
+    const auto point = [](NodeKind k) { return k == NodeKind::Point3; };
+    if (!std::all_of(cm.kind.begin(), cm.kind.end(), point) || !std::all_of(fm.kind.begin(), fm.kind.end(), point)) return;
+    if (nc_ != coarse.nodes.size()) return;  // split cables with inner FE nodes (nbeams > 1)
+    parents_ = splitParents(coarse);
+    if (nf != nc_ + parents_.size()) return;
+    for (std::size_t n = 0; n < nc_; ++n) same_[n] = static_cast<int>(n);
+    valid_ = true;
+    return;
+  }
+  if (cm.sceneElementFirst.size() != fm.sceneElementFirst.size()) return;
+  Xc_ = cm.X;
+  for (int n = 0; n < cm.numSceneNodes && static_cast<std::size_t>(n) < nf; ++n) same_[static_cast<std::size_t>(n)] = n;
   for (std::size_t e = 0; e < cm.sceneElementFirst.size(); ++e) {
     const std::vector<int> c = chain(cm, static_cast<int>(e)), f = chain(fm, static_cast<int>(e));
     const std::size_t n = c.size() - 1, m = f.size() - 1;
     if (m == n) {
-      for (std::size_t j = 0; j <= n; ++j) same[static_cast<std::size_t>(f[j])] = c[j];
+      for (std::size_t j = 0; j <= n; ++j) same_[static_cast<std::size_t>(f[j])] = c[j];
     } else if (m == 2 * n) {
-      for (std::size_t j = 0; j <= n; ++j) same[static_cast<std::size_t>(f[2 * j])] = c[j];
+      for (std::size_t j = 0; j <= n; ++j) same_[static_cast<std::size_t>(f[2 * j])] = c[j];
       for (std::size_t j = 0; j < n; ++j)
-        midA[static_cast<std::size_t>(f[2 * j + 1])] = c[j], midB[static_cast<std::size_t>(f[2 * j + 1])] = c[j + 1];
+        midA_[static_cast<std::size_t>(f[2 * j + 1])] = c[j], midB_[static_cast<std::size_t>(f[2 * j + 1])] = c[j + 1];
     } else {
-      return {};
+      return;
     }
   }
+  for (std::size_t n = 0; n < nf; ++n)
+    if (same_[n] < 0 && midA_[n] < 0) return;
+  valid_ = true;
+}
+
+std::vector<double> LevelNodeMap::apply(const std::vector<double>& coarse) const {
+  if (!valid_ || coarse.size() != 12 * nc_) return {};
+  const std::size_t nf = kind_.size();
+  std::vector<double> out(12 * nf, 0.0);
+  for (std::size_t n = 0; n < nf; ++n) {
+    double* s = &out[12 * n];
+    if (same_[n] >= 0) {
+      const double* c = &coarse[12 * static_cast<std::size_t>(same_[n])];
+      std::copy(c, c + 12, s);
+    } else if (midA_[n] >= 0) {
+      const auto a = static_cast<std::size_t>(midA_[n]), b = static_cast<std::size_t>(midB_[n]);
+      midpoint(kind_[n], Xc_[a], Xc_[b], &coarse[12 * a], &coarse[12 * b], rotation_, s);
+    } else {  // a split membrane's new node: the mean of its parents' positions
+      const std::vector<int>& p = parents_[n - nc_];
+      const double w = 1.0 / static_cast<double>(p.size());
+      for (int q : p)
+        for (std::size_t k = 0; k < 3; ++k) s[k] += w * coarse[12 * static_cast<std::size_t>(q) + k];
+    }
+  }
+  return out;
+}
+
+std::vector<LevelState> interpolateStates(const Model& coarse, const Model& fine, const std::vector<LevelState>& record) {
+  if (hasMembranes(coarse)) return {};  // lines alone (split membranes: accuracy/found_shape_reuse.hpp)
+  const LevelNodeMap map(coarse, fine);
+  if (!map.valid()) return {};
   std::vector<LevelState> out;
   for (const LevelState& st : record) {
-    if (st.nodes.size() != 12 * nc) return {};
     LevelState g;
     g.loadFactor = st.loadFactor;
-    g.nodes.assign(12 * nf, 0.0);
-    for (std::size_t n = 0; n < nf; ++n) {
-      double* s = &g.nodes[12 * n];
-      if (same[n] >= 0) {
-        const double* c = &st.nodes[12 * static_cast<std::size_t>(same[n])];
-        std::copy(c, c + 12, s);
-      } else if (midA[n] >= 0) {
-        const auto a = static_cast<std::size_t>(midA[n]), b = static_cast<std::size_t>(midB[n]);
-        midpoint(fm.kind[n], cm.X[a], cm.X[b], &st.nodes[12 * a], &st.nodes[12 * b], s);
-      } else {
-        return {};
-      }
-    }
+    g.nodes = map.apply(st.nodes);
+    if (g.nodes.empty()) return {};
     out.push_back(std::move(g));
   }
   return out;

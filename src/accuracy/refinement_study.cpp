@@ -170,6 +170,13 @@ StudyOptions studyOptions(const Model& m, double target, long maxUnknowns, bool 
 
 namespace {
 
+/// The map of the coarser level's node states onto the FE nodes of `fine` (none when they do not nest).
+std::function<std::vector<double>(const std::vector<double>&)> coarseNodeMap(const Model& coarse, const Model& fine) {
+  auto map = std::make_shared<const LevelNodeMap>(coarse, fine, BeamMidRotation::HermiteTangent);
+  if (!map->valid()) return {};
+  return [map](const std::vector<double>& states) { return map->apply(states); };
+}
+
 /// Level `level` in space: nbeams x 2^level, or every membrane element split `level` times.
 Model spaceRefinedModel(const Model& base, int level) {
   Model m = base;
@@ -233,12 +240,14 @@ StudyResult runRefinementStudy(const Model& base, const StudyOptions& options, c
         handover->guesses = handover->fromStart
                                 ? interpolateDisplacements(coarserModel, model, coarser->record, coarser->start)
                                 : interpolateStates(coarserModel, model, coarser->record);
-      if (options.time) {  // levels in time: the coarser level's time steps; this level records its own
+      if (options.dynamics) {  // the coarser level's time steps; this level records its own
         if (coarser) {
           handover->coarseHistory = std::move(coarser->history);
           coarser->coarseHistory.reset();  // two levels back: no longer needed
+          if (options.space) handover->coarseNodeMap = coarseNodeMap(coarserModel, model);
         }
         handover->history = std::make_shared<TimeHandover>();
+        handover->history->byNode = options.space;  // the elements refined: by FE node, mapped onto the next level's
       }
     }
     LevelRun r = run(model, level, toFile, datasetsUsed(s.quantities), handover);
@@ -305,7 +314,10 @@ StudyResult runRefinementStudy(const Model& base, const StudyOptions& options, c
       handover = std::make_shared<StaticsHandover>();
       handover->guesses = std::move(lastGuesses);
       handover->fromStart = base.formfinding.has_value();
-      if (coarser) handover->coarseHistory = coarser->coarseHistory;  // in time; it records nothing
+      if (coarser) {  // dynamics; it records nothing
+        handover->coarseHistory = coarser->coarseHistory;
+        handover->coarseNodeMap = coarser->coarseNodeMap;
+      }
       coarser.reset();  // its own record: no finer level follows
     }
     s.finalRun = run(refinedModel(base, rec.level), rec.level, true, datasetsUsed(s.quantities), handover);

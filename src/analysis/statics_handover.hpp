@@ -7,6 +7,7 @@
 #pragma once
 #include <petscvec.h>
 
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -35,6 +36,9 @@ struct StaticsHandover {
   std::shared_ptr<TimeHandover> history;
   /// read by the level's time loop: the coarser level's time steps (null: none)
   std::shared_ptr<const TimeHandover> coarseHistory;
+  /// levels that refine the elements (coarseHistory->byNode): the coarser level's node states (12 per FE
+  /// node) on this level's FE nodes (accuracy/level_reuse.hpp, LevelNodeMap; empty answer: no map)
+  std::function<std::vector<double>(const std::vector<double>&)> coarseNodeMap;
   /// path steps that followed the coarser level's step plan and converged (this level's run)
   int plannedSteps = 0;
   /// the load analysis after form finding (accuracy/found_shape_reuse.hpp): the level records `start`, its

@@ -181,6 +181,15 @@ class DynamicAnalysis : private MotionEquations {
   /// U <- the coarser level's state at t1 (exact at its times, cubic Hermite between); *found false
   /// (U unchanged) when t1 is outside its record. The same answer on every rank.
   PetscErrorCode startFromCoarseLevel(double t1, Vec U, bool* found);
+  // levels that refine the elements too: the record by FE node (level_space_time_reuse.cpp)
+  /// Appends the converged state of every FE node at t (states of q, rates qd) to handover_->history.
+  PetscErrorCode recordNodeStep(double t, Vec q, Vec qd);
+  /// coarse_ <- c when the coarser level's nodes map onto this level's (handover_->coarseNodeMap) and
+  /// Newton builds its Jacobian at every iteration.
+  PetscErrorCode useCoarseNodes(const TimeHandover& c);
+  /// U <- q_n plus the coarser level's motion from t1 - h to t1 on this level's nodes; *found false when
+  /// either time is outside its record.
+  PetscErrorCode startFromCoarseNodes(double t1, Vec U, bool* found);
 
   Assembler& asm_;
   const bool* stop_ = nullptr;

@@ -1,6 +1,7 @@
 // DynamicAnalysis on a level of a -target_error study in time (analysis/time_handover.hpp,
 // docs/accuracy.md "Reuse between levels"): the record of the converged time steps for the next level,
-// which halves dt, and the Newton start of a time step from the coarser level's record. The levels
+// which halves dt, and the Newton start of a time step from the coarser level's record (levels that refine the
+// elements too: level_space_time_reuse.cpp). In time alone the levels
 // have the same mesh, partition and unknowns, so each rank keeps and reads its own entries. At a time
 // the coarser level reached (every other step of the finer) its state is the start; between two of its
 // times t_a, t_b (H = t_b - t_a, s = (t - t_a) / H) the cubic Hermite in time of the entries from their
@@ -69,6 +70,10 @@ PetscErrorCode DynamicAnalysis::useCoarseLevel() {
   coarse_ = nullptr;
   if (!handover_ || !handover_->coarseHistory) PetscFunctionReturn(PETSC_SUCCESS);
   const TimeHandover& c = *handover_->coarseHistory;
+  if (c.byNode) {  // levels that refine the elements (level_space_time_reuse.cpp)
+    PetscCall(useCoarseNodes(c));
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
   PetscInt lo = 0, hi = 0;
   PetscCall(VecGetOwnershipRange(F_, &lo, &hi));
   const std::size_t owned = static_cast<std::size_t>(hi - lo), rotations = 4 * numRotationNodes(asm_.mesh());
@@ -84,6 +89,10 @@ PetscErrorCode DynamicAnalysis::recordLevelStep(double t, Vec q, Vec qd) {
   PetscFunctionBeginUser;
   if (!handover_ || !handover_->history) PetscFunctionReturn(PETSC_SUCCESS);
   TimeHandover& rec = *handover_->history;
+  if (rec.byNode) {  // levels that refine the elements (level_space_time_reuse.cpp)
+    PetscCall(recordNodeStep(t, q, qd));
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
   PetscInt lo = 0, n = 0;
   PetscCall(VecGetOwnershipRange(q, &lo, nullptr));
   PetscCall(VecGetLocalSize(q, &n));
@@ -111,6 +120,10 @@ PetscErrorCode DynamicAnalysis::recordLevelStep(double t, Vec q, Vec qd) {
 
 PetscErrorCode DynamicAnalysis::startFromCoarseLevel(double t1, Vec U, bool* found) {
   PetscFunctionBeginUser;
+  if (coarse_->byNode) {
+    PetscCall(startFromCoarseNodes(t1, U, found));
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
   const DistributedMesh& mesh = asm_.mesh();
   std::vector<double> q;
   std::vector<Mat3> R;

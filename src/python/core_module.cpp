@@ -106,6 +106,12 @@ void start(const std::vector<std::string>& options) {
   sinew::initialize(&argc, &args);
 }
 
+/// The scene text of a run's tree, made when called (a run to memory makes none).
+struct SceneText {
+  std::shared_ptr<const YAML::Node> tree;
+  std::string operator()() const { return sinew::sceneTreeText(*tree); }
+};
+
 std::string sceneText(const py::object& scene) {
   YAML::Emitter text;
   sinew::python::emitScene(text, scene);
@@ -150,8 +156,7 @@ py::dict run(const py::object& scene, const py::object& flags, const py::object&
     for (const auto& [name, v] : out.results.texts) attrs[py::str(name)] = v;
     if (source.tree && out.file.empty()) {  // a run to memory from a tree: the scene text on demand
       if (attrs.contains("scene") && attrs["scene"].cast<std::string>().empty()) PyDict_DelItemString(attrs.ptr(), "scene");
-      const std::shared_ptr<const YAML::Node> tree = source.tree;
-      result["scene_text"] = py::cpp_function([tree] { return sinew::sceneTreeText(*tree); });
+      result["scene_text"] = SceneText{source.tree};
     }
     for (const auto& [group, texts] : out.results.groupTexts) groups[py::str(group)] = texts;
     if (out.file.empty()) result["datasets"] = datasets;
@@ -174,6 +179,7 @@ PYBIND11_MODULE(_core, m) {
         py::arg("echo") = false, py::arg("base_dir") = ".", py::arg("as_text") = false,
         "Runs a scene (dict or file path) on comm's ranks; returns its datasets, attributes, exit code and message "
         "(a run to memory: the scene text by the function under scene_text). as_text: the dict as YAML text (tests).");
+  py::class_<SceneText>(m, "SceneText", "A run's scene text, made when called.").def("__call__", &SceneText::operator());
   m.def("scene_text", &sceneText, py::arg("scene"), "The scene object as the YAML text Sinew reads.");
   m.def("scene_tree_check", &treeCheck, py::arg("scene"),
         "'' when the YAML tree built from the scene object is YAML::Load of its text node for node, else the difference.");

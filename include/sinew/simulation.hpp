@@ -14,6 +14,7 @@
 #pragma once
 #include <mpi.h>
 
+#include <memory>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -22,6 +23,10 @@
 
 #include "sinew/model.hpp"
 #include "sinew/result_store.hpp"
+
+namespace YAML {
+class Node;
+}
 
 namespace sinew {
 
@@ -32,12 +37,16 @@ struct Settings;
 struct SceneSource {
   std::string path;           ///< a scene file (messages name it; opt.filename defaults to its stem)
   std::string text;           ///< YAML text (when no path)
+  /// The scene's YAML tree instead of text (when no path), read as YAML::Load would give it from
+  /// the text (sinew._core builds it from a dict); the text is made only for a result file.
+  std::shared_ptr<const YAML::Node> tree;
   std::string baseDir = ".";  ///< where the text's relative paths (mesh:) are read from
   /// A model built in code, as the scene reader makes it (nodes, elements 0-based, elementSet,
   /// connectedNodes, nprops, eprops, opt); flags of opt fields (settings.sceneOpt) do not apply.
   std::optional<Model> model;
   static SceneSource file(std::string path);
   static SceneSource yaml(std::string text, std::string baseDir = ".");
+  static SceneSource yamlTree(const YAML::Node& root, std::string baseDir = ".");
   static SceneSource fromModel(Model model);
 };
 

@@ -79,12 +79,12 @@ class Results:
     """SPACAR Light's `out`: node results, frequencies, buckling multipliers, stresses, state space,
     sensors and the step values of a Sinew run (see load())."""
 
-    def __init__(self, data, attrs):
+    def __init__(self, data, attrs, scene_text=None):
         self.data = data
         self.attrs = attrs
+        self._scene_text = scene_text
         self.converged = bool(attrs.get("converged", 0))
         self.ndof = int(attrs["ndof"]) if "ndof" in attrs else None
-        self.scene = attrs.get("scene", "")
         self.load_factor = data.get("load_factor")
         self.time = data.get("time")
         for name in ("freq", "buck", "stressmax"):
@@ -107,6 +107,14 @@ class Results:
         acc["quantities"] = [n for n in str(acc.get("quantities", "")).split("\n") if n]
         self.accuracy = acc
         return self
+
+    @functools.cached_property
+    def scene(self):
+        """The scene text (the file's scene attribute; an in-process run of a dict makes it here, at
+        the first use)."""
+        if "scene" in self.attrs or self._scene_text is None:
+            return self.attrs.get("scene", "")
+        return self._scene_text()
 
     # node and step are made at their first use (a loop of runs that reads out.freq makes neither)
     @functools.cached_property
@@ -162,4 +170,4 @@ def load(path):
 
 def from_memory(run):
     """The Results object of an in-process run (sinew._core.run), the same as load() of its file."""
-    return Results(*memory_datasets(run))._set_accuracy(run.get("group_attrs", {}).get("accuracy", {}))
+    return Results(*memory_datasets(run), run.get("scene_text"))._set_accuracy(run.get("group_attrs", {}).get("accuracy", {}))

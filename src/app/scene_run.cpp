@@ -16,6 +16,7 @@
 #include "mesh/fe_mesh.hpp"
 #include "parallel/collective_error.hpp"
 #include "scene/scene_reader.hpp"
+#include "scene/scene_tree.hpp"
 #include "settings/read_settings.hpp"
 #include "step/step_analysis.hpp"
 
@@ -111,6 +112,9 @@ void SceneRun::readModel() {
     checkBuiltModel(model_);
   } else if (!scene_.path.empty()) {
     model_ = readScene(scene_.path, sceneOverrides(settings_), restart);
+  } else if (scene_.tree) {  // the text only for the result file (its scene attribute, the fingerprint)
+    model_ = parseSceneTree(*scene_.tree, scene_.baseDir, sceneOverrides(settings_), restart);
+    if (toFile_) model_.sceneText = sceneTreeText(*scene_.tree);
   } else {
     model_ = parseScene(scene_.text, scene_.baseDir, sceneOverrides(settings_), restart);
   }

@@ -3,6 +3,7 @@
 #include "sinew/simulation.hpp"
 
 #include <slepcsys.h>
+#include <yaml-cpp/yaml.h>
 
 #include <cstdarg>
 #include <cstdio>
@@ -31,6 +32,13 @@ SceneSource SceneSource::file(std::string path) {
 SceneSource SceneSource::yaml(std::string text, std::string baseDir) {
   SceneSource s;
   s.text = std::move(text);
+  s.baseDir = std::move(baseDir);
+  return s;
+}
+
+SceneSource SceneSource::yamlTree(const YAML::Node& root, std::string baseDir) {
+  SceneSource s;
+  s.tree = std::make_shared<const YAML::Node>(root);
   s.baseDir = std::move(baseDir);
   return s;
 }

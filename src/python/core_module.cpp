@@ -1,15 +1,17 @@
 // sinew._core: the library entry point (sinew/simulation.hpp) for Python (pybind11). python/sinew
 // calls it from Scene.run() and spacarlight(); see docs/python.md.
 //
-//   _core.run(scene, flags=None, comm=None, echo=False, base_dir=".")
+//   _core.run(scene, flags=None, comm=None, echo=False, base_dir=".", as_text=False)
 //     scene: the scene as a dict (sinew.Scene.data: nodes, elements, nprops, eprops, opt, ...),
-//            or a scene file path (str)
+//            or a scene file path (str); a dict goes to the reader as the YAML tree its text would
+//            give (python_scene.hpp), without text (as_text: as text, for tests)
 //     flags: command-line flags as a list of words (["-loadsteps", "5", "-snes_monitor"]) or a dict
 //            ({"loadsteps": 5, "calcbuck": True, "gravity": [0, 0, -9.81]})
 //     comm:  an mpi4py communicator (default: MPI_COMM_WORLD)
 //   returns {"exit_code", "message", "output", "file", "datasets": {name: numpy array},
 //            "attrs": {root attribute: int or str}, "group_attrs": {group: {attribute: str}}};
-//   a run that produced no results returns "datasets": None with its exit code and message.
+//   a run that produced no results returns "datasets": None with its exit code and message; a run
+//   of a dict to memory returns "scene_text", a function that makes the scene text (attrs "scene").
 // PETSc and SLEPc start at the first run (without PETSc's signal handlers, which would take Ctrl-C
 // from the interpreter) and end at interpreter exit (finalize(), registered by python/sinew).
 #include <pybind11/numpy.h>
@@ -18,47 +20,18 @@
 #include <yaml-cpp/yaml.h>
 
 #include <cmath>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "python/python_scene.hpp"
+#include "scene/scene_tree.hpp"
 #include "sinew/simulation.hpp"
 
 namespace py = pybind11;
 
 namespace {
-
-/// A Python value as YAML (the scene dict -> the scene text the reader checks): dicts, lists,
-/// tuples, numpy arrays and scalars, bools, ints, floats (shortest repr: read back exactly), str.
-void emit(YAML::Emitter& out, const py::handle& v) {
-  if (py::isinstance<py::dict>(v)) {
-    out << YAML::BeginMap;
-    for (const auto& [key, value] : py::reinterpret_borrow<py::dict>(v)) {
-      out << YAML::Key;
-      emit(out, key);
-      out << YAML::Value;
-      emit(out, value);
-    }
-    out << YAML::EndMap;
-  } else if (py::hasattr(v, "tolist") && !py::isinstance<py::str>(v)) {  // numpy arrays and scalars
-    emit(out, v.attr("tolist")());
-  } else if (py::isinstance<py::list>(v) || py::isinstance<py::tuple>(v)) {
-    out << YAML::Flow << YAML::BeginSeq;
-    for (const py::handle item : v) emit(out, item);
-    out << YAML::EndSeq;
-  } else if (v.is_none()) {
-    out << YAML::Null;
-  } else if (py::isinstance<py::bool_>(v)) {
-    out << (v.cast<bool>() ? "true" : "false");
-  } else if (py::isinstance<py::float_>(v)) {
-    const double x = v.cast<double>();
-    out << (std::isnan(x) ? std::string(".nan") : std::isinf(x) ? std::string(x > 0 ? ".inf" : "-.inf") : py::repr(v).cast<std::string>());
-  } else if (py::isinstance<py::int_>(v)) {
-    out << py::str(v).cast<std::string>();
-  } else {
-    out << py::str(v).cast<std::string>();
-  }
-}
 
 /// A flag's value as the command line would give it: true/false, comma lists, text.
 std::string flagValue(const py::handle& v) {
@@ -133,16 +106,40 @@ void start(const std::vector<std::string>& options) {
   sinew::initialize(&argc, &args);
 }
 
+/// The scene text of a run's tree, made when called (a run to memory makes none).
+struct SceneText {
+  std::shared_ptr<const YAML::Node> tree;
+  std::string operator()() const { return sinew::sceneTreeText(*tree); }
+};
+
+std::string sceneText(const py::object& scene) {
+  YAML::Emitter text;
+  sinew::python::emitScene(text, scene);
+  return text.c_str();
+}
+
+/// The scene of a run: a file, or the object's YAML tree (its text when a string would not read
+/// back as itself, or asText: the text path, for tests).
+sinew::SceneSource sourceOf(const py::object& scene, const std::string& baseDir, bool asText) {
+  if (py::isinstance<py::str>(scene)) return sinew::SceneSource::file(scene.cast<std::string>());
+  if (!asText)
+    if (std::optional<YAML::Node> tree = sinew::python::sceneTree(scene)) return sinew::SceneSource::yamlTree(*tree, baseDir);
+  return sinew::SceneSource::yaml(sceneText(scene), baseDir);
+}
+
+/// "" when the object's tree is node for node YAML::Load of its text, else the first difference.
+std::string treeCheck(const py::object& scene) {
+  const std::optional<YAML::Node> tree = sinew::python::sceneTree(scene);
+  if (!tree) return "no tree: a string does not read back as itself";
+  const std::string text = sceneText(scene);
+  if (const std::string d = sinew::treeDifference(*tree, YAML::Load(text)); !d.empty()) return d;
+  if (sinew::sceneTreeText(*tree) != text) return "the tree's text differs from the object's text";
+  return "";
+}
+
 py::dict run(const py::object& scene, const py::object& flags, const py::object& comm, bool echo,
-             const std::string& baseDir) {
-  sinew::SceneSource source;
-  if (py::isinstance<py::str>(scene)) {
-    source = sinew::SceneSource::file(scene.cast<std::string>());
-  } else {
-    YAML::Emitter text;
-    emit(text, scene);
-    source = sinew::SceneSource::yaml(text.c_str(), baseDir);
-  }
+             const std::string& baseDir, bool asText) {
+  const sinew::SceneSource source = sourceOf(scene, baseDir, asText);
   py::dict result;
   result["datasets"] = py::none();
   try {
@@ -157,6 +154,10 @@ py::dict run(const py::object& scene, const py::object& flags, const py::object&
     for (const auto& [name, a] : out.results.datasets) datasets[py::str(name)] = arrayOf(name, a);
     for (const auto& [name, v] : out.results.numbers) attrs[py::str(name)] = v;
     for (const auto& [name, v] : out.results.texts) attrs[py::str(name)] = v;
+    if (source.tree && out.file.empty()) {  // a run to memory from a tree: the scene text on demand
+      if (attrs.contains("scene") && attrs["scene"].cast<std::string>().empty()) PyDict_DelItemString(attrs.ptr(), "scene");
+      result["scene_text"] = SceneText{source.tree};
+    }
     for (const auto& [group, texts] : out.results.groupTexts) groups[py::str(group)] = texts;
     if (out.file.empty()) result["datasets"] = datasets;
     result["attrs"] = attrs;
@@ -175,8 +176,13 @@ py::dict run(const py::object& scene, const py::object& flags, const py::object&
 PYBIND11_MODULE(_core, m) {
   m.doc() = "Sinew's library entry point: runs scenes in this process, results as numpy arrays (docs/python.md)";
   m.def("run", &run, py::arg("scene"), py::arg("flags") = py::none(), py::arg("comm") = py::none(),
-        py::arg("echo") = false, py::arg("base_dir") = ".",
-        "Runs a scene (dict or file path) on comm's ranks; returns its datasets, attributes, exit code and message.");
+        py::arg("echo") = false, py::arg("base_dir") = ".", py::arg("as_text") = false,
+        "Runs a scene (dict or file path) on comm's ranks; returns its datasets, attributes, exit code and message "
+        "(a run to memory: the scene text by the function under scene_text). as_text: the dict as YAML text (tests).");
+  py::class_<SceneText>(m, "SceneText", "A run's scene text, made when called.").def("__call__", &SceneText::operator());
+  m.def("scene_text", &sceneText, py::arg("scene"), "The scene object as the YAML text Sinew reads.");
+  m.def("scene_tree_check", &treeCheck, py::arg("scene"),
+        "'' when the YAML tree built from the scene object is YAML::Load of its text node for node, else the difference.");
   m.def("finalize", &sinew::finalize, "Ends PETSc/SLEPc if a run started them (at interpreter exit).");
   m.def("initialize", &start, py::arg("options") = std::vector<std::string>{},
         "Starts PETSc/SLEPc (once per process) with extra PETSc options.");

@@ -412,18 +412,26 @@ YAML::Node overrideNode(const std::string& name, const std::string& value) {
   }
 }
 
-void applyOverrides(YAML::Node& root, const OptionOverride& overrides, std::vector<std::pair<std::string, std::string>>& applied) {
-  if (!overrides) return;
+/// The command-line values of opt fields (name, value), in the order of optionNames().
+std::vector<std::pair<std::string, std::string>> givenOverrides(const OptionOverride& overrides) {
+  std::vector<std::pair<std::string, std::string>> given;
+  if (!overrides) return given;
+  for (const auto& name : optionNames())
+    if (const std::optional<std::string> v = overrides(name)) given.emplace_back(name, *v);
+  return given;
+}
+
+void applyOverrides(YAML::Node& root, const std::vector<std::pair<std::string, std::string>>& given,
+                    std::vector<std::pair<std::string, std::string>>& applied) {
+  if (given.empty()) return;
   if (!root.IsDefined() || root.IsNull()) root = YAML::Node(YAML::NodeType::Map);
   if (!root.IsMap()) return;
-  for (const auto& name : optionNames()) {
-    const std::optional<std::string> v = overrides(name);
-    if (!v) continue;
-    const YAML::Node value = overrideNode(name, *v);
+  for (const auto& [name, v] : given) {
+    const YAML::Node value = overrideNode(name, v);
     if (!root["opt"].IsDefined() || root["opt"].IsNull()) root["opt"] = YAML::Node(YAML::NodeType::Map);
     if (!root["opt"].IsMap()) return;  // reported by the opt reader
     root["opt"][name] = value;
-    applied.emplace_back(name, *v);
+    applied.emplace_back(name, v);
   }
 }
 
@@ -477,8 +485,10 @@ int lineOf(const YAML::Node& root, const std::string& path) {
   return line;
 }
 
-SceneError locate(const SceneError& e, const YAML::Node& root,
-                  const std::vector<std::pair<std::string, std::string>>& overridden, const std::string& fileLabel) {
+/// The error with its origin: a command-line value, else the scene line (when the tree was read
+/// from text: `lines`; a tree built in code, or its copy, has no lines).
+SceneError locate(const SceneError& e, const YAML::Node& root, const std::vector<std::pair<std::string, std::string>>& overridden,
+                  const std::string& fileLabel, bool lines) {
   const std::string& path = e.path();
   std::string message = e.what();
   if (!path.empty() && message.rfind(path + ": ", 0) == 0) message = message.substr(path.size() + 2);
@@ -488,7 +498,7 @@ SceneError locate(const SceneError& e, const YAML::Node& root,
     if (path == p || path.rfind(p + ".", 0) == 0 || path.rfind(p + "(", 0) == 0)
       return SceneError(path, message + " (from the command line: -" + name + " " + value + ")");
   }
-  const int line = lineOf(root, path);
+  const int line = lines ? lineOf(root, path) : 0;
   if (line > 0) message += " (" + (fileLabel.empty() ? std::string() : fileLabel + " ") + "line " + std::to_string(line) + ")";
   else if (!fileLabel.empty()) message += " (" + fileLabel + ")";
   return SceneError(path, message);
@@ -573,24 +583,35 @@ YAML::Node loadOneDocument(const std::string& text, const std::string& prefix) {
   return yamlCall(prefix, [&] { return YAML::Load(text); });
 }
 
-Model parseSceneImpl(const std::string& text, const std::string& baseDir, const OptionOverride& overrides,
-                     const std::string& fileLabel, bool restart) {
-  Model m;
-  m.sceneText = text;
+/// The scene's tree (a map) -> Model, errors located in it. fromText: the tree was loaded here from
+/// the text (errors name its lines); else it is the caller's (errors name the field alone; it is not
+/// changed: command-line values go into a copy).
+Model parseTree(const YAML::Node& tree, bool fromText, const std::string& baseDir, const OptionOverride& overrides,
+                const std::string& fileLabel, bool restart) {
   const std::string prefix = fileLabel.empty() ? std::string() : fileLabel + ": ";
-  checkText(text, prefix);
-  YAML::Node root = loadOneDocument(text, prefix);
-  if (!root.IsDefined() || root.IsNull())
+  if (!tree.IsDefined() || tree.IsNull())
     throw SceneError("", prefix + "the scene is empty: expected a map with at least nodes and elements");
+  Model m;
   std::vector<std::pair<std::string, std::string>> overridden;
+  const std::vector<std::pair<std::string, std::string>> given = givenOverrides(overrides);
+  YAML::Node root = given.empty() || fromText ? tree : YAML::Clone(tree);
   try {
-    applyOverrides(root, overrides, overridden);
+    applyOverrides(root, given, overridden);
     parseRoot(root, baseDir, m, restart);
   } catch (const SceneError& e) {
-    throw locate(e, root, overridden, fileLabel);
+    throw locate(e, root, overridden, fileLabel, fromText);
   } catch (const YAML::Exception& e) {
     throw SceneError("", prefix + "cannot read the scene: " + e.what());
   }
+  return m;
+}
+
+Model parseSceneImpl(const std::string& text, const std::string& baseDir, const OptionOverride& overrides,
+                     const std::string& fileLabel, bool restart) {
+  const std::string prefix = fileLabel.empty() ? std::string() : fileLabel + ": ";
+  checkText(text, prefix);
+  Model m = parseTree(loadOneDocument(text, prefix), true, baseDir, overrides, fileLabel, restart);
+  m.sceneText = text;
   return m;
 }
 
@@ -662,6 +683,10 @@ void checkBuiltModel(Model& m) { scene::checkBuiltModelImpl(m); }
 
 Model parseScene(const std::string& text, const std::string& baseDir, const OptionOverride& overrides, bool restart) {
   return scene::parseSceneImpl(text, baseDir, overrides, "", restart);
+}
+
+Model parseSceneTree(const YAML::Node& root, const std::string& baseDir, const OptionOverride& overrides, bool restart) {
+  return scene::parseTree(root, false, baseDir, overrides, "", restart);
 }
 
 Model readScene(const std::string& path, const OptionOverride& overrides, bool restart) {

@@ -11,6 +11,10 @@
 
 #include "sinew/model.hpp"
 
+namespace YAML {
+class Node;
+}
+
 namespace sinew {
 
 /// overrides(name) returns the command-line value for opt field `name` (e.g. "40", "true",
@@ -23,6 +27,12 @@ using OptionOverride = std::function<std::optional<std::string>(const std::strin
 /// is then checked by the caller (checkOutputSteps with the restart's last load step).
 Model parseScene(const std::string& text, const std::string& baseDir, const OptionOverride& overrides = {},
                  bool restart = false);
+/// Parse a scene given as its YAML tree (as YAML::Load makes it from the text; the Python module
+/// builds it from a dict without text). Model.sceneText stays empty (sceneTreeText, scene_tree.hpp,
+/// makes the text when a result file needs it). The tree is not changed. Messages name the field's
+/// path, without a line.
+Model parseSceneTree(const YAML::Node& root, const std::string& baseDir, const OptionOverride& overrides = {},
+                     bool restart = false);
 /// Read a scene file; messages name the file. opt.filename defaults to the file's stem.
 Model readScene(const std::string& path, const OptionOverride& overrides = {}, bool restart = false);
 

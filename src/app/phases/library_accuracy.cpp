@@ -11,6 +11,7 @@
 #include "app/phases/run_accuracy.hpp"
 #include "parallel/collective_error.hpp"
 #include "scene/scene_reader.hpp"
+#include "scene/scene_tree.hpp"
 #include "settings/read_settings.hpp"
 
 namespace sinew {
@@ -26,6 +27,7 @@ bool namesTargetError(const SceneSource& scene, const Settings& settings) {
     text << in.rdbuf();
     return text.str().find("target_error") != std::string::npos;
   }
+  if (scene.tree) return treeMentions(*scene.tree, "target_error");
   return scene.text.find("target_error") != std::string::npos;
 }
 
@@ -38,6 +40,11 @@ std::optional<Model> readModel(const SceneSource& scene, const Settings& setting
       return m;
     }
     if (!scene.path.empty()) return readScene(scene.path, sceneOverrides(settings));
+    if (scene.tree) {  // the levels' result file holds the scene text
+      Model m = parseSceneTree(*scene.tree, scene.baseDir, sceneOverrides(settings));
+      if (settings.output.file) m.sceneText = sceneTreeText(*scene.tree);
+      return m;
+    }
     return parseScene(scene.text, scene.baseDir, sceneOverrides(settings));
   } catch (const std::exception&) {
     return std::nullopt;

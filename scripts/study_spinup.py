@@ -32,7 +32,7 @@ def run(name, nbeams, dt):
     scene = sps.scene("spin-up against Simo & Vu-Quoc 1988", 0.9, tend=TEND, dt=dt, nbeams=nbeams,
                       output_every=round(0.1 / dt))
     h5, seconds = study_runs.run_scene(WORK, name, bt.yaml_text(scene),
-                                       ["-dynamics_scheme", "energy_momentum", "-dynamics_predictor", "rotation"])
+                                       ["-dynamics_scheme", "energy_momentum", "-beam_mass", "consistent", "-dynamics_predictor", "rotation"])
     with h5py.File(h5) as f:
         t, p = f["time"][:], f["node/p"][:, 1, :]
     v, u = sps.rotating_frame(t, p)

@@ -121,7 +121,7 @@ void SceneRun::readModel() {
   plan_ = makePlan(model_);
   const FeMesh fe = discretize(model_);
   dmesh_ = std::make_unique<DistributedMesh>(
-      distributeMesh(comm_, model_, fe, makeKernelFactory(model_, settings_.dynamics.beamMass)));
+      distributeMesh(comm_, model_, fe, makeKernelFactory(model_, settings_.dynamics.beamMassInUse())));
   checkContinuationControl(model_, *dmesh_);  // collective, after the collective distribution
   // nfreq: all asks SLEPc for every eigenpair: a dense-sized problem, bounded to small models
   constexpr long kAllFrequenciesMax = 2000;

@@ -70,10 +70,12 @@ ElementKernels makeKernelFactory(const Model& model, BeamMass beamMass) {
       throw SceneError(epropsName(set), ex.what());
     }
   }
-  // -beam_mass lumped: beams give their inertia to their nodes (docs/dynamics.md, "Free-floating beams")
+  // -beam_mass lumped: beams give their inertia to their nodes (docs/dynamics.md, "Free-floating beams");
+  // linear: their rotary inertia
   const bool lumped = beamMass == BeamMass::Lumped;
+  const bool linear = beamMass == BeamMass::Linear;  // constant translation mass, rotary inertia on the nodes
   const bool complete = beamMass == BeamMass::Consistent;  // the complete consistent mass (beam_inertia.cpp)
-  KernelFactory kernelOf = [scale, ancf, lumped, complete](const Model& m, const FeMesh& fe, int e) -> std::unique_ptr<ElementKernel> {
+  KernelFactory kernelOf = [scale, ancf, lumped, linear, complete](const Model& m, const FeMesh& fe, int e) -> std::unique_ptr<ElementKernel> {
     const FeElement& el = fe.elements[e];
     const int set = el.set;
     const Vec3& Xp = fe.X[el.nodes[0]];
@@ -109,6 +111,7 @@ ElementKernels makeKernelFactory(const Model& model, BeamMass beamMass) {
         const bool inertia = set >= 0 && m.eprops[set].get<BeamProperties>().dens > 0;
         auto beam = std::make_unique<BeamCorotational>(Xp, Xq, orien, sec, modes, inertia, scale);
         beam->setLumpedMass(lumped);
+        beam->setLinearMass(linear);
         beam->setCompleteMass(complete);
         return beam;
       }

@@ -151,7 +151,8 @@ DynamicAnalysis::DynamicAnalysis(Assembler& assembler, const DynamicsOptions& op
     if (stateMassSteps_)  // docs/dynamics.md "Energy-momentum scheme": the consistent mass' step is not a discrete gradient
       SinewCallThrow(comm, PetscPrintf(comm, "  warning: -dynamics_scheme energy_momentum with the consistent beam mass: the "
                                              "step does not keep the energy exactly (its inertia is taken at q_n+1) and stiff "
-                                             "beams can gain energy; -beam_mass lumped gives the exact energy-momentum step\n"));
+                                             "beams can gain energy; -beam_mass linear (its default) or lumped gives the exact "
+                                             "energy-momentum step\n"));
   }
   // the scheme, with the multipliers (no rates) and the rotation unknowns (Lie-group form) of the model
   if (scheme == Scheme::TSAlpha2) {

@@ -415,7 +415,24 @@ void BeamCorotational::localMass(double* Ml) const {
   rotary(2, 4, 8, 10, -1.0, sec_.rhoIy, sec_.EIy, sec_.kGAz);  // w, rotation theta_y about y (= -w')
 }
 
+void BeamCorotational::setLinearMass(bool linear) {
+  linear_ = linear;
+  linearMass_.clear();
+  if (!linear) return;
+  // int rhoA v.v dx with v = (1 - xi) v_p + xi v_q: rhoA l0 / 6 [2 1; 1 2] on each direction
+  linearMass_.assign(kDofs * kDofs, 0.0);
+  const double m = sec_.rhoA * l0_ / 6.0;
+  for (int i = 0; i < 3; ++i) {
+    linearMass_[i * kDofs + i] = linearMass_[(6 + i) * kDofs + 6 + i] = 2.0 * m;
+    linearMass_[i * kDofs + 6 + i] = linearMass_[(6 + i) * kDofs + i] = m;
+  }
+}
+
 void BeamCorotational::mass(const double* q, std::vector<double>& M) const {
+  if (linear_) {
+    M = linearMass_;
+    return;
+  }
   M.assign(kDofs * kDofs, 0.0);
   const Mat3 Lam = currentFrame(q);  // chord, averaged rotated y axis projected perpendicular to it
   double Ml[kDofs * kDofs];
@@ -432,14 +449,15 @@ void BeamCorotational::mass(const double* q, std::vector<double>& M) const {
 }
 
 bool BeamCorotational::lumpedInertia(double* mJ) const {
-  if (!lumped_ || !hasInertia_) return false;
-  // half the element on each node: translations rhoA l0 / 2, the section's rotary inertia per length
-  // (torsion rho Ip about ex0, bending rho Iy about ey0 and rho Iz about ez0) times l0 / 2
+  if (!(lumped_ || linear_) || !hasInertia_) return false;
+  // half the element on each node: translations rhoA l0 / 2 (lumped; linear: in the element mass), the
+  // section's rotary inertia per length (torsion rho Ip about ex0, bending rho Iy about ey0 and rho Iz
+  // about ez0) times l0 / 2
   const double h = 0.5 * l0_;
   const Mat3 J = h * (sec_.rhoIp * outer(ex0_, ex0_) + sec_.rhoIy * outer(ey0_, ey0_) + sec_.rhoIz * outer(ez0_, ez0_));
   for (int n = 0; n < 2; ++n) {
     double* v = mJ + 7 * n;
-    v[0] = h * sec_.rhoA;
+    v[0] = lumped_ ? h * sec_.rhoA : 0.0;
     v[1] = J[0], v[2] = J[1], v[3] = J[2], v[4] = J[4], v[5] = J[5], v[6] = J[8];
   }
   return true;

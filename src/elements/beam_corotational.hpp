@@ -39,15 +39,21 @@ class BeamCorotational : public StrainRateDampedKernel {
   /// -beam_mass lumped: no element mass matrix; each node gets rhoA l0 / 2 on its translations and
   /// l0 / 2 (rho Ip ex0 ex0^T + rho Iy ey0 ey0^T + rho Iz ez0 ez0^T) as its rotary inertia.
   void setLumpedMass(bool lumped) { lumped_ = lumped; }
+  /// -beam_mass linear (Simo & Vu-Quoc): the translations' mass of linearly interpolated velocities,
+  /// rhoA l0 / 6 [2 I, I; I, 2 I] (isotropic blocks: the same in every frame, constant), and the rotary
+  /// inertia lumped on the nodes as -beam_mass lumped gives it (lumpedInertia with no nodal mass).
+  void setLinearMass(bool linear);
+  const double* constantMass() const override { return linear_ ? linearMass_.data() : nullptr; }
   bool lumpedInertia(double* mJ) const override;
 
   void evaluate(const KernelInput& in, const KernelNeeds& needs, KernelOutput& out) const override;
-  /// Consistent mass at the current configuration in the current element frame (chord, averaged triad).
+  /// Consistent mass at the current configuration in the current element frame (chord, averaged triad);
+  /// -beam_mass linear: the constant translation mass.
   void mass(const double* q, std::vector<double>& M) const override;
   /// The complete consistent mass (default; -beam_mass consistent_frozen switches it off): the
   /// Euler-Lagrange force of T = 1/2 v^T M(q) v with the rotating element frame (beam_inertia.cpp).
   void setCompleteMass(bool complete) { complete_ = complete; }
-  bool hasInertiaForce() const override { return hasInertia() && complete_; }
+  bool hasInertiaForce() const override { return hasInertia() && complete_ && !linear_; }
   void inertiaForce(const double* q, const double* v, const double* a, bool tangent, InertiaOutput& out) const override;
   /// Lumped: rhoA l0 a / 2 on each node's translations, zero moments.
   void bodyForce(const double* q, const Vec3& a, std::vector<double>& f) const override;
@@ -129,6 +135,8 @@ class BeamCorotational : public StrainRateDampedKernel {
   std::array<BeamMode, 6> modes_{};
   bool hasInertia_ = false;
   bool lumped_ = false;
+  bool linear_ = false;
+  std::vector<double> linearMass_;  ///< -beam_mass linear: the constant 12 x 12 mass (row-major)
   bool complete_ = true;  ///< complete consistent mass (inertiaForce) in dynamics
   double scale_ = 1.0;
   int nRigid_ = 0;

@@ -23,7 +23,7 @@ enum class DynamicsScheme { ArnoldBruls, TSAlpha2, Midpoint, EnergyMomentum };  
 enum class ChainLU { Auto, Cut, Redundant };                 ///< auto, cut, redundant
 enum class DynamicsPredictor { Auto, Acceleration, State, Rotation };  ///< auto, acceleration, state, rotation
 enum class TimeStepControl { None, Newton, Error };          ///< none, newton, error
-enum class BeamMass { Consistent, Lumped, ConsistentFrozen };  ///< consistent, lumped, consistent_frozen
+enum class BeamMass { Consistent, Lumped, ConsistentFrozen, Linear };  ///< consistent, lumped, consistent_frozen, linear
 enum class StiffnessDamping { Corotated, Initial };          ///< corotated, initial
 enum class ComplianceMethod { SelectedInverse, SparseRhs, DenseRhs };  ///< selinv, sparse, dense
 
@@ -114,11 +114,18 @@ struct DynamicsSettings {
   std::optional<double> dtMin, dtMax;                     ///< -dynamics_dt_min, -dynamics_dt_max
   std::optional<int> adaptIts;                            ///< -dynamics_adapt_its
   std::optional<double> adaptTol;                         ///< -dynamics_adapt_tol
-  BeamMass beamMass = BeamMass::Consistent;               ///< -beam_mass (the kernel factory)
+  std::optional<BeamMass> beamMass;  ///< -beam_mass (nullopt: not given; beamMassInUse() resolves it)
   StiffnessDamping stiffnessDamping = StiffnessDamping::Corotated;  ///< -stiffness_damping (Damping)
   bool energy = false;                                    ///< -dynamics_energy
   double energyDecay = 0.0;                               ///< -dynamics_energy_decay
   bool operator==(const DynamicsSettings&) const = default;
+  /// The beams' mass (the kernel factory): -beam_mass as given, else linear under -dynamics_scheme
+  /// energy_momentum (constant, so its step is energy-exact) and consistent otherwise.
+  BeamMass beamMassInUse() const {
+    return beamMass.value_or(scheme == DynamicsScheme::EnergyMomentum ? BeamMass::Linear : BeamMass::Consistent);
+  }
+  /// -dynamics_scheme energy_momentum chose the linear beam mass (no -beam_mass given).
+  bool linearMassByScheme() const { return !beamMass && scheme == DynamicsScheme::EnergyMomentum; }
 };
 
 /// Form finding.

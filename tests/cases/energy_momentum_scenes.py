@@ -25,8 +25,11 @@ args = ["-dynamics_energy", "-beam_mass", "lumped"]
 em = ["-dynamics_scheme", "energy_momentum"]
 
 
-def load(name, text, extra, np_=1):
-    h5, out = st.run(name, text, np_=np_, args=args + extra)
+def load(name, text, extra, np_=1, mass="lumped"):
+    """Runs the scene with -dynamics_energy and -beam_mass `mass` (None: not given) plus `extra`; the
+    free flight's relative drifts dE (T + S), dH, dp."""
+    given = ["-beam_mass", mass] if mass else []
+    h5, out = st.run(name, text, np_=np_, args=["-dynamics_energy"] + given + extra)
     with st.h5(h5) as f:
         r = {k: f[k][:] for k in ("time", "node/p", "energy/kinetic", "energy/strain", "momentum/linear",
                                   "momentum/angular")}

@@ -30,7 +30,7 @@ PetscErrorCode bench(long n) {
     "opt": {"loadsteps": 1, "calcfreq": false, "gravity": [0, -9.81]}})";
   const sinew::Model model = sinew::parseScene(scene, ".");
   const sinew::FeMesh fe = sinew::discretize(model);
-  sinew::DistributedMesh mesh = sinew::distributeMesh(PETSC_COMM_WORLD, model, fe, sinew::makeKernelFactory(model, sinew::DynamicsSettings{}.beamMass));
+  sinew::DistributedMesh mesh = sinew::distributeMesh(PETSC_COMM_WORLD, model, fe, sinew::makeKernelFactory(model, sinew::DynamicsSettings{}.beamMassInUse()));
   sinew::Assembler a(mesh, model.opt.gravity, sinew::StaticsSettings{}.assemblyCoo);
   Vec U, V, A, F;
   PetscCall(a.createVector(&U));

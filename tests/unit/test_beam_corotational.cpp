@@ -398,6 +398,71 @@ TEST(BeamCorotational, LumpedInertia) {
   }
 }
 
+// -beam_mass linear (Simo & Vu-Quoc): a constant symmetric mass rhoA l0 / 6 [2 I, I; I, 2 I] on the
+// translations (no rotation rows), the rotary inertia lumped on the nodes with no nodal mass; a rigid
+// translation carries the element's mass rhoA l0, a rigid rotation the exact kinetic energy of the
+// straight rod (linear velocity along it: rhoA l0^3 / 12 |w_perp|^2 / 2, plus l0 w^T J_section w / 2).
+TEST(BeamCorotational, LinearMass) {
+  BeamSection s = test::comparableSection();
+  s.rhoIy = 0.03, s.rhoIz = 0.07;
+  BeamCorotational b(kXp, kXq, Vec3{0, 0, 1}, s, {F, F, F, F, F, F}, true, 1.0);
+  b.setLinearMass(true);
+  EXPECT_TRUE(b.hasInertia());
+  EXPECT_FALSE(b.massDependsOnState());
+  EXPECT_FALSE(b.hasInertiaForce());
+  const double* M0 = b.constantMass();
+  ASSERT_NE(M0, nullptr);
+  // the same matrix in a turned and stretched configuration
+  State st = referenceState(kXp, kXq);
+  const Mat3 Rt = expSO3({0.4, -1.1, 0.7});
+  st.set(0, Rt * kXp + Vec3{0.3, 0, -0.2}, Rt * expSO3({0.1, 0.2, -0.3}));
+  st.set(1, Rt * kXq + Vec3{0.1, 0.05, 0.2}, Rt * expSO3({-0.2, 0.1, 0.3}));
+  std::vector<double> M;
+  b.mass(st.q.data(), M);
+  ASSERT_EQ(M.size(), 144u);
+  const double m = s.rhoA * b.l0();
+  for (int i = 0; i < 12; ++i)
+    for (int j = 0; j < 12; ++j) {
+      EXPECT_EQ(M[12 * i + j], M0[12 * i + j]);  // configuration independent
+      EXPECT_EQ(M[12 * i + j], M[12 * j + i]);   // symmetric
+      const bool rotation = i % 6 >= 3 || j % 6 >= 3;
+      const double expected = rotation || i % 3 != j % 3 ? 0.0 : (i / 6 == j / 6 ? m / 3 : m / 6);
+      EXPECT_NEAR(M[12 * i + j], expected, 1e-15 * m);
+    }
+  double mJ[14];
+  ASSERT_TRUE(b.lumpedInertia(mJ));
+  EXPECT_EQ(mJ[0], 0.0);  // the translations' mass is in the element matrix
+  EXPECT_EQ(mJ[7], 0.0);
+  // kinetic energy 1/2 v^T M v + sum_nodes 1/2 w^T J w (J of the reference axes: the reference state)
+  auto kinetic = [&](const std::array<double, 12>& v) {
+    double t = 0;
+    for (int i = 0; i < 12; ++i)
+      for (int j = 0; j < 12; ++j) t += 0.5 * v[i] * M0[12 * i + j] * v[j];
+    for (int n = 0; n < 2; ++n) {
+      const double* J = mJ + 7 * n + 1;
+      const Mat3 Jn{J[0], J[1], J[2], J[1], J[3], J[4], J[2], J[4], J[5]};
+      const Vec3 w{v[6 * n + 3], v[6 * n + 4], v[6 * n + 5]};
+      t += 0.5 * dot(w, Jn * w);
+    }
+    return t;
+  };
+  const Vec3 u{0.3, -1.2, 0.5};
+  std::array<double, 12> vt{};
+  for (int k = 0; k < 3; ++k) vt[k] = vt[6 + k] = u[k];
+  EXPECT_NEAR(kinetic(vt), 0.5 * m * dot(u, u), 1e-14 * m * dot(u, u));  // total mass rhoA l0
+  const Vec3 w{0.7, 0.2, -0.9}, c = 0.5 * (kXp + kXq);
+  std::array<double, 12> vr{};
+  const Vec3 vp = cross(w, kXp - c), vq = cross(w, kXq - c);
+  for (int k = 0; k < 3; ++k) vr[k] = vp[k], vr[6 + k] = vq[k], vr[3 + k] = vr[9 + k] = w[k];
+  const Vec3 ex = (1.0 / b.l0()) * (kXq - kXp);
+  const Vec3 wPerp = w - dot(w, ex) * ex;
+  const double l = b.l0();
+  const double exact = 0.5 * (s.rhoA * l * l * l / 12 * dot(wPerp, wPerp) +
+                              l * (s.rhoIp * std::pow(dot(w, ex), 2) + s.rhoIy * std::pow(dot(w, b.ey0()), 2) +
+                                   s.rhoIz * std::pow(dot(w, b.ez0()), 2)));
+  EXPECT_NEAR(kinetic(vr), exact, 1e-14 * exact);
+}
+
 TEST(BeamCorotational, VonMisesPureBendingAndTorsion) {
   // Rect w x t along x, local y = global y. Bending about y by theta: sigma = E t/2 theta/l0.
   BeamProperties set;

@@ -83,7 +83,7 @@ PetscErrorCode check() {
   PetscFunctionBeginUser;
   const sinew::Model model = sinew::parseScene(kScene, ".");
   const sinew::FeMesh fe = sinew::discretize(model);
-  sinew::DistributedMesh mesh = sinew::distributeMesh(PETSC_COMM_WORLD, model, fe, sinew::makeKernelFactory(model, sinew::DynamicsSettings{}.beamMass));
+  sinew::DistributedMesh mesh = sinew::distributeMesh(PETSC_COMM_WORLD, model, fe, sinew::makeKernelFactory(model, sinew::DynamicsSettings{}.beamMassInUse()));
   sinew::Assembler a(mesh, model.opt.gravity, sinew::StaticsSettings{}.assemblyCoo);
   Mat J0, Jc, J1;
   Vec U0, U1, V;

@@ -44,7 +44,9 @@ std::string defaultMismatch(const Field<S>& f, const S& s) {
           [](const GivenRef<S>&) { return std::string(); },
           [&](const ChoiceRef<S>& c) {
             const std::optional<int> i = c.get(s);
-            if (!i) return text.find("(opt.") != std::string::npos ? std::string() : "no choice, default text " + text;
+            // left open: the scene (opt.) or another flag (" with -flag") decides
+            const bool open = text.find("(opt.") != std::string::npos || text.find(" with -") != std::string::npos;
+            if (!i) return open ? std::string() : "no choice, default text " + text;
             return f.value.choices.at(static_cast<std::size_t>(*i)) == word ? std::string()
                                                                              : "choice " + f.value.choices[*i] + " vs " + text;
           },
@@ -153,6 +155,23 @@ TEST(Settings, BuiltInCodeWithChosenValues) {
   EXPECT_EQ(s.statics.predictor, std::optional<bool>(false));
   EXPECT_EQ(s.continuation, ContinuationSettings{});  // the others keep their defaults
   EXPECT_EQ(s.dynamics.dtMax, std::nullopt);
-  EXPECT_EQ(s.dynamics.beamMass, BeamMass::Consistent);
+  EXPECT_EQ(s.dynamics.beamMass, std::nullopt);
+  EXPECT_EQ(s.dynamics.beamMassInUse(), BeamMass::Consistent);
   EXPECT_EQ(s.dynamics.stiffnessDamping, StiffnessDamping::Corotated);
+}
+
+TEST(Settings, BeamMassFollowsTheSchemeUnlessGiven) {
+  // energy_momentum takes the constant (energy-exact) linear beam mass unless -beam_mass was given
+  DynamicsSettings d;
+  d.scheme = DynamicsScheme::EnergyMomentum;
+  EXPECT_EQ(d.beamMassInUse(), BeamMass::Linear);
+  EXPECT_TRUE(d.linearMassByScheme());
+  d.beamMass = BeamMass::Consistent;
+  EXPECT_EQ(d.beamMassInUse(), BeamMass::Consistent);
+  EXPECT_FALSE(d.linearMassByScheme());
+  d.scheme = DynamicsScheme::Midpoint;
+  d.beamMass = std::nullopt;
+  EXPECT_EQ(d.beamMassInUse(), BeamMass::Consistent);
+  d.beamMass = BeamMass::Linear;
+  EXPECT_EQ(d.beamMassInUse(), BeamMass::Linear);
 }

@@ -85,7 +85,7 @@ PetscErrorCode newtonKsp(const sinew::StaticsSettings& statics, std::string* typ
   const sinew::Model model = sinew::parseScene(scene, ".");
   const sinew::FeMesh fe = sinew::discretize(model);
   sinew::DistributedMesh mesh =
-      sinew::distributeMesh(PETSC_COMM_WORLD, model, fe, sinew::makeKernelFactory(model, defaults.dynamics.beamMass));
+      sinew::distributeMesh(PETSC_COMM_WORLD, model, fe, sinew::makeKernelFactory(model, defaults.dynamics.beamMassInUse()));
   sinew::Assembler assembler(mesh, model.opt.gravity, statics.assemblyCoo);
   sinew::AncfSettings ancf;
   ancf.coarseRatio = 0;

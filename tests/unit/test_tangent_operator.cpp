@@ -44,7 +44,7 @@ PetscErrorCode check(const std::string& scene, bool freeCable) {
   PetscFunctionBeginUser;
   const sinew::Model model = sinew::parseScene(scene, ".");
   const sinew::FeMesh fe = sinew::discretize(model);
-  sinew::DistributedMesh mesh = sinew::distributeMesh(PETSC_COMM_WORLD, model, fe, sinew::makeKernelFactory(model, sinew::DynamicsSettings{}.beamMass));
+  sinew::DistributedMesh mesh = sinew::distributeMesh(PETSC_COMM_WORLD, model, fe, sinew::makeKernelFactory(model, sinew::DynamicsSettings{}.beamMassInUse()));
   sinew::Assembler assembler(mesh, model.opt.gravity, sinew::StaticsSettings{}.assemblyCoo);
   Mat J;
   Vec U, x, y1, y2;

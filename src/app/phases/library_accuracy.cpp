@@ -71,8 +71,10 @@ std::optional<RunOutput> runTargetErrorInLibrary(MPI_Comm comm, const SceneSourc
     out.output += line + "\n";
     if (echo) PetscPrintf(comm, "%s\n", line.c_str());
   };
+  const BeamMass beamMass = settings.dynamics.beamMassInUse();
+  const bool h2Frequencies = beamMass == BeamMass::Lumped || beamMass == BeamMass::Linear;  // constant-mass beams
   const accuracy::StudyOptions options =
-      accuracy::studyOptions(*model, target, settings.accuracy.maxUnknowns, settings.dynamics.beamMass == BeamMass::Lumped,
+      accuracy::studyOptions(*model, target, settings.accuracy.maxUnknowns, h2Frequencies,
                                settings.accuracy.reuse);
   char head[160];
   std::snprintf(head, sizeof head, "accuracy on demand: -target_error %g, levels up to -accuracy_max_unknowns %ld", target,

@@ -115,8 +115,10 @@ PetscErrorCode runWithTargetError(int argc, char** argv, bool* handled, int* exi
   const std::string h5 = settings.output.file ? *settings.output.file : model.opt.filename + ".h5";
   const bool silent = model.opt.silent;
   const double target = model.opt.target_error;
+  const BeamMass beamMass = settings.dynamics.beamMassInUse();
+  const bool h2Frequencies = beamMass == BeamMass::Lumped || beamMass == BeamMass::Linear;  // constant-mass beams
   const accuracy::StudyOptions options =
-      accuracy::studyOptions(model, target, settings.accuracy.maxUnknowns, settings.dynamics.beamMass == BeamMass::Lumped,
+      accuracy::studyOptions(model, target, settings.accuracy.maxUnknowns, h2Frequencies,
                              settings.accuracy.reuse);
   const std::string space = options.membranes ? "every element split (membranes in four)" : "nbeams x 2";
   const std::string levels = !options.space     ? "dt / 2 (the mesh as written)"

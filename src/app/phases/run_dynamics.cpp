@@ -18,6 +18,14 @@
 
 namespace sinew {
 
+namespace {
+/// Whether a beam set has a density (the beams' mass, -beam_mass, matters).
+bool beamsWithMass(const Model& model) {
+  for (const auto& set : model.eprops)
+    if (const auto* b = set.as<BeamProperties>(); b && b->dens > 0) return true;
+  return false;
+}
+}  // namespace
 
 PetscErrorCode runDynamics(RunContext& ctx) {
   PetscFunctionBeginUser;
@@ -149,7 +157,11 @@ PetscErrorCode runDynamics(RunContext& ctx) {
   std::ostringstream s;
   s << "  dynamics: " << r.steps << " of " << nsteps << " steps of dt = " << opts.dt << " to t = " << r.time;
   if (dyn.midpoint()) s << ", implicit midpoint rule";
-  else if (dyn.energyMomentum()) s << ", energy-momentum scheme" << (dyn.energyDecay() > 0 ? " with energy decay" : "");
+  else if (dyn.energyMomentum()) {
+    s << ", energy-momentum scheme" << (dyn.energyDecay() > 0 ? " with energy decay" : "");
+    if (ctx.settings.dynamics.linearMassByScheme() && beamsWithMass(ctx.model))
+      s << " (beams: the linear mass, energy-exact; -beam_mass)";
+  }
   else s << ", generalized-alpha rho = " << opts.spectral_radius << " (alpha_m = " << dyn.alphaM() << ", alpha_f = " << dyn.alphaF() << ")";
   s << ", " << r.newtonIterations << " Newton iterations on " << r.jacobians << " Jacobians";
   if (r.corotatedJacobians > 0) s << " (" << r.corotatedJacobians << " rebuilt from rotated element blocks)";

@@ -159,7 +159,7 @@ Per design, process / in-process: **{mp[0] / mi[0]:.1f}x** in wall time (medians
 `sinew.load`), {cp / ci:.1f}x in CPU time. The first in-process run (PETSc and SLEPc start) took {ms(first)} ms.
 An in-process design, medians of {args.phase_runs} runs after the loop (`sinew._core.run`, its summary's
 phases): setup {ms(ph['setup'])}, constraint check {ms(ph['constraint check'])}, statics {ms(ph['statics'])}, step analyses
-{ms(ph['step analyses'])}, output {ms(ph['output'])}, the rest of the call (scene dict to YAML, settings, summary, numpy
+{ms(ph['step analyses'])}, output {ms(ph['output'])}, the rest of the call (scene dict to YAML tree, settings, summary, numpy
 arrays) {ms(rest)}, the `out` object {ms(ph['out'])} ms (the summary prints milliseconds)."""
     print(text)
     if args.doc:

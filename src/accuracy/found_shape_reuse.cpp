@@ -33,16 +33,7 @@ std::vector<LevelState> interpolateDisplacements(const Model& coarse, const Mode
   }
   // a cable's midpoint is its chord's and a split membrane's new node the mean of its parents (linear in
   // the positions, so in the displacements too)
-  const LevelNodeMap map(coarse, fine);
-  std::vector<LevelState> out;
-  for (const LevelState& d : disp) {
-    LevelState g;
-    g.loadFactor = d.loadFactor;
-    g.nodes = map.apply(d.nodes);
-    if (g.nodes.empty()) return {};
-    out.push_back(std::move(g));
-  }
-  return out;
+  return LevelNodeMap(coarse, fine).apply(disp);
 }
 
 }  // namespace sinew::accuracy

@@ -129,11 +129,15 @@ std::vector<LevelState> interpolateStates(const Model& coarse, const Model& fine
   if (hasMembranes(coarse)) return {};  // lines alone (split membranes: accuracy/found_shape_reuse.hpp)
   const LevelNodeMap map(coarse, fine);
   if (!map.valid()) return {};
+  return map.apply(record);
+}
+
+std::vector<LevelState> LevelNodeMap::apply(const std::vector<LevelState>& record) const {
   std::vector<LevelState> out;
   for (const LevelState& st : record) {
     LevelState g;
     g.loadFactor = st.loadFactor;
-    g.nodes = map.apply(st.nodes);
+    g.nodes = apply(st.nodes);
     if (g.nodes.empty()) return {};
     out.push_back(std::move(g));
   }

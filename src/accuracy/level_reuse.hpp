@@ -40,6 +40,8 @@ class LevelNodeMap {
   /// The node states `coarse` (12 x coarse nodes) on the fine nodes (12 x fine nodes); empty when invalid
   /// or of another size.
   std::vector<double> apply(const std::vector<double>& coarse) const;
+  /// apply() on every state of a record (load factors kept); empty when any state does not map.
+  std::vector<LevelState> apply(const std::vector<LevelState>& record) const;
 
  private:
   bool valid_ = false;

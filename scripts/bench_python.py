@@ -2,9 +2,10 @@
 """Designs from Python in one process against one sinew process per design (issue 25, not a ctest):
 runs/crosshinge.yaml (10 load steps, frequencies, buckling, compliance; 66 unknowns, 1 rank)
 N times through `Scene.run()` (in-process, results in memory) and P times as the sinew executable
-(`build/sinew runs/crosshinge.yaml -o file`, one process each, started without mpirun), the two
-alternated in P batches (N/P in-process designs, then one process run) so that the machine's load
-weighs on both alike. Every result is checked against the first in-process run: every dataset of
+(`build/sinew runs/crosshinge.yaml -o file`, one process each, started without mpirun: the cheapest
+process run) and P times through `mpirun -n 1` (as scripts/run starts it, and as a study script calling
+mpirun once per design pays it), the three alternated in P batches (N/P in-process designs, then one
+process run of each kind) so that the machine's load weighs on all alike. Every result is checked against the first in-process run: every dataset of
 the result file (the restart checkpoint aside) and of memory, same names, shapes and values bit for
 bit (NaN where NaN), and the root attributes converged and ndof.
 Reported: wall time per design (median, 10 % and 90 % quantiles), CPU time per design (this
@@ -95,6 +96,12 @@ def main():
     h5 = os.path.join(work, "crosshinge.h5")
     env = dict(os.environ, OMPI_MCA_pml="ob1", OMPI_MCA_btl="self,vader")
     inproc, inproc_cpu, proc, proc_cpu, proc_load, problems = [], [], [], [], [], []
+    mpi, mpi_cpu = [], []
+    mpirun = shutil.which("mpirun")
+    if mpirun is None:
+        sys.exit("mpirun not found (openmpi-bin)")
+    mpi_env = dict(env, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
+                   OMPI_MCA_rmaps_base_oversubscribe="1")
     batches = max(args.processes, 1)
     per_batch = [args.n // batches + (1 if b < args.n % batches else 0) for b in range(batches)]
     t_all = time.perf_counter()
@@ -119,6 +126,15 @@ def main():
             proc_load.append(proc[-1] + time.perf_counter() - t)
             if (d := same(out, ref)):
                 problems.append(f"process run {len(proc)}: {d}")
+            c, t = child_cpu(), time.perf_counter()
+            p = subprocess.run([mpirun, "-n", "1", args.binary, args.scene, "-o", h5], cwd=os.path.dirname(args.scene),
+                               env=mpi_env, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+            mpi.append(time.perf_counter() - t)
+            mpi_cpu.append(child_cpu() - c)
+            if p.returncode != 0:
+                sys.exit(f"mpirun -n 1 sinew ended with exit {p.returncode}: {p.stderr}")
+            if (d := same(sinew.load(h5), ref)):
+                problems.append(f"mpirun run {len(mpi)}: {d}")
         loads.append(load1())
     elapsed = time.perf_counter() - t_all
     # where an in-process design's time goes: the phases of its summary (the run's own clock)
@@ -137,8 +153,8 @@ def main():
     loads.append(load1())
     shutil.rmtree(work)
 
-    mi, mp, mpl = quantiles(inproc), quantiles(proc), quantiles(proc_load)
-    ci, cp = statistics.median(inproc_cpu), statistics.median(proc_cpu)
+    mi, mp, mpl, mm = quantiles(inproc), quantiles(proc), quantiles(proc_load), quantiles(mpi)
+    ci, cp, cm = statistics.median(inproc_cpu), statistics.median(proc_cpu), statistics.median(mpi_cpu)
     identical = "identical bit for bit" if not problems else f"{len(problems)} differ: {problems[0]}"
     ph = {k: statistics.median(v) for k, v in phases.items()}
     rest = ph["core"] - sum(ph[k] for k in PHASES)
@@ -146,17 +162,20 @@ def main():
 shared with other jobs: load average (1 min) {loads[0]:.1f} at the start, {statistics.median(loads):.1f} median over the
 batches ({min(loads):.1f} .. {max(loads):.1f}), {loads[-1]:.1f} at the end; `uptime` before: `{uptime_before}`, after:
 `{uptime_after}`). Scene runs/crosshinge.yaml (66 unknowns, 10 load steps, frequencies, buckling,
-compliance), 1 rank; the two ways alternated in {batches} batches. Results of all {len(inproc)} in-process and {len(proc)}
-process runs against the first in-process run: {identical}.
+compliance), 1 rank; the three ways alternated in {batches} batches. Results of all {len(inproc)} in-process and
+{len(proc) + len(mpi)} process runs against the first in-process run: {identical}.
 
 | way | designs | wall per design, median [ms] | 10 % .. 90 % [ms] | CPU per design, median [ms] |
 |---|---|---|---|---|
 | in-process: `Scene.run()`, results in memory | {len(inproc)} | {ms(mi[0])} | {ms(mi[1])} .. {ms(mi[2])} | {ms(ci)} |
 | process: `build/sinew crosshinge.yaml -o file` | {len(proc)} | {ms(mp[0])} | {ms(mp[1])} .. {ms(mp[2])} | {ms(cp)} |
 | process + `sinew.load` of its file | {len(proc)} | {ms(mpl[0])} | {ms(mpl[1])} .. {ms(mpl[2])} | |
+| process by `mpirun -n 1 build/sinew crosshinge.yaml -o file` | {len(mpi)} | {ms(mm[0])} | {ms(mm[1])} .. {ms(mm[2])} | {ms(cm)} |
 
-Per design, process / in-process: **{mp[0] / mi[0]:.1f}x** in wall time (medians; {mpl[0] / mi[0]:.1f}x with
-`sinew.load`), {cp / ci:.1f}x in CPU time. The first in-process run (PETSc and SLEPc start) took {ms(first)} ms.
+Per design, process / in-process: **{mp[0] / mi[0]:.1f}x** in wall time against the process started alone
+(medians; {mpl[0] / mi[0]:.1f}x with `sinew.load`), {cp / ci:.1f}x in CPU time; **{mm[0] / mi[0]:.1f}x** in wall
+time and {cm / ci:.1f}x in CPU time against the process started by `mpirun -n 1`.
+The first in-process run (PETSc and SLEPc start) took {ms(first)} ms.
 An in-process design, medians of {args.phase_runs} runs after the loop (`sinew._core.run`, its summary's
 phases): setup {ms(ph['setup'])}, constraint check {ms(ph['constraint check'])}, statics {ms(ph['statics'])}, step analyses
 {ms(ph['step analyses'])}, output {ms(ph['output'])}, the rest of the call (scene dict to YAML tree, settings, summary, numpy

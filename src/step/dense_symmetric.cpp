@@ -118,10 +118,16 @@ bool symmetricEigenSelected(std::vector<double>& a, int n, std::vector<double>& 
   // the reflectors applied to the columns [first, n), first the start of the group of four holding the
   // lowest selected column: the BLAS dot products (OpenBLAS's dgemv sums a column differently in
   // its groups of four columns and among the last n mod 4, and LAPACK's dlarf leaves out trailing
-  // zero columns) are then those of dsyevd's n columns, and the vectors dsyevd's bit for bit
-  const int first = 4 * (*std::min_element(cols.begin(), cols.end()) / 4), k = n - first;
+  // zero columns) are then those of dsyevd's n columns, and the vectors dsyevd's bit for bit. That
+  // holds for dormtr's unblocked, column-by-column back-transformation, the one dsyevd's workspace
+  // gives up to n = 63 (LAPACK 3.7 on: blocks of two reflectors need 2 n + 65 * 64 doubles, and their
+  // size depends on the number of columns), and the one a workspace of k doubles gives the k columns;
+  // for larger n all columns, as dsyevd
+  const bool columnByColumn = lwork2 < 2 * n + 65 * 64;
+  const int first = columnByColumn ? 4 * (*std::min_element(cols.begin(), cols.end()) / 4) : 0, k = n - first;
+  const int lworkBack = columnByColumn ? k : lwork2;
   std::vector<double> Vs(V + static_cast<size_t>(first) * n, V + static_cast<size_t>(n) * n);
-  dormtr_("L", "L", "N", &n, &k, a.data(), &n, tau, Vs.data(), &n, rest, &lwork2, &info);
+  dormtr_("L", "L", "N", &n, &k, a.data(), &n, tau, Vs.data(), &n, rest, &lworkBack, &info);
   if (info != 0) return false;
   Z.resize(static_cast<size_t>(n) * cols.size());
   for (size_t c = 0; c < cols.size(); ++c)

@@ -20,7 +20,8 @@ using PickColumns = std::function<std::vector<int>(const std::vector<double>& w)
 /// symmetricEigen with the eigenvectors of the columns pick(w) only, into Z (n x pick(w).size(), in
 /// that order), bit for bit those of symmetricEigen: dsyevd's own steps (dsytrd, dstedc), then its
 /// back-transformation (dormtr) on the columns from the lowest picked one on instead of all n (the
-/// saving when the wanted eigenvalues are the largest). a is overwritten.
+/// saving when the wanted eigenvalues are the largest; up to n = 63, where it is column by column).
+/// a is overwritten.
 bool symmetricEigenSelected(std::vector<double>& a, int n, std::vector<double>& w, const PickColumns& pick,
                             std::vector<double>& Z);
 

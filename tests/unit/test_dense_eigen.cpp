@@ -193,12 +193,14 @@ TEST(DenseSymmetric, SemidefiniteFactorFallsBackOnIndefinite) {
 }
 
 // symmetricEigenSelected gives symmetricEigen's eigenvalues and, of the picked columns, its
-// eigenvectors bit for bit: a dense matrix (54 x 54, the crosshinge's reduced order) picking the 28
-// largest, as the frequencies do, and a reducible one (two uncoupled blocks: tridiagonal eigenvectors
-// with exact zeros, which LAPACK's back-transformation treats apart) picking from both ends.
+// eigenvectors bit for bit: a dense matrix picking the largest from several on (54 x 54 is the
+// crosshinge's reduced order, where the frequencies pick 28; 63 is the largest order whose
+// back-transformation goes column by column, 64 and 100 have dormtr's blocked one, on all columns),
+// and a reducible one (two uncoupled blocks: tridiagonal eigenvectors with exact zeros, which
+// LAPACK's back-transformation treats apart).
 TEST(DenseSymmetric, SelectedEigenvectorsAreTheFullOnesBitForBit) {
+  for (const int n : {54, 63, 64, 100})
   for (const bool reducible : {false, true}) {
-    const int n = 54;
     std::vector<double> A(static_cast<size_t>(n) * n, 0.0);
     for (int j = 0; j < n; ++j)
       for (int i = j; i < n; ++i) {
@@ -220,7 +222,7 @@ TEST(DenseSymmetric, SelectedEigenvectorsAreTheFullOnesBitForBit) {
       for (size_t c = 0; c < picked.size(); ++c)
         for (int i = 0; i < n; ++i)
           ASSERT_EQ(Z[c * n + i], full[static_cast<size_t>(picked[c]) * n + i])
-              << (reducible ? "reducible" : "dense") << ", from " << lowest << ": column " << picked[c] << " row " << i;
+              << n << (reducible ? " reducible" : " dense") << ", from " << lowest << ": column " << picked[c] << " row " << i;
     }
   }
 }

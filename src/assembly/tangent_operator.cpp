@@ -1,4 +1,5 @@
 // Element-wise application of the tangent (see Assembler::applyTangent).
+#include <algorithm>
 #include <array>
 #include <cmath>
 
@@ -49,6 +50,71 @@ void spin(int dim, int k, const double* v, double* r) {
   r[0] = e[1] * v[2] - e[2] * v[1];
   r[1] = e[2] * v[0] - e[0] * v[2];
   r[2] = e[0] * v[1] - e[1] * v[0];
+}
+
+/// z = the rigid-motion-free product of one kept block with d (translation-free already; see
+/// applyTangent(x, y, true)), fk its rigid-motion data (keepRigid) with NR rotation components
+/// (3: 3D, 1: 2D, 0: none, the element uses the plain product). NR known at compile time unrolls the
+/// short loops over it; the operations and their order are those of a loop over a run-time nr.
+template <int NR>
+void rigidFreeProduct(int n, int nt, std::span<const NodeKind> kinds, const std::array<int, 4>& nodeStart,
+                      const double* K, const double* fk, double* d, double* z) {
+  const double* R = fk + n;
+  const double* F = R + static_cast<size_t>(n) * NR;
+  const double* E = F + static_cast<size_t>(n) * NR;
+  std::array<Group, 8> g;
+  const int ng = groupsOf(kinds, g);
+  double c[3] = {0, 0, 0};  // rotation of the first node (d is translation-free already)
+  for (int k = 0; k < NR; ++k)
+    for (int j = 0; j < n; ++j) c[k] += E[k * n + j] * d[j];
+  double vr[3] = {0, 0, 0};  // exact moment of K d about the first node: -sum_g d_g x f_g
+  for (int gi = 0; gi < ng && NR > 0; ++gi) {
+    if (!g[gi].position) continue;
+    const double* a = &d[g[gi].start];
+    const double* b = fk + g[gi].start;
+    if (NR == 1) {
+      vr[0] -= a[0] * b[1] - a[1] * b[0];
+    } else {
+      vr[0] -= a[1] * b[2] - a[2] * b[1];
+      vr[1] -= a[2] * b[0] - a[0] * b[2];
+      vr[2] -= a[0] * b[1] - a[1] * b[0];
+    }
+  }
+  for (int j = 0; j < n; ++j)
+    for (int k = 0; k < NR; ++k) d[j] -= R[j * NR + k] * c[k];
+  int r = 0;
+  for (; r + 1 < n; r += 2) {  // two rows at a time (d read once for both), each its own sum in order
+    const double* K0 = K + static_cast<size_t>(r) * n;
+    const double* K1 = K0 + n;
+    double s0 = 0.0, s1 = 0.0;
+    for (int cc = 0; cc < n; ++cc) {
+      s0 += K0[cc] * d[cc];
+      s1 += K1[cc] * d[cc];
+    }
+    for (int k = 0; k < NR; ++k) {
+      s0 += F[r * NR + k] * c[k];
+      s1 += F[(r + 1) * NR + k] * c[k];
+    }
+    z[r] = s0;
+    z[r + 1] = s1;
+  }
+  for (; r < n; ++r) {
+    double s = 0.0;
+    for (int cc = 0; cc < n; ++cc) s += K[r * n + cc] * d[cc];
+    for (int k = 0; k < NR; ++k) s += F[r * NR + k] * c[k];
+    z[r] = s;
+  }
+  // balance: resultant force 0 (first node's translation rows), moment vr (E^T)
+  double wt[3] = {0, 0, 0}, wr[3] = {0, 0, 0};
+  for (size_t i = 0; i < kinds.size(); ++i) {
+    const int ni = kinds[i] == NodeKind::Ancf2D ? 2 : 3;
+    for (int cc = 0; cc < std::min(nt, ni); ++cc) wt[cc] += z[nodeStart[i] + cc];
+  }
+  for (int k = 0; k < NR; ++k)
+    for (int j = 0; j < n; ++j) wr[k] += R[j * NR + k] * z[j];
+  for (int cc = 0; cc < nt; ++cc) z[cc] -= wt[cc];
+  for (int k = 0; k < NR; ++k)
+    for (int j = 0; j < n; ++j) z[j] += E[k * n + j] * (vr[k] - wr[k]);
 }
 
 }  // namespace
@@ -204,46 +270,9 @@ PetscErrorCode Assembler::applyTangent(Vec x, Vec y, bool rigidFree) {
       if (rigidFree) {
         const auto [nr, roff] = rigidInfo_[ei++];
         const double* fk = rigidData_.data() + roff;
-        const double* R = fk + n;
-        const double* F = R + static_cast<size_t>(n) * nr;
-        const double* E = F + static_cast<size_t>(n) * nr;
-        std::array<Group, 8> g;
-        const int ng = groupsOf(kinds, g);
-        double c[3] = {0, 0, 0};  // rotation of the first node (d is translation-free already)
-        for (int k = 0; k < nr; ++k)
-          for (int j = 0; j < n; ++j) c[k] += E[k * n + j] * d[j];
-        double vr[3] = {0, 0, 0};  // exact moment of K d about the first node: -sum_g d_g x f_g
-        for (int gi = 0; gi < ng && nr > 0; ++gi) {
-          if (!g[gi].position) continue;
-          const double* a = &d[g[gi].start];
-          const double* b = fk + g[gi].start;
-          if (nr == 1) {
-            vr[0] -= a[0] * b[1] - a[1] * b[0];
-          } else {
-            vr[0] -= a[1] * b[2] - a[2] * b[1];
-            vr[1] -= a[2] * b[0] - a[0] * b[2];
-            vr[2] -= a[0] * b[1] - a[1] * b[0];
-          }
-        }
-        for (int j = 0; j < n; ++j)
-          for (int k = 0; k < nr; ++k) d[j] -= R[j * nr + k] * c[k];
-        for (int r = 0; r < n; ++r) {
-          double s = 0.0;
-          for (int cc = 0; cc < n; ++cc) s += K[r * n + cc] * d[cc];
-          for (int k = 0; k < nr; ++k) s += F[r * nr + k] * c[k];
-          z[r] = s;
-        }
-        // balance: resultant force 0 (first node's translation rows), moment vr (E^T)
-        double wt[3] = {0, 0, 0}, wr[3] = {0, 0, 0};
-        for (size_t i = 0; i < kinds.size(); ++i) {
-          const int ni = kinds[i] == NodeKind::Ancf2D ? 2 : 3;
-          for (int cc = 0; cc < std::min(nt, ni); ++cc) wt[cc] += z[nodeStart[i] + cc];
-        }
-        for (int k = 0; k < nr; ++k)
-          for (int j = 0; j < n; ++j) wr[k] += R[j * nr + k] * z[j];
-        for (int cc = 0; cc < nt; ++cc) z[cc] -= wt[cc];
-        for (int k = 0; k < nr; ++k)
-          for (int j = 0; j < n; ++j) z[j] += E[k * n + j] * (vr[k] - wr[k]);
+        if (nr == 3) rigidFreeProduct<3>(n, nt, kinds, nodeStart, K, fk, d.data(), z.data());
+        else if (nr == 1) rigidFreeProduct<1>(n, nt, kinds, nodeStart, K, fk, d.data(), z.data());
+        else rigidFreeProduct<0>(n, nt, kinds, nodeStart, K, fk, d.data(), z.data());
         for (int r = 0; r < n; ++r)
           if (idx[r] >= 0) ya[idx[r]] += z[r];
         offset += static_cast<size_t>(n) * n;

@@ -164,26 +164,28 @@ DenseEigenpairs symmetricPencil(const std::vector<double>& A0, const std::vector
       const double h = 0.5 * (H[static_cast<size_t>(j) * r + i] + H[static_cast<size_t>(i) * r + j]);
       H[static_cast<size_t>(j) * r + i] = H[static_cast<size_t>(i) * r + j] = h;
     }
-  std::vector<double> theta;
-  if (!symmetricEigen(H, r, theta)) {
+  // finite eigenvalues (theta above round-off), nearest to sigma (largest |theta|) first; the
+  // eigenvectors y of the first `want` of them
+  std::vector<double> theta, Y;
+  std::vector<int> order;
+  const auto nearest = [&](const std::vector<double>& t) {
+    double tmax = 0;
+    for (double v : t) tmax = std::max(tmax, std::abs(v));
+    for (int j = 0; j < r; ++j)
+      if (std::abs(t[j]) > r * kEps * tmax) order.push_back(j);
+    std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return std::abs(t[a]) > std::abs(t[b]); });
+    return std::vector<int>(order.begin(), order.begin() + std::min<int>(want, static_cast<int>(order.size())));
+  };
+  if (!symmetricEigenSelected(H, r, theta, nearest, Y)) {
     out.singular = true;
     return out;
   }
-  // finite eigenvalues (theta above round-off), nearest to sigma (largest |theta|) first
-  double tmax = 0;
-  for (double t : theta) tmax = std::max(tmax, std::abs(t));
-  std::vector<int> order;
-  for (int j = 0; j < r; ++j)
-    if (std::abs(theta[j]) > r * kEps * tmax) order.push_back(j);
-  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return std::abs(theta[a]) > std::abs(theta[b]); });
   for (int j : order) out.re.push_back(sigma + 1.0 / theta[j]);
   out.im.assign(out.re.size(), 0.0);
   const int k = std::min<int>(want, out.count());
   // x_j = W y_j / theta_j
-  std::vector<double> Y(static_cast<size_t>(r) * k);
   for (int c = 0; c < k; ++c)
-    for (int i = 0; i < r; ++i)
-      Y[static_cast<size_t>(c) * r + i] = H[static_cast<size_t>(order[c]) * r + i] / theta[order[c]];
+    for (int i = 0; i < r; ++i) Y[static_cast<size_t>(c) * r + i] /= theta[order[c]];
   out.vectors.assign(static_cast<size_t>(n) * k, 0.0);
   gemm('N', 'N', n, k, r, W.data(), n, Y.data(), r, out.vectors.data());
   for (int c = 0; c < k; ++c) {

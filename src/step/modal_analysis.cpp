@@ -172,8 +172,17 @@ PetscErrorCode ModalAnalysis::assemble(Vec U, const LoadState& ls) {
   } else {
     PetscCall(asm_.jacobian(U, ls, K_));
   }
-  PetscCall(MatTranspose(K_, MAT_INITIAL_MATRIX, &Kt_));
+  // K^T - K in Kt_, a transpose of K kept from one step to the next (its values overwritten) while K's
+  // structure is the one it was made for and K^T - K kept its structure
+  PetscObjectState kState, tState, tAfter;
+  PetscCall(MatGetNonzeroState(K_, &kState));
+  PetscCall(MatDestroy(&Kskew_));  // a second reference to Kt_ (below)
+  if (Kt_ && kState != transposedState_) PetscCall(MatDestroy(&Kt_));
+  if (!Kt_) transposedState_ = kState;
+  PetscCall(MatTranspose(K_, Kt_ ? MAT_REUSE_MATRIX : MAT_INITIAL_MATRIX, &Kt_));
+  PetscCall(MatGetNonzeroState(Kt_, &tState));
   PetscCall(MatAXPY(Kt_, -1.0, K_, UNKNOWN_NONZERO_PATTERN));  // K^T - K
+  PetscCall(MatGetNonzeroState(Kt_, &tAfter));
   PetscReal nk, nd;
   PetscCall(MatNorm(K_, NORM_FROBENIUS, &nk));
   PetscCall(MatNorm(Kt_, NORM_FROBENIUS, &nd));
@@ -183,13 +192,12 @@ PetscErrorCode ModalAnalysis::assemble(Vec U, const LoadState& ls) {
   // the element-wise operator is made symmetric the same way: its products plus (K^T - K)/2 x of
   // the assembled matrix (the skew part is of the order of the moments, no cancellation; without it
   // the loaded crosshinge's f2 differed by 2.1e-5 between the two operators at every mesh size)
-  PetscCall(MatDestroy(&Kskew_));
   if (elementwise_ && nd > 0) {
     PetscCall(MatScale(Kt_, 0.5));
+    PetscCall(PetscObjectReference(reinterpret_cast<PetscObject>(Kt_)));
     Kskew_ = Kt_;
-    Kt_ = nullptr;
   }
-  PetscCall(MatDestroy(&Kt_));
+  if (tAfter != tState) PetscCall(MatDestroy(&Kt_));  // no longer the transpose's structure
   PetscCall(PetscInfo(nullptr, "step %d: ||K - K^T||_F / ||K||_F = %g (symmetric part used)\n", step_, asym));
   PetscCall(asm_.mass(U, ls, M_));
   PetscFunctionReturn(PETSC_SUCCESS);

@@ -71,6 +71,7 @@ class ModalAnalysis : public StepAnalysis {
   double shiftRel_ = 1e-8;
   Mat K_ = nullptr, Kt_ = nullptr, M_ = nullptr;
   Mat Kskew_ = nullptr;  ///< (K^T - K)/2 of the assembled tangent, added to the element-wise products (or null)
+  PetscObjectState transposedState_ = 0;  ///< K's nonzero state Kt_ was made from (MatTranspose reuse)
   bool dense_ = false;         // -eigen_dense_max_unknowns: LAPACK on rank 0 instead of SLEPc
   bool elementwise_ = false;   // -eigen_operator: K applied element by element (rigid-motion free)
   Mat Kop_ = nullptr;          // shell: Assembler::applyTangent(x, y, true)

@@ -191,3 +191,38 @@ TEST(DenseSymmetric, SemidefiniteFactorFallsBackOnIndefinite) {
   for (int i = 0; i < n; ++i)
     for (int j = 0; j < n; ++j) EXPECT_NEAR(L[i] * L[j], 1.5, 1e-14) << i << " " << j;
 }
+
+// symmetricEigenSelected gives symmetricEigen's eigenvalues and, of the picked columns, its
+// eigenvectors bit for bit: a dense matrix picking the largest from several on (54 x 54 is the
+// crosshinge's reduced order, where the frequencies pick 28; 63 is the largest order whose
+// back-transformation goes column by column, 64 and 100 have dormtr's blocked one, on all columns),
+// and a reducible one (two uncoupled blocks: tridiagonal eigenvectors with exact zeros, which
+// LAPACK's back-transformation treats apart).
+TEST(DenseSymmetric, SelectedEigenvectorsAreTheFullOnesBitForBit) {
+  for (const int n : {54, 63, 64, 100})
+  for (const bool reducible : {false, true}) {
+    std::vector<double> A(static_cast<size_t>(n) * n, 0.0);
+    for (int j = 0; j < n; ++j)
+      for (int i = j; i < n; ++i) {
+        const bool coupled = !reducible || (i < 20) == (j < 20);
+        const double v = coupled ? std::sin(1.0 + 0.37 * i + 1.91 * j) + (i == j ? 0.1 * i : 0.0) : 0.0;
+        A[static_cast<size_t>(j) * n + i] = A[static_cast<size_t>(i) * n + j] = v;
+      }
+    for (const int lowest : {26, 3, 0, 53}) {
+      std::vector<double> full(A), w, a(A), ws, Z;
+      ASSERT_TRUE(sinew::symmetricEigen(full, n, w));
+      std::vector<int> picked;
+      const auto pick = [&](const std::vector<double>&) {
+        for (int j = n - 1; j >= lowest; --j) picked.push_back(j);  // largest first
+        return picked;
+      };
+      ASSERT_TRUE(sinew::symmetricEigenSelected(a, n, ws, pick, Z));
+      EXPECT_EQ(w, ws);
+      ASSERT_EQ(Z.size(), static_cast<size_t>(n) * picked.size());
+      for (size_t c = 0; c < picked.size(); ++c)
+        for (int i = 0; i < n; ++i)
+          ASSERT_EQ(Z[c * n + i], full[static_cast<size_t>(picked[c]) * n + i])
+              << n << (reducible ? " reducible" : " dense") << ", from " << lowest << ": column " << picked[c] << " row " << i;
+    }
+  }
+}

@@ -39,6 +39,25 @@ struct DenseLU {
 PetscErrorCode copyRows(Mat A, DenseLU* d) {
   PetscFunctionBeginUser;
   const int n = d->n;
+  PetscBool seq = PETSC_FALSE;
+  PetscCall(PetscObjectTypeCompare(reinterpret_cast<PetscObject>(A), MATSEQAIJ, &seq));
+  if (seq) {  // the CSR arrays as they are (AIJ keeps every row sorted by column)
+    PetscInt m;
+    const PetscInt *ia, *ja;
+    PetscBool done;
+    PetscCall(MatGetRowIJ(A, 0, PETSC_FALSE, PETSC_FALSE, &m, &ia, &ja, &done));
+    const bool whole = done && m == n;
+    if (whole) {
+      const PetscScalar* a;
+      PetscCall(MatSeqAIJGetArrayRead(A, &a));
+      d->row.assign(ia, ia + n + 1);
+      d->col.assign(ja, ja + ia[n]);
+      d->val.assign(a, a + ia[n]);
+      PetscCall(MatSeqAIJRestoreArrayRead(A, &a));
+    }
+    PetscCall(MatRestoreRowIJ(A, 0, PETSC_FALSE, PETSC_FALSE, &m, &ia, &ja, &done));
+    if (whole) PetscFunctionReturn(PETSC_SUCCESS);
+  }
   d->row.assign(static_cast<size_t>(n) + 1, 0);
   d->col.clear();
   d->val.clear();

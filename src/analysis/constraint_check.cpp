@@ -207,7 +207,8 @@ PetscErrorCode nullDirections(Mat J, Vec D, const std::vector<Vec>& X, PetscReal
 
 PetscErrorCode checkConstraints(
 Assembler& assembler, const Model& model, Vec U, const LoadState& ls,
-                                const ModelCheckSettings& settings, int denseMaxUnknowns, ConstraintReport* report) {
+                                const ModelCheckSettings& settings, int denseMaxUnknowns, ConstraintReport* report,
+                                Mat tangent) {
   PetscFunctionBeginUser;
   *report = ConstraintReport{};
   DistributedMesh& m = assembler.mesh();
@@ -216,9 +217,11 @@ Assembler& assembler, const Model& model, Vec U, const LoadState& ls,
   const PetscReal tol = settings.tol;
   const PetscInt nvec = std::clamp<PetscInt>(settings.vectors, 1, static_cast<PetscInt>(m.numGlobalUnknowns));
 
-  Mat J, As;
-  PetscCall(assembler.createMatrix(&J));
-  PetscCall(assembler.jacobian(U, ls, J));
+  Mat J = tangent, As;
+  if (!tangent) {
+    PetscCall(assembler.createMatrix(&J));
+    PetscCall(assembler.jacobian(U, ls, J));
+  }
   // Which owned rows are node DOFs (the rest are multipliers).
   const int nloc = m.numOwnedUnknowns;
   std::vector<char> isNode(nloc, 0);
@@ -457,7 +460,7 @@ Assembler& assembler, const Model& model, Vec U, const LoadState& ls,
   PetscCall(VecDestroy(&Dg));
   PetscCall(KSPDestroy(&ksp));
   PetscCall(MatDestroy(&As));
-  PetscCall(MatDestroy(&J));
+  if (!tangent) PetscCall(MatDestroy(&J));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

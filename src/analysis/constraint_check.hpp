@@ -29,7 +29,9 @@ struct ConstraintReport {
 
 /// Collective. Checks the tangent at state U (load state ls). settings: -constraint_check_tol,
 /// -constraint_check_vectors (subspace size); denseMaxUnknowns: -dense_max_unknowns (useDirectSolver).
+/// tangent: the caller's Assembler::jacobian at (U, ls) if it has one (used, not changed); else assembled here.
 PetscErrorCode checkConstraints(Assembler& assembler, const Model& model, Vec U, const LoadState& ls,
-                                const ModelCheckSettings& settings, int denseMaxUnknowns, ConstraintReport* report);
+                                const ModelCheckSettings& settings, int denseMaxUnknowns, ConstraintReport* report,
+                                Mat tangent = nullptr);
 
 }  // namespace sinew

@@ -142,11 +142,43 @@ PetscErrorCode StaticAnalysis::formJacobian(SNES snes, Vec U, Mat, Mat P, void* 
   PetscInt it = 0;
   PetscCall(SNESGetIterationNumber(snes, &it));
   PetscReal norm = 0, frobenius = 0;
-  PetscCall(MatNorm(P, NORM_INFINITY, &norm));
+  PetscCall(tangentNorms(P, &norm, &frobenius));
   if (it == 0) self->jacobianNorm_ = norm;  // at the start state
   // Inf/NaN entries, or entries whose squares overflow (above ~1e154: no factorization handles them)
-  PetscCall(MatNorm(P, NORM_FROBENIUS, &frobenius));
   self->tangentFinite_ = std::isfinite(frobenius);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+// ||P||_inf and ||P||_F as MatNorm gives them; a one-process AIJ matrix in one pass over its values
+// (the same sums in the same order: each row's |entries| by column, the squares in storage order).
+PetscErrorCode StaticAnalysis::tangentNorms(Mat P, PetscReal* inf, PetscReal* frobenius) {
+  PetscFunctionBeginUser;
+  PetscBool seq = PETSC_FALSE;
+  PetscCall(PetscObjectTypeCompare(reinterpret_cast<PetscObject>(P), MATSEQAIJ, &seq));
+  PetscInt m = 0;
+  const PetscInt *ia = nullptr, *ja = nullptr;
+  PetscBool done = PETSC_FALSE;
+  if (seq) PetscCall(MatGetRowIJ(P, 0, PETSC_FALSE, PETSC_FALSE, &m, &ia, &ja, &done));
+  if (!done) {
+    PetscCall(MatNorm(P, NORM_INFINITY, inf));
+    PetscCall(MatNorm(P, NORM_FROBENIUS, frobenius));
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  const PetscScalar* a;
+  PetscCall(MatSeqAIJGetArrayRead(P, &a));
+  PetscReal rowMax = 0.0, squares = 0.0;
+  for (PetscInt i = 0; i < m; ++i) {
+    PetscReal sum = 0.0;
+    for (PetscInt k = ia[i]; k < ia[i + 1]; ++k) {
+      sum += std::abs(a[k]);
+      squares += a[k] * a[k];
+    }
+    if (sum > rowMax) rowMax = sum;
+  }
+  PetscCall(MatSeqAIJRestoreArrayRead(P, &a));
+  PetscCall(MatRestoreRowIJ(P, 0, PETSC_FALSE, PETSC_FALSE, &m, &ia, &ja, &done));
+  *inf = rowMax;
+  *frobenius = std::sqrt(squares);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

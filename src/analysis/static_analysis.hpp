@@ -137,6 +137,7 @@ class StaticAnalysis {
   LoadState equilibrium_;   ///< loads of the last converged state (nothing applied before the first)
   Vec Fwork_ = nullptr;     ///< residual at equilibrium_ (loadChange)
   double forceRtol_ = 1e-11;
+  static PetscErrorCode tangentNorms(Mat P, PetscReal* inf, PetscReal* frobenius);
   double jacobianNorm_ = 0;  ///< ||J||_inf at the start of the increment (round-off floor of the residual)
   NewtonTest newtonTest_;  ///< the Newton test with the statics rules (newtonRules(), set by run())
   double fintConverged_ = 0;          ///< ||f_int|| at the last converged state

@@ -393,8 +393,22 @@ class Assembler {
   // is set once per matrix, each Jacobian then only fills cooValues_ in element order.
   bool cooAssembly_ = true;
   std::vector<PetscScalar> cooValues_;
-  PetscErrorCode prepareCOO(Mat J);
+  PetscErrorCode prepareCOO(Mat J, bool* sums);  ///< *sums: J is filled by setValuesFromCooSums
   bool cooApplies() const;
+  // One process: the sums MatSetValuesCOO would form, kept once per assembler (cooSums_), so that a
+  // matrix with the same nonzero pattern (every copy of structure_) needs no MatSetPreallocationCOO:
+  // nonzero p of the CSR (cooRow_, cooCol_) is 0 + the values cooPerm_[cooJmap_[p] .. cooJmap_[p+1]) in turn.
+  struct CooSums {
+    bool built = false, usable = false;
+    PetscCount entries = 0;  // COO entries (cooValues_), negative indices included
+    std::vector<PetscInt> row, col;
+    std::vector<PetscCount> jmap, perm;
+  };
+  CooSums cooSums_;
+  void cooIndices(std::vector<PetscInt>* ci, std::vector<PetscInt>* cj) const;
+  PetscErrorCode buildCooSums(const std::vector<PetscInt>& ci, const std::vector<PetscInt>& cj);
+  PetscErrorCode matchesCooSums(Mat J, bool* match) const;
+  PetscErrorCode setValuesFromCooSums(Mat J) const;
   // kept tangent blocks (keepTangentBlocks): element blocks in element order, then 2x2 slope-torque
   // blocks of owned ANCF nodes (node index, K row-major)
   bool keepBlocks_ = false;

@@ -141,14 +141,41 @@ PetscErrorCode Assembler::buildStructure(Mat* A) const {
 // COO assembly needs the tangent to be exactly the element blocks: no node-level or load tangents.
 bool Assembler::cooApplies() const { return cooAssembly_; }
 
-PetscErrorCode Assembler::prepareCOO(Mat J) {
+PetscErrorCode Assembler::prepareCOO(Mat J, bool* sums) {
   PetscFunctionBeginUser;
   // a marker composed with the matrix: it dies with the matrix (a later matrix may reuse the address)
   PetscObject marker = nullptr;
-  PetscCall(PetscObjectQuery(reinterpret_cast<PetscObject>(J), "SinewCOO", &marker));
+  PetscCall(PetscObjectQuery(reinterpret_cast<PetscObject>(J), "SinewCOOSums", &marker));
+  *sums = marker != nullptr;
+  if (!marker) PetscCall(PetscObjectQuery(reinterpret_cast<PetscObject>(J), "SinewCOO", &marker));
   if (marker) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCall(PetscLogEventBegin(SinewEvents::get().cooSetup, 0, 0, 0, 0));
+  PetscBool seq = PETSC_FALSE;
+  if (mesh_.size == 1) PetscCall(PetscObjectTypeCompare(reinterpret_cast<PetscObject>(J), MATSEQAIJ, &seq));
   std::vector<PetscInt> ci, cj;
+  if (seq && !cooSums_.built) {
+    cooIndices(&ci, &cj);
+    PetscCall(buildCooSums(ci, cj));
+  }
+  if (seq && cooSums_.usable) PetscCall(matchesCooSums(J, sums));
+  if (*sums) {
+    cooValues_.assign(static_cast<size_t>(cooSums_.entries), 0.0);
+  } else {
+    if (ci.empty()) cooIndices(&ci, &cj);
+    cooValues_.assign(ci.size(), 0.0);
+    PetscCall(MatSetPreallocationCOO(J, static_cast<PetscCount>(ci.size()), ci.data(), cj.data()));
+  }
+  PetscContainer tag;
+  PetscCall(PetscContainerCreate(mesh_.comm, &tag));
+  PetscCall(PetscObjectCompose(reinterpret_cast<PetscObject>(J), *sums ? "SinewCOOSums" : "SinewCOO",
+                               reinterpret_cast<PetscObject>(tag)));
+  PetscCall(PetscContainerDestroy(&tag));
+  PetscCall(PetscLogEventEnd(SinewEvents::get().cooSetup, 0, 0, 0, 0));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+// Global (row, column) of every entry of every element block, in element order (-1: a fixed DOF).
+void Assembler::cooIndices(std::vector<PetscInt>* ci, std::vector<PetscInt>* cj) const {
   std::array<int, kMaxElementRows> idx;
   std::array<double, 48> q;
   for (const LocalElement& el : mesh_.elements) {
@@ -156,17 +183,93 @@ PetscErrorCode Assembler::prepareCOO(Mat J) {
     const int n = el.kernel->numDofs() + el.kernel->numConstraints();
     for (int r = 0; r < n; ++r)
       for (int c = 0; c < n; ++c) {
-        ci.push_back(idx[r] >= 0 ? static_cast<PetscInt>(mesh_.localToGlobalUnknown(idx[r])) : -1);
-        cj.push_back(idx[c] >= 0 ? static_cast<PetscInt>(mesh_.localToGlobalUnknown(idx[c])) : -1);
+        ci->push_back(idx[r] >= 0 ? static_cast<PetscInt>(mesh_.localToGlobalUnknown(idx[r])) : -1);
+        cj->push_back(idx[c] >= 0 ? static_cast<PetscInt>(mesh_.localToGlobalUnknown(idx[c])) : -1);
       }
   }
-  cooValues_.assign(ci.size(), 0.0);
-  PetscCall(MatSetPreallocationCOO(J, static_cast<PetscCount>(ci.size()), ci.data(), cj.data()));
-  PetscContainer tag;
-  PetscCall(PetscContainerCreate(mesh_.comm, &tag));
-  PetscCall(PetscObjectCompose(reinterpret_cast<PetscObject>(J), "SinewCOO", reinterpret_cast<PetscObject>(tag)));
-  PetscCall(PetscContainerDestroy(&tag));
-  PetscCall(PetscLogEventEnd(SinewEvents::get().cooSetup, 0, 0, 0, 0));
+}
+
+// The pattern and sums of MatSetPreallocationCOO_SeqAIJ (PETSc 3.18), made by the same steps: entries
+// with a negative index dropped, sorted by row (PetscSortIntWithIntCountArrayPair), each row by column
+// (PetscSortIntWithCountArray), repeated (row, column) pairs summed in the order the sorts leave them.
+PetscErrorCode Assembler::buildCooSums(const std::vector<PetscInt>& ci, const std::vector<PetscInt>& cj) {
+  PetscFunctionBeginUser;
+  CooSums& s = cooSums_;
+  s = CooSums{};
+  s.built = true;
+  const PetscCount n = static_cast<PetscCount>(ci.size());
+  s.entries = n;
+  const PetscInt M = static_cast<PetscInt>(mesh_.numGlobalUnknowns);
+  std::vector<PetscInt> i(ci), j(cj);
+  std::vector<PetscCount> perm(static_cast<size_t>(n));
+  for (PetscCount k = 0; k < n; ++k) {
+    if (j[k] < 0) i[k] = -1;
+    perm[k] = k;
+  }
+  PetscCall(PetscSortIntWithIntCountArrayPair(n, i.data(), j.data(), perm.data()));
+  PetscCount k = 0;
+  while (k < n && i[k] < 0) ++k;
+  const PetscCount nneg = k;
+  s.row.assign(static_cast<size_t>(M) + 1, 0);
+  std::vector<PetscCount> repeats;
+  while (k < n) {
+    const PetscInt r = i[k];
+    if (r >= M) PetscFunctionReturn(PETSC_SUCCESS);  // not this matrix's rows: PETSc's path
+    const PetscCount start = k;
+    while (k < n && i[k] == r) ++k;
+    PetscCall(PetscSortIntWithCountArray(k - start, j.data() + start, perm.data() + start));
+    for (PetscCount p = start; p < k; ++p) {
+      if (p == start || j[p] != j[p - 1]) {
+        s.col.push_back(j[p]);
+        repeats.push_back(0);
+        ++s.row[static_cast<size_t>(r) + 1];
+      }
+      ++repeats.back();
+    }
+  }
+  for (PetscInt r = 0; r < M; ++r) s.row[static_cast<size_t>(r) + 1] += s.row[static_cast<size_t>(r)];
+  s.jmap.assign(repeats.size() + 1, 0);
+  for (size_t p = 0; p < repeats.size(); ++p) s.jmap[p + 1] = s.jmap[p] + repeats[p];
+  s.perm.assign(perm.begin() + nneg, perm.end());
+  s.usable = true;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+// J's nonzero pattern (CSR) is the COO pattern of the sums.
+PetscErrorCode Assembler::matchesCooSums(Mat J, bool* match) const {
+  PetscFunctionBeginUser;
+  *match = false;
+  PetscInt m;
+  const PetscInt *ia, *ja;
+  PetscBool done;
+  PetscCall(MatGetRowIJ(J, 0, PETSC_FALSE, PETSC_FALSE, &m, &ia, &ja, &done));
+  if (!done) PetscFunctionReturn(PETSC_SUCCESS);
+  const CooSums& s = cooSums_;
+  bool same = static_cast<size_t>(m) + 1 == s.row.size() && std::equal(s.row.begin(), s.row.end(), ia);
+  if (same) same = std::equal(s.col.begin(), s.col.end(), ja);
+  PetscCall(MatRestoreRowIJ(J, 0, PETSC_FALSE, PETSC_FALSE, &m, &ia, &ja, &done));
+  *match = same;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+// J = the element blocks in cooValues_, as MatSetValuesCOO(J, cooValues_, INSERT_VALUES) sums them.
+PetscErrorCode Assembler::setValuesFromCooSums(Mat J) const {
+  PetscFunctionBeginUser;
+  const CooSums& s = cooSums_;
+  const PetscScalar* v = cooValues_.data();
+  PetscScalar* a;
+  PetscCall(MatSeqAIJGetArray(J, &a));
+  const size_t nnz = s.col.size();
+  const PetscCount *jmap = s.jmap.data(), *perm = s.perm.data();
+  for (size_t p = 0; p < nnz; ++p) {
+    PetscScalar sum = 0.0;
+    const PetscCount end = jmap[p + 1];
+    for (PetscCount q = jmap[p]; q < end; ++q) sum += v[perm[q]];
+    a[p] = 0.0 + sum;
+  }
+  PetscCall(MatSeqAIJRestoreArray(J, &a));
+  PetscCall(MatAssemblyBegin(J, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatAssemblyEnd(J, MAT_FINAL_ASSEMBLY));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

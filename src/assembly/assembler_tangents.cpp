@@ -16,7 +16,8 @@ PetscErrorCode Assembler::jacobian(Vec U, const LoadState& ls, Mat J) {
   const double* u = nullptr;
   PetscCall(beginLocal(U, ls, &u));
   const bool coo = J && cooApplies();
-  if (coo) PetscCall(prepareCOO(J));
+  bool cooSums = false;
+  if (coo) PetscCall(prepareCOO(J, &cooSums));
   else if (J) PetscCall(MatZeroEntries(J));
   std::array<double, 48> q;
   std::array<int, kMaxElementRows> idx;
@@ -53,7 +54,9 @@ PetscErrorCode Assembler::jacobian(Vec U, const LoadState& ls, Mat J) {
   }
   PetscCall(PetscLogEventEnd(SinewEvents::get().jacobianElements, 0, 0, 0, 0));
   if (mixedNewton_) keepMixedReference();  // the next Newton iterate linearizes its stresses about this state
-  if (coo) {  // the matrix is assembled by MatSetValuesCOO (repeated entries are summed)
+  if (cooSums) {  // one process: the same sums, from the assembler's kept COO pattern
+    PetscCall(setValuesFromCooSums(J));
+  } else if (coo) {  // the matrix is assembled by MatSetValuesCOO (repeated entries are summed)
     PetscCall(MatSetValuesCOO(J, cooValues_.data(), INSERT_VALUES));
   } else {
     PetscCall(addSlopeTorqueTangent(ls, J));

@@ -25,12 +25,58 @@ PetscLogEvent gFactorEvent = 0;  // SinewDenseLU: one per factorization (-log_vi
 
 struct DenseLU {
   int n = 0;
-  std::vector<double> d;   // symmetric equilibration: the factors are those of D A D
-  std::vector<double> a;   // the matrix D A D (column-major), for the refinement step
-  std::vector<double> lu;  // column-major n x n factors
+  std::vector<double> d;       // symmetric equilibration: the factors are those of D A D
+  std::vector<PetscInt> row;   // D A D by rows (CSR, columns ascending), for the refinement residual:
+  std::vector<PetscInt> col;   //   row i holds col[row[i] .. row[i+1]) with values val[...]
+  std::vector<double> val;
+  std::vector<double> lu;      // column-major n x n factors
   std::vector<int> piv;
+  std::vector<double> rhs;     // a solve's scaled right-hand sides, then their residuals
   bool failed = false;
 };
+
+/// The rows of A into d's CSR arrays (values unscaled); columns ascending within a row.
+PetscErrorCode copyRows(Mat A, DenseLU* d) {
+  PetscFunctionBeginUser;
+  const int n = d->n;
+  PetscBool seq = PETSC_FALSE;
+  PetscCall(PetscObjectTypeCompare(reinterpret_cast<PetscObject>(A), MATSEQAIJ, &seq));
+  if (seq) {  // the CSR arrays as they are (AIJ keeps every row sorted by column)
+    PetscInt m;
+    const PetscInt *ia, *ja;
+    PetscBool done;
+    PetscCall(MatGetRowIJ(A, 0, PETSC_FALSE, PETSC_FALSE, &m, &ia, &ja, &done));
+    const bool whole = done && m == n;
+    if (whole) {
+      const PetscScalar* a;
+      PetscCall(MatSeqAIJGetArrayRead(A, &a));
+      d->row.assign(ia, ia + n + 1);
+      d->col.assign(ja, ja + ia[n]);
+      d->val.assign(a, a + ia[n]);
+      PetscCall(MatSeqAIJRestoreArrayRead(A, &a));
+    }
+    PetscCall(MatRestoreRowIJ(A, 0, PETSC_FALSE, PETSC_FALSE, &m, &ia, &ja, &done));
+    if (whole) PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  d->row.assign(static_cast<size_t>(n) + 1, 0);
+  d->col.clear();
+  d->val.clear();
+  for (PetscInt i = 0; i < n; ++i) {
+    PetscInt nc;
+    const PetscInt* cols;
+    const PetscScalar* vals;
+    PetscCall(MatGetRow(A, i, &nc, &cols, &vals));
+    d->col.insert(d->col.end(), cols, cols + nc);
+    d->val.insert(d->val.end(), vals, vals + nc);
+    PetscCall(MatRestoreRow(A, i, &nc, &cols, &vals));
+    d->row[i + 1] = static_cast<PetscInt>(d->col.size());
+  }
+  for (PetscInt i = 0; i < n; ++i)
+    for (PetscInt k = d->row[i] + 1; k < d->row[i + 1]; ++k)
+      PetscCheck(d->col[k - 1] < d->col[k], PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG,
+                 "-pc_type denselu: row %" PetscInt_FMT " of the matrix is not sorted by column", i);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
 
 /// A = P L U of the preconditioning matrix, its rows copied into the column-major array.
 PetscErrorCode denseSetUp(PC pc) {
@@ -46,25 +92,22 @@ PetscErrorCode denseSetUp(PC pc) {
   PetscCheck(m == ncol, PETSC_COMM_SELF, PETSC_ERR_ARG_SIZ, "-pc_type denselu: the matrix is not square");
   const int n = static_cast<int>(m);
   d->n = n;
-  d->lu.assign(static_cast<size_t>(n) * n, 0.0);
-  d->piv.assign(n, 0);
-  for (PetscInt i = 0; i < m; ++i) {
-    PetscInt nc;
-    const PetscInt* cols;
-    const PetscScalar* vals;
-    PetscCall(MatGetRow(pc->pmat, i, &nc, &cols, &vals));
-    for (PetscInt k = 0; k < nc; ++k) d->lu[static_cast<size_t>(cols[k]) * n + i] = vals[k];
-    PetscCall(MatRestoreRow(pc->pmat, i, &nc, &cols, &vals));
-  }
+  PetscCall(copyRows(pc->pmat, d));
   // D A D with d_i = 1/sqrt(max_j |A_ij|): rows of translations, rotations and multipliers differ by
   // orders of magnitude in their units; partial pivoting then compares like with like
   d->d.assign(n, 0.0);
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i) d->d[i] = std::max(d->d[i], std::abs(d->lu[static_cast<size_t>(j) * n + i]));
+  for (int i = 0; i < n; ++i)
+    for (PetscInt k = d->row[i]; k < d->row[i + 1]; ++k) d->d[i] = std::max(d->d[i], std::abs(d->val[k]));
   for (double& v : d->d) v = v > 0 ? 1.0 / std::sqrt(v) : 1.0;
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i) d->lu[static_cast<size_t>(j) * n + i] *= d->d[i] * d->d[j];
-  d->a = d->lu;
+  // the scaled rows, and the same values into the zeroed column-major array for getrf
+  d->lu.assign(static_cast<size_t>(n) * n, 0.0);
+  for (int i = 0; i < n; ++i)
+    for (PetscInt k = d->row[i]; k < d->row[i + 1]; ++k) {
+      const PetscInt j = d->col[k];
+      d->val[k] *= d->d[i] * d->d[j];
+      d->lu[static_cast<size_t>(j) * n + i] = d->val[k];
+    }
+  d->piv.resize(n);
   int info = 0;
   if (n > 0) dgetrf_(&n, &n, d->lu.data(), &n, d->piv.data(), &info);
   d->failed = info != 0;
@@ -93,25 +136,31 @@ PetscErrorCode denseSolve(PC pc, int nrhs, PetscScalar* b, int ld) {
   const int n = d->n;
   for (int c = 0; c < nrhs; ++c)
     for (int i = 0; i < n; ++i) b[static_cast<size_t>(c) * ld + i] *= d->d[i];
-  std::vector<double> rhs(static_cast<size_t>(n) * nrhs);
-  for (int c = 0; c < nrhs; ++c) std::copy_n(b + static_cast<size_t>(c) * ld, n, &rhs[static_cast<size_t>(c) * n]);
+  d->rhs.resize(static_cast<size_t>(n) * nrhs);
+  for (int c = 0; c < nrhs; ++c) std::copy_n(b + static_cast<size_t>(c) * ld, n, &d->rhs[static_cast<size_t>(c) * n]);
   int info = 0;
   if (n > 0 && nrhs > 0) dgetrs_("N", &d->n, &nrhs, d->lu.data(), &d->n, d->piv.data(), b, &ld, &info);
   PetscCheck(info == 0, PETSC_COMM_SELF, PETSC_ERR_LIB, "LAPACK dgetrs: info %d", info);
+  // r_i = (D b)_i - sum_j (D A D)_ij x_j over the stored entries, j ascending
+  const PetscInt* row = d->row.data();
+  const PetscInt* col = d->col.data();
+  const double* val = d->val.data();
   for (int c = 0; c < nrhs; ++c) {
-    double* r = &rhs[static_cast<size_t>(c) * n];
+    double* r = &d->rhs[static_cast<size_t>(c) * n];
     const double* x = b + static_cast<size_t>(c) * ld;
-    for (int j = 0; j < n; ++j)
-      for (int i = 0; i < n; ++i) r[i] -= d->a[static_cast<size_t>(j) * n + i] * x[j];
+    for (int i = 0; i < n; ++i) {
+      double s = r[i];
+      for (PetscInt k = row[i]; k < row[i + 1]; ++k) s -= val[k] * x[col[k]];
+      r[i] = s;
+    }
   }
-  if (n > 0 && nrhs > 0) dgetrs_("N", &d->n, &nrhs, d->lu.data(), &d->n, d->piv.data(), rhs.data(), &d->n, &info);
+  if (n > 0 && nrhs > 0) dgetrs_("N", &d->n, &nrhs, d->lu.data(), &d->n, d->piv.data(), d->rhs.data(), &d->n, &info);
   for (int c = 0; c < nrhs; ++c)
-    for (int i = 0; i < n; ++i) b[static_cast<size_t>(c) * ld + i] += rhs[static_cast<size_t>(c) * n + i];
+    for (int i = 0; i < n; ++i) b[static_cast<size_t>(c) * ld + i] += d->rhs[static_cast<size_t>(c) * n + i];
   for (int c = 0; c < nrhs; ++c)
     for (int i = 0; i < d->n; ++i) b[static_cast<size_t>(c) * ld + i] *= d->d[i];
   PetscFunctionReturn(PETSC_SUCCESS);
 }
-
 PetscErrorCode denseApply(PC pc, Vec x, Vec y) {
   PetscFunctionBeginUser;
   PetscCall(VecCopy(x, y));

@@ -187,7 +187,11 @@ PetscErrorCode ComplianceAnalysis::rhsBlocks(Mat F, bool sparse, std::vector<dou
     }
     MPI_Gatherv(g.data(), n, MPIU_INT, allRows.data(), counts.data(), displs.data(), MPIU_INT, 0, m.comm);
   }
-  if (!sparse && !rhs_) PetscCall(MatCreateDense(m.comm, nloc, PETSC_DECIDE, N, nb, nullptr, &rhs_));
+  if (!sparse && !rhs_) {  // assembled once; each block is then written into its array
+    PetscCall(MatCreateDense(m.comm, nloc, PETSC_DECIDE, N, nb, nullptr, &rhs_));
+    PetscCall(MatAssemblyBegin(rhs_, MAT_FINAL_ASSEMBLY));
+    PetscCall(MatAssemblyEnd(rhs_, MAT_FINAL_ASSEMBLY));
+  }
   if (!sol_) PetscCall(MatCreateDense(m.comm, nloc, PETSC_DECIDE, N, nb, nullptr, &sol_));
   Mat B = rhs_, X = sol_;
   for (long c0 = 0; c0 < totalColumns_; c0 += nb) {
@@ -206,11 +210,15 @@ PetscErrorCode ComplianceAnalysis::rhsBlocks(Mat F, bool sparse, std::vector<dou
       PetscCall(MatMatTransposeSolve(F, Bt, X));
       PetscCall(MatDestroy(&Bt));
     } else {
-      PetscCall(MatZeroEntries(B));
-      for (long c = lo; c < hi; ++c)
-        PetscCall(MatSetValue(B, rStart + colRow[c - first], static_cast<PetscInt>(c - c0), 1.0, INSERT_VALUES));
-      PetscCall(MatAssemblyBegin(B, MAT_FINAL_ASSEMBLY));
-      PetscCall(MatAssemblyEnd(B, MAT_FINAL_ASSEMBLY));
+      {  // B = the unit loads of my columns, written into my rows of the dense block
+        PetscScalar* b;
+        PetscInt ldb;
+        PetscCall(MatDenseGetLDA(B, &ldb));
+        PetscCall(MatDenseGetArrayWrite(B, &b));
+        for (PetscInt c = 0; c < nb; ++c) std::fill_n(b + static_cast<size_t>(c) * ldb, nloc, 0.0);
+        for (long c = lo; c < hi; ++c) b[static_cast<size_t>(c - c0) * ldb + colRow[c - first]] = 1.0;
+        PetscCall(MatDenseRestoreArrayWrite(B, &b));
+      }
       if (F) PetscCall(MatMatSolve(F, B, X));
       else PetscCall(KSPMatSolve(ksp_, B, X));
     }

@@ -31,25 +31,23 @@ PetscErrorCode reportSingularModel(MPI_Comm comm, int rank, const std::string& m
 /// on it (exit 3) with its own message on every rank count, where the constraint check would call the
 /// model singular on some (MUMPS refuses to factor a tangent with Inf/NaN, PETSc's serial LU does not).
 /// A force law that is not finite here (at t = 0) is named in *law (the analysis starts at t > 0 and
-/// fails on it there if it stays non-finite).
-PetscErrorCode finiteAtReference(Assembler& assembler, bool* finite, std::string* law) {
+/// fails on it there if it stays non-finite). *J: that tangent (the caller destroys it).
+PetscErrorCode finiteAtReference(Assembler& assembler, bool* finite, std::string* law, Mat* J) {
   PetscFunctionBeginUser;
   assembler.setNonFiniteLawsFatal(false);
   Vec U0, F;
-  Mat J;
   PetscCall(assembler.createVector(&U0));
   PetscCall(VecDuplicate(U0, &F));
   PetscCall(VecSet(U0, 0.0));
   PetscCall(assembler.residual(U0, LoadState{}, F));
   PetscReal fn = 0, jn = 0;
   PetscCall(VecNorm(F, NORM_2, &fn));
-  PetscCall(assembler.createMatrix(&J));
-  PetscCall(assembler.jacobian(U0, LoadState{}, J));
-  PetscCall(MatNorm(J, NORM_FROBENIUS, &jn));
+  PetscCall(assembler.createMatrix(J));
+  PetscCall(assembler.jacobian(U0, LoadState{}, *J));
+  PetscCall(MatNorm(*J, NORM_FROBENIUS, &jn));
   *law = assembler.nonFiniteLaw();
   assembler.setNonFiniteLawsFatal(true);
   *finite = std::isfinite(fn) && std::isfinite(jn) && law->empty();
-  PetscCall(MatDestroy(&J));
   PetscCall(VecDestroy(&F));
   PetscCall(VecDestroy(&U0));
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -138,8 +136,10 @@ PetscErrorCode checkModelBeforeRun(const Model& model, const Plan& plan, Assembl
   const double tCheck = MPI_Wtime();
   bool finite = true;
   std::string law;
-  PetscCall(finiteAtReference(assembler, &finite, &law));
+  Mat J0;  // the tangent at the reference state, checked below
+  PetscCall(finiteAtReference(assembler, &finite, &law, &J0));
   if (!finite) {
+    PetscCall(MatDestroy(&J0));
     times->check = MPI_Wtime() - tCheck;
     if (law.rfind("error: ", 0) == 0) law = law.substr(7);
     if (!model.opt.silent)
@@ -158,9 +158,10 @@ PetscErrorCode checkModelBeforeRun(const Model& model, const Plan& plan, Assembl
     Vec U0;
     PetscCall(assembler.createVector(&U0));
     PetscCall(VecSet(U0, 0.0));
-    PetscCall(checkConstraints(assembler, model, U0, LoadState{}, settings, denseMaxUnknowns, &check));
+    PetscCall(checkConstraints(assembler, model, U0, LoadState{}, settings, denseMaxUnknowns, &check, J0));
     PetscCall(VecDestroy(&U0));
   }
+  PetscCall(MatDestroy(&J0));
   PetscCall(PetscLogEventEnd(SinewEvents::get().constraintCheck, 0, 0, 0, 0));
   times->check = MPI_Wtime() - tCheck;
   // Rigid-body modes without any load are legitimate for a frequency analysis (a free-free body:

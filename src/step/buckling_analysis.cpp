@@ -102,7 +102,7 @@ PetscErrorCode BucklingAnalysis::solveDense(DenseEigenpairs& pairs, const Wanted
   // reduction (dsygvd); otherwise (or not definite) QZ
   int symmetric = 0;
   if (mesh.rank == 0) {
-    symmetric = symmetricDefinitePencil(A, B, n, target, n, pairs);
+    symmetric = symmetricDefinitePencil(A, B, n, target, wanted, pairs);
     if (!symmetric) pairs = generalPencil(A, B, n, target, wanted);
   }
   PetscCall(broadcastPairs(mesh.comm, pairs));

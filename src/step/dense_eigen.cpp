@@ -21,6 +21,11 @@ void dgeqrf_(const int* m, const int* n, double* a, const int* lda, double* tau,
              int* info);
 void dorgqr_(const int* m, const int* n, const int* k, double* a, const int* lda, const double* tau, double* work,
              const int* lwork, int* info);
+void dgebal_(const char* job, const int* n, double* a, const int* lda, int* ilo, int* ihi, double* scale, int* info);
+void dgehrd_(const int* n, const int* ilo, const int* ihi, double* a, const int* lda, double* tau, double* work,
+             const int* lwork, int* info);
+void dhseqr_(const char* job, const char* compz, const int* n, const int* ilo, const int* ihi, double* h, const int* ldh,
+             double* wr, double* wi, double* z, const int* ldz, double* work, const int* lwork, int* info);
 void dpotrf_(const char* uplo, const int* n, double* a, const int* lda, int* info);
 void dtrsm_(const char* side, const char* uplo, const char* transa, const char* diag, const int* m, const int* n,
             const double* alpha, const double* a, const int* lda, double* b, const int* ldb);
@@ -95,6 +100,24 @@ std::vector<double> equilibrate(std::vector<double>& A, std::vector<double>& B, 
       const size_t ij = static_cast<size_t>(j) * n + i;
       A[ij] *= d[i] * d[j];
       B[ij] *= d[i] * d[j];
+    }
+  return d;
+}
+
+/// equilibrate on copies: A = D A0 D, B = D B0 D (the same arithmetic, without copying first)
+std::vector<double> equilibrated(const std::vector<double>& A0, const std::vector<double>& B0, int n,
+                                 std::vector<double>& A, std::vector<double>& B) {
+  std::vector<double> d(n, 1.0);
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) d[i] = j == 0 ? std::abs(A0[i]) : std::max(d[i], std::abs(A0[static_cast<size_t>(j) * n + i]));
+  for (double& v : d) v = v > 0 ? 1.0 / std::sqrt(v) : 1.0;
+  A.resize(A0.size());
+  B.resize(B0.size());
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const size_t ij = static_cast<size_t>(j) * n + i;
+      A[ij] = A0[ij] * (d[i] * d[j]);
+      B[ij] = B0[ij] * (d[i] * d[j]);
     }
   return d;
 }
@@ -349,23 +372,33 @@ bool fullQR(std::vector<double>& a, int nu, int m, std::vector<double>& Q) {
   return info == 0;
 }
 
-// Symmetric to round-off: max |A_ij - A_ji| <= tol max |A_ij|.
+// Symmetric to round-off: max |A_ij - A_ji| <= tol max |A_ij| (the strict lower triangle against
+// the upper one, stopping at the first pair beyond the bound).
 bool symmetricMatrix(const std::vector<double>& A, int n, double tol) {
-  double amax = 0, asym = 0;
+  double amax = 0;
+  for (double a : A) amax = std::max(amax, std::abs(a));
+  const double bound = tol * amax;
   for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i) {
-      const double a = A[static_cast<size_t>(j) * n + i];
-      amax = std::max(amax, std::abs(a));
-      asym = std::max(asym, std::abs(a - A[static_cast<size_t>(i) * n + j]));
-    }
-  return asym <= tol * amax;
+    for (int i = j + 1; i < n; ++i)
+      if (std::abs(A[static_cast<size_t>(j) * n + i] - A[static_cast<size_t>(i) * n + j]) > bound) return false;
+  return true;
 }
 
 // The k x k block M(rows, cols) as a column-major array.
+// Rows ascending: copied by runs of consecutive rows.
 std::vector<double> block(const std::vector<double>& M, int n, const std::vector<int>& rows, const std::vector<int>& cols) {
-  std::vector<double> b(rows.size() * cols.size());
-  for (size_t c = 0; c < cols.size(); ++c)
-    for (size_t r = 0; r < rows.size(); ++r) b[c * rows.size() + r] = M[static_cast<size_t>(cols[c]) * n + rows[r]];
+  const size_t nr = rows.size();
+  std::vector<double> b(nr * cols.size());
+  for (size_t c = 0; c < cols.size(); ++c) {
+    const double* col = &M[static_cast<size_t>(cols[c]) * n];
+    double* dest = &b[c * nr];
+    for (size_t r = 0; r < nr;) {
+      size_t e = r + 1;
+      while (e < nr && rows[e] == rows[e - 1] + 1) ++e;
+      std::copy(col + rows[r], col + rows[e - 1] + 1, dest + r);
+      r = e;
+    }
+  }
   return b;
 }
 
@@ -431,9 +464,15 @@ bool reduceToNullSpace(const std::vector<double>& A, const std::vector<double>& 
 
 bool symmetricDefinitePencil(const std::vector<double>& A0, const std::vector<double>& B0, int n, double sigma,
                              int want, DenseEigenpairs& result) {
+  return symmetricDefinitePencil(A0, B0, n, sigma, [want](const std::vector<double>&, const std::vector<double>&) { return want; },
+                                 result);
+}
+
+bool symmetricDefinitePencil(const std::vector<double>& A0, const std::vector<double>& B0, int n, double sigma,
+                             const WantedPairs& wanted, DenseEigenpairs& result) {
   if (n == 0 || !symmetricMatrix(A0, n, 1e-13) || !symmetricMatrix(B0, n, 1e-13)) return false;
-  std::vector<double> A(A0), B(B0);
-  const std::vector<double> D = equilibrate(A, B, n);
+  std::vector<double> A, B;
+  const std::vector<double> D = equilibrated(A0, B0, n, A, B);
   NullSpaceReduction red;
   if (!reduceToNullSpace(A, B, n, red)) return false;
   const std::vector<int>&c = red.c, &u = red.u;
@@ -454,7 +493,7 @@ bool symmetricDefinitePencil(const std::vector<double>& A0, const std::vector<do
   std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return dist(a) < dist(b); });
   for (int j : order) out.re.push_back(1.0 / w[j]);
   out.im.assign(out.re.size(), 0.0);
-  const int k = std::min<int>(want, out.count());
+  const int k = std::min(wanted(out.re, out.im), out.count());
   out.vectors.assign(static_cast<size_t>(n) * k, 0.0);
   out.estimate.assign(k, 0.0);
   const double nA = normInf(A0, n), nB = normInf(B0, n);
@@ -497,11 +536,12 @@ bool symmetricDefinitePencil(const std::vector<double>& A0, const std::vector<do
 namespace {
 
 // Inverse iteration for the right (transpose false) or left vector of the eigenvalue lambda of the
-// equilibrated pencil (A, B), from the LU of A - lambda B: two steps v <- (A - lambda B)^-1 B v.
+// equilibrated pencil (A, B), from the LU of A - lambda B: two steps v <- (A - lambda B)^-1 B v from
+// `start`.
 std::vector<double> inverseIteration(const std::vector<double>& lu, const std::vector<int>& piv,
-                                     const std::vector<double>& B, int n, bool transpose) {
-  std::vector<double> v(n), bv(n);
-  for (int i = 0; i < n; ++i) v[i] = 1.0 + 0.5 * std::sin(i + 1.0);  // fixed start, no special direction
+                                     const std::vector<double>& B, int n, bool transpose,
+                                     const std::vector<double>& start) {
+  std::vector<double> v(start), bv(n);
   for (int it = 0; it < 2; ++it) {
     gemm(transpose ? 'T' : 'N', 'N', n, 1, n, B.data(), n, v.data(), n, bv.data());
     int info = 0, one = 1;
@@ -516,6 +556,39 @@ std::vector<double> inverseIteration(const std::vector<double>& lu, const std::v
 }  // namespace
 
 namespace {
+
+// The eigenvalues of the general n x n M (overwritten), as LAPACK dgeev without vectors computes them:
+// balancing (dgebal 'B'), Hessenberg form (dgehrd), its eigenvalues (dhseqr); dgeev itself (which
+// first scales M) where max |M_ij| is outside [1e-130, 1e130] or not finite, where dgeev would scale.
+bool standardEigenvalues(std::vector<double>& M, int n, std::vector<double>& wr, std::vector<double>& wi) {
+  double mmax = 0;
+  bool finite = true;
+  for (double v : M) {
+    finite = finite && std::isfinite(v);
+    mmax = std::max(mmax, std::abs(v));
+  }
+  int info = 0, ld = 1;
+  std::vector<double> dummy(1);
+  if (!finite || (mmax > 0 && mmax < 1e-130) || mmax > 1e130) {
+    int lwork = -1;
+    double wq = 0;
+    dgeev_("N", "N", &n, M.data(), &n, wr.data(), wi.data(), dummy.data(), &ld, dummy.data(), &ld, &wq, &lwork, &info);
+    lwork = std::max(static_cast<int>(wq), 4 * n);
+    std::vector<double> work(lwork);
+    dgeev_("N", "N", &n, M.data(), &n, wr.data(), wi.data(), dummy.data(), &ld, dummy.data(), &ld, work.data(), &lwork,
+           &info);
+    return info == 0;
+  }
+  int ilo = 1, ihi = n;
+  std::vector<double> scale(n), tau(std::max(n - 1, 1)), work(static_cast<size_t>(std::max(n, 1)) * 64);
+  int lwork = static_cast<int>(work.size());
+  dgebal_("B", &n, M.data(), &n, &ilo, &ihi, scale.data(), &info);
+  if (info != 0) return false;
+  dgehrd_(&n, &ilo, &ihi, M.data(), &n, tau.data(), work.data(), &lwork, &info);
+  if (info != 0) return false;
+  dhseqr_("E", "N", &n, &ilo, &ihi, M.data(), &n, wr.data(), wi.data(), dummy.data(), &ld, work.data(), &lwork, &info);
+  return info == 0;
+}
 
 // The finite eigenvalues lambda = ar / beta + i ai / beta of the equilibrated pencil (A, B) with A
 // symmetric and positive definite on the null space Z of its constraint rows: Z^T A Z = L L^T, the
@@ -534,15 +607,8 @@ bool reducedEigenvalues(const std::vector<double>& A, const std::vector<double>&
   const double one = 1.0;
   dtrsm_("L", "L", "N", "N", &r, &r, &one, L.data(), &r, M.data(), &r);  // L^-1 M
   dtrsm_("R", "L", "T", "N", &r, &r, &one, L.data(), &r, M.data(), &r);  // (L^-1 M) L^-T
-  std::vector<double> wr(r), wi(r), dummy(1);
-  int lwork = -1, ld = 1;
-  double wq = 0;
-  dgeev_("N", "N", &r, M.data(), &r, wr.data(), wi.data(), dummy.data(), &ld, dummy.data(), &ld, &wq, &lwork, &info);
-  lwork = std::max(static_cast<int>(wq), 4 * r);
-  std::vector<double> work(lwork);
-  dgeev_("N", "N", &r, M.data(), &r, wr.data(), wi.data(), dummy.data(), &ld, dummy.data(), &ld, work.data(), &lwork,
-         &info);
-  if (info != 0) return false;
+  std::vector<double> wr(r), wi(r);
+  if (!standardEigenvalues(M, r, wr, wi)) return false;
   // lambda = 1/w = conj(w) / |w|^2: alpha = conj(w), beta = |w|^2
   std::fill(ar.begin(), ar.end(), 1.0);
   std::fill(ai.begin(), ai.end(), 0.0);
@@ -561,16 +627,17 @@ DenseEigenpairs generalPencil(const std::vector<double>& A0, const std::vector<d
                               const WantedPairs& wanted) {
   DenseEigenpairs out;
   out.n = n;
-  std::vector<double> A(A0), B(B0);
-  const std::vector<double> D = equilibrate(A, B, n);
+  std::vector<double> A, B;
+  const std::vector<double> D = equilibrated(A0, B0, n, A, B);
   // the eigenvalues: by the reduction to a standard problem where A is symmetric and definite on the
   // constraints' null space, else QZ alone (no Schur vectors accumulated: about half of QZ with both sets)
-  std::vector<double> ar(n), ai(n), beta(n), Aq(A), Bq(B), dummy(1);
+  std::vector<double> ar(n), ai(n), beta(n), dummy(1);
   int info = 0, lwork = -1, one = 1;
   double wq = 0;
   if (reducedEigenvalues(A, B, n, ar, ai, beta)) {
     info = 0;  // the vectors below are those of the whole pencil
   } else if (n > 0) {
+    std::vector<double> Aq(A), Bq(B);
     dggev_("N", "N", &n, Aq.data(), &n, Bq.data(), &n, ar.data(), ai.data(), beta.data(), dummy.data(), &one,
            dummy.data(), &one, &wq, &lwork, &info);
     lwork = std::max(static_cast<int>(wq), 8 * n);
@@ -589,8 +656,9 @@ DenseEigenpairs generalPencil(const std::vector<double>& A0, const std::vector<d
   out.vectors.assign(static_cast<size_t>(n) * k, 0.0);
   out.estimate.assign(k, 0.0);
   const double nA = normInf(A0, n), nB = normInf(B0, n);
-  std::vector<double> lu(static_cast<size_t>(n) * n), Ax(n), Bx(n), zero(n, 0.0);
+  std::vector<double> lu(static_cast<size_t>(n) * n), Ax(n), Bx(n), zero(n, 0.0), start(n);
   std::vector<int> piv(n);
+  for (int i = 0; i < n; ++i) start[i] = 1.0 + 0.5 * std::sin(i + 1.0);  // fixed start, no special direction
   for (int c = 0; c < k; ++c) {
     // LU of A - lambda B; an exactly zero pivot: lambda moved by a few ulps
     double shift = out.re[c];
@@ -600,7 +668,8 @@ DenseEigenpairs generalPencil(const std::vector<double>& A0, const std::vector<d
       if (info == 0) break;
       shift += 8 * kEps * std::max(std::abs(shift), 1.0);
     }
-    std::vector<double> x = inverseIteration(lu, piv, B, n, false), y = inverseIteration(lu, piv, B, n, true);
+    std::vector<double> x = inverseIteration(lu, piv, B, n, false, start),
+                        y = inverseIteration(lu, piv, B, n, true, start);
     for (int i = 0; i < n; ++i) {
       x[i] *= D[i];
       y[i] *= D[i];

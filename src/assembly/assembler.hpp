@@ -393,6 +393,10 @@ class Assembler {
   // is set once per matrix, each Jacobian then only fills cooValues_ in element order.
   bool cooAssembly_ = true;
   std::vector<PetscScalar> cooValues_;
+  // splitTangent on one rank: where each element block entry goes in the AIJ value array, and the pattern
+  // (row starts, columns) these positions belong to
+  std::vector<PetscInt> splitPositions_, splitRowStart_, splitCols_;
+  PetscErrorCode elementBlockPositions(Mat A, bool* ok);
   PetscErrorCode prepareCOO(Mat J);
   bool cooApplies() const;
   // kept tangent blocks (keepTangentBlocks): element blocks in element order, then 2x2 slope-torque

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <numeric>
 
 // LAPACK / BLAS (Fortran interfaces; the library linked is Debian's liblapack.so.3 alternative)
@@ -108,17 +109,24 @@ std::vector<double> equilibrate(std::vector<double>& A, std::vector<double>& B, 
 std::vector<double> equilibrated(const std::vector<double>& A0, const std::vector<double>& B0, int n,
                                  std::vector<double>& A, std::vector<double>& B) {
   std::vector<double> d(n, 1.0);
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i) d[i] = j == 0 ? std::abs(A0[i]) : std::max(d[i], std::abs(A0[static_cast<size_t>(j) * n + i]));
+  for (int i = 0; i < n; ++i) d[i] = std::abs(A0[i]);
+  for (int j = 1; j < n; ++j) {
+    const double* a0 = &A0[static_cast<size_t>(j) * n];
+    for (int i = 0; i < n; ++i) d[i] = std::max(d[i], std::abs(a0[i]));
+  }
   for (double& v : d) v = v > 0 ? 1.0 / std::sqrt(v) : 1.0;
   A.resize(A0.size());
   B.resize(B0.size());
-  for (int j = 0; j < n; ++j)
+  for (int j = 0; j < n; ++j) {
+    const size_t o = static_cast<size_t>(j) * n;
+    const double dj = d[j];
+    const double *__restrict a0 = &A0[o], *__restrict b0 = &B0[o];
+    double *__restrict a = &A[o], *__restrict b = &B[o];
     for (int i = 0; i < n; ++i) {
-      const size_t ij = static_cast<size_t>(j) * n + i;
-      A[ij] = A0[ij] * (d[i] * d[j]);
-      B[ij] = B0[ij] * (d[i] * d[j]);
+      a[i] = a0[i] * (d[i] * dj);
+      b[i] = b0[i] * (d[i] * dj);
     }
+  }
   return d;
 }
 
@@ -375,8 +383,12 @@ bool fullQR(std::vector<double>& a, int nu, int m, std::vector<double>& Q) {
 // Symmetric to round-off: max |A_ij - A_ji| <= tol max |A_ij| (the strict lower triangle against
 // the upper one, stopping at the first pair beyond the bound).
 bool symmetricMatrix(const std::vector<double>& A, int n, double tol) {
-  double amax = 0;
-  for (double a : A) amax = std::max(amax, std::abs(a));
+  double part[4] = {0, 0, 0, 0};  // max |A_ij| in four running maxima (exact in any order)
+  const size_t nn = static_cast<size_t>(n) * n, n4 = nn - nn % 4;
+  for (size_t k = 0; k < n4; k += 4)
+    for (int q = 0; q < 4; ++q) part[q] = std::max(part[q], std::abs(A[k + q]));
+  for (size_t k = n4; k < nn; ++k) part[0] = std::max(part[0], std::abs(A[k]));
+  const double amax = std::max(std::max(part[0], part[1]), std::max(part[2], part[3]));
   const double bound = tol * amax;
   for (int j = 0; j < n; ++j)
     for (int i = j + 1; i < n; ++i)
@@ -385,28 +397,20 @@ bool symmetricMatrix(const std::vector<double>& A, int n, double tol) {
 }
 
 // The k x k block M(rows, cols) as a column-major array.
-// Rows ascending: copied by runs of consecutive rows.
 std::vector<double> block(const std::vector<double>& M, int n, const std::vector<int>& rows, const std::vector<int>& cols) {
-  const size_t nr = rows.size();
-  std::vector<double> b(nr * cols.size());
-  for (size_t c = 0; c < cols.size(); ++c) {
-    const double* col = &M[static_cast<size_t>(cols[c]) * n];
-    double* dest = &b[c * nr];
-    for (size_t r = 0; r < nr;) {
-      size_t e = r + 1;
-      while (e < nr && rows[e] == rows[e - 1] + 1) ++e;
-      std::copy(col + rows[r], col + rows[e - 1] + 1, dest + r);
-      r = e;
-    }
-  }
+  std::vector<double> b(rows.size() * cols.size());
+  for (size_t c = 0; c < cols.size(); ++c)
+    for (size_t r = 0; r < rows.size(); ++r) b[c * rows.size() + r] = M[static_cast<size_t>(cols[c]) * n + rows[r]];
   return b;
 }
 
 // Z^T M Z (r x r, symmetrized if `symmetrize`) of the nu x nu M and the nu x r Z.
 std::vector<double> project(const std::vector<double>& M, const double* Z, int nu, int r, bool symmetrize) {
-  std::vector<double> MZ(static_cast<size_t>(nu) * r), P(static_cast<size_t>(r) * r);
-  gemm('N', 'N', nu, r, nu, M.data(), nu, Z, nu, MZ.data());
-  gemm('T', 'N', r, r, nu, Z, nu, MZ.data(), nu, P.data());
+  // MZ: no zeros first (dgemm with beta 0 overwrites it)
+  const std::unique_ptr<double[]> MZ(new double[static_cast<size_t>(nu) * r]);
+  std::vector<double> P(static_cast<size_t>(r) * r);
+  gemm('N', 'N', nu, r, nu, M.data(), nu, Z, nu, MZ.get());
+  gemm('T', 'N', r, r, nu, Z, nu, MZ.get(), nu, P.data());
   for (int i = 0; i < r && symmetrize; ++i)
     for (int j = 0; j < i; ++j) {
       const size_t ij = static_cast<size_t>(j) * r + i, ji = static_cast<size_t>(i) * r + j;
@@ -470,7 +474,7 @@ bool symmetricDefinitePencil(const std::vector<double>& A0, const std::vector<do
 
 bool symmetricDefinitePencil(const std::vector<double>& A0, const std::vector<double>& B0, int n, double sigma,
                              const WantedPairs& wanted, DenseEigenpairs& result) {
-  if (n == 0 || !symmetricMatrix(A0, n, 1e-13) || !symmetricMatrix(B0, n, 1e-13)) return false;
+  if (n == 0 || !symmetricMatrix(B0, n, 1e-13) || !symmetricMatrix(A0, n, 1e-13)) return false;
   std::vector<double> A, B;
   const std::vector<double> D = equilibrated(A0, B0, n, A, B);
   NullSpaceReduction red;

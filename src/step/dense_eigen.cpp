@@ -542,14 +542,14 @@ namespace {
 // Inverse iteration for the right (transpose false) or left vector of the eigenvalue lambda of the
 // equilibrated pencil (A, B), from the LU of A - lambda B: two steps v <- (A - lambda B)^-1 B v from
 // `start`.
-std::vector<double> inverseIteration(const std::vector<double>& lu, const std::vector<int>& piv,
+std::vector<double> inverseIteration(const double* lu, const std::vector<int>& piv,
                                      const std::vector<double>& B, int n, bool transpose,
                                      const std::vector<double>& start) {
   std::vector<double> v(start), bv(n);
   for (int it = 0; it < 2; ++it) {
     gemm(transpose ? 'T' : 'N', 'N', n, 1, n, B.data(), n, v.data(), n, bv.data());
     int info = 0, one = 1;
-    dgetrs_(transpose ? "T" : "N", &n, &one, lu.data(), &n, piv.data(), bv.data(), &n, &info);
+    dgetrs_(transpose ? "T" : "N", &n, &one, lu, &n, piv.data(), bv.data(), &n, &info);
     double m = 0;
     for (double x : bv) m = std::max(m, std::abs(x));
     for (int i = 0; i < n; ++i) v[i] = m > 0 && std::isfinite(m) ? bv[i] / m : 0.0;
@@ -583,14 +583,19 @@ bool standardEigenvalues(std::vector<double>& M, int n, std::vector<double>& wr,
            &info);
     return info == 0;
   }
-  int ilo = 1, ihi = n;
-  std::vector<double> scale(n), tau(std::max(n - 1, 1)), work(static_cast<size_t>(std::max(n, 1)) * 64);
-  int lwork = static_cast<int>(work.size());
-  dgebal_("B", &n, M.data(), &n, &ilo, &ihi, scale.data(), &info);
+  // dgeev's workspace (its query) and its split: dgehrd gets all but 2 n, dhseqr all but n
+  int ilo = 1, ihi = n, lwork = -1;
+  double wq = 0;
+  dgeev_("N", "N", &n, M.data(), &n, wr.data(), wi.data(), dummy.data(), &ld, dummy.data(), &ld, &wq, &lwork, &info);
+  lwork = std::max(static_cast<int>(wq), 4 * n);
+  const std::unique_ptr<double[]> work(new double[static_cast<size_t>(lwork)]);  // no zeros: LAPACK's scratch
+  double *scale = work.get(), *tau = scale + n;
+  int lhrd = lwork - 2 * n, lhs = lwork - n;
+  dgebal_("B", &n, M.data(), &n, &ilo, &ihi, scale, &info);
   if (info != 0) return false;
-  dgehrd_(&n, &ilo, &ihi, M.data(), &n, tau.data(), work.data(), &lwork, &info);
+  dgehrd_(&n, &ilo, &ihi, M.data(), &n, tau, tau + n, &lhrd, &info);
   if (info != 0) return false;
-  dhseqr_("E", "N", &n, &ilo, &ihi, M.data(), &n, wr.data(), wi.data(), dummy.data(), &ld, work.data(), &lwork, &info);
+  dhseqr_("E", "N", &n, &ilo, &ihi, M.data(), &n, wr.data(), wi.data(), dummy.data(), &ld, tau, &lhs, &info);
   return info == 0;
 }
 
@@ -660,20 +665,22 @@ DenseEigenpairs generalPencil(const std::vector<double>& A0, const std::vector<d
   out.vectors.assign(static_cast<size_t>(n) * k, 0.0);
   out.estimate.assign(k, 0.0);
   const double nA = normInf(A0, n), nB = normInf(B0, n);
-  std::vector<double> lu(static_cast<size_t>(n) * n), Ax(n), Bx(n), zero(n, 0.0), start(n);
+  const size_t nn = static_cast<size_t>(n) * n;
+  const std::unique_ptr<double[]> lu(new double[std::max<size_t>(nn, 1)]);  // overwritten: no zeros first
+  std::vector<double> Ax(n), Bx(n), zero(n, 0.0), start(n);
   std::vector<int> piv(n);
   for (int i = 0; i < n; ++i) start[i] = 1.0 + 0.5 * std::sin(i + 1.0);  // fixed start, no special direction
   for (int c = 0; c < k; ++c) {
     // LU of A - lambda B; an exactly zero pivot: lambda moved by a few ulps
     double shift = out.re[c];
     for (int attempt = 0; attempt < 3; ++attempt) {
-      for (size_t i = 0; i < lu.size(); ++i) lu[i] = A[i] - shift * B[i];
-      dgetrf_(&n, &n, lu.data(), &n, piv.data(), &info);
+      for (size_t i = 0; i < nn; ++i) lu[i] = A[i] - shift * B[i];
+      dgetrf_(&n, &n, lu.get(), &n, piv.data(), &info);
       if (info == 0) break;
       shift += 8 * kEps * std::max(std::abs(shift), 1.0);
     }
-    std::vector<double> x = inverseIteration(lu, piv, B, n, false, start),
-                        y = inverseIteration(lu, piv, B, n, true, start);
+    std::vector<double> x = inverseIteration(lu.get(), piv, B, n, false, start),
+                        y = inverseIteration(lu.get(), piv, B, n, true, start);
     for (int i = 0; i < n; ++i) {
       x[i] *= D[i];
       y[i] *= D[i];

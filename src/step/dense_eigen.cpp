@@ -105,9 +105,10 @@ std::vector<double> equilibrate(std::vector<double>& A, std::vector<double>& B, 
   return d;
 }
 
-/// equilibrate on copies: A = D A0 D, B = D B0 D (the same arithmetic, without copying first)
-std::vector<double> equilibrated(const std::vector<double>& A0, const std::vector<double>& B0, int n,
-                                 std::vector<double>& A, std::vector<double>& B) {
+/// equilibrate on copies: A = D A0 D, B = D B0 D into n x n arrays (the same arithmetic, without
+/// copying first)
+std::vector<double> equilibrated(const std::vector<double>& A0, const std::vector<double>& B0, int n, double* A,
+                                 double* B) {
   std::vector<double> d(n, 1.0);
   for (int i = 0; i < n; ++i) d[i] = std::abs(A0[i]);
   for (int j = 1; j < n; ++j) {
@@ -115,8 +116,6 @@ std::vector<double> equilibrated(const std::vector<double>& A0, const std::vecto
     for (int i = 0; i < n; ++i) d[i] = std::max(d[i], std::abs(a0[i]));
   }
   for (double& v : d) v = v > 0 ? 1.0 / std::sqrt(v) : 1.0;
-  A.resize(A0.size());
-  B.resize(B0.size());
   for (int j = 0; j < n; ++j) {
     const size_t o = static_cast<size_t>(j) * n;
     const double dj = d[j];
@@ -128,6 +127,11 @@ std::vector<double> equilibrated(const std::vector<double>& A0, const std::vecto
     }
   }
   return d;
+}
+
+/// An n x n scratch array that is not zeroed when made (everything in it is written before it is read).
+std::unique_ptr<double[]> squareArray(int n) {
+  return std::unique_ptr<double[]>(new double[std::max<size_t>(static_cast<size_t>(n) * n, 1)]);
 }
 
 /// The finite eigenvalues lambda = alpha / beta of a QZ decomposition (beta above round-off of
@@ -382,7 +386,7 @@ bool fullQR(std::vector<double>& a, int nu, int m, std::vector<double>& Q) {
 
 // Symmetric to round-off: max |A_ij - A_ji| <= tol max |A_ij| (the strict lower triangle against
 // the upper one, stopping at the first pair beyond the bound).
-bool symmetricMatrix(const std::vector<double>& A, int n, double tol) {
+bool symmetricMatrix(const double* A, int n, double tol) {
   double part[4] = {0, 0, 0, 0};  // max |A_ij| in four running maxima (exact in any order)
   const size_t nn = static_cast<size_t>(n) * n, n4 = nn - nn % 4;
   for (size_t k = 0; k < n4; k += 4)
@@ -397,7 +401,7 @@ bool symmetricMatrix(const std::vector<double>& A, int n, double tol) {
 }
 
 // The k x k block M(rows, cols) as a column-major array.
-std::vector<double> block(const std::vector<double>& M, int n, const std::vector<int>& rows, const std::vector<int>& cols) {
+std::vector<double> block(const double* M, int n, const std::vector<int>& rows, const std::vector<int>& cols) {
   std::vector<double> b(rows.size() * cols.size());
   for (size_t c = 0; c < cols.size(); ++c)
     for (size_t r = 0; r < rows.size(); ++r) b[c * rows.size() + r] = M[static_cast<size_t>(cols[c]) * n + rows[r]];
@@ -433,7 +437,7 @@ struct NullSpaceReduction {
   const double* Z() const { return &Q[static_cast<size_t>(m) * nu]; }
 };
 
-bool reduceToNullSpace(const std::vector<double>& A, const std::vector<double>& B, int n, NullSpaceReduction& red) {
+bool reduceToNullSpace(const double* A, const double* B, int n, NullSpaceReduction& red) {
   std::vector<int>& c = red.c;
   std::vector<int>& u = red.u;
   for (int i = 0; i < n; ++i) {
@@ -474,9 +478,10 @@ bool symmetricDefinitePencil(const std::vector<double>& A0, const std::vector<do
 
 bool symmetricDefinitePencil(const std::vector<double>& A0, const std::vector<double>& B0, int n, double sigma,
                              const WantedPairs& wanted, DenseEigenpairs& result) {
-  if (n == 0 || !symmetricMatrix(B0, n, 1e-13) || !symmetricMatrix(A0, n, 1e-13)) return false;
-  std::vector<double> A, B;
-  const std::vector<double> D = equilibrated(A0, B0, n, A, B);
+  if (n == 0 || !symmetricMatrix(B0.data(), n, 1e-13) || !symmetricMatrix(A0.data(), n, 1e-13)) return false;
+  const std::unique_ptr<double[]> Ae = squareArray(n), Be = squareArray(n);
+  const double *A = Ae.get(), *B = Be.get();
+  const std::vector<double> D = equilibrated(A0, B0, n, Ae.get(), Be.get());
   NullSpaceReduction red;
   if (!reduceToNullSpace(A, B, n, red)) return false;
   const std::vector<int>&c = red.c, &u = red.u;
@@ -543,11 +548,11 @@ namespace {
 // equilibrated pencil (A, B), from the LU of A - lambda B: two steps v <- (A - lambda B)^-1 B v from
 // `start`.
 std::vector<double> inverseIteration(const double* lu, const std::vector<int>& piv,
-                                     const std::vector<double>& B, int n, bool transpose,
+                                     const double* B, int n, bool transpose,
                                      const std::vector<double>& start) {
   std::vector<double> v(start), bv(n);
   for (int it = 0; it < 2; ++it) {
-    gemm(transpose ? 'T' : 'N', 'N', n, 1, n, B.data(), n, v.data(), n, bv.data());
+    gemm(transpose ? 'T' : 'N', 'N', n, 1, n, B, n, v.data(), n, bv.data());
     int info = 0, one = 1;
     dgetrs_(transpose ? "T" : "N", &n, &one, lu, &n, piv.data(), bv.data(), &n, &info);
     double m = 0;
@@ -603,7 +608,7 @@ bool standardEigenvalues(std::vector<double>& M, int n, std::vector<double>& wr,
 // symmetric and positive definite on the null space Z of its constraint rows: Z^T A Z = L L^T, the
 // eigenvalues w = 1/lambda of the standard nonsymmetric L^-1 Z^T B Z L^-T (LAPACK dgeev, eigenvalues
 // alone: a third of QZ's); the rest (constraints, w = 0) get beta = 0. False: no such reduction.
-bool reducedEigenvalues(const std::vector<double>& A, const std::vector<double>& B, int n, std::vector<double>& ar,
+bool reducedEigenvalues(const double* A, const double* B, int n, std::vector<double>& ar,
                         std::vector<double>& ai, std::vector<double>& beta) {
   if (n == 0 || !symmetricMatrix(A, n, 1e-13)) return false;
   NullSpaceReduction red;
@@ -636,8 +641,9 @@ DenseEigenpairs generalPencil(const std::vector<double>& A0, const std::vector<d
                               const WantedPairs& wanted) {
   DenseEigenpairs out;
   out.n = n;
-  std::vector<double> A, B;
-  const std::vector<double> D = equilibrated(A0, B0, n, A, B);
+  const std::unique_ptr<double[]> Ae = squareArray(n), Be = squareArray(n);
+  const double *A = Ae.get(), *B = Be.get();
+  const std::vector<double> D = equilibrated(A0, B0, n, Ae.get(), Be.get());
   // the eigenvalues: by the reduction to a standard problem where A is symmetric and definite on the
   // constraints' null space, else QZ alone (no Schur vectors accumulated: about half of QZ with both sets)
   std::vector<double> ar(n), ai(n), beta(n), dummy(1);
@@ -646,7 +652,7 @@ DenseEigenpairs generalPencil(const std::vector<double>& A0, const std::vector<d
   if (reducedEigenvalues(A, B, n, ar, ai, beta)) {
     info = 0;  // the vectors below are those of the whole pencil
   } else if (n > 0) {
-    std::vector<double> Aq(A), Bq(B);
+    std::vector<double> Aq(A, A + static_cast<size_t>(n) * n), Bq(B, B + static_cast<size_t>(n) * n);
     dggev_("N", "N", &n, Aq.data(), &n, Bq.data(), &n, ar.data(), ai.data(), beta.data(), dummy.data(), &one,
            dummy.data(), &one, &wq, &lwork, &info);
     lwork = std::max(static_cast<int>(wq), 8 * n);

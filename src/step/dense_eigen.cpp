@@ -361,26 +361,27 @@ DenseEigenpairs generalPencil(const std::vector<double>& A0, const std::vector<d
 
 namespace {
 
-// Householder QR of the nu x m matrix a (column-major, overwritten by the factors); Q (nu x nu) formed.
-bool fullQR(std::vector<double>& a, int nu, int m, std::vector<double>& Q) {
+// Householder QR of the nu x m matrix a (column-major, overwritten by the factors); Q (nu x nu) formed
+// (dorgqr writes all of it from the reflectors in its first m columns: not zeroed first).
+bool fullQR(std::vector<double>& a, int nu, int m, std::unique_ptr<double[]>& Q) {
   std::vector<double> tau(std::max(m, 1));
   int info = 0, lwork = -1;
   double wq = 0;
-  Q.assign(static_cast<size_t>(nu) * nu, 0.0);
+  Q = squareArray(nu);
   if (m > 0) {
     dgeqrf_(&nu, &m, a.data(), &nu, tau.data(), &wq, &lwork, &info);
     lwork = std::max(static_cast<int>(wq), nu);
     std::vector<double> work(lwork);
     dgeqrf_(&nu, &m, a.data(), &nu, tau.data(), work.data(), &lwork, &info);
     if (info != 0) return false;
-    std::copy(a.begin(), a.end(), Q.begin());
+    std::copy(a.begin(), a.end(), Q.get());
   }
   if (nu == 0) return true;
   lwork = -1;
-  dorgqr_(&nu, &nu, &m, Q.data(), &nu, tau.data(), &wq, &lwork, &info);
+  dorgqr_(&nu, &nu, &m, Q.get(), &nu, tau.data(), &wq, &lwork, &info);
   lwork = std::max(static_cast<int>(wq), nu);
   std::vector<double> work(lwork);
-  dorgqr_(&nu, &nu, &m, Q.data(), &nu, tau.data(), work.data(), &lwork, &info);
+  dorgqr_(&nu, &nu, &m, Q.get(), &nu, tau.data(), work.data(), &lwork, &info);
   return info == 0;
 }
 
@@ -400,20 +401,18 @@ bool symmetricMatrix(const double* A, int n, double tol) {
   return true;
 }
 
-// The k x k block M(rows, cols) as a column-major array.
-std::vector<double> block(const double* M, int n, const std::vector<int>& rows, const std::vector<int>& cols) {
-  std::vector<double> b(rows.size() * cols.size());
+// The block M(rows, cols) into the column-major array b.
+void block(const double* M, int n, const std::vector<int>& rows, const std::vector<int>& cols, double* b) {
   for (size_t c = 0; c < cols.size(); ++c)
     for (size_t r = 0; r < rows.size(); ++r) b[c * rows.size() + r] = M[static_cast<size_t>(cols[c]) * n + rows[r]];
-  return b;
 }
 
 // Z^T M Z (r x r, symmetrized if `symmetrize`) of the nu x nu M and the nu x r Z.
-std::vector<double> project(const std::vector<double>& M, const double* Z, int nu, int r, bool symmetrize) {
+std::vector<double> project(const double* M, const double* Z, int nu, int r, bool symmetrize) {
   // MZ: no zeros first (dgemm with beta 0 overwrites it)
   const std::unique_ptr<double[]> MZ(new double[static_cast<size_t>(nu) * r]);
   std::vector<double> P(static_cast<size_t>(r) * r);
-  gemm('N', 'N', nu, r, nu, M.data(), nu, Z, nu, MZ.get());
+  gemm('N', 'N', nu, r, nu, M, nu, Z, nu, MZ.get());
   gemm('T', 'N', r, r, nu, Z, nu, MZ.get(), nu, P.data());
   for (int i = 0; i < r && symmetrize; ++i)
     for (int j = 0; j < i; ++j) {
@@ -432,9 +431,10 @@ namespace {
 // columns of Q. False when there is no such reduction (no unknowns left, redundant constraints).
 struct NullSpaceReduction {
   std::vector<int> c, u;
-  std::vector<double> CT, Q, Auu, Buu;  // CT: the QR factors of C^T (R in its upper triangle)
+  std::vector<double> CT;  // the QR factors of C^T (R in its upper triangle)
+  std::unique_ptr<double[]> Q, Auu, Buu;  // nu x nu
   int m = 0, nu = 0, r = 0;
-  const double* Z() const { return &Q[static_cast<size_t>(m) * nu]; }
+  const double* Z() const { return Q.get() + static_cast<size_t>(m) * nu; }
 };
 
 bool reduceToNullSpace(const double* A, const double* B, int n, NullSpaceReduction& red) {
@@ -455,7 +455,8 @@ bool reduceToNullSpace(const double* A, const double* B, int n, NullSpaceReducti
   if (r <= 0) return false;
   // C^T = Q R (nu x m), Z = the last r columns of Q: an orthonormal basis of null(C)
   std::vector<double>& CT = red.CT;
-  CT = block(A, n, u, c);
+  CT.resize(static_cast<size_t>(nu) * m);
+  block(A, n, u, c, CT.data());
   if (!fullQR(CT, nu, m, red.Q)) return false;
   double rmax = 0, rmin = std::numeric_limits<double>::infinity();
   for (int k = 0; k < m; ++k) {
@@ -463,8 +464,10 @@ bool reduceToNullSpace(const double* A, const double* B, int n, NullSpaceReducti
     rmin = std::min(rmin, std::abs(CT[static_cast<size_t>(k) * nu + k]));
   }
   if (m > 0 && rmin <= nu * kEps * rmax) return false;  // redundant constraints
-  red.Auu = block(A, n, u, u);
-  red.Buu = block(B, n, u, u);
+  red.Auu = squareArray(nu);
+  red.Buu = squareArray(nu);
+  block(A, n, u, u, red.Auu.get());
+  block(B, n, u, u, red.Buu.get());
   return true;
 }
 
@@ -485,7 +488,8 @@ bool symmetricDefinitePencil(const std::vector<double>& A0, const std::vector<do
   NullSpaceReduction red;
   if (!reduceToNullSpace(A, B, n, red)) return false;
   const std::vector<int>&c = red.c, &u = red.u;
-  const std::vector<double>&CT = red.CT, &Q = red.Q, &Auu = red.Auu, &Buu = red.Buu;
+  const std::vector<double>& CT = red.CT;
+  const double *Q = red.Q.get(), *Auu = red.Auu.get(), *Buu = red.Buu.get();
   const int m = red.m, nu = red.nu, r = red.r;
   const double* Z = red.Z();
   std::vector<double> Kr = project(Auu, Z, nu, r, true), Gr = project(Buu, Z, nu, r, true), w;
@@ -511,12 +515,12 @@ bool symmetricDefinitePencil(const std::vector<double>& A0, const std::vector<do
     const int j = order[p];
     gemm('N', 'N', nu, 1, r, Z, nu, &Gr[static_cast<size_t>(j) * r], r, xu.data());
     // multipliers: C^T l = lambda B_uu x_u - A_uu x_u (least squares: l = R^-1 Q_1^T rhs)
-    gemm('N', 'N', nu, 1, nu, Auu.data(), nu, xu.data(), nu, rhs.data());
+    gemm('N', 'N', nu, 1, nu, Auu, nu, xu.data(), nu, rhs.data());
     std::vector<double> bu(nu);
-    gemm('N', 'N', nu, 1, nu, Buu.data(), nu, xu.data(), nu, bu.data());
+    gemm('N', 'N', nu, 1, nu, Buu, nu, xu.data(), nu, bu.data());
     for (int i = 0; i < nu; ++i) rhs[i] = out.re[p] * bu[i] - rhs[i];
     std::vector<double> l(m);
-    gemm('T', 'N', m, 1, nu, Q.data(), nu, rhs.data(), nu, l.data());
+    gemm('T', 'N', m, 1, nu, Q, nu, rhs.data(), nu, l.data());
     for (int a = m - 1; a >= 0; --a) {
       for (int b = a + 1; b < m; ++b) l[a] -= CT[static_cast<size_t>(b) * nu + a] * l[b];
       l[a] /= CT[static_cast<size_t>(a) * nu + a];
@@ -614,7 +618,8 @@ bool reducedEigenvalues(const double* A, const double* B, int n, std::vector<dou
   NullSpaceReduction red;
   if (!reduceToNullSpace(A, B, n, red)) return false;
   const int r = red.r;
-  std::vector<double> L = project(red.Auu, red.Z(), red.nu, r, true), M = project(red.Buu, red.Z(), red.nu, r, false);
+  std::vector<double> L = project(red.Auu.get(), red.Z(), red.nu, r, true),
+                      M = project(red.Buu.get(), red.Z(), red.nu, r, false);
   int info = 0;
   dpotrf_("L", &r, L.data(), &r, &info);
   if (info != 0) return false;

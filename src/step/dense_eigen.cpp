@@ -7,6 +7,7 @@
 #include <limits>
 #include <memory>
 #include <numeric>
+#include <span>
 
 // LAPACK / BLAS (Fortran interfaces; the library linked is Debian's liblapack.so.3 alternative)
 extern "C" {
@@ -408,17 +409,21 @@ void block(const double* M, int n, const std::vector<int>& rows, const std::vect
 }
 
 // Z^T M Z (r x r, symmetrized if `symmetrize`) of the nu x nu M and the nu x r Z.
-std::vector<double> project(const double* M, const double* Z, int nu, int r, bool symmetrize) {
+void project(const double* M, const double* Z, int nu, int r, bool symmetrize, double* P) {
   // MZ: no zeros first (dgemm with beta 0 overwrites it)
   const std::unique_ptr<double[]> MZ(new double[static_cast<size_t>(nu) * r]);
-  std::vector<double> P(static_cast<size_t>(r) * r);
   gemm('N', 'N', nu, r, nu, M, nu, Z, nu, MZ.get());
-  gemm('T', 'N', r, r, nu, Z, nu, MZ.get(), nu, P.data());
+  gemm('T', 'N', r, r, nu, Z, nu, MZ.get(), nu, P);
   for (int i = 0; i < r && symmetrize; ++i)
     for (int j = 0; j < i; ++j) {
       const size_t ij = static_cast<size_t>(j) * r + i, ji = static_cast<size_t>(i) * r + j;
       P[ij] = P[ji] = 0.5 * (P[ij] + P[ji]);
     }
+}
+
+std::vector<double> project(const double* M, const double* Z, int nu, int r, bool symmetrize) {
+  std::vector<double> P(static_cast<size_t>(r) * r);
+  project(M, Z, nu, r, symmetrize, P.data());
   return P;
 }
 
@@ -573,10 +578,10 @@ namespace {
 // The eigenvalues of the general n x n M (overwritten), as LAPACK dgeev without vectors computes them:
 // balancing (dgebal 'B'), Hessenberg form (dgehrd), its eigenvalues (dhseqr); dgeev itself (which
 // first scales M) where max |M_ij| is outside [1e-130, 1e130] or not finite, where dgeev would scale.
-bool standardEigenvalues(std::vector<double>& M, int n, std::vector<double>& wr, std::vector<double>& wi) {
+bool standardEigenvalues(double* M, int n, std::vector<double>& wr, std::vector<double>& wi) {
   double mmax = 0;
   bool finite = true;
-  for (double v : M) {
+  for (const double v : std::span(M, static_cast<size_t>(n) * n)) {
     finite = finite && std::isfinite(v);
     mmax = std::max(mmax, std::abs(v));
   }
@@ -585,26 +590,26 @@ bool standardEigenvalues(std::vector<double>& M, int n, std::vector<double>& wr,
   if (!finite || (mmax > 0 && mmax < 1e-130) || mmax > 1e130) {
     int lwork = -1;
     double wq = 0;
-    dgeev_("N", "N", &n, M.data(), &n, wr.data(), wi.data(), dummy.data(), &ld, dummy.data(), &ld, &wq, &lwork, &info);
+    dgeev_("N", "N", &n, M, &n, wr.data(), wi.data(), dummy.data(), &ld, dummy.data(), &ld, &wq, &lwork, &info);
     lwork = std::max(static_cast<int>(wq), 4 * n);
     std::vector<double> work(lwork);
-    dgeev_("N", "N", &n, M.data(), &n, wr.data(), wi.data(), dummy.data(), &ld, dummy.data(), &ld, work.data(), &lwork,
+    dgeev_("N", "N", &n, M, &n, wr.data(), wi.data(), dummy.data(), &ld, dummy.data(), &ld, work.data(), &lwork,
            &info);
     return info == 0;
   }
   // dgeev's workspace (its query) and its split: dgehrd gets all but 2 n, dhseqr all but n
   int ilo = 1, ihi = n, lwork = -1;
   double wq = 0;
-  dgeev_("N", "N", &n, M.data(), &n, wr.data(), wi.data(), dummy.data(), &ld, dummy.data(), &ld, &wq, &lwork, &info);
+  dgeev_("N", "N", &n, M, &n, wr.data(), wi.data(), dummy.data(), &ld, dummy.data(), &ld, &wq, &lwork, &info);
   lwork = std::max(static_cast<int>(wq), 4 * n);
   const std::unique_ptr<double[]> work(new double[static_cast<size_t>(lwork)]);  // no zeros: LAPACK's scratch
   double *scale = work.get(), *tau = scale + n;
   int lhrd = lwork - 2 * n, lhs = lwork - n;
-  dgebal_("B", &n, M.data(), &n, &ilo, &ihi, scale, &info);
+  dgebal_("B", &n, M, &n, &ilo, &ihi, scale, &info);
   if (info != 0) return false;
-  dgehrd_(&n, &ilo, &ihi, M.data(), &n, tau, tau + n, &lhrd, &info);
+  dgehrd_(&n, &ilo, &ihi, M, &n, tau, tau + n, &lhrd, &info);
   if (info != 0) return false;
-  dhseqr_("E", "N", &n, &ilo, &ihi, M.data(), &n, wr.data(), wi.data(), dummy.data(), &ld, tau, &lhs, &info);
+  dhseqr_("E", "N", &n, &ilo, &ihi, M, &n, wr.data(), wi.data(), dummy.data(), &ld, tau, &lhs, &info);
   return info == 0;
 }
 
@@ -618,14 +623,16 @@ bool reducedEigenvalues(const double* A, const double* B, int n, std::vector<dou
   NullSpaceReduction red;
   if (!reduceToNullSpace(A, B, n, red)) return false;
   const int r = red.r;
-  std::vector<double> L = project(red.Auu.get(), red.Z(), red.nu, r, true),
-                      M = project(red.Buu.get(), red.Z(), red.nu, r, false);
+  const std::unique_ptr<double[]> Lp = squareArray(r), Mp = squareArray(r);
+  double *L = Lp.get(), *M = Mp.get();
+  project(red.Auu.get(), red.Z(), red.nu, r, true, L);
+  project(red.Buu.get(), red.Z(), red.nu, r, false, M);
   int info = 0;
-  dpotrf_("L", &r, L.data(), &r, &info);
+  dpotrf_("L", &r, L, &r, &info);
   if (info != 0) return false;
   const double one = 1.0;
-  dtrsm_("L", "L", "N", "N", &r, &r, &one, L.data(), &r, M.data(), &r);  // L^-1 M
-  dtrsm_("R", "L", "T", "N", &r, &r, &one, L.data(), &r, M.data(), &r);  // (L^-1 M) L^-T
+  dtrsm_("L", "L", "N", "N", &r, &r, &one, L, &r, M, &r);  // L^-1 M
+  dtrsm_("R", "L", "T", "N", &r, &r, &one, L, &r, M, &r);  // (L^-1 M) L^-T
   std::vector<double> wr(r), wi(r);
   if (!standardEigenvalues(M, r, wr, wi)) return false;
   // lambda = 1/w = conj(w) / |w|^2: alpha = conj(w), beta = |w|^2

@@ -372,8 +372,8 @@ bool fullQR(std::vector<double>& a, int nu, int m, std::unique_ptr<double[]>& Q)
   if (m > 0) {
     dgeqrf_(&nu, &m, a.data(), &nu, tau.data(), &wq, &lwork, &info);
     lwork = std::max(static_cast<int>(wq), nu);
-    std::vector<double> work(lwork);
-    dgeqrf_(&nu, &m, a.data(), &nu, tau.data(), work.data(), &lwork, &info);
+    const std::unique_ptr<double[]> work(new double[static_cast<size_t>(lwork)]);  // LAPACK's scratch
+    dgeqrf_(&nu, &m, a.data(), &nu, tau.data(), work.get(), &lwork, &info);
     if (info != 0) return false;
     std::copy(a.begin(), a.end(), Q.get());
   }
@@ -381,8 +381,8 @@ bool fullQR(std::vector<double>& a, int nu, int m, std::unique_ptr<double[]>& Q)
   lwork = -1;
   dorgqr_(&nu, &nu, &m, Q.get(), &nu, tau.data(), &wq, &lwork, &info);
   lwork = std::max(static_cast<int>(wq), nu);
-  std::vector<double> work(lwork);
-  dorgqr_(&nu, &nu, &m, Q.get(), &nu, tau.data(), work.data(), &lwork, &info);
+  const std::unique_ptr<double[]> work(new double[static_cast<size_t>(lwork)]);
+  dorgqr_(&nu, &nu, &m, Q.get(), &nu, tau.data(), work.get(), &lwork, &info);
   return info == 0;
 }
 

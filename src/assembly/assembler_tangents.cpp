@@ -116,12 +116,14 @@ PetscErrorCode Assembler::elementBlockPositions(Mat A, bool* ok) {
   PetscBool done;
   PetscCall(MatGetRowIJ(A, 0, PETSC_FALSE, PETSC_FALSE, &nrows, &ia, &ja, &done));
   if (!done) PetscFunctionReturn(PETSC_SUCCESS);
-  const std::vector<PetscInt> rowStart(ia, ia + nrows + 1), cols(ja, ja + ia[nrows]);
-  PetscCall(MatRestoreRowIJ(A, 0, PETSC_FALSE, PETSC_FALSE, &nrows, &ia, &ja, &done));
-  if (rowStart == splitRowStart_ && cols == splitCols_) {
+  if (std::equal(ia, ia + nrows + 1, splitRowStart_.begin(), splitRowStart_.end()) &&
+      std::equal(ja, ja + ia[nrows], splitCols_.begin(), splitCols_.end())) {
+    PetscCall(MatRestoreRowIJ(A, 0, PETSC_FALSE, PETSC_FALSE, &nrows, &ia, &ja, &done));
     *ok = true;
     PetscFunctionReturn(PETSC_SUCCESS);
   }
+  const std::vector<PetscInt> rowStart(ia, ia + nrows + 1), cols(ja, ja + ia[nrows]);
+  PetscCall(MatRestoreRowIJ(A, 0, PETSC_FALSE, PETSC_FALSE, &nrows, &ia, &ja, &done));
   std::vector<PetscInt> pos;
   std::array<int, kMaxElementRows> idx;
   std::array<double, 48> q;

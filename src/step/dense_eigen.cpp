@@ -58,6 +58,19 @@ double normInf(const std::vector<double>& A, int n) {
   return m;
 }
 
+// normInf with the row sums accumulated column by column (each row's terms in the same order: the same
+// sums, read contiguously)
+double normInfByColumns(const std::vector<double>& A, int n) {
+  std::vector<double> r(n, 0.0);
+  for (int j = 0; j < n; ++j) {
+    const double* a = &A[static_cast<size_t>(j) * n];
+    for (int i = 0; i < n; ++i) r[i] += std::abs(a[i]);
+  }
+  double m = 0;
+  for (double v : r) m = std::max(m, v);
+  return m;
+}
+
 // Normwise backward error ||A x - lambda B x|| / ((||A|| + |lambda| ||B||) ||x||) of a complex pair
 // (xr + i xi, lr + i li), given ax = A x and bx = B x (real and imaginary parts).
 double backwardError(const std::vector<double>& axr, const std::vector<double>& axi, const std::vector<double>& bxr,
@@ -322,7 +335,7 @@ DenseEigenpairs generalPencil(const std::vector<double>& A0, const std::vector<d
   const int k = std::min<int>(want, out.count());
   out.vectors.assign(static_cast<size_t>(n) * k, 0.0);
   out.estimate.assign(k, 0.0);
-  const double nA = normInf(A0, n), nB = normInf(B0, n);
+  const double nA = normInfByColumns(A0, n), nB = normInfByColumns(B0, n);
   for (int c = 0; c < k; ++c) {
     const int j = order[c];
     // a complex pair (j, j+1) has vectors vr_j +- i vr_j+1 (the first has ai > 0)
@@ -396,9 +409,11 @@ bool symmetricMatrix(const double* A, int n, double tol) {
   for (size_t k = n4; k < nn; ++k) part[0] = std::max(part[0], std::abs(A[k]));
   const double amax = std::max(std::max(part[0], part[1]), std::max(part[2], part[3]));
   const double bound = tol * amax;
-  for (int j = 0; j < n; ++j)
+  for (int j = 0; j < n; ++j) {
+    const double *col = A + static_cast<size_t>(j) * n, *row = A + j;  // A(:, j) and A(j, :)
     for (int i = j + 1; i < n; ++i)
-      if (std::abs(A[static_cast<size_t>(j) * n + i] - A[static_cast<size_t>(i) * n + j]) > bound) return false;
+      if (std::abs(col[i] - row[static_cast<size_t>(i) * n]) > bound) return false;
+  }
   return true;
 }
 
@@ -514,7 +529,7 @@ bool symmetricDefinitePencil(const std::vector<double>& A0, const std::vector<do
   const int k = std::min(wanted(out.re, out.im), out.count());
   out.vectors.assign(static_cast<size_t>(n) * k, 0.0);
   out.estimate.assign(k, 0.0);
-  const double nA = normInf(A0, n), nB = normInf(B0, n);
+  const double nA = normInfByColumns(A0, n), nB = normInfByColumns(B0, n);
   std::vector<double> xu(nu), rhs(nu), Ax(n), Bx(n), zero(n, 0.0);
   for (int p = 0; p < k; ++p) {
     const int j = order[p];
@@ -682,7 +697,7 @@ DenseEigenpairs generalPencil(const std::vector<double>& A0, const std::vector<d
     if (out.im[c] != 0.0) return generalPencil(A0, B0, n, sigma, k);  // complex pairs: QZ's own vectors
   out.vectors.assign(static_cast<size_t>(n) * k, 0.0);
   out.estimate.assign(k, 0.0);
-  const double nA = normInf(A0, n), nB = normInf(B0, n);
+  const double nA = normInfByColumns(A0, n), nB = normInfByColumns(B0, n);
   const size_t nn = static_cast<size_t>(n) * n;
   const std::unique_ptr<double[]> lu(new double[std::max<size_t>(nn, 1)]);  // overwritten: no zeros first
   std::vector<double> Ax(n), Bx(n), zero(n, 0.0), start(n);

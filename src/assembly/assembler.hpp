@@ -394,6 +394,10 @@ class Assembler {
   bool cooAssembly_ = true;
   std::vector<PetscScalar> cooValues_;
   PetscErrorCode prepareCOO(Mat J, bool* sums);  ///< *sums: J is filled by setValuesFromCooSums
+  // splitTangent on one rank: where each element block entry goes in the AIJ value array, and the pattern
+  // (row starts, columns) these positions belong to
+  std::vector<PetscInt> splitPositions_, splitRowStart_, splitCols_;
+  PetscErrorCode elementBlockPositions(Mat A, bool* ok);
   bool cooApplies() const;
   // One process: the sums MatSetValuesCOO would form, kept once per assembler (cooSums_), so that a
   // matrix with the same nonzero pattern (every copy of structure_) needs no MatSetPreallocationCOO:

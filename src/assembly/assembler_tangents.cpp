@@ -103,14 +103,79 @@ PetscErrorCode Assembler::addSlopeTorqueTangent(const LoadState& ls, Mat J) {
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+// The positions in the value array of the one-rank AIJ matrix A of every entry of every element block
+// (row-major per block, -1 where the row or column is no unknown) into splitPositions_; kept while A's
+// pattern is the one they were found in (every matrix of createMatrix). False: A is no such matrix.
+PetscErrorCode Assembler::elementBlockPositions(Mat A, bool* ok) {
+  PetscFunctionBeginUser;
+  *ok = false;
+  PetscMPIInt size;
+  PetscCallMPI(MPI_Comm_size(mesh_.comm, &size));
+  PetscBool seq = PETSC_FALSE;
+  PetscCall(PetscObjectTypeCompare(reinterpret_cast<PetscObject>(A), MATSEQAIJ, &seq));
+  if (size != 1 || !seq) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscInt nrows;
+  const PetscInt *ia, *ja;
+  PetscBool done;
+  PetscCall(MatGetRowIJ(A, 0, PETSC_FALSE, PETSC_FALSE, &nrows, &ia, &ja, &done));
+  if (!done) PetscFunctionReturn(PETSC_SUCCESS);
+  if (std::equal(ia, ia + nrows + 1, splitRowStart_.begin(), splitRowStart_.end()) &&
+      std::equal(ja, ja + ia[nrows], splitCols_.begin(), splitCols_.end())) {
+    PetscCall(MatRestoreRowIJ(A, 0, PETSC_FALSE, PETSC_FALSE, &nrows, &ia, &ja, &done));
+    *ok = true;
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  const std::vector<PetscInt> rowStart(ia, ia + nrows + 1), cols(ja, ja + ia[nrows]);
+  PetscCall(MatRestoreRowIJ(A, 0, PETSC_FALSE, PETSC_FALSE, &nrows, &ia, &ja, &done));
+  std::vector<PetscInt> pos;
+  std::array<int, kMaxElementRows> idx;
+  std::array<double, 48> q;
+  for (const LocalElement& el : mesh_.elements) {
+    gatherElement(el, q.data(), nullptr, idx.data(), nullptr);
+    const int n = el.kernel->numDofs() + el.kernel->numConstraints();
+    for (int r = 0; r < n; ++r)
+      for (int c = 0; c < n; ++c) {
+        if (idx[r] < 0 || idx[c] < 0) {
+          pos.push_back(-1);
+          continue;
+        }
+        const long row = mesh_.localToGlobalUnknown(idx[r]), col = mesh_.localToGlobalUnknown(idx[c]);
+        const auto first = cols.begin() + rowStart[row], last = cols.begin() + rowStart[row + 1];
+        const auto it = std::lower_bound(first, last, static_cast<PetscInt>(col));
+        if (it == last || *it != col) PetscFunctionReturn(PETSC_SUCCESS);  // not in the pattern
+        pos.push_back(static_cast<PetscInt>(it - cols.begin()));
+      }
+  }
+  splitPositions_ = std::move(pos);
+  splitRowStart_ = rowStart;
+  splitCols_ = cols;
+  *ok = true;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode Assembler::splitTangent(Vec U, const LoadState& ls, Mat Km, Mat Kg) {
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(SinewEvents::get().splitTangent, 0, 0, 0, 0));
   ++counters_.splitTangents;
   const double* u = nullptr;
   PetscCall(beginLocal(U, ls, &u));
-  PetscCall(MatZeroEntries(Km));
-  PetscCall(MatZeroEntries(Kg));
+  // one rank: the blocks added straight into the value arrays (the additions of MatSetValuesLocal's
+  // ADD_VALUES, in the same element order, without its index searches), else by MatSetValuesLocal
+  bool direct = false, directG = false;
+  PetscCall(elementBlockPositions(Km, &direct));
+  if (direct) PetscCall(elementBlockPositions(Kg, &directG));
+  direct = direct && directG;
+  PetscScalar *km = nullptr, *kg = nullptr;
+  if (direct) {
+    PetscCall(MatSeqAIJGetArray(Km, &km));
+    PetscCall(MatSeqAIJGetArray(Kg, &kg));
+    std::fill(km, km + splitCols_.size(), 0.0);
+    std::fill(kg, kg + splitCols_.size(), 0.0);
+  } else {
+    PetscCall(MatZeroEntries(Km));
+    PetscCall(MatZeroEntries(Kg));
+  }
+  size_t offset = 0;
   std::array<double, 48> q;
   std::array<int, kMaxElementRows> idx;
   KernelNeeds needs;
@@ -124,10 +189,24 @@ PetscErrorCode Assembler::splitTangent(Vec U, const LoadState& ls, Mat Km, Mat K
     const int n = el.kernel->numDofs() + el.kernel->numConstraints();
     rotationColumns(el, n, out_.K.data());
     rotationColumns(el, n, out_.Kg.data());
-    PetscCall(MatSetValuesLocal(Km, n, idx.data(), n, idx.data(), out_.K.data(), ADD_VALUES));
-    PetscCall(MatSetValuesLocal(Kg, n, idx.data(), n, idx.data(), out_.Kg.data(), ADD_VALUES));
+    if (direct) {
+      const PetscInt* pos = &splitPositions_[offset];
+      for (int e = 0; e < n * n; ++e)
+        if (pos[e] >= 0) {
+          km[pos[e]] += out_.K[e];
+          kg[pos[e]] += out_.Kg[e];
+        }
+      offset += static_cast<size_t>(n) * n;
+    } else {
+      PetscCall(MatSetValuesLocal(Km, n, idx.data(), n, idx.data(), out_.K.data(), ADD_VALUES));
+      PetscCall(MatSetValuesLocal(Kg, n, idx.data(), n, idx.data(), out_.Kg.data(), ADD_VALUES));
+    }
   }
   PetscCall(endLocal(&u));
+  if (direct) {
+    PetscCall(MatSeqAIJRestoreArray(Km, &km));
+    PetscCall(MatSeqAIJRestoreArray(Kg, &kg));
+  }
   for (Mat A : {Km, Kg}) {
     PetscCall(MatAssemblyBegin(A, MAT_FINAL_ASSEMBLY));
     PetscCall(MatAssemblyEnd(A, MAT_FINAL_ASSEMBLY));

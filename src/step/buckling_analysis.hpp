@@ -40,6 +40,12 @@ class BucklingAnalysis : public StepAnalysis {
  private:
   PetscErrorCode solve(int nev, int* nconv);
   PetscErrorCode solveDense(DenseEigenpairs& pairs, const WantedPairs& wanted);
+  struct KeptDense {  // a matrix of the dense path, kept between steps, and the AIJ pattern it was filled from
+    std::vector<double> full;
+    std::vector<PetscInt> rowStart, cols;
+  };
+  KeptDense denseA_, denseB_;
+  PetscErrorCode denseMatrix(Mat A, KeptDense& kept);
   static PetscErrorCode materialMult(Mat A, Vec x, Vec y);
   PetscErrorCode refine(const UnitFreeNorms& scaled, Vec x, PetscScalar* mu, double* backward);
   bool dense_ = false;        // -eigen_dense_max_unknowns: LAPACK on rank 0 instead of SLEPc

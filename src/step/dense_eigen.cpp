@@ -5,7 +5,9 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <numeric>
+#include <span>
 
 // LAPACK / BLAS (Fortran interfaces; the library linked is Debian's liblapack.so.3 alternative)
 extern "C" {
@@ -21,6 +23,11 @@ void dgeqrf_(const int* m, const int* n, double* a, const int* lda, double* tau,
              int* info);
 void dorgqr_(const int* m, const int* n, const int* k, double* a, const int* lda, const double* tau, double* work,
              const int* lwork, int* info);
+void dgebal_(const char* job, const int* n, double* a, const int* lda, int* ilo, int* ihi, double* scale, int* info);
+void dgehrd_(const int* n, const int* ilo, const int* ihi, double* a, const int* lda, double* tau, double* work,
+             const int* lwork, int* info);
+void dhseqr_(const char* job, const char* compz, const int* n, const int* ilo, const int* ihi, double* h, const int* ldh,
+             double* wr, double* wi, double* z, const int* ldz, double* work, const int* lwork, int* info);
 void dpotrf_(const char* uplo, const int* n, double* a, const int* lda, int* info);
 void dtrsm_(const char* side, const char* uplo, const char* transa, const char* diag, const int* m, const int* n,
             const double* alpha, const double* a, const int* lda, double* b, const int* ldb);
@@ -48,6 +55,19 @@ double normInf(const std::vector<double>& A, int n) {
     for (int j = 0; j < n; ++j) r += std::abs(A[static_cast<size_t>(j) * n + i]);
     m = std::max(m, r);
   }
+  return m;
+}
+
+// normInf with the row sums accumulated column by column (each row's terms in the same order: the same
+// sums, read contiguously)
+double normInfByColumns(const std::vector<double>& A, int n) {
+  std::vector<double> r(n, 0.0);
+  for (int j = 0; j < n; ++j) {
+    const double* a = &A[static_cast<size_t>(j) * n];
+    for (int i = 0; i < n; ++i) r[i] += std::abs(a[i]);
+  }
+  double m = 0;
+  for (double v : r) m = std::max(m, v);
   return m;
 }
 
@@ -97,6 +117,35 @@ std::vector<double> equilibrate(std::vector<double>& A, std::vector<double>& B, 
       B[ij] *= d[i] * d[j];
     }
   return d;
+}
+
+/// equilibrate on copies: A = D A0 D, B = D B0 D into n x n arrays (the same arithmetic, without
+/// copying first)
+std::vector<double> equilibrated(const std::vector<double>& A0, const std::vector<double>& B0, int n, double* A,
+                                 double* B) {
+  std::vector<double> d(n, 1.0);
+  for (int i = 0; i < n; ++i) d[i] = std::abs(A0[i]);
+  for (int j = 1; j < n; ++j) {
+    const double* a0 = &A0[static_cast<size_t>(j) * n];
+    for (int i = 0; i < n; ++i) d[i] = std::max(d[i], std::abs(a0[i]));
+  }
+  for (double& v : d) v = v > 0 ? 1.0 / std::sqrt(v) : 1.0;
+  for (int j = 0; j < n; ++j) {
+    const size_t o = static_cast<size_t>(j) * n;
+    const double dj = d[j];
+    const double *__restrict a0 = &A0[o], *__restrict b0 = &B0[o];
+    double *__restrict a = &A[o], *__restrict b = &B[o];
+    for (int i = 0; i < n; ++i) {
+      a[i] = a0[i] * (d[i] * dj);
+      b[i] = b0[i] * (d[i] * dj);
+    }
+  }
+  return d;
+}
+
+/// An n x n scratch array that is not zeroed when made (everything in it is written before it is read).
+std::unique_ptr<double[]> squareArray(int n) {
+  return std::unique_ptr<double[]>(new double[std::max<size_t>(static_cast<size_t>(n) * n, 1)]);
 }
 
 /// The finite eigenvalues lambda = alpha / beta of a QZ decomposition (beta above round-off of
@@ -288,7 +337,7 @@ DenseEigenpairs generalPencil(const std::vector<double>& A0, const std::vector<d
   const int k = std::min<int>(want, out.count());
   out.vectors.assign(static_cast<size_t>(n) * k, 0.0);
   out.estimate.assign(k, 0.0);
-  const double nA = normInf(A0, n), nB = normInf(B0, n);
+  const double nA = normInfByColumns(A0, n), nB = normInfByColumns(B0, n);
   for (int c = 0; c < k; ++c) {
     const int j = order[c];
     // a complex pair (j, j+1) has vectors vr_j +- i vr_j+1 (the first has ai > 0)
@@ -328,59 +377,70 @@ DenseEigenpairs generalPencil(const std::vector<double>& A0, const std::vector<d
 
 namespace {
 
-// Householder QR of the nu x m matrix a (column-major, overwritten by the factors); Q (nu x nu) formed.
-bool fullQR(std::vector<double>& a, int nu, int m, std::vector<double>& Q) {
+// Householder QR of the nu x m matrix a (column-major, overwritten by the factors); Q (nu x nu) formed
+// (dorgqr writes all of it from the reflectors in its first m columns: not zeroed first).
+bool fullQR(std::vector<double>& a, int nu, int m, std::unique_ptr<double[]>& Q) {
   std::vector<double> tau(std::max(m, 1));
   int info = 0, lwork = -1;
   double wq = 0;
-  Q.assign(static_cast<size_t>(nu) * nu, 0.0);
+  Q = squareArray(nu);
   if (m > 0) {
     dgeqrf_(&nu, &m, a.data(), &nu, tau.data(), &wq, &lwork, &info);
     lwork = std::max(static_cast<int>(wq), nu);
-    std::vector<double> work(lwork);
-    dgeqrf_(&nu, &m, a.data(), &nu, tau.data(), work.data(), &lwork, &info);
+    const std::unique_ptr<double[]> work(new double[static_cast<size_t>(lwork)]);  // LAPACK's scratch
+    dgeqrf_(&nu, &m, a.data(), &nu, tau.data(), work.get(), &lwork, &info);
     if (info != 0) return false;
-    std::copy(a.begin(), a.end(), Q.begin());
+    std::copy(a.begin(), a.end(), Q.get());
   }
   if (nu == 0) return true;
   lwork = -1;
-  dorgqr_(&nu, &nu, &m, Q.data(), &nu, tau.data(), &wq, &lwork, &info);
+  dorgqr_(&nu, &nu, &m, Q.get(), &nu, tau.data(), &wq, &lwork, &info);
   lwork = std::max(static_cast<int>(wq), nu);
-  std::vector<double> work(lwork);
-  dorgqr_(&nu, &nu, &m, Q.data(), &nu, tau.data(), work.data(), &lwork, &info);
+  const std::unique_ptr<double[]> work(new double[static_cast<size_t>(lwork)]);
+  dorgqr_(&nu, &nu, &m, Q.get(), &nu, tau.data(), work.get(), &lwork, &info);
   return info == 0;
 }
 
-// Symmetric to round-off: max |A_ij - A_ji| <= tol max |A_ij|.
-bool symmetricMatrix(const std::vector<double>& A, int n, double tol) {
-  double amax = 0, asym = 0;
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i) {
-      const double a = A[static_cast<size_t>(j) * n + i];
-      amax = std::max(amax, std::abs(a));
-      asym = std::max(asym, std::abs(a - A[static_cast<size_t>(i) * n + j]));
-    }
-  return asym <= tol * amax;
+// Symmetric to round-off: max |A_ij - A_ji| <= tol max |A_ij| (the strict lower triangle against
+// the upper one, stopping at the first pair beyond the bound).
+bool symmetricMatrix(const double* A, int n, double tol) {
+  double part[4] = {0, 0, 0, 0};  // max |A_ij| in four running maxima (exact in any order)
+  const size_t nn = static_cast<size_t>(n) * n, n4 = nn - nn % 4;
+  for (size_t k = 0; k < n4; k += 4)
+    for (int q = 0; q < 4; ++q) part[q] = std::max(part[q], std::abs(A[k + q]));
+  for (size_t k = n4; k < nn; ++k) part[0] = std::max(part[0], std::abs(A[k]));
+  const double amax = std::max(std::max(part[0], part[1]), std::max(part[2], part[3]));
+  const double bound = tol * amax;
+  for (int j = 0; j < n; ++j) {
+    const double *col = A + static_cast<size_t>(j) * n, *row = A + j;  // A(:, j) and A(j, :)
+    for (int i = j + 1; i < n; ++i)
+      if (std::abs(col[i] - row[static_cast<size_t>(i) * n]) > bound) return false;
+  }
+  return true;
 }
 
-// The k x k block M(rows, cols) as a column-major array.
-std::vector<double> block(const std::vector<double>& M, int n, const std::vector<int>& rows, const std::vector<int>& cols) {
-  std::vector<double> b(rows.size() * cols.size());
+// The block M(rows, cols) into the column-major array b.
+void block(const double* M, int n, const std::vector<int>& rows, const std::vector<int>& cols, double* b) {
   for (size_t c = 0; c < cols.size(); ++c)
     for (size_t r = 0; r < rows.size(); ++r) b[c * rows.size() + r] = M[static_cast<size_t>(cols[c]) * n + rows[r]];
-  return b;
 }
 
 // Z^T M Z (r x r, symmetrized if `symmetrize`) of the nu x nu M and the nu x r Z.
-std::vector<double> project(const std::vector<double>& M, const double* Z, int nu, int r, bool symmetrize) {
-  std::vector<double> MZ(static_cast<size_t>(nu) * r), P(static_cast<size_t>(r) * r);
-  gemm('N', 'N', nu, r, nu, M.data(), nu, Z, nu, MZ.data());
-  gemm('T', 'N', r, r, nu, Z, nu, MZ.data(), nu, P.data());
+void project(const double* M, const double* Z, int nu, int r, bool symmetrize, double* P) {
+  // MZ: no zeros first (dgemm with beta 0 overwrites it)
+  const std::unique_ptr<double[]> MZ(new double[static_cast<size_t>(nu) * r]);
+  gemm('N', 'N', nu, r, nu, M, nu, Z, nu, MZ.get());
+  gemm('T', 'N', r, r, nu, Z, nu, MZ.get(), nu, P);
   for (int i = 0; i < r && symmetrize; ++i)
     for (int j = 0; j < i; ++j) {
       const size_t ij = static_cast<size_t>(j) * r + i, ji = static_cast<size_t>(i) * r + j;
       P[ij] = P[ji] = 0.5 * (P[ij] + P[ji]);
     }
+}
+
+std::vector<double> project(const double* M, const double* Z, int nu, int r, bool symmetrize) {
+  std::vector<double> P(static_cast<size_t>(r) * r);
+  project(M, Z, nu, r, symmetrize, P.data());
   return P;
 }
 
@@ -393,12 +453,13 @@ namespace {
 // columns of Q. False when there is no such reduction (no unknowns left, redundant constraints).
 struct NullSpaceReduction {
   std::vector<int> c, u;
-  std::vector<double> CT, Q, Auu, Buu;  // CT: the QR factors of C^T (R in its upper triangle)
+  std::vector<double> CT;  // the QR factors of C^T (R in its upper triangle)
+  std::unique_ptr<double[]> Q, Auu, Buu;  // nu x nu
   int m = 0, nu = 0, r = 0;
-  const double* Z() const { return &Q[static_cast<size_t>(m) * nu]; }
+  const double* Z() const { return Q.get() + static_cast<size_t>(m) * nu; }
 };
 
-bool reduceToNullSpace(const std::vector<double>& A, const std::vector<double>& B, int n, NullSpaceReduction& red) {
+bool reduceToNullSpace(const double* A, const double* B, int n, NullSpaceReduction& red) {
   std::vector<int>& c = red.c;
   std::vector<int>& u = red.u;
   for (int i = 0; i < n; ++i) {
@@ -416,7 +477,8 @@ bool reduceToNullSpace(const std::vector<double>& A, const std::vector<double>& 
   if (r <= 0) return false;
   // C^T = Q R (nu x m), Z = the last r columns of Q: an orthonormal basis of null(C)
   std::vector<double>& CT = red.CT;
-  CT = block(A, n, u, c);
+  CT.resize(static_cast<size_t>(nu) * m);
+  block(A, n, u, c, CT.data());
   if (!fullQR(CT, nu, m, red.Q)) return false;
   double rmax = 0, rmin = std::numeric_limits<double>::infinity();
   for (int k = 0; k < m; ++k) {
@@ -424,8 +486,10 @@ bool reduceToNullSpace(const std::vector<double>& A, const std::vector<double>& 
     rmin = std::min(rmin, std::abs(CT[static_cast<size_t>(k) * nu + k]));
   }
   if (m > 0 && rmin <= nu * kEps * rmax) return false;  // redundant constraints
-  red.Auu = block(A, n, u, u);
-  red.Buu = block(B, n, u, u);
+  red.Auu = squareArray(nu);
+  red.Buu = squareArray(nu);
+  block(A, n, u, u, red.Auu.get());
+  block(B, n, u, u, red.Buu.get());
   return true;
 }
 
@@ -433,13 +497,21 @@ bool reduceToNullSpace(const std::vector<double>& A, const std::vector<double>& 
 
 bool symmetricDefinitePencil(const std::vector<double>& A0, const std::vector<double>& B0, int n, double sigma,
                              int want, DenseEigenpairs& result) {
-  if (n == 0 || !symmetricMatrix(A0, n, 1e-13) || !symmetricMatrix(B0, n, 1e-13)) return false;
-  std::vector<double> A(A0), B(B0);
-  const std::vector<double> D = equilibrate(A, B, n);
+  return symmetricDefinitePencil(A0, B0, n, sigma, [want](const std::vector<double>&, const std::vector<double>&) { return want; },
+                                 result);
+}
+
+bool symmetricDefinitePencil(const std::vector<double>& A0, const std::vector<double>& B0, int n, double sigma,
+                             const WantedPairs& wanted, DenseEigenpairs& result) {
+  if (n == 0 || !symmetricMatrix(B0.data(), n, 1e-13) || !symmetricMatrix(A0.data(), n, 1e-13)) return false;
+  const std::unique_ptr<double[]> Ae = squareArray(n), Be = squareArray(n);
+  const double *A = Ae.get(), *B = Be.get();
+  const std::vector<double> D = equilibrated(A0, B0, n, Ae.get(), Be.get());
   NullSpaceReduction red;
   if (!reduceToNullSpace(A, B, n, red)) return false;
   const std::vector<int>&c = red.c, &u = red.u;
-  const std::vector<double>&CT = red.CT, &Q = red.Q, &Auu = red.Auu, &Buu = red.Buu;
+  const std::vector<double>& CT = red.CT;
+  const double *Q = red.Q.get(), *Auu = red.Auu.get(), *Buu = red.Buu.get();
   const int m = red.m, nu = red.nu, r = red.r;
   const double* Z = red.Z();
   std::vector<double> Kr = project(Auu, Z, nu, r, true), Gr = project(Buu, Z, nu, r, true), w;
@@ -456,21 +528,21 @@ bool symmetricDefinitePencil(const std::vector<double>& A0, const std::vector<do
   std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return dist(a) < dist(b); });
   for (int j : order) out.re.push_back(1.0 / w[j]);
   out.im.assign(out.re.size(), 0.0);
-  const int k = std::min<int>(want, out.count());
+  const int k = std::min(wanted(out.re, out.im), out.count());
   out.vectors.assign(static_cast<size_t>(n) * k, 0.0);
   out.estimate.assign(k, 0.0);
-  const double nA = normInf(A0, n), nB = normInf(B0, n);
+  const double nA = normInfByColumns(A0, n), nB = normInfByColumns(B0, n);
   std::vector<double> xu(nu), rhs(nu), Ax(n), Bx(n), zero(n, 0.0);
   for (int p = 0; p < k; ++p) {
     const int j = order[p];
     gemm('N', 'N', nu, 1, r, Z, nu, &Gr[static_cast<size_t>(j) * r], r, xu.data());
     // multipliers: C^T l = lambda B_uu x_u - A_uu x_u (least squares: l = R^-1 Q_1^T rhs)
-    gemm('N', 'N', nu, 1, nu, Auu.data(), nu, xu.data(), nu, rhs.data());
+    gemm('N', 'N', nu, 1, nu, Auu, nu, xu.data(), nu, rhs.data());
     std::vector<double> bu(nu);
-    gemm('N', 'N', nu, 1, nu, Buu.data(), nu, xu.data(), nu, bu.data());
+    gemm('N', 'N', nu, 1, nu, Buu, nu, xu.data(), nu, bu.data());
     for (int i = 0; i < nu; ++i) rhs[i] = out.re[p] * bu[i] - rhs[i];
     std::vector<double> l(m);
-    gemm('T', 'N', m, 1, nu, Q.data(), nu, rhs.data(), nu, l.data());
+    gemm('T', 'N', m, 1, nu, Q, nu, rhs.data(), nu, l.data());
     for (int a = m - 1; a >= 0; --a) {
       for (int b = a + 1; b < m; ++b) l[a] -= CT[static_cast<size_t>(b) * nu + a] * l[b];
       l[a] /= CT[static_cast<size_t>(a) * nu + a];
@@ -499,15 +571,16 @@ bool symmetricDefinitePencil(const std::vector<double>& A0, const std::vector<do
 namespace {
 
 // Inverse iteration for the right (transpose false) or left vector of the eigenvalue lambda of the
-// equilibrated pencil (A, B), from the LU of A - lambda B: two steps v <- (A - lambda B)^-1 B v.
-std::vector<double> inverseIteration(const std::vector<double>& lu, const std::vector<int>& piv,
-                                     const std::vector<double>& B, int n, bool transpose) {
-  std::vector<double> v(n), bv(n);
-  for (int i = 0; i < n; ++i) v[i] = 1.0 + 0.5 * std::sin(i + 1.0);  // fixed start, no special direction
+// equilibrated pencil (A, B), from the LU of A - lambda B: two steps v <- (A - lambda B)^-1 B v from
+// `start`.
+std::vector<double> inverseIteration(const double* lu, const std::vector<int>& piv,
+                                     const double* B, int n, bool transpose,
+                                     const std::vector<double>& start) {
+  std::vector<double> v(start), bv(n);
   for (int it = 0; it < 2; ++it) {
-    gemm(transpose ? 'T' : 'N', 'N', n, 1, n, B.data(), n, v.data(), n, bv.data());
+    gemm(transpose ? 'T' : 'N', 'N', n, 1, n, B, n, v.data(), n, bv.data());
     int info = 0, one = 1;
-    dgetrs_(transpose ? "T" : "N", &n, &one, lu.data(), &n, piv.data(), bv.data(), &n, &info);
+    dgetrs_(transpose ? "T" : "N", &n, &one, lu, &n, piv.data(), bv.data(), &n, &info);
     double m = 0;
     for (double x : bv) m = std::max(m, std::abs(x));
     for (int i = 0; i < n; ++i) v[i] = m > 0 && std::isfinite(m) ? bv[i] / m : 0.0;
@@ -519,32 +592,66 @@ std::vector<double> inverseIteration(const std::vector<double>& lu, const std::v
 
 namespace {
 
+// The eigenvalues of the general n x n M (overwritten), as LAPACK dgeev without vectors computes them:
+// balancing (dgebal 'B'), Hessenberg form (dgehrd), its eigenvalues (dhseqr); dgeev itself (which
+// first scales M) where max |M_ij| is outside [1e-130, 1e130] or not finite, where dgeev would scale.
+bool standardEigenvalues(double* M, int n, std::vector<double>& wr, std::vector<double>& wi) {
+  double mmax = 0;
+  bool finite = true;
+  for (const double v : std::span(M, static_cast<size_t>(n) * n)) {
+    finite = finite && std::isfinite(v);
+    mmax = std::max(mmax, std::abs(v));
+  }
+  int info = 0, ld = 1;
+  std::vector<double> dummy(1);
+  if (!finite || (mmax > 0 && mmax < 1e-130) || mmax > 1e130) {
+    int lwork = -1;
+    double wq = 0;
+    dgeev_("N", "N", &n, M, &n, wr.data(), wi.data(), dummy.data(), &ld, dummy.data(), &ld, &wq, &lwork, &info);
+    lwork = std::max(static_cast<int>(wq), 4 * n);
+    std::vector<double> work(lwork);
+    dgeev_("N", "N", &n, M, &n, wr.data(), wi.data(), dummy.data(), &ld, dummy.data(), &ld, work.data(), &lwork,
+           &info);
+    return info == 0;
+  }
+  // dgeev's workspace (its query) and its split: dgehrd gets all but 2 n, dhseqr all but n
+  int ilo = 1, ihi = n, lwork = -1;
+  double wq = 0;
+  dgeev_("N", "N", &n, M, &n, wr.data(), wi.data(), dummy.data(), &ld, dummy.data(), &ld, &wq, &lwork, &info);
+  lwork = std::max(static_cast<int>(wq), 4 * n);
+  const std::unique_ptr<double[]> work(new double[static_cast<size_t>(lwork)]);  // no zeros: LAPACK's scratch
+  double *scale = work.get(), *tau = scale + n;
+  int lhrd = lwork - 2 * n, lhs = lwork - n;
+  dgebal_("B", &n, M, &n, &ilo, &ihi, scale, &info);
+  if (info != 0) return false;
+  dgehrd_(&n, &ilo, &ihi, M, &n, tau, tau + n, &lhrd, &info);
+  if (info != 0) return false;
+  dhseqr_("E", "N", &n, &ilo, &ihi, M, &n, wr.data(), wi.data(), dummy.data(), &ld, tau, &lhs, &info);
+  return info == 0;
+}
+
 // The finite eigenvalues lambda = ar / beta + i ai / beta of the equilibrated pencil (A, B) with A
 // symmetric and positive definite on the null space Z of its constraint rows: Z^T A Z = L L^T, the
 // eigenvalues w = 1/lambda of the standard nonsymmetric L^-1 Z^T B Z L^-T (LAPACK dgeev, eigenvalues
 // alone: a third of QZ's); the rest (constraints, w = 0) get beta = 0. False: no such reduction.
-bool reducedEigenvalues(const std::vector<double>& A, const std::vector<double>& B, int n, std::vector<double>& ar,
+bool reducedEigenvalues(const double* A, const double* B, int n, std::vector<double>& ar,
                         std::vector<double>& ai, std::vector<double>& beta) {
   if (n == 0 || !symmetricMatrix(A, n, 1e-13)) return false;
   NullSpaceReduction red;
   if (!reduceToNullSpace(A, B, n, red)) return false;
   const int r = red.r;
-  std::vector<double> L = project(red.Auu, red.Z(), red.nu, r, true), M = project(red.Buu, red.Z(), red.nu, r, false);
+  const std::unique_ptr<double[]> Lp = squareArray(r), Mp = squareArray(r);
+  double *L = Lp.get(), *M = Mp.get();
+  project(red.Auu.get(), red.Z(), red.nu, r, true, L);
+  project(red.Buu.get(), red.Z(), red.nu, r, false, M);
   int info = 0;
-  dpotrf_("L", &r, L.data(), &r, &info);
+  dpotrf_("L", &r, L, &r, &info);
   if (info != 0) return false;
   const double one = 1.0;
-  dtrsm_("L", "L", "N", "N", &r, &r, &one, L.data(), &r, M.data(), &r);  // L^-1 M
-  dtrsm_("R", "L", "T", "N", &r, &r, &one, L.data(), &r, M.data(), &r);  // (L^-1 M) L^-T
-  std::vector<double> wr(r), wi(r), dummy(1);
-  int lwork = -1, ld = 1;
-  double wq = 0;
-  dgeev_("N", "N", &r, M.data(), &r, wr.data(), wi.data(), dummy.data(), &ld, dummy.data(), &ld, &wq, &lwork, &info);
-  lwork = std::max(static_cast<int>(wq), 4 * r);
-  std::vector<double> work(lwork);
-  dgeev_("N", "N", &r, M.data(), &r, wr.data(), wi.data(), dummy.data(), &ld, dummy.data(), &ld, work.data(), &lwork,
-         &info);
-  if (info != 0) return false;
+  dtrsm_("L", "L", "N", "N", &r, &r, &one, L, &r, M, &r);  // L^-1 M
+  dtrsm_("R", "L", "T", "N", &r, &r, &one, L, &r, M, &r);  // (L^-1 M) L^-T
+  std::vector<double> wr(r), wi(r);
+  if (!standardEigenvalues(M, r, wr, wi)) return false;
   // lambda = 1/w = conj(w) / |w|^2: alpha = conj(w), beta = |w|^2
   std::fill(ar.begin(), ar.end(), 1.0);
   std::fill(ai.begin(), ai.end(), 0.0);
@@ -563,16 +670,18 @@ DenseEigenpairs generalPencil(const std::vector<double>& A0, const std::vector<d
                               const WantedPairs& wanted) {
   DenseEigenpairs out;
   out.n = n;
-  std::vector<double> A(A0), B(B0);
-  const std::vector<double> D = equilibrate(A, B, n);
+  const std::unique_ptr<double[]> Ae = squareArray(n), Be = squareArray(n);
+  const double *A = Ae.get(), *B = Be.get();
+  const std::vector<double> D = equilibrated(A0, B0, n, Ae.get(), Be.get());
   // the eigenvalues: by the reduction to a standard problem where A is symmetric and definite on the
   // constraints' null space, else QZ alone (no Schur vectors accumulated: about half of QZ with both sets)
-  std::vector<double> ar(n), ai(n), beta(n), Aq(A), Bq(B), dummy(1);
+  std::vector<double> ar(n), ai(n), beta(n), dummy(1);
   int info = 0, lwork = -1, one = 1;
   double wq = 0;
   if (reducedEigenvalues(A, B, n, ar, ai, beta)) {
     info = 0;  // the vectors below are those of the whole pencil
   } else if (n > 0) {
+    std::vector<double> Aq(A, A + static_cast<size_t>(n) * n), Bq(B, B + static_cast<size_t>(n) * n);
     dggev_("N", "N", &n, Aq.data(), &n, Bq.data(), &n, ar.data(), ai.data(), beta.data(), dummy.data(), &one,
            dummy.data(), &one, &wq, &lwork, &info);
     lwork = std::max(static_cast<int>(wq), 8 * n);
@@ -590,19 +699,23 @@ DenseEigenpairs generalPencil(const std::vector<double>& A0, const std::vector<d
     if (out.im[c] != 0.0) return generalPencil(A0, B0, n, sigma, k);  // complex pairs: QZ's own vectors
   out.vectors.assign(static_cast<size_t>(n) * k, 0.0);
   out.estimate.assign(k, 0.0);
-  const double nA = normInf(A0, n), nB = normInf(B0, n);
-  std::vector<double> lu(static_cast<size_t>(n) * n), Ax(n), Bx(n), zero(n, 0.0);
+  const double nA = normInfByColumns(A0, n), nB = normInfByColumns(B0, n);
+  const size_t nn = static_cast<size_t>(n) * n;
+  const std::unique_ptr<double[]> lu(new double[std::max<size_t>(nn, 1)]);  // overwritten: no zeros first
+  std::vector<double> Ax(n), Bx(n), zero(n, 0.0), start(n);
   std::vector<int> piv(n);
+  for (int i = 0; i < n; ++i) start[i] = 1.0 + 0.5 * std::sin(i + 1.0);  // fixed start, no special direction
   for (int c = 0; c < k; ++c) {
     // LU of A - lambda B; an exactly zero pivot: lambda moved by a few ulps
     double shift = out.re[c];
     for (int attempt = 0; attempt < 3; ++attempt) {
-      for (size_t i = 0; i < lu.size(); ++i) lu[i] = A[i] - shift * B[i];
-      dgetrf_(&n, &n, lu.data(), &n, piv.data(), &info);
+      for (size_t i = 0; i < nn; ++i) lu[i] = A[i] - shift * B[i];
+      dgetrf_(&n, &n, lu.get(), &n, piv.data(), &info);
       if (info == 0) break;
       shift += 8 * kEps * std::max(std::abs(shift), 1.0);
     }
-    std::vector<double> x = inverseIteration(lu, piv, B, n, false), y = inverseIteration(lu, piv, B, n, true);
+    std::vector<double> x = inverseIteration(lu.get(), piv, B, n, false, start),
+                        y = inverseIteration(lu.get(), piv, B, n, true, start);
     for (int i = 0; i < n; ++i) {
       x[i] *= D[i];
       y[i] *= D[i];

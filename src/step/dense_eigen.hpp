@@ -63,6 +63,11 @@ DenseEigenpairs generalPencil(const std::vector<double>& A, const std::vector<do
 bool symmetricDefinitePencil(const std::vector<double>& A, const std::vector<double>& B, int n, double sigma,
                              int want, DenseEigenpairs& out);
 
+/// symmetricDefinitePencil with vectors, estimates and Rayleigh quotients for the first wanted(re, im)
+/// pairs only (re: the reduced problem's eigenvalues, nearest to sigma first), as generalPencil.
+bool symmetricDefinitePencil(const std::vector<double>& A, const std::vector<double>& B, int n, double sigma,
+                             const WantedPairs& wanted, DenseEigenpairs& out);
+
 /// Flips x (length n) so that its largest component (the first among ties) is positive.
 void fixSign(double* x, int n);
 

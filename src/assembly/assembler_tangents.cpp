@@ -127,24 +127,16 @@ PetscErrorCode Assembler::elementBlockPositions(Mat A, bool* ok) {
   }
   const std::vector<PetscInt> rowStart(ia, ia + nrows + 1), cols(ja, ja + ia[nrows]);
   PetscCall(MatRestoreRowIJ(A, 0, PETSC_FALSE, PETSC_FALSE, &nrows, &ia, &ja, &done));
-  std::vector<PetscInt> pos;
-  std::array<int, kMaxElementRows> idx;
-  std::array<double, 48> q;
-  for (const LocalElement& el : mesh_.elements) {
-    gatherElement(el, q.data(), nullptr, idx.data(), nullptr);
-    const int n = el.kernel->numDofs() + el.kernel->numConstraints();
-    for (int r = 0; r < n; ++r)
-      for (int c = 0; c < n; ++c) {
-        if (idx[r] < 0 || idx[c] < 0) {
-          pos.push_back(-1);
-          continue;
-        }
-        const long row = mesh_.localToGlobalUnknown(idx[r]), col = mesh_.localToGlobalUnknown(idx[c]);
-        const auto first = cols.begin() + rowStart[row], last = cols.begin() + rowStart[row + 1];
-        const auto it = std::lower_bound(first, last, static_cast<PetscInt>(col));
-        if (it == last || *it != col) PetscFunctionReturn(PETSC_SUCCESS);  // not in the pattern
-        pos.push_back(static_cast<PetscInt>(it - cols.begin()));
-      }
+  // the (row, column) of every block entry as the COO assembly lists them (row-major per block)
+  std::vector<PetscInt> ci, cj;
+  cooIndices(&ci, &cj);
+  std::vector<PetscInt> pos(ci.size(), -1);
+  for (size_t e = 0; e < ci.size(); ++e) {
+    if (ci[e] < 0 || cj[e] < 0) continue;
+    const auto first = cols.begin() + rowStart[ci[e]], last = cols.begin() + rowStart[ci[e] + 1];
+    const auto it = std::lower_bound(first, last, cj[e]);
+    if (it == last || *it != cj[e]) PetscFunctionReturn(PETSC_SUCCESS);  // not in the pattern
+    pos[e] = static_cast<PetscInt>(it - cols.begin());
   }
   splitPositions_ = std::move(pos);
   splitRowStart_ = rowStart;

@@ -161,6 +161,7 @@ PetscErrorCode denseSolve(PC pc, int nrhs, PetscScalar* b, int ld) {
     for (int i = 0; i < d->n; ++i) b[static_cast<size_t>(c) * ld + i] *= d->d[i];
   PetscFunctionReturn(PETSC_SUCCESS);
 }
+
 PetscErrorCode denseApply(PC pc, Vec x, Vec y) {
   PetscFunctionBeginUser;
   PetscCall(VecCopy(x, y));

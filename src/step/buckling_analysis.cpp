@@ -85,48 +85,18 @@ PetscErrorCode BucklingAnalysis::solve(int nev, int* nconv) {
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-// gatherDense of K_m or -K_g into its kept array: on one rank (AIJ) only the entries of A's pattern are
-// written, the others keep the zeros of the first fill while the pattern is the one kept (no n x n zeros at
-// every step); otherwise gatherDense itself.
-PetscErrorCode BucklingAnalysis::denseMatrix(Mat A, KeptDense& kept) {
-  PetscFunctionBeginUser;
-  PetscMPIInt size;
-  PetscCallMPI(MPI_Comm_size(asm_.mesh().comm, &size));
-  PetscBool seq = PETSC_FALSE;
-  PetscCall(PetscObjectTypeCompare(reinterpret_cast<PetscObject>(A), MATSEQAIJ, &seq));
-  PetscInt n;
-  const PetscInt *ia, *ja;
-  PetscBool done = PETSC_FALSE;
-  if (size == 1 && seq) PetscCall(MatGetRowIJ(A, 0, PETSC_FALSE, PETSC_FALSE, &n, &ia, &ja, &done));
-  if (!done) {
-    PetscCall(gatherDense(A, kept.full));
-    kept.rowStart.clear();
-    PetscFunctionReturn(PETSC_SUCCESS);
-  }
-  const size_t nn = static_cast<size_t>(n) * n;
-  if (kept.full.size() != nn || !std::equal(ia, ia + n + 1, kept.rowStart.begin(), kept.rowStart.end()) ||
-      !std::equal(ja, ja + ia[n], kept.cols.begin(), kept.cols.end())) {
-    kept.full.assign(nn, 0.0);
-    kept.rowStart.assign(ia, ia + n + 1);
-    kept.cols.assign(ja, ja + ia[n]);
-  }
-  const PetscScalar* a;
-  PetscCall(MatSeqAIJGetArrayRead(A, &a));
-  for (PetscInt i = 0; i < n; ++i)
-    for (PetscInt k = ia[i]; k < ia[i + 1]; ++k) kept.full[static_cast<size_t>(ja[k]) * n + i] = a[k];
-  PetscCall(MatSeqAIJRestoreArrayRead(A, &a));
-  PetscCall(MatRestoreRowIJ(A, 0, PETSC_FALSE, PETSC_FALSE, &n, &ia, &ja, &done));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
 // Every pair of the pencil SLEPc solves (K_m or its element-wise operator, and -K_g), dense on rank 0
 // about the target, nearest first, with the vectors of the first wanted(re, im); to every rank.
 PetscErrorCode BucklingAnalysis::solveDense(DenseEigenpairs& pairs, const WantedPairs& wanted) {
   PetscFunctionBeginUser;
   const DistributedMesh& mesh = asm_.mesh();
-  if (elementwise_) PetscCall(operatorToDense(Kop_, denseA_.full));
-  else PetscCall(denseMatrix(Km_, denseA_));
-  PetscCall(denseMatrix(Kg_, denseB_));
+  if (elementwise_) {
+    PetscCall(operatorToDense(Kop_, denseA_.full));
+    denseA_.rowStart.clear();  // no AIJ pattern behind it
+  } else {
+    PetscCall(gatherDense(Km_, denseA_));
+  }
+  PetscCall(gatherDense(Kg_, denseB_));
   const std::vector<double>&A = denseA_.full, &B = denseB_.full;
   PetscScalar target;
   PetscCall(EPSGetTarget(eps_, &target));

@@ -16,6 +16,7 @@
 #include "step/backward_error.hpp"
 #include "settings/settings.hpp"
 #include "step/dense_eigen.hpp"
+#include "step/dense_gather.hpp"
 #include "step/step_analysis.hpp"
 #include "step/vec_pool.hpp"
 
@@ -40,12 +41,7 @@ class BucklingAnalysis : public StepAnalysis {
  private:
   PetscErrorCode solve(int nev, int* nconv);
   PetscErrorCode solveDense(DenseEigenpairs& pairs, const WantedPairs& wanted);
-  struct KeptDense {  // a matrix of the dense path, kept between steps, and the AIJ pattern it was filled from
-    std::vector<double> full;
-    std::vector<PetscInt> rowStart, cols;
-  };
-  KeptDense denseA_, denseB_;
-  PetscErrorCode denseMatrix(Mat A, KeptDense& kept);
+  KeptDense denseA_, denseB_;  // K_m (or its element-wise operator) and -K_g of the dense path, kept between steps
   static PetscErrorCode materialMult(Mat A, Vec x, Vec y);
   PetscErrorCode refine(const UnitFreeNorms& scaled, Vec x, PetscScalar* mu, double* backward);
   bool dense_ = false;        // -eigen_dense_max_unknowns: LAPACK on rank 0 instead of SLEPc

@@ -52,6 +52,37 @@ PetscErrorCode gatherDense(Mat A, std::vector<double>& full) {
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+PetscErrorCode gatherDense(Mat A, KeptDense& kept) {
+  PetscFunctionBeginUser;
+  PetscMPIInt size;
+  PetscCallMPI(MPI_Comm_size(PetscObjectComm(reinterpret_cast<PetscObject>(A)), &size));
+  PetscBool seq = PETSC_FALSE;
+  PetscCall(PetscObjectTypeCompare(reinterpret_cast<PetscObject>(A), MATSEQAIJ, &seq));
+  PetscInt n;
+  const PetscInt *ia, *ja;
+  PetscBool done = PETSC_FALSE;
+  if (size == 1 && seq) PetscCall(MatGetRowIJ(A, 0, PETSC_FALSE, PETSC_FALSE, &n, &ia, &ja, &done));
+  if (!done) {
+    PetscCall(gatherDense(A, kept.full));
+    kept.rowStart.clear();
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  const size_t nn = static_cast<size_t>(n) * n;
+  if (kept.full.size() != nn || !std::equal(ia, ia + n + 1, kept.rowStart.begin(), kept.rowStart.end()) ||
+      !std::equal(ja, ja + ia[n], kept.cols.begin(), kept.cols.end())) {
+    kept.full.assign(nn, 0.0);
+    kept.rowStart.assign(ia, ia + n + 1);
+    kept.cols.assign(ja, ja + ia[n]);
+  }
+  const PetscScalar* a;
+  PetscCall(MatSeqAIJGetArrayRead(A, &a));
+  for (PetscInt i = 0; i < n; ++i)
+    for (PetscInt k = ia[i]; k < ia[i + 1]; ++k) kept.full[static_cast<size_t>(ja[k]) * n + i] = a[k];
+  PetscCall(MatSeqAIJRestoreArrayRead(A, &a));
+  PetscCall(MatRestoreRowIJ(A, 0, PETSC_FALSE, PETSC_FALSE, &n, &ia, &ja, &done));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode operatorToDense(Mat A, std::vector<double>& full) {
   PetscFunctionBeginUser;
   Mat D;

@@ -15,6 +15,16 @@ namespace sinew {
 /// rank 0 (empty on the other ranks). Collective.
 PetscErrorCode gatherDense(Mat A, std::vector<double>& full);
 
+/// A matrix of the dense path kept from one step to the next, and the one-rank AIJ pattern it was filled from.
+struct KeptDense {
+  std::vector<double> full;
+  std::vector<PetscInt> rowStart, cols;
+};
+/// gatherDense into kept.full. On one rank an AIJ matrix of the kept pattern writes only its pattern's
+/// entries (the others keep the zeros of the fill that set the pattern: no n x n zeros at every step);
+/// otherwise gatherDense itself. The same values either way. Collective.
+PetscErrorCode gatherDense(Mat A, KeptDense& kept);
+
 /// The dense matrix of an operator known by its products (a shell: the element-wise tangent),
 /// columns A e_j, on rank 0 as gatherDense. Collective.
 PetscErrorCode operatorToDense(Mat A, std::vector<double>& full);

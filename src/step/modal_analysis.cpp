@@ -268,9 +268,9 @@ PetscErrorCode ModalAnalysis::solveDense(double target, DenseEigenpairs& pairs) 
   PetscFunctionBeginUser;
   const DistributedMesh& mesh = asm_.mesh();
   const int n = static_cast<int>(mesh.numGlobalUnknowns);
-  std::vector<double> K, M;
-  PetscCall(gatherDense(K_, K));
-  PetscCall(gatherDense(M_, M));
+  PetscCall(gatherDense(K_, denseK_));
+  PetscCall(gatherDense(M_, denseM_));
+  const std::vector<double>&K = denseK_.full, &M = denseM_.full;
   // the Ritz basis: twice the pairs looked at (a wider one adds stiff modes, whose reduced
   // eigenproblem's round-off, eps lambda_max, would reach the soft ones)
   if (mesh.rank == 0) pairs = symmetricPencil(K, M, n, target, elementwise_ ? 2 * (nev_ + 8) : nev_ + 8, !elementwise_);

@@ -78,6 +78,7 @@ class ModalAnalysis : public StepAnalysis {
   Mat P_ = nullptr;            // assembled K - sigma M: the preconditioner (LU) of the inner GMRES
   std::vector<double> estimate_;  // SLEPc's error estimate per reported pair, last step
   VecPool pool_;                  // the steps' work vectors (kept between steps)
+  KeptDense denseK_, denseM_;     // K and M of the dense path, kept between steps
   ProductGather gather_;          // the element-wise products of the dense path's Ritz step
   UnitFreeNorms scaled_;          // scales of the backward error (its matrices kept between steps)
   std::vector<double> backward_;  // backward error of K x - lambda M x, unit-free (scaledBackwardError)

@@ -48,19 +48,9 @@ void gemm(char ta, char tb, int m, int n, int k, const double* a, int lda, const
   if (m > 0 && n > 0) dgemm_(&ta, &tb, &m, &n, &k, &one, a, &lda, b, &ldb, &zero, c, &m);
 }
 
+// ||A||_inf of the column-major n x n A: each row's sum of |A_ij| over j ascending, accumulated column by
+// column (contiguous reads)
 double normInf(const std::vector<double>& A, int n) {
-  double m = 0;
-  for (int i = 0; i < n; ++i) {
-    double r = 0;
-    for (int j = 0; j < n; ++j) r += std::abs(A[static_cast<size_t>(j) * n + i]);
-    m = std::max(m, r);
-  }
-  return m;
-}
-
-// normInf with the row sums accumulated column by column (each row's terms in the same order: the same
-// sums, read contiguously)
-double normInfByColumns(const std::vector<double>& A, int n) {
   std::vector<double> r(n, 0.0);
   for (int j = 0; j < n; ++j) {
     const double* a = &A[static_cast<size_t>(j) * n];
@@ -102,25 +92,9 @@ void luSolve(const std::vector<double>& lu, const std::vector<int>& piv, int n, 
   if (n > 0 && nrhs > 0) dgetrs_("N", &n, &nrhs, lu.data(), &n, piv.data(), b, &n, &info);
 }
 
-// Symmetric equilibration of a pencil: D with d_i = 1/sqrt(max_j |A_ij|) (rows of translations,
-// rotations and multipliers differ by orders of magnitude in their units), A <- D A D, B <- D B D;
-// the eigenvalues are unchanged, x = D x~.
-std::vector<double> equilibrate(std::vector<double>& A, std::vector<double>& B, int n) {
-  std::vector<double> d(n, 1.0);
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i) d[i] = j == 0 ? std::abs(A[i]) : std::max(d[i], std::abs(A[static_cast<size_t>(j) * n + i]));
-  for (double& v : d) v = v > 0 ? 1.0 / std::sqrt(v) : 1.0;
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i) {
-      const size_t ij = static_cast<size_t>(j) * n + i;
-      A[ij] *= d[i] * d[j];
-      B[ij] *= d[i] * d[j];
-    }
-  return d;
-}
-
-/// equilibrate on copies: A = D A0 D, B = D B0 D into n x n arrays (the same arithmetic, without
-/// copying first)
+// Symmetric equilibration of a pencil: D with d_i = 1/sqrt(max_j |A0_ij|) (rows of translations,
+// rotations and multipliers differ by orders of magnitude in their units), A = D A0 D, B = D B0 D into
+// the n x n arrays A and B; the eigenvalues are unchanged, x = D x~.
 std::vector<double> equilibrated(const std::vector<double>& A0, const std::vector<double>& B0, int n, double* A,
                                  double* B) {
   std::vector<double> d(n, 1.0);
@@ -189,8 +163,8 @@ DenseEigenpairs symmetricPencil(const std::vector<double>& A0, const std::vector
                                 int want, bool estimates) {
   DenseEigenpairs out;
   out.n = n;
-  std::vector<double> A(A0), B(B0);
-  const std::vector<double> D = equilibrate(A, B, n);
+  std::vector<double> A(A0.size()), B(B0.size());
+  const std::vector<double> D = equilibrated(A0, B0, n, A.data(), B.data());
   std::vector<double> lu;
   std::vector<int> piv;
   if (!shiftedLU(A, B, n, sigma, lu, piv)) {
@@ -315,8 +289,8 @@ DenseEigenpairs generalPencil(const std::vector<double>& A0, const std::vector<d
                               int want) {
   DenseEigenpairs out;
   out.n = n;
-  std::vector<double> A(A0), B(B0);
-  const std::vector<double> D = equilibrate(A, B, n);
+  std::vector<double> A(A0.size()), B(B0.size());
+  const std::vector<double> D = equilibrated(A0, B0, n, A.data(), B.data());
   // QZ of the pencil (backward stable in A and B, where T = A^-1 B would carry cond(A) eps)
   std::vector<double> ar(n), ai(n), beta(n), vr(static_cast<size_t>(n) * n), vl(vr.size());
   int info = 0, lwork = -1;
@@ -337,7 +311,7 @@ DenseEigenpairs generalPencil(const std::vector<double>& A0, const std::vector<d
   const int k = std::min<int>(want, out.count());
   out.vectors.assign(static_cast<size_t>(n) * k, 0.0);
   out.estimate.assign(k, 0.0);
-  const double nA = normInfByColumns(A0, n), nB = normInfByColumns(B0, n);
+  const double nA = normInf(A0, n), nB = normInf(B0, n);
   for (int c = 0; c < k; ++c) {
     const int j = order[c];
     // a complex pair (j, j+1) has vectors vr_j +- i vr_j+1 (the first has ai > 0)
@@ -531,7 +505,7 @@ bool symmetricDefinitePencil(const std::vector<double>& A0, const std::vector<do
   const int k = std::min(wanted(out.re, out.im), out.count());
   out.vectors.assign(static_cast<size_t>(n) * k, 0.0);
   out.estimate.assign(k, 0.0);
-  const double nA = normInfByColumns(A0, n), nB = normInfByColumns(B0, n);
+  const double nA = normInf(A0, n), nB = normInf(B0, n);
   std::vector<double> xu(nu), rhs(nu), Ax(n), Bx(n), zero(n, 0.0);
   for (int p = 0; p < k; ++p) {
     const int j = order[p];
@@ -699,7 +673,7 @@ DenseEigenpairs generalPencil(const std::vector<double>& A0, const std::vector<d
     if (out.im[c] != 0.0) return generalPencil(A0, B0, n, sigma, k);  // complex pairs: QZ's own vectors
   out.vectors.assign(static_cast<size_t>(n) * k, 0.0);
   out.estimate.assign(k, 0.0);
-  const double nA = normInfByColumns(A0, n), nB = normInfByColumns(B0, n);
+  const double nA = normInf(A0, n), nB = normInf(B0, n);
   const size_t nn = static_cast<size_t>(n) * n;
   const std::unique_ptr<double[]> lu(new double[std::max<size_t>(nn, 1)]);  // overwritten: no zeros first
   std::vector<double> Ax(n), Bx(n), zero(n, 0.0), start(n);

@@ -7,7 +7,6 @@
 #include <limits>
 #include <memory>
 #include <numeric>
-#include <span>
 
 // LAPACK / BLAS (Fortran interfaces; the library linked is Debian's liblapack.so.3 alternative)
 extern "C" {
@@ -23,11 +22,6 @@ void dgeqrf_(const int* m, const int* n, double* a, const int* lda, double* tau,
              int* info);
 void dorgqr_(const int* m, const int* n, const int* k, double* a, const int* lda, const double* tau, double* work,
              const int* lwork, int* info);
-void dgebal_(const char* job, const int* n, double* a, const int* lda, int* ilo, int* ihi, double* scale, int* info);
-void dgehrd_(const int* n, const int* ilo, const int* ihi, double* a, const int* lda, double* tau, double* work,
-             const int* lwork, int* info);
-void dhseqr_(const char* job, const char* compz, const int* n, const int* ilo, const int* ihi, double* h, const int* ldh,
-             double* wr, double* wi, double* z, const int* ldz, double* work, const int* lwork, int* info);
 void dpotrf_(const char* uplo, const int* n, double* a, const int* lda, int* info);
 void dtrsm_(const char* side, const char* uplo, const char* transa, const char* diag, const int* m, const int* n,
             const double* alpha, const double* a, const int* lda, double* b, const int* ldb);
@@ -566,41 +560,14 @@ std::vector<double> inverseIteration(const double* lu, const std::vector<int>& p
 
 namespace {
 
-// The eigenvalues of the general n x n M (overwritten), as LAPACK dgeev without vectors computes them:
-// balancing (dgebal 'B'), Hessenberg form (dgehrd), its eigenvalues (dhseqr); dgeev itself (which
-// first scales M) where max |M_ij| is outside [1e-130, 1e130] or not finite, where dgeev would scale.
+// The eigenvalues of the general n x n M (overwritten): LAPACK dgeev without vectors.
 bool standardEigenvalues(double* M, int n, std::vector<double>& wr, std::vector<double>& wi) {
-  double mmax = 0;
-  bool finite = true;
-  for (const double v : std::span(M, static_cast<size_t>(n) * n)) {
-    finite = finite && std::isfinite(v);
-    mmax = std::max(mmax, std::abs(v));
-  }
-  int info = 0, ld = 1;
-  std::vector<double> dummy(1);
-  if (!finite || (mmax > 0 && mmax < 1e-130) || mmax > 1e130) {
-    int lwork = -1;
-    double wq = 0;
-    dgeev_("N", "N", &n, M, &n, wr.data(), wi.data(), dummy.data(), &ld, dummy.data(), &ld, &wq, &lwork, &info);
-    lwork = std::max(static_cast<int>(wq), 4 * n);
-    std::vector<double> work(lwork);
-    dgeev_("N", "N", &n, M, &n, wr.data(), wi.data(), dummy.data(), &ld, dummy.data(), &ld, work.data(), &lwork,
-           &info);
-    return info == 0;
-  }
-  // dgeev's workspace (its query) and its split: dgehrd gets all but 2 n, dhseqr all but n
-  int ilo = 1, ihi = n, lwork = -1;
-  double wq = 0;
-  dgeev_("N", "N", &n, M, &n, wr.data(), wi.data(), dummy.data(), &ld, dummy.data(), &ld, &wq, &lwork, &info);
+  int info = 0, ld = 1, lwork = -1;
+  double wq = 0, dummy = 0;
+  dgeev_("N", "N", &n, M, &n, wr.data(), wi.data(), &dummy, &ld, &dummy, &ld, &wq, &lwork, &info);
   lwork = std::max(static_cast<int>(wq), 4 * n);
-  const std::unique_ptr<double[]> work(new double[static_cast<size_t>(lwork)]);  // no zeros: LAPACK's scratch
-  double *scale = work.get(), *tau = scale + n;
-  int lhrd = lwork - 2 * n, lhs = lwork - n;
-  dgebal_("B", &n, M, &n, &ilo, &ihi, scale, &info);
-  if (info != 0) return false;
-  dgehrd_(&n, &ilo, &ihi, M, &n, tau, tau + n, &lhrd, &info);
-  if (info != 0) return false;
-  dhseqr_("E", "N", &n, &ilo, &ihi, M, &n, wr.data(), wi.data(), dummy.data(), &ld, tau, &lhs, &info);
+  const std::unique_ptr<double[]> work(new double[static_cast<size_t>(lwork)]);  // LAPACK's scratch: no zeros
+  dgeev_("N", "N", &n, M, &n, wr.data(), wi.data(), &dummy, &ld, &dummy, &ld, work.get(), &lwork, &info);
   return info == 0;
 }
 

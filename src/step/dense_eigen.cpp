@@ -464,12 +464,6 @@ bool reduceToNullSpace(const double* A, const double* B, int n, NullSpaceReducti
 }  // namespace
 
 bool symmetricDefinitePencil(const std::vector<double>& A0, const std::vector<double>& B0, int n, double sigma,
-                             int want, DenseEigenpairs& result) {
-  return symmetricDefinitePencil(A0, B0, n, sigma, [want](const std::vector<double>&, const std::vector<double>&) { return want; },
-                                 result);
-}
-
-bool symmetricDefinitePencil(const std::vector<double>& A0, const std::vector<double>& B0, int n, double sigma,
                              const WantedPairs& wanted, DenseEigenpairs& result) {
   if (n == 0 || !symmetricMatrix(B0.data(), n, 1e-13) || !symmetricMatrix(A0.data(), n, 1e-13)) return false;
   const std::unique_ptr<double[]> Ae = squareArray(n), Be = squareArray(n);

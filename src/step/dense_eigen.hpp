@@ -59,12 +59,9 @@ DenseEigenpairs generalPencil(const std::vector<double>& A, const std::vector<do
 /// basis of null(C), x_u = Z v and Z^T B Z v = (1/lambda) Z^T A Z v (LAPACK dsygvd: Cholesky of
 /// Z^T A Z); the multipliers of x by least squares from the rows u, lambda the Rayleigh quotient
 /// x^T A x / x^T B x. False (out untouched) when the pencil is not symmetric to 1e-13 relative or
-/// Z^T A Z is not positive definite: then use generalPencil.
-bool symmetricDefinitePencil(const std::vector<double>& A, const std::vector<double>& B, int n, double sigma,
-                             int want, DenseEigenpairs& out);
-
-/// symmetricDefinitePencil with vectors, estimates and Rayleigh quotients for the first wanted(re, im)
-/// pairs only (re: the reduced problem's eigenvalues, nearest to sigma first), as generalPencil.
+/// Z^T A Z is not positive definite: then use generalPencil. Vectors, estimates and Rayleigh quotients
+/// for the first wanted(re, im) pairs only (re: the reduced problem's eigenvalues, nearest to sigma
+/// first), as generalPencil.
 bool symmetricDefinitePencil(const std::vector<double>& A, const std::vector<double>& B, int n, double sigma,
                              const WantedPairs& wanted, DenseEigenpairs& out);
 

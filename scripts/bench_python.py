@@ -17,9 +17,9 @@ over the last in-process runs (`sinew._core.run` directly, the same run without 
 With --doc the table goes to docs/performance.md (block bench_python).
 
 The issue asks for 1000 in-process designs against 1000 process runs: --n 1000 --processes 1000 (the
-default; about 12 minutes on 2 cores), one in-process design and one process run of each kind per batch.
-Also reported: the median of the per-batch ratios (a process run over the in-process designs of its
-own batch), which the host's slow and fast phases move less than the ratio of the medians.
+default; 822 s on 2 cores on 2026-11-27), one in-process design and one process run of each kind per
+batch. Also reported: the median of the per-batch ratios (a process run over the in-process designs of
+its own batch, both taken in the same phase of the host).
 
 usage: scripts/bench_python.py [--n 1000] [--processes 1000] [--doc]"""
 import argparse

@@ -52,32 +52,23 @@ Handle intermediateGroupLcpl(const std::string& what) {
   return lcpl;
 }
 
-Handle collectiveDxpl() {
+Handle independentDxpl() {
   Handle dxpl(H5Pcreate(H5P_DATASET_XFER), H5Pclose, "dataset transfer list");
-  check(H5Pset_dxpl_mpio(dxpl, H5FD_MPIO_COLLECTIVE), "collective transfer");
+  check(H5Pset_dxpl_mpio(dxpl, H5FD_MPIO_INDEPENDENT), "independent transfer");
   return dxpl;
 }
 
 herr_t writeBox(hid_t dset, hid_t memType, const std::vector<hsize_t>& start, const std::vector<hsize_t>& count,
               const void* data, hid_t dxpl, const std::string& what) {
-  Handle fileSpace(H5Dget_space(dset), H5Sclose, what + ": file dataspace");
   hsize_t n = 1;
   for (hsize_t c : count) n *= c;
-  if (data && n > 0) {
-    if (!count.empty())
-      check(H5Sselect_hyperslab(fileSpace, H5S_SELECT_SET, start.data(), nullptr, count.data(), nullptr),
-            what + ": select rows");
-    Handle memSpace = dataspace(count, what);
-    return H5Dwrite(dset, memType, memSpace, fileSpace, dxpl, data);
-  }
-  {
-    // Nothing here, but H5Dwrite is collective: take part with empty selections.
-    check(H5Sselect_none(fileSpace), what + ": select none");
-    Handle memSpace = dataspace({1}, what);
-    check(H5Sselect_none(memSpace), what + ": select none");
-    const double dummy = 0;
-    return H5Dwrite(dset, memType, memSpace, fileSpace, dxpl, &dummy);
-  }
+  if (!data || n == 0) return 0;  // nothing here (the transfer is independent: no call to take part in)
+  Handle fileSpace(H5Dget_space(dset), H5Sclose, what + ": file dataspace");
+  if (!count.empty())
+    check(H5Sselect_hyperslab(fileSpace, H5S_SELECT_SET, start.data(), nullptr, count.data(), nullptr),
+          what + ": select rows");
+  Handle memSpace = dataspace(count, what);
+  return H5Dwrite(dset, memType, memSpace, fileSpace, dxpl, data);
 }
 
 namespace {

@@ -45,13 +45,15 @@ Handle dataspace(const std::vector<hsize_t>& dims, const std::vector<hsize_t>& m
 Handle dataspace(const std::vector<hsize_t>& dims, const std::string& what);
 /// Link-creation property list that creates missing parent groups ("node/p" creates /node).
 Handle intermediateGroupLcpl(const std::string& what);
-/// Transfer property list for collective MPI-IO.
-Handle collectiveDxpl();
+/// Transfer property list for independent MPI-IO: each rank writes its own box without the others
+/// (with collective transfers a 2-rank dynamics run spent 1.5 times the output time on its small
+/// rows, docs/results.md, "Cost"; dataset creation and extension stay collective).
+Handle independentDxpl();
 
-/// Collective write of the box [start, start + count) of `dset` from the dense buffer `data`. A rank
-/// with nothing to write passes data == nullptr or a count containing 0 and still takes part
-/// (H5Sselect_none). Empty start and count address a scalar dataset. Returns the status of the
-/// H5Dwrite (the caller agrees on it across ranks); selection errors throw.
+/// This rank's write of the box [start, start + count) of `dset` from the dense buffer `data`
+/// (independent transfer). A rank with nothing to write passes data == nullptr or a count
+/// containing 0 and writes nothing. Empty start and count address a scalar dataset. Returns the
+/// status of the H5Dwrite (the caller agrees on it across ranks); selection errors throw.
 herr_t writeBox(hid_t dset, hid_t memType, const std::vector<hsize_t>& start, const std::vector<hsize_t>& count,
               const void* data, hid_t dxpl, const std::string& what);
 

@@ -1,5 +1,5 @@
 // Member functions of Hdf5ResultFile::Impl (result_file_impl.hpp): creating the two files and their
-// step-indexed and state datasets, the collective writes of table rows, NaN filling of rows never
+// step-indexed and state datasets, the writes of table rows (each rank its own box), NaN filling of rows never
 // written, the /mesh cell tables and reference geometry, and publishing the lead under the final
 // name with its XDMF.
 // Open MPI's deprecated C++ bindings warn under -Wcast-function-type when mpi.h is not a system
@@ -51,7 +51,7 @@ void Hdf5ResultFile::Impl::createFile(Sink& s, const std::string& name) {
   agreeStatus(comm, id, "create", name);
   s.name = name;
   s.file = h5::Handle(id, H5Fclose, what + ": create");
-  s.dxpl = h5::collectiveDxpl();
+  s.dxpl = h5::independentDxpl();
 }
 
 StepDataset& Hdf5ResultFile::Impl::createStepDataset(Sink& s, const std::string& name, Kind kind, std::vector<long> inner,

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <array>
 
+#include "assembly/aij_pattern.hpp"
 #include "assembly/assembler.hpp"
 
 namespace sinew {
@@ -245,10 +246,8 @@ PetscErrorCode Assembler::matchesCooSums(Mat J, bool* match) const {
   PetscCall(MatGetRowIJ(J, 0, PETSC_FALSE, PETSC_FALSE, &m, &ia, &ja, &done));
   if (!done) PetscFunctionReturn(PETSC_SUCCESS);
   const CooSums& s = cooSums_;
-  bool same = static_cast<size_t>(m) + 1 == s.row.size() && std::equal(s.row.begin(), s.row.end(), ia);
-  if (same) same = std::equal(s.col.begin(), s.col.end(), ja);
+  *match = samePattern(m, ia, ja, s.row, s.col);
   PetscCall(MatRestoreRowIJ(J, 0, PETSC_FALSE, PETSC_FALSE, &m, &ia, &ja, &done));
-  *match = same;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

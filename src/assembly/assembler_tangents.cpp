@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 
+#include "assembly/aij_pattern.hpp"
 #include "assembly/assembler.hpp"
 
 namespace sinew {
@@ -119,8 +120,7 @@ PetscErrorCode Assembler::elementBlockPositions(Mat A, bool* ok) {
   PetscBool done;
   PetscCall(MatGetRowIJ(A, 0, PETSC_FALSE, PETSC_FALSE, &nrows, &ia, &ja, &done));
   if (!done) PetscFunctionReturn(PETSC_SUCCESS);
-  if (std::equal(ia, ia + nrows + 1, splitRowStart_.begin(), splitRowStart_.end()) &&
-      std::equal(ja, ja + ia[nrows], splitCols_.begin(), splitCols_.end())) {
+  if (samePattern(nrows, ia, ja, splitRowStart_, splitCols_)) {
     PetscCall(MatRestoreRowIJ(A, 0, PETSC_FALSE, PETSC_FALSE, &nrows, &ia, &ja, &done));
     *ok = true;
     PetscFunctionReturn(PETSC_SUCCESS);

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <numeric>
 
+#include "assembly/aij_pattern.hpp"
+
 namespace sinew {
 
 PetscErrorCode gatherDense(Mat A, std::vector<double>& full) {
@@ -68,8 +70,7 @@ PetscErrorCode gatherDense(Mat A, KeptDense& kept) {
     PetscFunctionReturn(PETSC_SUCCESS);
   }
   const size_t nn = static_cast<size_t>(n) * n;
-  if (kept.full.size() != nn || !std::equal(ia, ia + n + 1, kept.rowStart.begin(), kept.rowStart.end()) ||
-      !std::equal(ja, ja + ia[n], kept.cols.begin(), kept.cols.end())) {
+  if (kept.full.size() != nn || !samePattern(n, ia, ja, kept.rowStart, kept.cols)) {
     kept.full.assign(nn, 0.0);
     kept.rowStart.assign(ia, ia + n + 1);
     kept.cols.assign(ja, ja + ia[n]);
